@@ -1,0 +1,428 @@
+//! Exact incremental 3D convex hull with conflict lists (Clarkson–Shor), degenerate input
+//! allowed.
+//!
+//! The hull surface is kept as outward-oriented triangles; a point becomes a vertex only
+//! when it is *strictly* beyond some triangle, so points on the hull that are not needed
+//! stay off the surface. Coplanar neighbouring triangles are merged into polygon
+//! [facets](Hull3::facet_planes) afterwards, and every input point is told exactly which
+//! facets it lies on, so "is `p` on the boundary", "is triangle `abc` on the boundary" and
+//! "which points lie on this polytope edge" are exact questions.
+//!
+//! Correctness of the degenerate case rests on two facts: the triangles strictly visible
+//! from an outside point form a disk (visibility is per facet plane), and a point outside
+//! the new hull that saw a deleted triangle sees one of the new triangles, so orphaned
+//! conflict points need only be tested against new triangles.
+
+use super::predicates::{Plane, Point3, collinear3, lex_cmp, orient3d};
+use rayon::prelude::*;
+use std::collections::{HashMap, HashSet};
+
+const NONE: u32 = u32::MAX;
+
+/// The convex hull of a point set in 3D.
+///
+/// ```
+/// use tetrakit::geom::Hull3;
+/// // A unit cube with a point in the middle of the bottom face and one inside.
+/// let mut pts = vec![];
+/// for i in 0..8 { pts.push([(i & 1) as f64, ((i >> 1) & 1) as f64, (i >> 2) as f64]); }
+/// pts.push([0.5, 0.5, 0.0]);
+/// pts.push([0.5, 0.5, 0.5]);
+/// let h = Hull3::new(&pts);
+/// assert_eq!(h.dimension, 3);
+/// assert_eq!(h.facet_planes.len(), 6);
+/// assert!(h.on_boundary(8) && !h.on_boundary(9));
+/// ```
+#[derive(Clone, Debug, Default)]
+pub struct Hull3 {
+    /// Affine dimension of the point set: 0 (all equal), 1, 2 or 3.
+    pub dimension: usize,
+    /// Outward-oriented triangles of the hull surface (empty unless `dimension == 3`).
+    pub triangles: Vec<[u32; 3]>,
+    /// The facet of each triangle.
+    pub triangle_facet: Vec<u32>,
+    /// For each facet, three non-collinear points on it, oriented so that every point `x`
+    /// has `orient3d(p0, p1, p2, x) <= 0`.
+    pub facet_planes: Vec<[u32; 3]>,
+    facet_start: Vec<u32>,
+    facet_list: Vec<u32>,
+}
+
+struct Tri {
+    v: [u32; 3],
+    nb: [u32; 3],
+    alive: bool,
+    conflicts: Vec<u32>,
+}
+
+impl Hull3 {
+    /// Computes the hull of `points` exactly. Duplicate points are allowed.
+    pub fn new(points: &[Point3]) -> Hull3 {
+        let Some((seed, dimension)) = initial_simplex(points) else {
+            return Hull3 { dimension: affine_dimension(points), ..Default::default() };
+        };
+        let mut b = Builder { pts: points, tris: Vec::new() };
+        b.start(seed);
+        b.run();
+        let triangles: Vec<[u32; 3]> = b.tris.iter().filter(|t| t.alive).map(|t| t.v).collect();
+        let mut h = Hull3 { dimension, triangles, ..Default::default() };
+        h.build_facets(points);
+        h.assign_points(points);
+        h
+    }
+
+    /// Number of facets (maximal coplanar polygons).
+    pub fn facet_count(&self) -> usize {
+        self.facet_planes.len()
+    }
+
+    /// Facets containing point `i` (empty for interior points).
+    pub fn facets_of(&self, i: usize) -> &[u32] {
+        if self.facet_start.is_empty() {
+            return &[];
+        }
+        &self.facet_list[self.facet_start[i] as usize..self.facet_start[i + 1] as usize]
+    }
+
+    /// True when point `i` lies on the boundary of the hull (3D hulls only).
+    pub fn on_boundary(&self, i: usize) -> bool {
+        !self.facets_of(i).is_empty()
+    }
+
+    /// A facet containing all three points, if any: then triangle `abc` lies on the hull
+    /// boundary.
+    pub fn common_facet(&self, a: usize, b: usize, c: usize) -> Option<u32> {
+        let (fb, fc) = (self.facets_of(b), self.facets_of(c));
+        self.facets_of(a)
+            .iter()
+            .copied()
+            .find(|f| fb.contains(f) && fc.contains(f))
+    }
+
+    /// Points lying on each edge of the polytope, sorted along the edge: consecutive
+    /// entries must be joined in any tetrahedralization of the points.
+    pub fn polytope_edges(&self, points: &[Point3]) -> Vec<Vec<u32>> {
+        let mut adjacent: HashSet<(u32, u32)> = HashSet::new();
+        let edges = self.triangle_edges();
+        for (&(a, b), &(t, _)) in &edges {
+            if let Some(&(u, _)) = edges.get(&(b, a)) {
+                let (f, g) = (self.triangle_facet[t], self.triangle_facet[u]);
+                if f != g {
+                    adjacent.insert((f.min(g), f.max(g)));
+                }
+            }
+        }
+        let mut groups: HashMap<(u32, u32), Vec<u32>> = HashMap::new();
+        for p in 0..points.len() {
+            let fs = self.facets_of(p);
+            for (k, &f) in fs.iter().enumerate() {
+                for &g in &fs[k + 1..] {
+                    let key = (f.min(g), f.max(g));
+                    if adjacent.contains(&key) {
+                        groups.entry(key).or_default().push(p as u32);
+                    }
+                }
+            }
+        }
+        let mut out: Vec<Vec<u32>> = groups.into_values().collect();
+        for g in &mut out {
+            g.sort_by(|&a, &b| lex_cmp(&points[a as usize], &points[b as usize]));
+        }
+        out.sort();
+        out
+    }
+
+    fn triangle_edges(&self) -> HashMap<(u32, u32), (usize, usize)> {
+        let mut m = HashMap::with_capacity(self.triangles.len() * 3);
+        for (t, tri) in self.triangles.iter().enumerate() {
+            for i in 0..3 {
+                let [a, b] = edge_of(tri, i);
+                m.insert((a, b), (t, i));
+            }
+        }
+        m
+    }
+
+    fn build_facets(&mut self, pts: &[Point3]) {
+        let n = self.triangles.len();
+        let mut parent: Vec<usize> = (0..n).collect();
+        fn find(p: &mut [usize], mut x: usize) -> usize {
+            while p[x] != x {
+                p[x] = p[p[x]];
+                x = p[x];
+            }
+            x
+        }
+        let edges = self.triangle_edges();
+        for (&(a, b), &(t, _)) in &edges {
+            let Some(&(u, _)) = edges.get(&(b, a)) else { continue };
+            let tv = self.triangles[t];
+            let apex = *self.triangles[u].iter().find(|&&x| x != a && x != b).unwrap();
+            let p = |i: u32| &pts[i as usize];
+            if orient3d(p(tv[0]), p(tv[1]), p(tv[2]), p(apex)) == 0 {
+                let (rt, ru) = (find(&mut parent, t), find(&mut parent, u));
+                parent[rt] = ru;
+            }
+        }
+        let mut id = HashMap::new();
+        self.triangle_facet = (0..n)
+            .map(|t| {
+                let r = find(&mut parent, t);
+                let next = id.len() as u32;
+                *id.entry(r).or_insert_with(|| {
+                    self.facet_planes.push(self.triangles[r]);
+                    next
+                })
+            })
+            .collect();
+    }
+
+    fn assign_points(&mut self, pts: &[Point3]) {
+        let planes: Vec<Plane> = self
+            .facet_planes
+            .iter()
+            .map(|f| Plane::new(&pts[f[0] as usize], &pts[f[1] as usize], &pts[f[2] as usize]))
+            .collect();
+        let lists: Vec<Vec<u32>> = pts
+            .par_iter()
+            .map(|x| {
+                (0..planes.len() as u32)
+                    .filter(|&f| planes[f as usize].side(x) == 0)
+                    .collect()
+            })
+            .collect();
+        self.facet_start = Vec::with_capacity(pts.len() + 1);
+        self.facet_start.push(0);
+        for l in &lists {
+            self.facet_list.extend_from_slice(l);
+            self.facet_start.push(self.facet_list.len() as u32);
+        }
+    }
+}
+
+fn edge_of(t: &[u32; 3], i: usize) -> [u32; 2] {
+    [t[i], t[(i + 1) % 3]]
+}
+
+/// Affine dimension of a point set (exact).
+pub fn affine_dimension(points: &[Point3]) -> usize {
+    match initial_simplex(points) {
+        Some((_, d)) => d,
+        None => {
+            let Some(a) = points.first() else { return 0 };
+            let Some(b) = points.iter().find(|p| *p != a) else { return 0 };
+            if points.iter().all(|c| collinear3(a, b, c)) {
+                1
+            } else {
+                2
+            }
+        }
+    }
+}
+
+/// Four affinely independent points, or `None` when the set is flat.
+fn initial_simplex(pts: &[Point3]) -> Option<([u32; 4], usize)> {
+    let lo = (0..pts.len()).min_by(|&i, &j| lex_cmp(&pts[i], &pts[j]))?;
+    let hi = (0..pts.len()).max_by(|&i, &j| lex_cmp(&pts[i], &pts[j]))?;
+    if pts[lo] == pts[hi] {
+        return None;
+    }
+    let c = (0..pts.len()).find(|&k| !collinear3(&pts[lo], &pts[hi], &pts[k]))?;
+    let d = (0..pts.len()).find(|&k| orient3d(&pts[lo], &pts[hi], &pts[c], &pts[k]) != 0)?;
+    Some(([lo as u32, hi as u32, c as u32, d as u32], 3))
+}
+
+struct Builder<'a> {
+    pts: &'a [Point3],
+    tris: Vec<Tri>,
+}
+
+impl Builder<'_> {
+    fn p(&self, i: u32) -> &Point3 {
+        &self.pts[i as usize]
+    }
+
+    fn sees(&self, t: usize, q: u32) -> bool {
+        let v = self.tris[t].v;
+        orient3d(self.p(v[0]), self.p(v[1]), self.p(v[2]), self.p(q)) > 0
+    }
+
+    fn start(&mut self, s: [u32; 4]) {
+        let [a, mut b, mut c, d] = s;
+        if orient3d(self.p(a), self.p(b), self.p(c), self.p(d)) < 0 {
+            std::mem::swap(&mut b, &mut c);
+        }
+        for v in [[b, c, d], [a, d, c], [a, b, d], [a, c, b]] {
+            self.tris.push(Tri { v, nb: [NONE; 3], alive: true, conflicts: Vec::new() });
+        }
+        let mut edges = HashMap::new();
+        for t in 0..4 {
+            for i in 0..3 {
+                edges.insert(edge_of(&self.tris[t].v, i), (t, i));
+            }
+        }
+        for t in 0..4 {
+            for i in 0..3 {
+                let [x, y] = edge_of(&self.tris[t].v, i);
+                self.tris[t].nb[i] = edges[&[y, x]].0 as u32;
+            }
+        }
+        for q in 0..self.pts.len() as u32 {
+            if s.contains(&q) {
+                continue;
+            }
+            if let Some(t) = (0..4).find(|&t| self.sees(t, q)) {
+                self.tris[t].conflicts.push(q);
+            }
+        }
+    }
+
+    fn run(&mut self) {
+        let mut work: Vec<usize> = (0..4).collect();
+        while let Some(t) = work.pop() {
+            if !self.tris[t].alive || self.tris[t].conflicts.is_empty() {
+                continue;
+            }
+            let p = self.furthest(t);
+            let new = self.insert(t, p);
+            work.extend(new.into_iter().filter(|&u| !self.tris[u].conflicts.is_empty()));
+        }
+    }
+
+    fn furthest(&self, t: usize) -> u32 {
+        let v = self.tris[t].v;
+        let plane = Plane::new(self.p(v[0]), self.p(v[1]), self.p(v[2]));
+        let c = &self.tris[t].conflicts;
+        *c.iter()
+            .max_by(|&&a, &&b| plane.estimate(self.p(a)).total_cmp(&plane.estimate(self.p(b))))
+            .unwrap()
+    }
+
+    /// Adds `p` (strictly beyond triangle `t0`); returns the new triangles.
+    fn insert(&mut self, t0: usize, p: u32) -> Vec<usize> {
+        let mut visible = vec![t0];
+        let mut seen: HashSet<usize> = HashSet::from([t0]);
+        let mut horizon = Vec::new(); // (a, b, outer triangle, its edge index)
+        let mut k = 0;
+        while k < visible.len() {
+            let t = visible[k];
+            k += 1;
+            for i in 0..3 {
+                let n = self.tris[t].nb[i] as usize;
+                if seen.contains(&n) {
+                    continue;
+                }
+                if self.sees(n, p) {
+                    seen.insert(n);
+                    visible.push(n);
+                } else {
+                    let [a, b] = edge_of(&self.tris[t].v, i);
+                    let j = (0..3).find(|&j| self.tris[n].nb[j] as usize == t).unwrap();
+                    horizon.push((a, b, n, j));
+                }
+            }
+        }
+        let mut orphans = Vec::new();
+        for &t in &visible {
+            self.tris[t].alive = false;
+            orphans.append(&mut self.tris[t].conflicts);
+        }
+        let mut by_start = HashMap::with_capacity(horizon.len());
+        let mut new = Vec::with_capacity(horizon.len());
+        for &(a, b, n, j) in &horizon {
+            let id = self.tris.len();
+            self.tris.push(Tri { v: [a, b, p], nb: [n as u32, NONE, NONE], alive: true, conflicts: vec![] });
+            self.tris[n].nb[j] = id as u32;
+            by_start.insert(a, id);
+            new.push(id);
+        }
+        for &id in &new {
+            let b = self.tris[id].v[1];
+            let next = by_start[&b];
+            self.tris[id].nb[1] = next as u32;
+            self.tris[next].nb[2] = id as u32;
+        }
+        for q in orphans {
+            if q == p {
+                continue;
+            }
+            if let Some(&u) = new.iter().find(|&&u| self.sees(u, q)) {
+                self.tris[u].conflicts.push(q);
+            }
+        }
+        new
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn grid(k: usize) -> Vec<Point3> {
+        let mut v = vec![];
+        for i in 0..k {
+            for j in 0..k {
+                for l in 0..k {
+                    v.push([i as f64, j as f64, l as f64]);
+                }
+            }
+        }
+        v
+    }
+
+    #[test]
+    fn grid_hull_has_six_facets_and_all_surface_points() {
+        let pts = grid(4);
+        let h = Hull3::new(&pts);
+        assert_eq!(h.facet_count(), 6);
+        let boundary = (0..pts.len()).filter(|&i| h.on_boundary(i)).count();
+        assert_eq!(boundary, 64 - 8);
+        // every corner lies on three facets, edge points on two
+        assert_eq!(h.facets_of(0).len(), 3);
+        assert_eq!(h.facets_of(1).len(), 2);
+        let edges = h.polytope_edges(&pts);
+        assert_eq!(edges.len(), 12);
+        assert!(edges.iter().all(|e| e.len() == 4));
+    }
+
+    #[test]
+    fn every_point_is_inside_every_facet_plane() {
+        let mut s = 12345u64;
+        let mut rnd = || {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            (s % 7) as f64
+        };
+        let pts: Vec<Point3> = (0..200).map(|_| [rnd(), rnd(), rnd()]).collect();
+        let h = Hull3::new(&pts);
+        for f in &h.facet_planes {
+            let p = |i: u32| &pts[i as usize];
+            for x in &pts {
+                assert!(orient3d(p(f[0]), p(f[1]), p(f[2]), x) <= 0);
+            }
+        }
+        // Boundary points are exactly those on some facet plane.
+        for (i, x) in pts.iter().enumerate() {
+            let on = h.facet_planes.iter().any(|f| {
+                let p = |i: u32| &pts[i as usize];
+                orient3d(p(f[0]), p(f[1]), p(f[2]), x) == 0
+            });
+            assert_eq!(on, h.on_boundary(i));
+        }
+        // The surface is closed: every directed edge has its reverse.
+        let e: HashSet<(u32, u32)> = h
+            .triangles
+            .iter()
+            .flat_map(|t| (0..3).map(move |i| (t[i], t[(i + 1) % 3])))
+            .collect();
+        assert!(e.iter().all(|&(a, b)| e.contains(&(b, a))));
+    }
+
+    #[test]
+    fn flat_sets_report_their_dimension() {
+        assert_eq!(Hull3::new(&[[1.0, 2.0, 3.0]; 5]).dimension, 0);
+        assert_eq!(Hull3::new(&[[0.0; 3], [1.0, 1.0, 1.0], [2.0, 2.0, 2.0]]).dimension, 1);
+        assert_eq!(Hull3::new(&[[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [3.0, 3.0, 0.0]]).dimension, 2);
+    }
+}

@@ -1,0 +1,316 @@
+//! Exact intersection tests between segments, triangles and tetrahedra, built only from
+//! the orientation predicates of [`super::predicates`]. No general-position assumption:
+//! every collinear and coplanar case is classified.
+
+use super::predicates::{
+    Point3, collinear3, drop_axis, orient2d, orient3d, projection_axis, strictly_between,
+};
+
+/// How the relative interiors of two segments meet (they are not allowed to in a
+/// tetrahedralization).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SegmentMeet {
+    /// The interiors meet in exactly one point.
+    Cross,
+    /// The segments are collinear and share a piece of positive length.
+    Overlap,
+    /// An endpoint of one segment lies in the interior of the other.
+    Touch,
+}
+
+/// Classifies how segments `ab` and `cd` meet beyond shared endpoints; `None` when they
+/// are disjoint or meet only at a common endpoint.
+///
+/// ```
+/// use tetrakit::geom::{segments_meet, SegmentMeet};
+/// let (a, b) = ([0.0, 0.0, 0.0], [2.0, 0.0, 0.0]);
+/// assert_eq!(segments_meet(&a, &b, &[1.0, -1.0, 0.0], &[1.0, 1.0, 0.0]), Some(SegmentMeet::Cross));
+/// assert_eq!(segments_meet(&a, &b, &[1.0, 0.0, 0.0], &[3.0, 0.0, 0.0]), Some(SegmentMeet::Overlap));
+/// assert_eq!(segments_meet(&a, &b, &[1.0, 1.0, 1.0], &[1.0, 1.0, 5.0]), None);
+/// ```
+pub fn segments_meet(a: &Point3, b: &Point3, c: &Point3, d: &Point3) -> Option<SegmentMeet> {
+    if orient3d(a, b, c, d) != 0 {
+        return None;
+    }
+    let ab_c = collinear3(a, b, c);
+    let ab_d = collinear3(a, b, d);
+    if ab_c && ab_d {
+        return collinear_meet(a, b, c, d);
+    }
+    // Coplanar, not all collinear: project to a plane where the configuration is faithful.
+    let axis = if !ab_c {
+        projection_axis(a, b, c)
+    } else {
+        projection_axis(a, b, d)
+    }?;
+    let (a2, b2, c2, d2) = (
+        drop_axis(a, axis),
+        drop_axis(b, axis),
+        drop_axis(c, axis),
+        drop_axis(d, axis),
+    );
+    let o1 = orient2d(&a2, &b2, &c2);
+    let o2 = orient2d(&a2, &b2, &d2);
+    let o3 = orient2d(&c2, &d2, &a2);
+    let o4 = orient2d(&c2, &d2, &b2);
+    if o1 * o2 < 0 && o3 * o4 < 0 {
+        return Some(SegmentMeet::Cross);
+    }
+    let touch = (o1 == 0 && strictly_between(a, c, b))
+        || (o2 == 0 && strictly_between(a, d, b))
+        || (o3 == 0 && strictly_between(c, a, d))
+        || (o4 == 0 && strictly_between(c, b, d));
+    touch.then_some(SegmentMeet::Touch)
+}
+
+/// Four collinear points: do segments `ab` and `cd` overlap, touch or not meet?
+fn collinear_meet(a: &Point3, b: &Point3, c: &Point3, d: &Point3) -> Option<SegmentMeet> {
+    // Coordinate along which the line is not constant orders the points exactly.
+    let k = (0..3).find(|&k| a[k] != b[k]).unwrap_or(0);
+    let (lo1, hi1) = (a[k].min(b[k]), a[k].max(b[k]));
+    let (lo2, hi2) = (c[k].min(d[k]), c[k].max(d[k]));
+    let lo = lo1.max(lo2);
+    let hi = hi1.min(hi2);
+    if lo < hi {
+        Some(SegmentMeet::Overlap)
+    } else {
+        None
+    }
+}
+
+/// True when point `p` lies in the relative interior of segment `ab`.
+pub fn point_in_segment_interior(p: &Point3, a: &Point3, b: &Point3) -> bool {
+    collinear3(a, p, b) && strictly_between(a, p, b)
+}
+
+/// True when the coplanar segment `pq` and the open triangle `abc` are weakly separated by
+/// a line through a triangle edge or through `pq` (separating-axis test, exact).
+fn coplanar_separated(p: &Point3, q: &Point3, a: &Point3, b: &Point3, c: &Point3) -> bool {
+    let Some(axis) = projection_axis(a, b, c) else {
+        return true;
+    };
+    let [p2, q2, a2, b2, c2] = [p, q, a, b, c].map(|x| drop_axis(x, axis));
+    let s = orient2d(&a2, &b2, &c2);
+    let edges = [(a2, b2), (b2, c2), (c2, a2)];
+    if edges
+        .iter()
+        .any(|(u, w)| orient2d(u, w, &p2) * s <= 0 && orient2d(u, w, &q2) * s <= 0)
+    {
+        return true;
+    }
+    let o = [a2, b2, c2].map(|x| orient2d(&p2, &q2, &x));
+    o.iter().all(|&x| x >= 0) || o.iter().all(|&x| x <= 0)
+}
+
+/// True when the line `pq` passes through the open triangle `abc` (non-coplanar case).
+fn line_through_open_triangle(p: &Point3, q: &Point3, a: &Point3, b: &Point3, c: &Point3) -> bool {
+    let s1 = orient3d(p, q, a, b);
+    let s2 = orient3d(p, q, b, c);
+    let s3 = orient3d(p, q, c, a);
+    s1 != 0 && s1 == s2 && s2 == s3
+}
+
+/// True when the point `p` on the plane of `abc` lies in the open triangle `abc`.
+fn coplanar_point_in_open_triangle(p: &Point3, a: &Point3, b: &Point3, c: &Point3) -> bool {
+    let Some(axis) = projection_axis(a, b, c) else {
+        return false;
+    };
+    let [p2, a2, b2, c2] = [p, a, b, c].map(|x| drop_axis(x, axis));
+    let s = orient2d(&a2, &b2, &c2);
+    orient2d(&a2, &b2, &p2) == s && orient2d(&b2, &c2, &p2) == s && orient2d(&c2, &a2, &p2) == s
+}
+
+/// Definition 2.2's *puncture*: the relative interiors of segment `pq` and triangle `abc`
+/// intersect (any configuration, coplanar included).
+///
+/// ```
+/// use tetrakit::geom::segment_punctures_triangle;
+/// let (a, b, c) = ([0.0, 0.0, 0.0], [4.0, 0.0, 0.0], [0.0, 4.0, 0.0]);
+/// assert!(segment_punctures_triangle(&[1.0, 1.0, -1.0], &[1.0, 1.0, 1.0], &a, &b, &c));
+/// assert!(!segment_punctures_triangle(&[1.0, 1.0, 0.0], &[1.0, 1.0, 1.0], &a, &b, &c));
+/// ```
+pub fn segment_punctures_triangle(
+    p: &Point3,
+    q: &Point3,
+    a: &Point3,
+    b: &Point3,
+    c: &Point3,
+) -> bool {
+    let op = orient3d(a, b, c, p);
+    let oq = orient3d(a, b, c, q);
+    match (op, oq) {
+        (0, 0) => !coplanar_separated(p, q, a, b, c),
+        _ if op * oq < 0 => line_through_open_triangle(p, q, a, b, c),
+        _ => false,
+    }
+}
+
+/// True when the *closed* segment `pq` meets the open triangle `abc` (the segment may end
+/// inside the triangle). Used for Definition 2.1's L-emptiness of faces.
+pub fn segment_meets_open_triangle(
+    p: &Point3,
+    q: &Point3,
+    a: &Point3,
+    b: &Point3,
+    c: &Point3,
+) -> bool {
+    let op = orient3d(a, b, c, p);
+    let oq = orient3d(a, b, c, q);
+    match (op, oq) {
+        (0, 0) => !coplanar_separated(p, q, a, b, c),
+        (0, _) => coplanar_point_in_open_triangle(p, a, b, c),
+        (_, 0) => coplanar_point_in_open_triangle(q, a, b, c),
+        _ if op * oq < 0 => line_through_open_triangle(p, q, a, b, c),
+        _ => false,
+    }
+}
+
+/// True when the closed segment `pq` meets the interior of the tetrahedron `t`
+/// (any orientation of `t`; a degenerate `t` has an empty interior).
+///
+/// The segment enters the open tetrahedron iff an endpoint is inside, or it crosses a
+/// face's relative interior towards the inside, or it passes through the relative
+/// interiors of two opposite edges.
+pub fn segment_meets_open_tetrahedron(p: &Point3, q: &Point3, t: &[Point3; 4]) -> bool {
+    let s = orient3d(&t[0], &t[1], &t[2], &t[3]);
+    if s == 0 {
+        return false;
+    }
+    // Faces oriented so that the inside is positive.
+    let faces = [(1, 2, 3, 0), (0, 3, 2, 1), (0, 1, 3, 2), (0, 2, 1, 3)];
+    let side = |x: &Point3, f: (usize, usize, usize, usize)| {
+        s * orient3d(&t[f.0], &t[f.1], &t[f.2], x) * -1
+    };
+    let inside = |x: &Point3| faces.iter().all(|&f| side(x, f) > 0);
+    if inside(p) || inside(q) {
+        return true;
+    }
+    for &f in &faces {
+        let (a, b, c) = (&t[f.0], &t[f.1], &t[f.2]);
+        let (sp, sq) = (side(p, f), side(q, f));
+        let crosses = (sp * sq < 0 && line_through_open_triangle(p, q, a, b, c))
+            || (sp == 0 && sq > 0 && coplanar_point_in_open_triangle(p, a, b, c))
+            || (sq == 0 && sp > 0 && coplanar_point_in_open_triangle(q, a, b, c));
+        if crosses {
+            return true;
+        }
+    }
+    let opposite = [((0, 1), (2, 3)), ((0, 2), (1, 3)), ((0, 3), (1, 2))];
+    opposite.iter().any(|&((i, j), (k, l))| {
+        segment_touches_interior(p, q, &t[i], &t[j]) && segment_touches_interior(p, q, &t[k], &t[l])
+    })
+}
+
+/// True when the closed segment `pq` meets the relative interior of segment `ab`.
+fn segment_touches_interior(p: &Point3, q: &Point3, a: &Point3, b: &Point3) -> bool {
+    point_in_segment_interior(p, a, b)
+        || point_in_segment_interior(q, a, b)
+        || segments_meet(p, q, a, b) == Some(SegmentMeet::Cross)
+}
+
+/// True when the point `x` lies in the closed tetrahedron `t` but is none of its corners.
+pub fn point_in_closed_tetrahedron(x: &Point3, t: &[Point3; 4]) -> bool {
+    let s = orient3d(&t[0], &t[1], &t[2], &t[3]);
+    if s == 0 || t.contains(x) {
+        return false;
+    }
+    let faces = [(1, 2, 3), (0, 3, 2), (0, 1, 3), (0, 2, 1)];
+    faces
+        .iter()
+        .all(|&(a, b, c)| s * orient3d(&t[a], &t[b], &t[c], x) <= 0)
+}
+
+/// True when two coplanar triangles have intersecting (2D) interiors. The caller
+/// guarantees the six points are coplanar.
+pub fn coplanar_triangles_overlap(t: &[Point3; 3], u: &[Point3; 3]) -> bool {
+    let Some(axis) = projection_axis(&t[0], &t[1], &t[2]) else {
+        return false;
+    };
+    let t2 = t.map(|x| drop_axis(&x, axis));
+    let u2 = u.map(|x| drop_axis(&x, axis));
+    let separated_by = |a: &[[f64; 2]; 3], b: &[[f64; 2]; 3]| {
+        let s = orient2d(&a[0], &a[1], &a[2]);
+        (0..3).any(|i| {
+            let (p, q) = (&a[i], &a[(i + 1) % 3]);
+            b.iter().all(|x| orient2d(p, q, x) * s <= 0)
+        })
+    };
+    !(separated_by(&t2, &u2) || separated_by(&u2, &t2))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const O: Point3 = [0.0, 0.0, 0.0];
+
+    #[test]
+    fn segment_meet_degenerate_cases() {
+        let b = [2.0, 0.0, 0.0];
+        // shared endpoint only
+        assert_eq!(segments_meet(&O, &b, &b, &[3.0, 1.0, 0.0]), None);
+        // collinear, sharing only an endpoint
+        assert_eq!(segments_meet(&O, &b, &b, &[3.0, 0.0, 0.0]), None);
+        // T-junction: endpoint in the interior
+        assert_eq!(
+            segments_meet(&O, &b, &[1.0, 0.0, 0.0], &[1.0, 5.0, 0.0]),
+            Some(SegmentMeet::Touch)
+        );
+        // collinear containment
+        assert_eq!(
+            segments_meet(&O, &b, &[0.5, 0.0, 0.0], &[1.0, 0.0, 0.0]),
+            Some(SegmentMeet::Overlap)
+        );
+        // coplanar disjoint
+        assert_eq!(segments_meet(&O, &b, &[0.0, 1.0, 0.0], &[2.0, 1.0, 0.0]), None);
+        // crossing in a vertical plane (projection axis matters)
+        assert_eq!(
+            segments_meet(&O, &[0.0, 0.0, 2.0], &[0.0, -1.0, 1.0], &[0.0, 1.0, 1.0]),
+            Some(SegmentMeet::Cross)
+        );
+        // skew
+        assert_eq!(segments_meet(&O, &b, &[1.0, -1.0, 1.0], &[1.0, 1.0, 1.0]), None);
+    }
+
+    #[test]
+    fn puncture_coplanar_and_boundary_cases() {
+        let (a, b, c) = (O, [4.0, 0.0, 0.0], [0.0, 4.0, 0.0]);
+        // coplanar segment through the interior
+        assert!(segment_punctures_triangle(&[-1.0, 1.0, 0.0], &[5.0, 1.0, 0.0], &a, &b, &c));
+        // coplanar segment along an edge
+        assert!(!segment_punctures_triangle(&[-1.0, 0.0, 0.0], &[5.0, 0.0, 0.0], &a, &b, &c));
+        // crossing exactly through an edge
+        assert!(!segment_punctures_triangle(&[2.0, 0.0, -1.0], &[2.0, 0.0, 1.0], &a, &b, &c));
+        // through a vertex
+        assert!(!segment_punctures_triangle(&[0.0, 0.0, -1.0], &[0.0, 0.0, 1.0], &a, &b, &c));
+        // closed segment ending in the open triangle
+        assert!(segment_meets_open_triangle(&[1.0, 1.0, 0.0], &[1.0, 1.0, 3.0], &a, &b, &c));
+        // a segment from a vertex into the triangle (coplanar)
+        assert!(segment_punctures_triangle(&a, &[1.0, 1.0, 0.0], &a, &b, &c));
+    }
+
+    #[test]
+    fn open_tetrahedron_cases() {
+        let t = [O, [4.0, 0.0, 0.0], [0.0, 4.0, 0.0], [0.0, 0.0, 4.0]];
+        // through two opposite edges (midpoints of edge 01 and edge 23)
+        assert!(segment_meets_open_tetrahedron(&[2.0, 0.0, 0.0], &[0.0, 2.0, 2.0], &t));
+        // along a face
+        assert!(!segment_meets_open_tetrahedron(&[1.0, 0.0, 0.0], &[0.0, 1.0, 0.0], &t));
+        // from a vertex through the interior
+        assert!(segment_meets_open_tetrahedron(&O, &[3.0, 3.0, 3.0], &t));
+        // ending on a face from outside
+        assert!(!segment_meets_open_tetrahedron(&[1.0, 1.0, -1.0], &[1.0, 1.0, 0.0], &t));
+        // crossing a face into the interior and ending inside
+        assert!(segment_meets_open_tetrahedron(&[1.0, 1.0, -1.0], &[1.0, 1.0, 0.5], &t));
+        assert!(point_in_closed_tetrahedron(&[1.0, 1.0, 0.0], &t));
+        assert!(!point_in_closed_tetrahedron(&O, &t));
+    }
+
+    #[test]
+    fn coplanar_triangle_overlap() {
+        let t = [O, [2.0, 0.0, 0.0], [0.0, 2.0, 0.0]];
+        assert!(coplanar_triangles_overlap(&t, &[[1.0, 1.0, 0.0], [0.0, 0.0, 0.0], [2.0, 0.0, 0.0]]));
+        // sharing an edge, opposite sides
+        assert!(!coplanar_triangles_overlap(&t, &[[2.0, 0.0, 0.0], [0.0, 2.0, 0.0], [2.0, 2.0, 0.0]]));
+    }
+}

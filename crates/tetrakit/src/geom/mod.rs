@@ -1,0 +1,23 @@
+//! Exact geometry: predicates, intersection tests and convex hulls.
+//!
+//! This is the narrow interface behind which every geometric decision of tetrakit is
+//! made (DESIGN.md, non-negotiable 1). Nothing here uses a tolerance: floating-point
+//! arithmetic appears only as a filter whose error bound is proven, with an exact fallback.
+
+mod hull2;
+mod hull3;
+mod intersect;
+mod predicates;
+
+pub use hull2::Hull2;
+pub use hull3::{Hull3, affine_dimension};
+pub use intersect::{
+    SegmentMeet, coplanar_triangles_overlap, point_in_closed_tetrahedron,
+    point_in_segment_interior, segment_meets_open_tetrahedron, segment_meets_open_triangle,
+    segment_punctures_triangle, segments_meet,
+};
+pub use predicates::{
+    Frame, MAX_MAGNITUDE, MIN_MAGNITUDE, Plane, Point2, Point3, collinear3, coordinate_in_range,
+    drop_axis, incircle, insphere, lex_cmp, orient2d, orient2d_drop, orient3d, projection_axis,
+    strictly_between,
+};

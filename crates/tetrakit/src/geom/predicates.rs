@@ -1,0 +1,331 @@
+//! Exact orientation predicates (Shewchuk's adaptive arithmetic via the `robust` crate).
+//!
+//! Every geometric decision in tetrakit goes through this module. Inputs are `f64`
+//! coordinates taken as the exact dyadic rationals they are; the answers are exact
+//! provided every coordinate passes [`coordinate_in_range`].
+//!
+//! Sign conventions (DESIGN.md): [`orient3d`] is positive when `det[b−a, c−a, d−a] > 0`
+//! (TetGen/VTK's positive tetrahedron), which is the *opposite* sign of
+//! `robust::orient3d`. [`orient2d`] is positive when `a, b, c` turn counter-clockwise.
+
+use robust::{Coord, Coord3D};
+
+/// A point in 3D.
+pub type Point3 = [f64; 3];
+/// A point in 2D.
+pub type Point2 = [f64; 2];
+
+/// Smallest positive magnitude for which the predicates stay exact (about 2^-142).
+pub const MIN_MAGNITUDE: f64 = 1.793662034335766e-43; // 2^-142
+/// Largest magnitude for which the predicates stay exact (about 2^201).
+pub const MAX_MAGNITUDE: f64 = 3.2138760885179806e60; // 2^201
+
+/// True when `x` is finite and either zero or of magnitude in
+/// [[`MIN_MAGNITUDE`], [`MAX_MAGNITUDE`]], the range where Shewchuk's predicates are exact.
+///
+/// ```
+/// use tetrakit::geom::coordinate_in_range;
+/// assert!(coordinate_in_range(0.0) && coordinate_in_range(-1.5));
+/// assert!(!coordinate_in_range(f64::NAN) && !coordinate_in_range(1e300));
+/// ```
+pub fn coordinate_in_range(x: f64) -> bool {
+    x == 0.0 || (x.is_finite() && (MIN_MAGNITUDE..=MAX_MAGNITUDE).contains(&x.abs()))
+}
+
+#[inline]
+fn sign(x: f64) -> i8 {
+    if x > 0.0 {
+        1
+    } else if x < 0.0 {
+        -1
+    } else {
+        0
+    }
+}
+
+#[inline]
+fn c3(p: &Point3) -> Coord3D<f64> {
+    Coord3D { x: p[0], y: p[1], z: p[2] }
+}
+
+/// Sign of `det[b−a, c−a, d−a]`: +1 when `abcd` is a positively oriented tetrahedron.
+///
+/// ```
+/// use tetrakit::geom::orient3d;
+/// let o = [0.0, 0.0, 0.0];
+/// assert_eq!(orient3d(&o, &[1.0, 0.0, 0.0], &[0.0, 1.0, 0.0], &[0.0, 0.0, 1.0]), 1);
+/// assert_eq!(orient3d(&o, &[1.0, 0.0, 0.0], &[0.0, 1.0, 0.0], &[5.0, 7.0, 0.0]), 0);
+/// ```
+#[inline]
+pub fn orient3d(a: &Point3, b: &Point3, c: &Point3, d: &Point3) -> i8 {
+    -sign(robust::orient3d(c3(a), c3(b), c3(c), c3(d)))
+}
+
+/// Bound on the rounding error of the fast determinant in [`Frame`], relative to its
+/// permanent. Shewchuk's own bound for the same evaluation is (7 + 56u)u; we use 16u.
+const FRAME_ERR: f64 = 16.0 * f64::EPSILON / 2.0;
+
+/// Orientation tests that share one apex `v`, with a cached floating-point filter.
+///
+/// `sign(v, a, b, c)` equals [`orient3d`]`(v, a, b, c)` exactly: the float determinant is
+/// trusted only when it exceeds a proven error bound, otherwise the exact predicate decides.
+///
+/// ```
+/// use tetrakit::geom::{Frame, orient3d};
+/// let pts = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+/// let f = Frame::new(&pts[0]);
+/// let d: Vec<_> = pts.iter().map(|p| f.dir(p)).collect();
+/// assert_eq!(f.sign(&pts[1], &pts[2], &pts[3], &d[1], &d[2], &d[3]), 1);
+/// ```
+#[derive(Clone, Copy, Debug)]
+pub struct Frame {
+    v: Point3,
+}
+
+impl Frame {
+    /// A frame with apex `v`.
+    pub fn new(v: &Point3) -> Self {
+        Frame { v: *v }
+    }
+    /// The rounded direction `p − v` used by the filter.
+    #[inline]
+    pub fn dir(&self, p: &Point3) -> Point3 {
+        [p[0] - self.v[0], p[1] - self.v[1], p[2] - self.v[2]]
+    }
+    /// Exact sign of `orient3d(v, a, b, c)`, given the rounded directions of `a, b, c`.
+    #[inline]
+    pub fn sign(
+        &self,
+        a: &Point3,
+        b: &Point3,
+        c: &Point3,
+        da: &Point3,
+        db: &Point3,
+        dc: &Point3,
+    ) -> i8 {
+        filtered_det(da, db, dc).unwrap_or_else(|| orient3d(&self.v, a, b, c))
+    }
+}
+
+/// Sign of `det[da, db, dc]` for rounded differences, or `None` when the rounding error
+/// bound does not certify it.
+#[inline]
+fn filtered_det(da: &Point3, db: &Point3, dc: &Point3) -> Option<i8> {
+    let m0 = db[1] * dc[2];
+    let m1 = db[2] * dc[1];
+    let m2 = db[2] * dc[0];
+    let m3 = db[0] * dc[2];
+    let m4 = db[0] * dc[1];
+    let m5 = db[1] * dc[0];
+    let det = da[0] * (m0 - m1) + da[1] * (m2 - m3) + da[2] * (m4 - m5);
+    let perm = da[0].abs() * (m0.abs() + m1.abs())
+        + da[1].abs() * (m2.abs() + m3.abs())
+        + da[2].abs() * (m4.abs() + m5.abs());
+    let bound = FRAME_ERR * perm;
+    if det > bound {
+        Some(1)
+    } else if det < -bound {
+        Some(-1)
+    } else {
+        None
+    }
+}
+
+/// The oriented plane through `a, b, c`, for many exact side tests against one plane.
+///
+/// `side(x)` equals [`orient3d`]`(a, b, c, x)`.
+///
+/// ```
+/// use tetrakit::geom::Plane;
+/// let p = Plane::new(&[0.0, 0.0, 0.0], &[1.0, 0.0, 0.0], &[0.0, 1.0, 0.0]);
+/// assert_eq!(p.side(&[3.0, 3.0, 1.0]), 1);
+/// assert_eq!(p.side(&[3.0, 3.0, 0.0]), 0);
+/// ```
+#[derive(Clone, Copy, Debug)]
+pub struct Plane {
+    a: Point3,
+    b: Point3,
+    c: Point3,
+    db: Point3,
+    dc: Point3,
+}
+
+impl Plane {
+    /// The plane through `a, b, c`.
+    pub fn new(a: &Point3, b: &Point3, c: &Point3) -> Self {
+        let f = Frame::new(a);
+        Plane { a: *a, b: *b, c: *c, db: f.dir(b), dc: f.dir(c) }
+    }
+    /// Exact sign of `orient3d(a, b, c, x)`.
+    #[inline]
+    pub fn side(&self, x: &Point3) -> i8 {
+        let dx = [x[0] - self.a[0], x[1] - self.a[1], x[2] - self.a[2]];
+        filtered_det(&dx, &self.db, &self.dc)
+            .unwrap_or_else(|| orient3d(&self.a, &self.b, &self.c, x))
+    }
+    /// A rounded estimate of the signed distance scale of `x` (for heuristics only).
+    pub fn estimate(&self, x: &Point3) -> f64 {
+        let dx = [x[0] - self.a[0], x[1] - self.a[1], x[2] - self.a[2]];
+        let n = [
+            self.db[1] * self.dc[2] - self.db[2] * self.dc[1],
+            self.db[2] * self.dc[0] - self.db[0] * self.dc[2],
+            self.db[0] * self.dc[1] - self.db[1] * self.dc[0],
+        ];
+        dx[0] * n[0] + dx[1] * n[1] + dx[2] * n[2]
+    }
+}
+
+/// Sign of the counter-clockwise orientation of `a, b, c` in the plane.
+///
+/// ```
+/// use tetrakit::geom::orient2d;
+/// assert_eq!(orient2d(&[0.0, 0.0], &[1.0, 0.0], &[0.0, 1.0]), 1);
+/// assert_eq!(orient2d(&[0.0, 0.0], &[1.0, 1.0], &[3.0, 3.0]), 0);
+/// ```
+#[inline]
+pub fn orient2d(a: &Point2, b: &Point2, c: &Point2) -> i8 {
+    let f = |p: &Point2| Coord { x: p[0], y: p[1] };
+    sign(robust::orient2d(f(a), f(b), f(c)))
+}
+
+/// [`orient2d`] of the projections of three 3D points that drop coordinate `axis`
+/// (the remaining two coordinates keep their order). Dropping a coordinate is exact.
+#[inline]
+pub fn orient2d_drop(a: &Point3, b: &Point3, c: &Point3, axis: usize) -> i8 {
+    orient2d(&drop_axis(a, axis), &drop_axis(b, axis), &drop_axis(c, axis))
+}
+
+/// The 2D point left when coordinate `axis` of `p` is dropped.
+#[inline]
+pub fn drop_axis(p: &Point3, axis: usize) -> Point2 {
+    match axis {
+        0 => [p[1], p[2]],
+        1 => [p[0], p[2]],
+        _ => [p[0], p[1]],
+    }
+}
+
+/// True when three points lie on one line (exact).
+pub fn collinear3(a: &Point3, b: &Point3, c: &Point3) -> bool {
+    (0..3).all(|ax| orient2d_drop(a, b, c, ax) == 0)
+}
+
+/// An axis whose dropping keeps the triangle `abc` non-degenerate, if `abc` is not
+/// collinear. Every point of the plane of `abc` then projects injectively.
+pub fn projection_axis(a: &Point3, b: &Point3, c: &Point3) -> Option<usize> {
+    (0..3).rev().find(|&ax| orient2d_drop(a, b, c, ax) != 0)
+}
+
+/// Sign of the in-sphere test: +1 when `e` is inside the sphere through the positively
+/// oriented tetrahedron `abcd`.
+pub fn insphere(a: &Point3, b: &Point3, c: &Point3, d: &Point3, e: &Point3) -> i8 {
+    // robust::insphere is positive for e inside when robust::orient3d(a,b,c,d) > 0,
+    // which is our negative orientation; swapping a and b converts conventions.
+    sign(robust::insphere(c3(b), c3(a), c3(c), c3(d), c3(e)))
+}
+
+/// Sign of the in-circle test: +1 when `d` is inside the circle through the
+/// counter-clockwise triangle `abc`.
+pub fn incircle(a: &Point2, b: &Point2, c: &Point2, d: &Point2) -> i8 {
+    let f = |p: &Point2| Coord { x: p[0], y: p[1] };
+    sign(robust::incircle(f(a), f(b), f(c), f(d)))
+}
+
+/// Lexicographic comparison of points (exact).
+pub fn lex_cmp(a: &Point3, b: &Point3) -> std::cmp::Ordering {
+    a[0].total_cmp(&b[0])
+        .then(a[1].total_cmp(&b[1]))
+        .then(a[2].total_cmp(&b[2]))
+}
+
+/// For three collinear points, true when `p` lies strictly between `a` and `b`.
+pub fn strictly_between(a: &Point3, p: &Point3, b: &Point3) -> bool {
+    (0..3).any(|k| (a[k] < p[k] && p[k] < b[k]) || (b[k] < p[k] && p[k] < a[k]))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn orient3d_convention_matches_tetgen() {
+        let a = [0.0, 0.0, 0.0];
+        let b = [1.0, 0.0, 0.0];
+        let c = [0.0, 1.0, 0.0];
+        let d = [0.0, 0.0, 1.0];
+        assert_eq!(orient3d(&a, &b, &c, &d), 1);
+        assert_eq!(orient3d(&b, &a, &c, &d), -1);
+        assert_eq!(orient3d(&a, &b, &c, &[3.0, -2.0, 0.0]), 0);
+    }
+
+    #[test]
+    fn orient3d_exact_on_nearly_coplanar_points() {
+        // The plane x + y + z = 1; offsets of one ulp decide the sign.
+        let a = [1.0, 0.0, 0.0];
+        let b = [0.0, 1.0, 0.0];
+        let c = [0.0, 0.0, 1.0];
+        let up = 0.5 + f64::EPSILON / 2.0;
+        let down = 0.5 - f64::EPSILON / 4.0;
+        assert_eq!(orient3d(&a, &b, &c, &[0.25, 0.25, 0.5]), 0);
+        assert_eq!(orient3d(&a, &b, &c, &[0.25, 0.25, up]), 1);
+        assert_eq!(orient3d(&a, &b, &c, &[0.25, 0.25, down]), -1);
+        let f = Frame::new(&a);
+        for (z, s) in [(0.5, 0), (up, 1), (down, -1)] {
+            let d = [0.25, 0.25, z];
+            assert_eq!(f.sign(&b, &c, &d, &f.dir(&b), &f.dir(&c), &f.dir(&d)), s);
+            assert_eq!(Plane::new(&a, &b, &c).side(&d), s);
+        }
+    }
+
+    #[test]
+    fn frame_filter_agrees_with_exact_predicate_on_degenerate_grid() {
+        // All points of a small grid: most quadruples are coplanar.
+        let mut pts = Vec::new();
+        for i in 0..3 {
+            for j in 0..3 {
+                for k in 0..3 {
+                    pts.push([i as f64 * 0.1, j as f64 * 0.3, k as f64 * 0.7]);
+                }
+            }
+        }
+        for v in &pts[..5] {
+            let f = Frame::new(v);
+            for a in &pts {
+                for b in pts.iter().step_by(3) {
+                    for c in pts.iter().step_by(2) {
+                        let s = f.sign(a, b, c, &f.dir(a), &f.dir(b), &f.dir(c));
+                        assert_eq!(s, orient3d(v, a, b, c));
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn orient2d_and_collinearity() {
+        assert_eq!(orient2d(&[0.0, 0.0], &[1.0, 0.0], &[2.0, 0.0]), 0);
+        assert!(collinear3(&[0.0, 0.0, 0.0], &[1.0, 2.0, 3.0], &[2.0, 4.0, 6.0]));
+        assert!(!collinear3(&[0.0, 0.0, 0.0], &[1.0, 2.0, 3.0], &[2.0, 4.0, 6.5]));
+        assert_eq!(projection_axis(&[0.0, 0.0, 0.0], &[1.0, 0.0, 0.0], &[0.0, 0.0, 1.0]), Some(1));
+    }
+
+    #[test]
+    fn insphere_and_incircle_conventions() {
+        let a = [0.0, 0.0, 0.0];
+        let b = [1.0, 0.0, 0.0];
+        let c = [0.0, 1.0, 0.0];
+        let d = [0.0, 0.0, 1.0];
+        assert_eq!(insphere(&a, &b, &c, &d, &[0.2, 0.2, 0.2]), 1);
+        assert_eq!(insphere(&a, &b, &c, &d, &[5.0, 5.0, 5.0]), -1);
+        assert_eq!(insphere(&a, &b, &c, &d, &[1.0, 1.0, 0.0]), 0); // cospherical
+        assert_eq!(incircle(&[0.0, 0.0], &[1.0, 0.0], &[0.0, 1.0], &[0.5, 0.5]), 1);
+        assert_eq!(incircle(&[0.0, 0.0], &[1.0, 0.0], &[0.0, 1.0], &[1.0, 1.0]), 0);
+    }
+
+    #[test]
+    fn coordinate_range() {
+        assert!(coordinate_in_range(MAX_MAGNITUDE) && coordinate_in_range(-MIN_MAGNITUDE));
+        assert!(!coordinate_in_range(MIN_MAGNITUDE / 2.0));
+        assert!(!coordinate_in_range(f64::INFINITY));
+    }
+}

@@ -1,0 +1,69 @@
+//! Tetrahedral meshes and their independent certificate check.
+//!
+//! [`verify`] is the check that every tetrahedralization tetrakit prints must pass
+//! (DESIGN.md, non-negotiable 3). It shares no code with the algorithms that produce
+//! tetrahedra, only the exact predicates of [`crate::geom`].
+
+mod verify;
+
+pub use verify::{Problem, ProblemKind, Report, verify};
+
+use crate::geom::{Point3, orient3d};
+
+/// A set of points and tetrahedra over them (indices into `points`).
+///
+/// ```
+/// use tetrakit::mesh::Tetrahedralization;
+/// let t = Tetrahedralization {
+///     points: vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+///     tets: vec![[0, 1, 2, 3]],
+/// };
+/// assert_eq!(t.edges().len(), 6);
+/// assert!(t.verify_convex().is_valid());
+/// ```
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Tetrahedralization {
+    /// The vertices.
+    pub points: Vec<Point3>,
+    /// The tetrahedra, each positively oriented in a valid tetrahedralization.
+    pub tets: Vec<[u32; 4]>,
+}
+
+impl Tetrahedralization {
+    /// The sorted, deduplicated edge set `(i, j)` with `i < j`.
+    pub fn edges(&self) -> Vec<(u32, u32)> {
+        edges_of(&self.tets)
+    }
+
+    /// Checks that the tetrahedra form a tetrahedralization of the convex hull of all the
+    /// points (every point a vertex).
+    pub fn verify_convex(&self) -> Report {
+        let hull = crate::geom::Hull3::new(&self.points);
+        verify(&self.points, &self.tets, Some(&hull))
+    }
+
+    /// Reorders the vertices of every tetrahedron so that it is positively oriented
+    /// (degenerate tetrahedra are left as they are).
+    pub fn orient_positively(&mut self) {
+        for t in &mut self.tets {
+            let p = |i: u32| &self.points[i as usize];
+            if orient3d(p(t[0]), p(t[1]), p(t[2]), p(t[3])) < 0 {
+                t.swap(2, 3);
+            }
+        }
+    }
+}
+
+/// The sorted, deduplicated edge set of a list of tetrahedra.
+pub fn edges_of(tets: &[[u32; 4]]) -> Vec<(u32, u32)> {
+    let mut e: Vec<(u32, u32)> = tets
+        .iter()
+        .flat_map(|t| {
+            [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)]
+                .map(|(i, j)| (t[i].min(t[j]), t[i].max(t[j])))
+        })
+        .collect();
+    e.sort_unstable();
+    e.dedup();
+    e
+}

@@ -1,0 +1,459 @@
+//! The certificate check of a tetrahedralization.
+//!
+//! Conditions checked (all exact):
+//! 1. every tetrahedron has four distinct, in-range vertices and is positively oriented;
+//! 2. every triangle is a face of at most two tetrahedra, and of two only when they lie on
+//!    opposite sides of it (oriented-face pairing);
+//! 3. the unpaired (boundary) faces form a closed surface;
+//! 4. with a convex domain: every boundary face lies on a facet of the convex hull of the
+//!    points, the boundary faces on one facet do not overlap, and every point is a vertex.
+//!
+//! Why 1–4 certify a tetrahedralization of the hull: for a generic point x inside the hull,
+//! the number N(x) of tetrahedra containing x does not change when x crosses a paired face
+//! (it leaves one tetrahedron and enters the other) and x cannot cross a boundary face
+//! without leaving the hull, so N is a constant d on the hull's interior. Just inside a
+//! hull facet, N counts the boundary faces over that spot, so d = 1 exactly when boundary
+//! faces on a facet do not overlap. With d = 1 the tetrahedra have disjoint interiors and
+//! cover the hull, and pairing excludes hanging vertices.
+
+use crate::geom::{Hull3, Point3, coplanar_triangles_overlap, orient3d};
+use rayon::prelude::*;
+use serde::Serialize;
+use std::fmt;
+
+/// What is wrong with a mesh.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ProblemKind {
+    /// A vertex index is out of range.
+    BadIndex,
+    /// A tetrahedron repeats a vertex.
+    RepeatedVertex,
+    /// A tetrahedron has zero volume.
+    Degenerate,
+    /// A tetrahedron is negatively oriented.
+    Inverted,
+    /// A triangle is a face of three or more tetrahedra.
+    FaceSharedByMore,
+    /// Two tetrahedra sharing a face lie on the same side of it (they overlap).
+    SameSide,
+    /// The boundary faces do not form a closed surface.
+    OpenBoundary,
+    /// A boundary face does not lie on the convex hull.
+    BoundaryNotOnHull,
+    /// Tetrahedra overlap (the mesh covers part of the hull more than once).
+    Overlap,
+    /// A point is not a vertex of any tetrahedron.
+    UnusedVertex,
+}
+
+impl fmt::Display for ProblemKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let s = serde_json::to_value(self).ok();
+        write!(f, "{}", s.as_ref().and_then(|v| v.as_str()).unwrap_or("problem"))
+    }
+}
+
+/// One problem, naming the tetrahedra (indices into the tet list) and vertices involved.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct Problem {
+    /// What is wrong.
+    pub kind: ProblemKind,
+    /// Offending tetrahedra.
+    pub tets: Vec<u32>,
+    /// Vertices involved (e.g. the shared face).
+    pub vertices: Vec<u32>,
+    /// A sentence for a person.
+    pub detail: String,
+}
+
+/// The result of [`verify`].
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Report {
+    /// Problems found (at most [`Report::LIMIT`] are kept).
+    pub problems: Vec<Problem>,
+    /// Total number of problems found, kept or not.
+    pub problem_count: usize,
+    /// Number of boundary (unpaired) faces.
+    pub boundary_faces: usize,
+}
+
+impl Report {
+    /// How many problems are kept in detail.
+    pub const LIMIT: usize = 1000;
+
+    /// True when no problem was found: the mesh is certified.
+    pub fn is_valid(&self) -> bool {
+        self.problem_count == 0
+    }
+
+    fn push(&mut self, p: Problem) {
+        self.problem_count += 1;
+        if self.problems.len() < Self::LIMIT {
+            self.problems.push(p);
+        }
+    }
+}
+
+/// Verifies `tets` over `points`. With `hull` given, also certifies that the tetrahedra
+/// tetrahedralize the convex hull of *all* points (see the module docs for why the
+/// conditions suffice).
+///
+/// ```
+/// use tetrakit::{geom::Hull3, mesh::verify};
+/// let pts = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+/// let hull = Hull3::new(&pts);
+/// assert!(verify(&pts, &[[0, 1, 2, 3]], Some(&hull)).is_valid());
+/// assert!(!verify(&pts, &[[0, 2, 1, 3]], Some(&hull)).is_valid()); // inverted
+/// ```
+pub fn verify(points: &[Point3], tets: &[[u32; 4]], hull: Option<&Hull3>) -> Report {
+    let mut report = Report::default();
+    for p in check_tets(points, tets) {
+        report.push(p);
+    }
+    if report.problems.iter().any(|p| p.kind == ProblemKind::BadIndex) {
+        return report;
+    }
+    let (boundary, pairing) = pair_faces(points, tets);
+    for p in pairing {
+        report.push(p);
+    }
+    report.boundary_faces = boundary.len();
+    for p in check_closed(&boundary) {
+        report.push(p);
+    }
+    if let Some(h) = hull {
+        for p in check_hull(points, tets, &boundary, h) {
+            report.push(p);
+        }
+    }
+    report
+}
+
+fn problem(kind: ProblemKind, tets: Vec<u32>, vertices: Vec<u32>, detail: String) -> Problem {
+    Problem { kind, tets, vertices, detail }
+}
+
+fn check_tets(points: &[Point3], tets: &[[u32; 4]]) -> Vec<Problem> {
+    let n = points.len() as u32;
+    tets.par_iter()
+        .enumerate()
+        .filter_map(|(i, t)| {
+            let i = i as u32;
+            if let Some(&v) = t.iter().find(|&&v| v >= n) {
+                let d = format!("tetrahedron {i} names vertex {v}, but there are {n} points");
+                return Some(problem(ProblemKind::BadIndex, vec![i], vec![v], d));
+            }
+            if (0..4).any(|a| (a + 1..4).any(|b| t[a] == t[b])) {
+                let d = format!("tetrahedron {i} repeats a vertex: {t:?}");
+                return Some(problem(ProblemKind::RepeatedVertex, vec![i], t.to_vec(), d));
+            }
+            let p = |k: usize| &points[t[k] as usize];
+            match orient3d(p(0), p(1), p(2), p(3)) {
+                1 => None,
+                0 => Some(problem(
+                    ProblemKind::Degenerate,
+                    vec![i],
+                    t.to_vec(),
+                    format!("tetrahedron {i} {t:?} has its four vertices in one plane"),
+                )),
+                _ => Some(problem(
+                    ProblemKind::Inverted,
+                    vec![i],
+                    t.to_vec(),
+                    format!("tetrahedron {i} {t:?} is negatively oriented"),
+                )),
+            }
+        })
+        .collect()
+}
+
+/// A boundary face, oriented outward, with its tetrahedron.
+#[derive(Clone, Copy, Debug)]
+struct BoundaryFace {
+    v: [u32; 3],
+    tet: u32,
+}
+
+/// Sorts a triangle's vertices, returning them and whether the sort was an odd permutation.
+fn sort3(mut f: [u32; 3]) -> ([u32; 3], bool) {
+    let mut odd = false;
+    for (i, j) in [(0, 1), (1, 2), (0, 1)] {
+        if f[i] > f[j] {
+            f.swap(i, j);
+            odd = !odd;
+        }
+    }
+    (f, odd)
+}
+
+/// The outward faces of a tetrahedron taken as positively oriented.
+fn outward_faces(t: [u32; 4]) -> [[u32; 3]; 4] {
+    let [a, b, c, d] = t;
+    [[b, c, d], [a, d, c], [a, b, d], [a, c, b]]
+}
+
+fn pair_faces(points: &[Point3], tets: &[[u32; 4]]) -> (Vec<BoundaryFace>, Vec<Problem>) {
+    // Bucket every oriented face by its smallest vertex.
+    let n = points.len();
+    let mut start = vec![0usize; n + 1];
+    let oriented: Vec<Option<[u32; 4]>> = tets
+        .par_iter()
+        .map(|t| {
+            let p = |k: usize| &points[t[k] as usize];
+            match orient3d(p(0), p(1), p(2), p(3)) {
+                1 => Some(*t),
+                -1 => Some([t[0], t[1], t[3], t[2]]),
+                _ => None,
+            }
+        })
+        .collect();
+    for t in oriented.iter().flatten() {
+        for f in outward_faces(*t) {
+            start[*f.iter().min().unwrap() as usize + 1] += 1;
+        }
+    }
+    for i in 0..n {
+        start[i + 1] += start[i];
+    }
+    let mut fill = start.clone();
+    let mut recs = vec![(0u64, 0u32); start[n]];
+    for (ti, t) in oriented.iter().enumerate() {
+        let Some(t) = t else { continue };
+        for f in outward_faces(*t) {
+            let (s, odd) = sort3(f);
+            let slot = &mut fill[s[0] as usize];
+            recs[*slot] = (((s[1] as u64) << 32) | s[2] as u64, ((ti as u32) << 1) | odd as u32);
+            *slot += 1;
+        }
+    }
+    let mut chunks = Vec::with_capacity(n);
+    let mut rest = recs.as_mut_slice();
+    for i in 0..n {
+        let (head, tail) = rest.split_at_mut(start[i + 1] - start[i]);
+        chunks.push((i as u32, head));
+        rest = tail;
+    }
+    let results: Vec<(Vec<BoundaryFace>, Vec<Problem>)> =
+        chunks.into_par_iter().map(|(a, c)| pair_bucket(a, c)).collect();
+    let mut boundary = Vec::new();
+    let mut problems = Vec::new();
+    for (b, p) in results {
+        boundary.extend(b);
+        problems.extend(p);
+    }
+    (boundary, problems)
+}
+
+fn pair_bucket(a: u32, recs: &mut [(u64, u32)]) -> (Vec<BoundaryFace>, Vec<Problem>) {
+    recs.sort_unstable();
+    let mut boundary = Vec::new();
+    let mut problems = Vec::new();
+    let mut i = 0;
+    while i < recs.len() {
+        let key = recs[i].0;
+        let j = i + recs[i..].iter().take_while(|r| r.0 == key).count();
+        let face = [a, (key >> 32) as u32, key as u32];
+        let group = &recs[i..j];
+        let tets: Vec<u32> = group.iter().map(|r| r.1 >> 1).collect();
+        match group.len() {
+            1 => {
+                let odd = group[0].1 & 1 == 1;
+                let v = if odd { [face[0], face[2], face[1]] } else { face };
+                boundary.push(BoundaryFace { v, tet: tets[0] });
+            }
+            2 if (group[0].1 ^ group[1].1) & 1 == 1 => {}
+            2 => problems.push(problem(
+                ProblemKind::SameSide,
+                tets.clone(),
+                face.to_vec(),
+                format!("tetrahedra {} and {} lie on the same side of their common face {face:?}", tets[0], tets[1]),
+            )),
+            k => problems.push(problem(
+                ProblemKind::FaceSharedByMore,
+                tets.clone(),
+                face.to_vec(),
+                format!("triangle {face:?} is a face of {k} tetrahedra {tets:?}"),
+            )),
+        }
+        i = j;
+    }
+    (boundary, problems)
+}
+
+fn check_closed(boundary: &[BoundaryFace]) -> Vec<Problem> {
+    let mut directed: Vec<(u32, u32, u32)> = boundary
+        .iter()
+        .flat_map(|f| (0..3).map(move |i| (f.v[i], f.v[(i + 1) % 3], f.tet)))
+        .collect();
+    directed.sort_unstable();
+    let count = |a: u32, b: u32| {
+        let lo = directed.partition_point(|e| (e.0, e.1) < (a, b));
+        let hi = directed.partition_point(|e| (e.0, e.1) <= (a, b));
+        hi - lo
+    };
+    let mut problems = Vec::new();
+    for (k, &(a, b, t)) in directed.iter().enumerate() {
+        if k > 0 && (directed[k - 1].0, directed[k - 1].1) == (a, b) {
+            continue;
+        }
+        let (fw, bw) = (count(a, b), count(b, a));
+        if fw != 1 || bw != 1 {
+            problems.push(problem(
+                ProblemKind::OpenBoundary,
+                vec![t],
+                vec![a, b],
+                format!("boundary edge ({a}, {b}) is used {fw} times in one direction and {bw} in the other; the boundary is not a closed surface"),
+            ));
+        }
+    }
+    problems
+}
+
+fn check_hull(
+    points: &[Point3],
+    tets: &[[u32; 4]],
+    boundary: &[BoundaryFace],
+    hull: &Hull3,
+) -> Vec<Problem> {
+    let mut problems = Vec::new();
+    let mut used = vec![false; points.len()];
+    for t in tets {
+        for &v in t {
+            used[v as usize] = true;
+        }
+    }
+    for (v, _) in used.iter().enumerate().filter(|(_, u)| !**u) {
+        let v = v as u32;
+        problems.push(problem(
+            ProblemKind::UnusedVertex,
+            vec![],
+            vec![v],
+            format!("point {v} is not a vertex of any tetrahedron"),
+        ));
+    }
+    let facets: Vec<Option<u32>> = boundary
+        .iter()
+        .map(|f| hull.common_facet(f.v[0] as usize, f.v[1] as usize, f.v[2] as usize))
+        .collect();
+    for (f, facet) in boundary.iter().zip(&facets) {
+        if facet.is_none() {
+            problems.push(problem(
+                ProblemKind::BoundaryNotOnHull,
+                vec![f.tet],
+                f.v.to_vec(),
+                format!("face {:?} of tetrahedron {} has no neighbour across it but is not on the convex hull", f.v, f.tet),
+            ));
+        }
+    }
+    if !problems.is_empty() || boundary.is_empty() {
+        return problems;
+    }
+    // Covering degree: boundary faces over one facet must not overlap the first one.
+    let f0 = &boundary[0];
+    let tri = |f: &BoundaryFace| f.v.map(|i| points[i as usize]);
+    for (g, facet) in boundary.iter().zip(&facets).skip(1) {
+        if *facet == facets[0] && coplanar_triangles_overlap(&tri(f0), &tri(g)) {
+            problems.push(problem(
+                ProblemKind::Overlap,
+                vec![f0.tet, g.tet],
+                f0.v.iter().chain(&g.v).copied().collect(),
+                format!(
+                    "boundary faces {:?} and {:?} overlap on the hull, so tetrahedra {} and {} overlap",
+                    f0.v, g.v, f0.tet, g.tet
+                ),
+            ));
+        }
+    }
+    problems
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn cube() -> (Vec<Point3>, Vec<[u32; 4]>) {
+        // Kuhn subdivision of the unit cube into 6 tetrahedra around the diagonal 0–7.
+        let pts: Vec<Point3> = (0..8)
+            .map(|i| [(i & 1) as f64, ((i >> 1) & 1) as f64, (i >> 2) as f64])
+            .collect();
+        let mut tets = vec![
+            [0, 1, 3, 7],
+            [0, 1, 5, 7],
+            [0, 2, 3, 7],
+            [0, 2, 6, 7],
+            [0, 4, 5, 7],
+            [0, 4, 6, 7],
+        ];
+        for t in &mut tets {
+            let p = |k: usize| &pts[t[k] as usize];
+            if orient3d(p(0), p(1), p(2), p(3)) < 0 {
+                t.swap(2, 3);
+            }
+        }
+        (pts, tets)
+    }
+
+    #[test]
+    fn kuhn_cube_is_valid() {
+        let (pts, tets) = cube();
+        let r = verify(&pts, &tets, Some(&Hull3::new(&pts)));
+        assert!(r.is_valid(), "{:?}", r.problems);
+        assert_eq!(r.boundary_faces, 12);
+    }
+
+    #[test]
+    fn missing_tet_is_caught() {
+        let (pts, mut tets) = cube();
+        tets.pop();
+        let r = verify(&pts, &tets, Some(&Hull3::new(&pts)));
+        assert!(r.problems.iter().any(|p| p.kind == ProblemKind::BoundaryNotOnHull));
+    }
+
+    #[test]
+    fn doubled_mesh_is_caught_by_degree() {
+        // The cube tetrahedralized twice in two different ways: every face pairs up
+        // locally, boundary lies on the hull, but the covering has degree 2.
+        let (pts, tets) = cube();
+        let mut both = tets.clone();
+        // The other Kuhn subdivision around the diagonal 1–6.
+        let mut other: Vec<[u32; 4]> = vec![
+            [1, 0, 2, 6],
+            [1, 0, 4, 6],
+            [1, 3, 2, 6],
+            [1, 3, 7, 6],
+            [1, 5, 4, 6],
+            [1, 5, 7, 6],
+        ];
+        for t in &mut other {
+            let p = |k: usize| &pts[t[k] as usize];
+            if orient3d(p(0), p(1), p(2), p(3)) < 0 {
+                t.swap(2, 3);
+            }
+        }
+        both.extend(other);
+        let r = verify(&pts, &both, Some(&Hull3::new(&pts)));
+        assert!(!r.is_valid());
+    }
+
+    #[test]
+    fn extra_overlapping_tet_is_caught() {
+        let (pts, mut tets) = cube();
+        tets.push([1, 2, 4, 7]);
+        let r = verify(&pts, &tets, Some(&Hull3::new(&pts)));
+        assert!(!r.is_valid());
+        let r = verify(&pts, &tets, None);
+        assert!(!r.is_valid(), "local checks alone catch a tet sharing faces");
+    }
+
+    #[test]
+    fn inverted_and_degenerate() {
+        let (pts, mut tets) = cube();
+        tets[0].swap(0, 1);
+        tets.push([0, 1, 2, 3]);
+        let r = verify(&pts, &tets, None);
+        let kinds: Vec<_> = r.problems.iter().map(|p| p.kind).collect();
+        assert!(kinds.contains(&ProblemKind::Inverted));
+        assert!(kinds.contains(&ProblemKind::Degenerate));
+    }
+}
