@@ -19,9 +19,9 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-// pub mod detect;
-// pub mod generate;
+pub mod detect;
+pub mod generate;
 pub mod geom;
-// pub mod io;
+pub mod io;
 pub mod mesh;
 pub mod rng;

@@ -1,1 +1,248 @@
-//! placeholder
+//! Reading and writing meshes and segment sets: TetGen `.node/.edge/.ele/.face`, OBJ
+//! (`v`, `l`, `f`), the JSON of DESIGN.md, plain `.xyz` point lists, and a legacy VTK
+//! writer.
+//!
+//! Every reader validates as it goes and fails with an [`InputError`] naming the file, the
+//! line and the problem: coordinates must be finite and within the range where the exact
+//! predicates are exact, indices in range, no self-loop or repeated segment, no two points
+//! at the same place. Header counts are checked against what is read but are never used to
+//! size an allocation.
+
+mod json;
+mod obj;
+mod tetgen;
+mod write;
+
+pub use write::{write_edges, write_mesh, write_vtk};
+
+use crate::geom::{Point3, coordinate_in_range, lex_cmp};
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+/// A problem with an input file: exit code 2 in the CLI.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct InputError {
+    /// The file.
+    pub file: String,
+    /// 1-based line number, or 0 when the problem concerns the whole file.
+    pub line: usize,
+    /// What is wrong.
+    pub message: String,
+}
+
+impl InputError {
+    /// An error at `line` of `file`.
+    pub fn new(file: &Path, line: usize, message: impl Into<String>) -> Self {
+        InputError { file: file.display().to_string(), line, message: message.into() }
+    }
+}
+
+impl fmt::Display for InputError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.line > 0 {
+            write!(f, "{}:{}: {}", self.file, self.line, self.message)
+        } else {
+            write!(f, "{}: {}", self.file, self.message)
+        }
+    }
+}
+
+impl std::error::Error for InputError {}
+
+/// Everything read from an input: points and whichever of segments, faces and tetrahedra
+/// the format carried. Indices are 0-based internally.
+#[derive(Clone, Debug, Default)]
+pub struct Input {
+    /// The points (a 2D input has `z = 0`).
+    pub points: Vec<Point3>,
+    /// 2 for planar input files, 3 otherwise.
+    pub dim: usize,
+    /// Segments as pairs of point indices.
+    pub segments: Vec<[u32; 2]>,
+    /// Triangles.
+    pub faces: Vec<[u32; 3]>,
+    /// Tetrahedra.
+    pub tets: Vec<[u32; 4]>,
+    /// The numbering of the input file (0 or 1), used to report vertices as the user
+    /// numbered them.
+    pub index_base: u32,
+    /// The source line of each point, for messages.
+    pub point_lines: Vec<usize>,
+    /// The file the points came from.
+    pub point_file: PathBuf,
+}
+
+/// Reads `path`, choosing the format by extension: `.node` (with sibling `.edge`, `.ele`
+/// and `.face` when present), `.edge`/`.ele`/`.face` (with the sibling `.node`), `.obj`,
+/// `.json`, `.xyz`/`.txt`.
+pub fn read_input(path: &Path) -> Result<Input, InputError> {
+    let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase();
+    let input = match ext.as_str() {
+        "node" | "edge" | "ele" | "face" => tetgen::read(path, &ext)?,
+        "obj" => obj::read(path)?,
+        "json" => json::read(path)?,
+        "xyz" | "txt" => read_xyz(path)?,
+        _ => {
+            return Err(InputError::new(
+                path,
+                0,
+                format!("unknown input format '.{ext}' (expected .node, .edge, .ele, .face, .obj, .json, .xyz or .txt)"),
+            ));
+        }
+    };
+    check_distinct_points(&input)?;
+    Ok(input)
+}
+
+pub(crate) fn read_text(path: &Path) -> Result<String, InputError> {
+    std::fs::read_to_string(path).map_err(|e| InputError::new(path, 0, format!("cannot read: {e}")))
+}
+
+/// Parses a coordinate, rejecting NaN, infinities and magnitudes outside the exact range.
+pub(crate) fn parse_coord(tok: &str, path: &Path, line: usize) -> Result<f64, InputError> {
+    let x: f64 = tok
+        .parse()
+        .map_err(|_| InputError::new(path, line, format!("'{tok}' is not a number")))?;
+    if !coordinate_in_range(x) {
+        return Err(InputError::new(
+            path,
+            line,
+            format!("coordinate {tok} is not finite or outside the exactly supported magnitude range [2^-142, 2^201]"),
+        ));
+    }
+    Ok(x)
+}
+
+/// Parses an index token as an integer.
+pub(crate) fn parse_int(tok: &str, path: &Path, line: usize, what: &str) -> Result<i64, InputError> {
+    tok.parse()
+        .map_err(|_| InputError::new(path, line, format!("{what} '{tok}' is not an integer")))
+}
+
+/// Converts a file's vertex reference to a 0-based index, checking the range.
+pub(crate) fn vertex_ref(
+    raw: i64,
+    base: u32,
+    n: usize,
+    path: &Path,
+    line: usize,
+) -> Result<u32, InputError> {
+    let i = raw - base as i64;
+    if i < 0 || i as usize >= n {
+        let hi = n as i64 - 1 + base as i64;
+        return Err(InputError::new(
+            path,
+            line,
+            format!("vertex {raw} is out of range (points are numbered {base}..={hi})"),
+        ));
+    }
+    Ok(i as u32)
+}
+
+/// Rejects self-loops and repeated segments.
+/// `lines[k]` is the source line of segment `k`, or 0 for formats without lines (then
+/// segments are named by their position).
+pub(crate) fn check_segments(
+    segs: &[[u32; 2]],
+    lines: &[usize],
+    base: u32,
+    path: &Path,
+) -> Result<(), InputError> {
+    let at = |k: usize| -> (usize, String) {
+        if lines[k] > 0 { (lines[k], format!("line {}", lines[k])) } else { (0, format!("segments[{k}]")) }
+    };
+    let mut keyed: Vec<(u32, u32, usize)> = Vec::with_capacity(segs.len());
+    for (k, s) in segs.iter().enumerate() {
+        if s[0] == s[1] {
+            let (line, name) = at(k);
+            return Err(InputError::new(
+                path,
+                line,
+                format!("segment {name} joins vertex {} to itself", s[0] + base),
+            ));
+        }
+        keyed.push((s[0].min(s[1]), s[0].max(s[1]), k));
+    }
+    keyed.sort_unstable();
+    for w in keyed.windows(2) {
+        if (w[0].0, w[0].1) == (w[1].0, w[1].1) {
+            let (first, second) = (at(w[0].2.min(w[1].2)), at(w[0].2.max(w[1].2)));
+            return Err(InputError::new(
+                path,
+                second.0,
+                format!(
+                    "segment ({}, {}) is listed twice ({} and {})",
+                    w[0].0 + base,
+                    w[0].1 + base,
+                    first.1,
+                    second.1
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
+fn check_distinct_points(input: &Input) -> Result<(), InputError> {
+    let pts = &input.points;
+    let mut order: Vec<u32> = (0..pts.len() as u32).collect();
+    order.sort_unstable_by(|&a, &b| lex_cmp(&pts[a as usize], &pts[b as usize]));
+    for w in order.windows(2) {
+        let (a, b) = (w[0].min(w[1]) as usize, w[0].max(w[1]) as usize);
+        if pts[a] == pts[b] {
+            let line = |i: usize| input.point_lines.get(i).copied().unwrap_or(0);
+            return Err(InputError::new(
+                &input.point_file,
+                line(b),
+                format!(
+                    "points {} and {} coincide at {:?} (line {})",
+                    a as u32 + input.index_base,
+                    b as u32 + input.index_base,
+                    pts[a],
+                    line(a)
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Meaningful lines of a text file: (1-based line number, tokens), comments after `#`
+/// and blank lines skipped.
+pub(crate) fn token_lines(text: &str) -> impl Iterator<Item = (usize, Vec<&str>)> {
+    text.lines().enumerate().filter_map(|(i, l)| {
+        let l = l.split('#').next().unwrap_or("");
+        let toks: Vec<&str> = l.split_whitespace().collect();
+        (!toks.is_empty()).then_some((i + 1, toks))
+    })
+}
+
+fn read_xyz(path: &Path) -> Result<Input, InputError> {
+    let text = read_text(path)?;
+    let mut input = Input { dim: 3, point_file: path.to_path_buf(), ..Default::default() };
+    let mut dim = None;
+    for (line, toks) in token_lines(&text) {
+        let d = *dim.get_or_insert(toks.len());
+        if !(2..=3).contains(&toks.len()) || toks.len() != d {
+            return Err(InputError::new(
+                path,
+                line,
+                format!("expected {} coordinates, found {}", if (2..=3).contains(&d) { d } else { 3 }, toks.len()),
+            ));
+        }
+        let mut p = [0.0; 3];
+        for (k, t) in toks.iter().enumerate() {
+            p[k] = parse_coord(t, path, line)?;
+        }
+        input.points.push(p);
+        input.point_lines.push(line);
+    }
+    if input.points.is_empty() {
+        return Err(InputError::new(path, 0, "no points"));
+    }
+    input.dim = dim.unwrap_or(3);
+    Ok(input)
+}
+
+#[cfg(test)]
+mod tests;

@@ -5,8 +5,10 @@
 //! tetrahedra, only the exact predicates of [`crate::geom`].
 
 mod verify;
+mod verify2;
 
 pub use verify::{Problem, ProblemKind, Report, verify};
+pub use verify2::verify_triangulation;
 
 use crate::geom::{Point3, orient3d};
 

@@ -87,7 +87,7 @@ impl Report {
         self.problem_count == 0
     }
 
-    fn push(&mut self, p: Problem) {
+    pub(crate) fn push(&mut self, p: Problem) {
         self.problem_count += 1;
         if self.problems.len() < Self::LIMIT {
             self.problems.push(p);

@@ -1,0 +1,99 @@
+//! The segment graph in compressed adjacency form, validated.
+
+/// An undirected simple graph on `n` vertices with sorted adjacency lists.
+#[derive(Clone, Debug)]
+pub struct Graph {
+    start: Vec<usize>,
+    nbrs: Vec<u32>,
+}
+
+impl Graph {
+    /// Builds the graph of `segments` on `n` vertices; rejects out-of-range indices,
+    /// self-loops and repeated segments with a sentence naming the segment.
+    pub fn new(n: usize, segments: &[[u32; 2]]) -> Result<Graph, String> {
+        let mut deg = vec![0usize; n + 1];
+        for (k, s) in segments.iter().enumerate() {
+            if s[0] as usize >= n || s[1] as usize >= n {
+                return Err(format!("segment {k} ({}, {}) names a vertex beyond the {n} points", s[0], s[1]));
+            }
+            if s[0] == s[1] {
+                return Err(format!("segment {k} joins vertex {} to itself", s[0]));
+            }
+            deg[s[0] as usize + 1] += 1;
+            deg[s[1] as usize + 1] += 1;
+        }
+        for i in 0..n {
+            deg[i + 1] += deg[i];
+        }
+        let mut fill = deg.clone();
+        let mut nbrs = vec![0u32; deg[n]];
+        for s in segments {
+            for (a, b) in [(s[0], s[1]), (s[1], s[0])] {
+                nbrs[fill[a as usize]] = b;
+                fill[a as usize] += 1;
+            }
+        }
+        let g = Graph { start: deg, nbrs };
+        let mut g = g;
+        for v in 0..n {
+            let (lo, hi) = (g.start[v], g.start[v + 1]);
+            g.nbrs[lo..hi].sort_unstable();
+            if let Some(w) = g.nbrs[lo..hi].windows(2).find(|w| w[0] == w[1]) {
+                return Err(format!("segment ({v}, {}) is listed twice", w[0]));
+            }
+        }
+        Ok(g)
+    }
+
+    /// Number of vertices.
+    pub fn len(&self) -> usize {
+        self.start.len() - 1
+    }
+
+    /// True when the graph has no vertex.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Number of edges.
+    pub fn edge_count(&self) -> usize {
+        self.nbrs.len() / 2
+    }
+
+    /// Sorted neighbours of `v`.
+    #[inline]
+    pub fn nbrs(&self, v: u32) -> &[u32] {
+        &self.nbrs[self.start[v as usize]..self.start[v as usize + 1]]
+    }
+
+    /// True when `ab` is a segment.
+    #[inline]
+    pub fn has_edge(&self, a: u32, b: u32) -> bool {
+        self.nbrs(a).binary_search(&b).is_ok()
+    }
+
+    /// The connected component of each vertex (numbered from 0 in order of first vertex).
+    pub fn components(&self) -> Vec<u32> {
+        let n = self.len();
+        let mut comp = vec![u32::MAX; n];
+        let mut next = 0;
+        let mut stack = Vec::new();
+        for s in 0..n {
+            if comp[s] != u32::MAX {
+                continue;
+            }
+            comp[s] = next;
+            stack.push(s as u32);
+            while let Some(v) = stack.pop() {
+                for &w in self.nbrs(v) {
+                    if comp[w as usize] == u32::MAX {
+                        comp[w as usize] = next;
+                        stack.push(w);
+                    }
+                }
+            }
+            next += 1;
+        }
+        comp
+    }
+}

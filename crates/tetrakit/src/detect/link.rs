@@ -1,0 +1,419 @@
+//! The puncture-free link of one vertex (thesis §2.4, Steps 2–3, generalized to degenerate
+//! input).
+//!
+//! For a vertex `v` with neighbours `N(v)`, `L_v` is the set of segments between two
+//! neighbours. The thesis deletes a segment `ab` of `L_v` when another segment of `L_v`
+//! punctures the triangle `vab` (DELETE-SEGMENT), then checks that what is left is a
+//! (closed) triangulation seen from `v`. We delete `ab` when *any* segment of `L(v)` —
+//! `L_v` plus the segments `vc` — punctures `vab`; with no four points coplanar the two
+//! rules agree, and the extra case (a neighbour `c` coplanar with `v, a, b` and seen
+//! strictly inside the angle `avb`) is what grids and other coplanar inputs need.
+//!
+//! Why the deletion is complete (it leaves exactly the link when `L` is the edge set of a
+//! tetrahedralization `T`): a link edge `ab` spans a face `vab` of `T`, which no segment
+//! punctures, so it is never deleted. A non-link edge `ab` of `L_v`, seen from `v` on the
+//! link sphere, leaves the link vertex `a` either along the direction of a neighbour `c`
+//! inside the angle `avb` (then `vc` punctures `vab`), or into a link triangle `acd` which
+//! it must leave across the edge `cd`; at that crossing `cd` is nearer to `v` than `ab`
+//! (were `ab` nearer it would puncture the face `vcd`, were they at the same depth two
+//! edges of `T` would cross), so `cd` punctures `vab`. Every deletion is therefore safe and
+//! every non-link edge is deleted. Deletions are tested against the whole of `L(v)` at once,
+//! which makes the result independent of any order.
+//!
+//! The surviving edges are embedded on the sphere of directions around `v` by sorting each
+//! link vertex's edges exactly by angle (a rotation system); tracing its faces gives the
+//! link triangles, each of which must be a positively oriented triangle `(v, a, b, c)`, the
+//! complement (hull vertices only) one outer face on the hull, and the whole a connected
+//! sphere (Euler characteristic 2; Theorem 2.4's count then holds). These checks only need to
+//! be *complete*: soundness of a YES comes from the independent verifier afterwards.
+//!
+//! Crossing pairs are found by testing every pair of segments of `L_v` whose planes through
+//! `v` separate each other's endpoints: the separation signs are computed once per segment
+//! and neighbour (`|L_v|·|N(v)|` filtered orientation tests), the rest are table look-ups.
+
+use super::graph::Graph;
+use super::witness::{Witness, WitnessKind};
+use crate::geom::{Frame, Hull3, Point3, collinear3, orient2d_drop, orient3d, projection_axis};
+use std::cmp::Ordering;
+
+/// Per-thread scratch space, reused across vertices.
+pub(super) struct Scratch {
+    stamp: Vec<u32>,
+    local: Vec<u32>,
+    round: u32,
+}
+
+impl Scratch {
+    pub(super) fn new(n: usize) -> Self {
+        Scratch { stamp: vec![0; n], local: vec![0; n], round: 0 }
+    }
+}
+
+/// Shared read-only context.
+pub(super) struct Ctx<'a> {
+    pub pts: &'a [Point3],
+    pub g: &'a Graph,
+    pub hull: &'a Hull3,
+}
+
+/// The link triangles of `v` (each `(a, b, c)` with `(v, a, b, c)` positively oriented), or
+/// a witness that `L` is not the edge set of a tetrahedralization.
+pub(super) fn link(ctx: &Ctx, v: u32, s: &mut Scratch) -> Result<Vec<[u32; 3]>, Witness> {
+    let nb = ctx.g.nbrs(v);
+    let k = nb.len();
+    let pv = &ctx.pts[v as usize];
+    if k < 3 {
+        return Err(bad(v, format!("vertex {v} has {k} neighbour(s); every vertex of a tetrahedralization has at least 3")));
+    }
+    s.round += 1;
+    for (i, &a) in nb.iter().enumerate() {
+        s.stamp[a as usize] = s.round;
+        s.local[a as usize] = i as u32;
+    }
+    let frame = Frame::new(pv);
+    let p: Vec<&Point3> = nb.iter().map(|&a| &ctx.pts[a as usize]).collect();
+    let d: Vec<Point3> = p.iter().map(|x| frame.dir(x)).collect();
+    same_direction(v, nb, pv, &p, &d)?;
+    let edges = local_edges(ctx.g, nb, s);
+    let lv = LocalView { v, pv, nb, p: &p, d: &d, frame };
+    let keep = puncture_free(&lv, &edges)?;
+    let kept: Vec<(u32, u32)> = edges.iter().zip(&keep).filter(|(_, k)| **k).map(|(e, _)| *e).collect();
+    let rot = rotation_system(&lv, &kept)?;
+    faces(&lv, ctx.hull, &rot, kept.len())
+}
+
+fn bad(v: u32, detail: String) -> Witness {
+    Witness::new(WitnessKind::BadLink, vec![v], vec![], detail)
+}
+
+struct LocalView<'a> {
+    v: u32,
+    pv: &'a Point3,
+    nb: &'a [u32],
+    p: &'a [&'a Point3],
+    d: &'a [Point3],
+    frame: Frame,
+}
+
+impl LocalView<'_> {
+    /// Exact `orient3d(v, a, b, c)` for local indices.
+    #[inline]
+    fn orient(&self, a: usize, b: usize, c: usize) -> i8 {
+        self.frame.sign(self.p[a], self.p[b], self.p[c], &self.d[a], &self.d[b], &self.d[c])
+    }
+    fn g(&self, i: u32) -> u32 {
+        self.nb[i as usize]
+    }
+}
+
+/// Two neighbours on one ray from `v` make the segments `va` and `vb` overlap.
+fn same_direction(v: u32, nb: &[u32], pv: &Point3, p: &[&Point3], d: &[Point3]) -> Result<(), Witness> {
+    let unit: Vec<Point3> = d
+        .iter()
+        .map(|x| {
+            let l = (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]).sqrt();
+            [x[0] / l, x[1] / l, x[2] / l]
+        })
+        .collect();
+    let mut order: Vec<usize> = (0..nb.len()).collect();
+    order.sort_unstable_by(|&a, &b| unit[a][0].total_cmp(&unit[b][0]));
+    // Exactly equal directions differ by a few ulps after rounding: 1e-9 is a safe window.
+    const WINDOW: f64 = 1e-9;
+    for (x, &i) in order.iter().enumerate() {
+        for &j in &order[x + 1..] {
+            if unit[j][0] - unit[i][0] > WINDOW {
+                break;
+            }
+            let close = (1..3).all(|c| (unit[j][c] - unit[i][c]).abs() <= WINDOW);
+            if close && collinear3(pv, p[i], p[j]) && !crate::geom::strictly_between(p[i], pv, p[j]) {
+                let (a, b) = (nb[i], nb[j]);
+                return Err(Witness::new(
+                    WitnessKind::CrossingSegments,
+                    vec![v, a, b],
+                    vec![[v, a], [v, b]],
+                    format!("segments ({v}, {a}) and ({v}, {b}) overlap: {a} and {b} lie on one ray from {v}"),
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The segments among neighbours, as pairs of local indices.
+fn local_edges(g: &Graph, nb: &[u32], s: &Scratch) -> Vec<(u32, u32)> {
+    let mut edges = Vec::new();
+    for (i, &a) in nb.iter().enumerate() {
+        for &b in g.nbrs(a) {
+            if b > a && s.stamp[b as usize] == s.round {
+                edges.push((i as u32, s.local[b as usize]));
+            }
+        }
+    }
+    edges
+}
+
+/// Which segments of `L_v` survive the generalized puncture rule.
+fn puncture_free(lv: &LocalView, edges: &[(u32, u32)]) -> Result<Vec<bool>, Witness> {
+    let k = lv.nb.len();
+    let m = edges.len();
+    // side[e * k + c] = orient3d(v, a, b, c) for edge e = (a, b).
+    let mut side = vec![0i8; m * k];
+    let mut keep = vec![true; m];
+    for (e, &(a, b)) in edges.iter().enumerate() {
+        let (a, b) = (a as usize, b as usize);
+        let row = &mut side[e * k..(e + 1) * k];
+        let mut coplanar = Vec::new();
+        for c in 0..k {
+            if c != a && c != b {
+                row[c] = lv.orient(a, b, c);
+                if row[c] == 0 {
+                    coplanar.push(c);
+                }
+            }
+        }
+        if coplanar.len() + 2 == k && collinear3(lv.pv, lv.p[a], lv.p[b]) {
+            // Not on one ray (checked before), so v lies inside segment ab.
+            let (ga, gb) = (lv.g(a as u32), lv.g(b as u32));
+            return Err(Witness::new(
+                WitnessKind::VertexOnSegment,
+                vec![lv.v, ga, gb],
+                vec![[ga, gb]],
+                format!("vertex {} lies inside segment ({ga}, {gb})", lv.v),
+            ));
+        }
+        if !coplanar.is_empty() && blocked(lv, a, b, &coplanar) {
+            keep[e] = false;
+        }
+    }
+    for e in 0..m {
+        let (a, b) = edges[e];
+        for f in e + 1..m {
+            let (c, d) = edges[f];
+            if a == c || a == d || b == c || b == d {
+                continue;
+            }
+            let (sc, sd) = (side[e * k + c as usize], side[e * k + d as usize]);
+            if sc * sd < 0 && punctures(lv, (c, d), (a, b))? {
+                keep[e] = false;
+            }
+            let (sa, sb) = (side[f * k + a as usize], side[f * k + b as usize]);
+            if sa * sb < 0 && punctures(lv, (a, b), (c, d))? {
+                keep[f] = false;
+            }
+        }
+    }
+    Ok(keep)
+}
+
+/// Does a neighbour `c`, coplanar with `v, a, b`, lie strictly inside the angle `avb`?
+/// Then the segment `vc` punctures the triangle `vab`.
+fn blocked(lv: &LocalView, a: usize, b: usize, coplanar: &[usize]) -> bool {
+    let Some(axis) = projection_axis(lv.pv, lv.p[a], lv.p[b]) else {
+        return false;
+    };
+    let s = orient2d_drop(lv.pv, lv.p[a], lv.p[b], axis);
+    coplanar.iter().any(|&c| {
+        orient2d_drop(lv.pv, lv.p[a], lv.p[c], axis) == s && orient2d_drop(lv.pv, lv.p[c], lv.p[b], axis) == s
+    })
+}
+
+/// Given that `c` and `d` lie strictly on opposite sides of the plane `vab`: does `cd`
+/// puncture the triangle `vab`? Meeting the triangle's boundary instead is a witness.
+fn punctures(lv: &LocalView, (c, d): (u32, u32), (a, b): (u32, u32)) -> Result<bool, Witness> {
+    let q = |i: u32| lv.p[i as usize];
+    let t1 = orient3d(q(c), q(d), lv.pv, q(a));
+    let t2 = orient3d(q(c), q(d), q(a), q(b));
+    let t3 = orient3d(q(c), q(d), q(b), lv.pv);
+    if t1 != 0 && t1 == t2 && t2 == t3 {
+        return Ok(true);
+    }
+    let (v, ga, gb, gc, gd) = (lv.v, lv.g(a), lv.g(b), lv.g(c), lv.g(d));
+    let cross = |s: [u32; 2]| {
+        Err(Witness::new(
+            WitnessKind::CrossingSegments,
+            vec![s[0], s[1], gc, gd],
+            vec![s, [gc, gd]],
+            format!("segments ({}, {}) and ({gc}, {gd}) cross", s[0], s[1]),
+        ))
+    };
+    let through = |x: u32| {
+        Err(Witness::new(
+            WitnessKind::VertexOnSegment,
+            vec![x, gc, gd],
+            vec![[gc, gd]],
+            format!("vertex {x} lies inside segment ({gc}, {gd})"),
+        ))
+    };
+    match (t1, t2, t3) {
+        (0, x, y) if x != 0 && x == y => cross([v, ga]),
+        (x, 0, y) if x != 0 && x == y => cross([ga, gb]),
+        (x, y, 0) if x != 0 && x == y => cross([gb, v]),
+        (0, 0, y) if y != 0 => through(ga),
+        (x, 0, 0) if x != 0 => through(gb),
+        (0, y, 0) if y != 0 => through(v),
+        _ => Ok(false),
+    }
+}
+
+/// For each local vertex, its kept neighbours sorted counter-clockwise around the axis
+/// from `v` through it.
+fn rotation_system(lv: &LocalView, kept: &[(u32, u32)]) -> Result<Vec<Vec<u32>>, Witness> {
+    let k = lv.nb.len();
+    let mut adj: Vec<Vec<u32>> = vec![Vec::new(); k];
+    for &(a, b) in kept {
+        adj[a as usize].push(b);
+        adj[b as usize].push(a);
+    }
+    for (a, list) in adj.iter_mut().enumerate() {
+        if list.len() < 2 {
+            let u = lv.g(a as u32);
+            return Err(bad(
+                lv.v,
+                format!(
+                    "neighbour {u} of vertex {} keeps {} segment(s) to other neighbours once punctured segments are removed; a link vertex needs at least 2",
+                    lv.v,
+                    list.len()
+                ),
+            ));
+        }
+        sort_around(lv, a, list)?;
+    }
+    Ok(adj)
+}
+
+/// Sorts `list` by angle around the axis `v → a`, exactly.
+fn sort_around(lv: &LocalView, a: usize, list: &mut [u32]) -> Result<(), Witness> {
+    let b0 = list[0] as usize;
+    let axis = projection_axis(lv.pv, lv.p[a], lv.p[b0]).expect("checked non-collinear");
+    let s0 = orient2d_drop(lv.pv, lv.p[a], lv.p[b0], axis);
+    let half = |b: usize| -> u8 {
+        if b == b0 {
+            return 0;
+        }
+        match lv.orient(a, b0, b) {
+            1 => 1,
+            -1 => 3,
+            _ if orient2d_drop(lv.pv, lv.p[a], lv.p[b], axis) == s0 => 0,
+            _ => 2,
+        }
+    };
+    let mut keyed: Vec<(u8, u32)> = list.iter().map(|&b| (half(b as usize), b)).collect();
+    keyed.sort_by(|x, y| {
+        x.0.cmp(&y.0).then_with(|| {
+            if x.0 % 2 == 0 {
+                return Ordering::Equal;
+            }
+            match lv.orient(a, x.1 as usize, y.1 as usize) {
+                1 => Ordering::Less,
+                -1 => Ordering::Greater,
+                _ => Ordering::Equal,
+            }
+        })
+    });
+    for w in keyed.windows(2) {
+        let same = w[0].0 == w[1].0 && (w[0].0 % 2 == 0 || lv.orient(a, w[0].1 as usize, w[1].1 as usize) == 0);
+        if same {
+            let (u, x, y) = (lv.g(a as u32), lv.g(w[0].1), lv.g(w[1].1));
+            return Err(bad(
+                lv.v,
+                format!("seen from vertex {}, segments ({u}, {x}) and ({u}, {y}) leave {u} in the same direction", lv.v),
+            ));
+        }
+    }
+    for (slot, (_, b)) in list.iter_mut().zip(keyed) {
+        *slot = b;
+    }
+    Ok(())
+}
+
+/// Traces the faces of the rotation system and checks they form the link of `v`.
+fn faces(lv: &LocalView, hull: &Hull3, rot: &[Vec<u32>], edge_count: usize) -> Result<Vec<[u32; 3]>, Witness> {
+    let v = lv.v;
+    let k = rot.len();
+    let mut start = vec![0usize; k + 1];
+    for i in 0..k {
+        start[i + 1] = start[i] + rot[i].len();
+    }
+    let mut seen = vec![false; start[k]];
+    let mut inner = Vec::new();
+    let mut outer: Vec<Vec<u32>> = Vec::new();
+    let mut face_count = 0usize;
+    for a in 0..k {
+        for (pos, _) in rot[a].iter().enumerate() {
+            if seen[start[a] + pos] {
+                continue;
+            }
+            let mut cycle = Vec::new();
+            let (mut x, mut px) = (a, pos);
+            while !seen[start[x] + px] {
+                seen[start[x] + px] = true;
+                cycle.push(x as u32);
+                let y = rot[x][px] as usize;
+                let back = rot[y].iter().position(|&z| z as usize == x).expect("symmetric adjacency");
+                let py = (back + rot[y].len() - 1) % rot[y].len();
+                (x, px) = (y, py);
+            }
+            face_count += 1;
+            if cycle.len() == 3 && lv.orient(cycle[0] as usize, cycle[1] as usize, cycle[2] as usize) > 0 {
+                inner.push([lv.g(cycle[0]), lv.g(cycle[1]), lv.g(cycle[2])]);
+            } else {
+                outer.push(cycle);
+            }
+        }
+    }
+    let euler = k as i64 - edge_count as i64 + face_count as i64;
+    if euler != 2 || !connected(rot) {
+        return Err(bad(
+            v,
+            format!(
+                "once punctured segments are removed, the link of vertex {v} has {k} vertices, {edge_count} edges and {face_count} faces (V-E+F = {euler}{}), not a triangulated sphere",
+                if connected(rot) { "" } else { ", disconnected" }
+            ),
+        ));
+    }
+    let on_hull = hull.on_boundary(v as usize);
+    let expected_outer = usize::from(on_hull);
+    if outer.len() != expected_outer {
+        let f = outer.iter().find(|c| c.len() != 3).or(outer.first());
+        let names: Vec<u32> = f.map(|c| c.iter().map(|&x| lv.g(x)).collect()).unwrap_or_default();
+        let detail = if on_hull {
+            format!("vertex {v} is on the hull, so its link must be a triangulated disk, but it has {} non-triangular or reflex faces (one of them: {names:?})", outer.len())
+        } else {
+            format!("vertex {v} is inside the hull, so its link must be a closed triangulated surface around it, but face {names:?} is not a triangle seen positively from {v}")
+        };
+        let mut w = bad(v, detail);
+        w.vertices.extend(names);
+        return Err(w);
+    }
+    if let Some(cycle) = outer.first() {
+        for i in 0..cycle.len() {
+            let (x, y) = (lv.g(cycle[i]), lv.g(cycle[(i + 1) % cycle.len()]));
+            if hull.common_facet(v as usize, x as usize, y as usize).is_none() {
+                return Err(Witness::new(
+                    WitnessKind::BadLink,
+                    vec![v, x, y],
+                    vec![[x, y]],
+                    format!("the boundary of the link of hull vertex {v} passes along segment ({x}, {y}), but triangle ({v}, {x}, {y}) is not on the hull"),
+                ));
+            }
+        }
+    }
+    Ok(inner)
+}
+
+fn connected(rot: &[Vec<u32>]) -> bool {
+    let mut seen = vec![false; rot.len()];
+    let mut stack = vec![0usize];
+    seen[0] = true;
+    let mut count = 1;
+    while let Some(x) = stack.pop() {
+        for &y in &rot[x] {
+            if !seen[y as usize] {
+                seen[y as usize] = true;
+                count += 1;
+                stack.push(y as usize);
+            }
+        }
+    }
+    count == rot.len()
+}

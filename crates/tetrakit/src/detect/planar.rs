@@ -1,0 +1,191 @@
+//! Planar input: is a set of segments exactly a triangulation of its endpoints
+//! (Theorems 2.4–2.5)? Exact and degenerate-tolerant.
+//!
+//! The segments around each vertex are sorted by angle (exact), the faces of the resulting
+//! rotation system are traced, and the answer is YES when the graph is connected, consecutive
+//! hull points are joined, every bounded face is a counter-clockwise triangle, there is one
+//! outer face, and Euler's formula holds (so Theorem 2.4's count |E| = 3|V| − |V(CH)| − 3
+//! holds); the triangles are then certified by [`crate::mesh::verify_triangulation`].
+
+use super::graph::Graph;
+use super::witness::{Witness, WitnessKind};
+use super::Cells;
+use crate::geom::{Hull2, Point2, Point3, drop_axis, orient2d, projection_axis, segments_meet};
+use crate::mesh::verify_triangulation;
+
+/// Points projected faithfully to 2D (orientation preserved for some fixed normal).
+pub(crate) fn project(points: &[Point3]) -> Option<Vec<Point2>> {
+    let a = &points[0];
+    let b = points.iter().find(|p| *p != a)?;
+    let c = points.iter().find(|c| projection_axis(a, b, c).is_some())?;
+    let axis = projection_axis(a, b, c)?;
+    Some(points.iter().map(|p| drop_axis(p, axis)).collect())
+}
+
+pub(super) fn detect(points: &[Point3], g: &Graph) -> (usize, Result<Cells, Witness>) {
+    let Some(p) = project(points) else {
+        return (points.len(), Err(Witness::new(WitnessKind::Degenerate, vec![], vec![], "points are collinear".into())));
+    };
+    let hull = Hull2::new(&p);
+    let hv = hull.on_boundary.iter().filter(|&&b| b).count();
+    (hv, detect2(&p, g, &hull))
+}
+
+fn detect2(p: &[Point2], g: &Graph, hull: &Hull2) -> Result<Cells, Witness> {
+    super::connectivity(g)?;
+    hull_edges(p, g, hull)?;
+    let n = p.len();
+    let mut rot: Vec<Vec<u32>> = Vec::with_capacity(n);
+    for v in 0..n as u32 {
+        rot.push(sort_around(p, v, g.nbrs(v))?);
+    }
+    let mut start = vec![0usize; n + 1];
+    for i in 0..n {
+        start[i + 1] = start[i] + rot[i].len();
+    }
+    let mut seen = vec![false; start[n]];
+    let (mut tris, mut outer) = (Vec::new(), Vec::new());
+    for a in 0..n {
+        for pos in 0..rot[a].len() {
+            if seen[start[a] + pos] {
+                continue;
+            }
+            let mut cycle = Vec::new();
+            let (mut x, mut px) = (a, pos);
+            while !seen[start[x] + px] {
+                seen[start[x] + px] = true;
+                cycle.push(x as u32);
+                let y = rot[x][px] as usize;
+                let back = rot[y].iter().position(|&z| z as usize == x).expect("symmetric");
+                (x, px) = (y, (back + rot[y].len() - 1) % rot[y].len());
+            }
+            let q = |i: usize| &p[cycle[i] as usize];
+            if cycle.len() == 3 && orient2d(q(0), q(1), q(2)) > 0 {
+                tris.push([cycle[0], cycle[1], cycle[2]]);
+            } else {
+                outer.push(cycle);
+            }
+        }
+    }
+    let faces = tris.len() + outer.len();
+    let euler = n as i64 - g.edge_count() as i64 + faces as i64;
+    if outer.len() != 1 || euler != 2 {
+        let face = outer.iter().find(|c| c.len() != 3).or(outer.first()).cloned().unwrap_or_default();
+        if let Some(w) = local_crossing(p, g, &face) {
+            return Err(w);
+        }
+        return Err(Witness::new(
+            WitnessKind::BadLink,
+            face.clone(),
+            vec![],
+            format!(
+                "the segments bound {} faces that are not counter-clockwise triangles (one is {face:?}) and V-E+F = {euler}; a triangulation has exactly one outer face and V-E+F = 2",
+                outer.len()
+            ),
+        ));
+    }
+    let report = verify_triangulation(p, &tris);
+    if let Some(pb) = report.problems.first() {
+        let vs: Vec<u32> = pb.vertices.clone();
+        if let Some(w) = local_crossing(p, g, &vs) {
+            return Err(w);
+        }
+        return Err(Witness::new(WitnessKind::Inconsistent, vs, vec![], pb.detail.clone()));
+    }
+    Ok(Cells::Triangles(tris))
+}
+
+/// Consecutive boundary points along each hull edge must be joined.
+fn hull_edges(p: &[Point2], g: &Graph, hull: &Hull2) -> Result<(), Witness> {
+    let h = &hull.vertices;
+    for i in 0..h.len() {
+        let (a, b) = (&p[h[i] as usize], &p[h[(i + 1) % h.len()] as usize]);
+        let mut on: Vec<u32> = (0..p.len() as u32)
+            .filter(|&x| hull.on_boundary[x as usize] && orient2d(a, b, &p[x as usize]) == 0)
+            .collect();
+        on.sort_by(|&x, &y| {
+            let (px, py) = (&p[x as usize], &p[y as usize]);
+            px[0].total_cmp(&py[0]).then(px[1].total_cmp(&py[1]))
+        });
+        for w in on.windows(2) {
+            if !g.has_edge(w[0], w[1]) {
+                return Err(Witness::new(
+                    WitnessKind::MissingHullEdge,
+                    vec![w[0], w[1]],
+                    vec![[w[0], w[1]]],
+                    format!("points {} and {} are consecutive along an edge of the convex hull but not joined by a segment", w[0], w[1]),
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Neighbours of `v` sorted counter-clockwise, starting from the first one.
+fn sort_around(p: &[Point2], v: u32, nbrs: &[u32]) -> Result<Vec<u32>, Witness> {
+    let pv = &p[v as usize];
+    let Some(&b0) = nbrs.first() else { return Ok(vec![]) };
+    let pb0 = &p[b0 as usize];
+    let same_ray = |x: &Point2, y: &Point2| {
+        (0..2).all(|k| (x[k] - pv[k]).signum() == (y[k] - pv[k]).signum() || (x[k] == pv[k] && y[k] == pv[k]))
+    };
+    let half = |b: u32| -> u8 {
+        let pb = &p[b as usize];
+        match orient2d(pv, pb0, pb) {
+            1 => 1,
+            -1 => 3,
+            _ if same_ray(pb0, pb) => 0,
+            _ => 2,
+        }
+    };
+    let mut keyed: Vec<(u8, u32)> = nbrs.iter().map(|&b| (half(b), b)).collect();
+    keyed.sort_by(|x, y| {
+        x.0.cmp(&y.0).then_with(|| {
+            if x.0 % 2 == 0 {
+                return std::cmp::Ordering::Equal;
+            }
+            0.cmp(&orient2d(pv, &p[x.1 as usize], &p[y.1 as usize]))
+        })
+    });
+    for w in keyed.windows(2) {
+        let (a, b) = (w[0].1, w[1].1);
+        if w[0].0 == w[1].0 && orient2d(pv, &p[a as usize], &p[b as usize]) == 0 {
+            return Err(Witness::new(
+                WitnessKind::CrossingSegments,
+                vec![v, a, b],
+                vec![[v, a], [v, b]],
+                format!("segments ({v}, {a}) and ({v}, {b}) overlap: {a} and {b} lie on one ray from {v}"),
+            ));
+        }
+    }
+    Ok(keyed.into_iter().map(|(_, b)| b).collect())
+}
+
+/// Looks for two crossing segments among those at the given vertices.
+fn local_crossing(p: &[Point2], g: &Graph, vs: &[u32]) -> Option<Witness> {
+    let lift = |i: u32| [p[i as usize][0], p[i as usize][1], 0.0];
+    let mut segs: Vec<(u32, u32)> = Vec::new();
+    for &v in vs {
+        for &w in g.nbrs(v) {
+            segs.push((v.min(w), v.max(w)));
+            for &x in g.nbrs(w) {
+                segs.push((w.min(x), w.max(x)));
+            }
+        }
+    }
+    segs.sort_unstable();
+    segs.dedup();
+    for (i, &(a, b)) in segs.iter().enumerate() {
+        for &(c, d) in &segs[i + 1..] {
+            if let Some(m) = segments_meet(&lift(a), &lift(b), &lift(c), &lift(d)) {
+                return Some(Witness::new(
+                    WitnessKind::CrossingSegments,
+                    vec![a, b, c, d],
+                    vec![[a, b], [c, d]],
+                    format!("segments ({a}, {b}) and ({c}, {d}) meet ({m:?})"),
+                ));
+            }
+        }
+    }
+    None
+}

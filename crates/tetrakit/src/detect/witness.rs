@@ -1,0 +1,64 @@
+//! Certificates of a NO answer.
+
+use serde::Serialize;
+use std::fmt;
+
+/// The kind of reason why a segment set is not the edge set of a tetrahedralization
+/// (or, for planar input, of a triangulation).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum WitnessKind {
+    /// Two segments whose relative interiors meet (cross at a point or overlap).
+    CrossingSegments,
+    /// A vertex lies in the relative interior of a segment.
+    VertexOnSegment,
+    /// Fewer than four affinely independent points (or three, in the plane).
+    Degenerate,
+    /// The segment graph is not connected (or a point is on no segment).
+    Disconnected,
+    /// Two consecutive points along an edge of the convex hull are not joined.
+    MissingHullEdge,
+    /// A vertex whose puncture-free link is not a (closed) triangulated surface.
+    BadLink,
+    /// A tetrahedron found from fewer than four of its vertices.
+    UnconfirmedTetrahedron,
+    /// The candidate tetrahedra failed the independent verifier (should not happen; the
+    /// detail names the problem).
+    Inconsistent,
+}
+
+impl fmt::Display for WitnessKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let v = serde_json::to_value(self).ok();
+        write!(f, "{}", v.as_ref().and_then(|v| v.as_str()).unwrap_or("witness"))
+    }
+}
+
+/// A checkable reason for a NO: the named vertices and segments and what is wrong.
+/// Indices are 0-based point indices.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct Witness {
+    /// What kind of reason.
+    pub kind: WitnessKind,
+    /// The vertices it names.
+    pub vertices: Vec<u32>,
+    /// The segments it names.
+    pub segments: Vec<[u32; 2]>,
+    /// A sentence for a person.
+    pub detail: String,
+}
+
+impl Witness {
+    /// A witness of `kind`.
+    pub fn new(kind: WitnessKind, vertices: Vec<u32>, segments: Vec<[u32; 2]>, detail: String) -> Self {
+        Witness { kind, vertices, segments, detail }
+    }
+
+    /// Rank used to pick the most telling witness among several: crossings first.
+    pub(crate) fn rank(&self) -> u8 {
+        match self.kind {
+            WitnessKind::CrossingSegments | WitnessKind::VertexOnSegment => 0,
+            _ => 1,
+        }
+    }
+}

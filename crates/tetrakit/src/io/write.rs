@@ -1,0 +1,104 @@
+//! Writers: TetGen `.node/.ele/.edge`, legacy VTK unstructured grids (ParaView), OBJ and
+//! JSON. Coordinates are written with Rust's shortest round-trip formatting, so reading a
+//! written file back gives the same `f64` values bit for bit.
+
+use crate::geom::Point3;
+use std::fmt::Write as _;
+use std::io;
+use std::path::Path;
+
+fn save(path: &Path, text: String) -> io::Result<()> {
+    std::fs::write(path, text)
+}
+
+fn node_text(points: &[Point3], base: u32) -> String {
+    let mut s = format!("{} 3 0 0\n", points.len());
+    for (i, p) in points.iter().enumerate() {
+        let _ = writeln!(s, "{} {} {} {}", i as u32 + base, p[0], p[1], p[2]);
+    }
+    s
+}
+
+/// Writes a tetrahedralization, the format chosen by the extension of `path`:
+/// `.ele` (with `.node` beside it), `.vtk`, `.json`. Indices in TetGen files start at `base`.
+///
+/// ```
+/// use tetrakit::io::write_mesh;
+/// let pts = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+/// let dir = std::env::temp_dir().join("tetrakit-doc-write");
+/// std::fs::create_dir_all(&dir).unwrap();
+/// write_mesh(&dir.join("t.vtk"), &pts, &[[0, 1, 2, 3]], 1).unwrap();
+/// ```
+pub fn write_mesh(path: &Path, points: &[Point3], tets: &[[u32; 4]], base: u32) -> io::Result<()> {
+    match ext(path).as_str() {
+        "ele" => {
+            save(&path.with_extension("node"), node_text(points, base))?;
+            let mut s = format!("{} 4 0\n", tets.len());
+            for (i, t) in tets.iter().enumerate() {
+                let _ = writeln!(s, "{} {} {} {} {}", i as u32 + base, t[0] + base, t[1] + base, t[2] + base, t[3] + base);
+            }
+            save(path, s)
+        }
+        "vtk" => write_vtk(path, points, tets),
+        "json" => {
+            let v = serde_json::json!({ "points": points, "tets": tets });
+            save(path, v.to_string())
+        }
+        other => Err(unsupported(other, ".ele, .vtk or .json")),
+    }
+}
+
+/// Writes a segment set: `.edge` (with `.node` beside it), `.obj` (`l` lines) or `.json`.
+pub fn write_edges(path: &Path, points: &[Point3], edges: &[(u32, u32)], base: u32) -> io::Result<()> {
+    match ext(path).as_str() {
+        "edge" => {
+            save(&path.with_extension("node"), node_text(points, base))?;
+            let mut s = format!("{} 0\n", edges.len());
+            for (i, (a, b)) in edges.iter().enumerate() {
+                let _ = writeln!(s, "{} {} {}", i as u32 + base, a + base, b + base);
+            }
+            save(path, s)
+        }
+        "obj" => {
+            let mut s = String::new();
+            for p in points {
+                let _ = writeln!(s, "v {} {} {}", p[0], p[1], p[2]);
+            }
+            for (a, b) in edges {
+                let _ = writeln!(s, "l {} {}", a + 1, b + 1);
+            }
+            save(path, s)
+        }
+        "json" => {
+            let segs: Vec<[u32; 2]> = edges.iter().map(|&(a, b)| [a, b]).collect();
+            save(path, serde_json::json!({ "points": points, "segments": segs }).to_string())
+        }
+        other => Err(unsupported(other, ".edge, .obj or .json")),
+    }
+}
+
+/// Writes a legacy ASCII VTK unstructured grid of tetrahedra (cell type 10).
+pub fn write_vtk(path: &Path, points: &[Point3], tets: &[[u32; 4]]) -> io::Result<()> {
+    let mut s = String::from("# vtk DataFile Version 3.0\ntetrakit tetrahedralization\nASCII\nDATASET UNSTRUCTURED_GRID\n");
+    let _ = writeln!(s, "POINTS {} double", points.len());
+    for p in points {
+        let _ = writeln!(s, "{} {} {}", p[0], p[1], p[2]);
+    }
+    let _ = writeln!(s, "CELLS {} {}", tets.len(), tets.len() * 5);
+    for t in tets {
+        let _ = writeln!(s, "4 {} {} {} {}", t[0], t[1], t[2], t[3]);
+    }
+    let _ = writeln!(s, "CELL_TYPES {}", tets.len());
+    for _ in tets {
+        s.push_str("10\n");
+    }
+    save(path, s)
+}
+
+fn ext(path: &Path) -> String {
+    path.extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase()
+}
+
+fn unsupported(ext: &str, expected: &str) -> io::Error {
+    io::Error::new(io::ErrorKind::InvalidInput, format!("cannot write '.{ext}' files here (expected {expected})"))
+}
