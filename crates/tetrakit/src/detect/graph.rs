@@ -14,7 +14,10 @@ impl Graph {
         let mut deg = vec![0usize; n + 1];
         for (k, s) in segments.iter().enumerate() {
             if s[0] as usize >= n || s[1] as usize >= n {
-                return Err(format!("segment {k} ({}, {}) names a vertex beyond the {n} points", s[0], s[1]));
+                return Err(format!(
+                    "segment {k} ({}, {}) names a vertex beyond the {n} points",
+                    s[0], s[1]
+                ));
             }
             if s[0] == s[1] {
                 return Err(format!("segment {k} joins vertex {} to itself", s[0]));

@@ -32,7 +32,7 @@
 //! and neighbour (`|L_v|·|N(v)|` filtered orientation tests), the rest are table look-ups.
 
 use super::graph::Graph;
-use super::witness::{Witness, WitnessKind};
+use super::witness::{Witness, WitnessKind, ids};
 use crate::geom::{Frame, Hull3, Point3, collinear3, orient2d_drop, orient3d, projection_axis};
 use std::cmp::Ordering;
 
@@ -45,7 +45,11 @@ pub(super) struct Scratch {
 
 impl Scratch {
     pub(super) fn new(n: usize) -> Self {
-        Scratch { stamp: vec![0; n], local: vec![0; n], round: 0 }
+        Scratch {
+            stamp: vec![0; n],
+            local: vec![0; n],
+            round: 0,
+        }
     }
 }
 
@@ -63,7 +67,12 @@ pub(super) fn link(ctx: &Ctx, v: u32, s: &mut Scratch) -> Result<Vec<[u32; 3]>, 
     let k = nb.len();
     let pv = &ctx.pts[v as usize];
     if k < 3 {
-        return Err(bad(v, format!("vertex {v} has {k} neighbour(s); every vertex of a tetrahedralization has at least 3")));
+        return Err(bad(
+            v,
+            format!(
+                "vertex #{v} has {k} neighbour(s); every vertex of a tetrahedralization has at least 3"
+            ),
+        ));
     }
     s.round += 1;
     for (i, &a) in nb.iter().enumerate() {
@@ -75,9 +84,21 @@ pub(super) fn link(ctx: &Ctx, v: u32, s: &mut Scratch) -> Result<Vec<[u32; 3]>, 
     let d: Vec<Point3> = p.iter().map(|x| frame.dir(x)).collect();
     same_direction(v, nb, pv, &p, &d)?;
     let edges = local_edges(ctx.g, nb, s);
-    let lv = LocalView { v, pv, nb, p: &p, d: &d, frame };
+    let lv = LocalView {
+        v,
+        pv,
+        nb,
+        p: &p,
+        d: &d,
+        frame,
+    };
     let keep = puncture_free(&lv, &edges)?;
-    let kept: Vec<(u32, u32)> = edges.iter().zip(&keep).filter(|(_, k)| **k).map(|(e, _)| *e).collect();
+    let kept: Vec<(u32, u32)> = edges
+        .iter()
+        .zip(&keep)
+        .filter(|(_, k)| **k)
+        .map(|(e, _)| *e)
+        .collect();
     let rot = rotation_system(&lv, &kept)?;
     faces(&lv, ctx.hull, &rot, kept.len())
 }
@@ -99,7 +120,9 @@ impl LocalView<'_> {
     /// Exact `orient3d(v, a, b, c)` for local indices.
     #[inline]
     fn orient(&self, a: usize, b: usize, c: usize) -> i8 {
-        self.frame.sign(self.p[a], self.p[b], self.p[c], &self.d[a], &self.d[b], &self.d[c])
+        self.frame.sign(
+            self.p[a], self.p[b], self.p[c], &self.d[a], &self.d[b], &self.d[c],
+        )
     }
     fn g(&self, i: u32) -> u32 {
         self.nb[i as usize]
@@ -107,7 +130,13 @@ impl LocalView<'_> {
 }
 
 /// Two neighbours on one ray from `v` make the segments `va` and `vb` overlap.
-fn same_direction(v: u32, nb: &[u32], pv: &Point3, p: &[&Point3], d: &[Point3]) -> Result<(), Witness> {
+fn same_direction(
+    v: u32,
+    nb: &[u32],
+    pv: &Point3,
+    p: &[&Point3],
+    d: &[Point3],
+) -> Result<(), Witness> {
     let unit: Vec<Point3> = d
         .iter()
         .map(|x| {
@@ -125,13 +154,16 @@ fn same_direction(v: u32, nb: &[u32], pv: &Point3, p: &[&Point3], d: &[Point3]) 
                 break;
             }
             let close = (1..3).all(|c| (unit[j][c] - unit[i][c]).abs() <= WINDOW);
-            if close && collinear3(pv, p[i], p[j]) && !crate::geom::strictly_between(p[i], pv, p[j]) {
+            if close && collinear3(pv, p[i], p[j]) && !crate::geom::strictly_between(p[i], pv, p[j])
+            {
                 let (a, b) = (nb[i], nb[j]);
                 return Err(Witness::new(
                     WitnessKind::CrossingSegments,
                     vec![v, a, b],
                     vec![[v, a], [v, b]],
-                    format!("segments ({v}, {a}) and ({v}, {b}) overlap: {a} and {b} lie on one ray from {v}"),
+                    format!(
+                        "segments (#{v}, #{a}) and (#{v}, #{b}) overlap: #{a} and #{b} lie on one ray from #{v}"
+                    ),
                 ));
             }
         }
@@ -163,10 +195,10 @@ fn puncture_free(lv: &LocalView, edges: &[(u32, u32)]) -> Result<Vec<bool>, Witn
         let (a, b) = (a as usize, b as usize);
         let row = &mut side[e * k..(e + 1) * k];
         let mut coplanar = Vec::new();
-        for c in 0..k {
+        for (c, slot) in row.iter_mut().enumerate() {
             if c != a && c != b {
-                row[c] = lv.orient(a, b, c);
-                if row[c] == 0 {
+                *slot = lv.orient(a, b, c);
+                if *slot == 0 {
                     coplanar.push(c);
                 }
             }
@@ -178,7 +210,7 @@ fn puncture_free(lv: &LocalView, edges: &[(u32, u32)]) -> Result<Vec<bool>, Witn
                 WitnessKind::VertexOnSegment,
                 vec![lv.v, ga, gb],
                 vec![[ga, gb]],
-                format!("vertex {} lies inside segment ({ga}, {gb})", lv.v),
+                format!("vertex #{} lies inside segment (#{ga}, #{gb})", lv.v),
             ));
         }
         if !coplanar.is_empty() && blocked(lv, a, b, &coplanar) {
@@ -213,7 +245,8 @@ fn blocked(lv: &LocalView, a: usize, b: usize, coplanar: &[usize]) -> bool {
     };
     let s = orient2d_drop(lv.pv, lv.p[a], lv.p[b], axis);
     coplanar.iter().any(|&c| {
-        orient2d_drop(lv.pv, lv.p[a], lv.p[c], axis) == s && orient2d_drop(lv.pv, lv.p[c], lv.p[b], axis) == s
+        orient2d_drop(lv.pv, lv.p[a], lv.p[c], axis) == s
+            && orient2d_drop(lv.pv, lv.p[c], lv.p[b], axis) == s
     })
 }
 
@@ -233,7 +266,7 @@ fn punctures(lv: &LocalView, (c, d): (u32, u32), (a, b): (u32, u32)) -> Result<b
             WitnessKind::CrossingSegments,
             vec![s[0], s[1], gc, gd],
             vec![s, [gc, gd]],
-            format!("segments ({}, {}) and ({gc}, {gd}) cross", s[0], s[1]),
+            format!("segments (#{}, #{}) and (#{gc}, #{gd}) cross", s[0], s[1]),
         ))
     };
     let through = |x: u32| {
@@ -241,7 +274,7 @@ fn punctures(lv: &LocalView, (c, d): (u32, u32), (a, b): (u32, u32)) -> Result<b
             WitnessKind::VertexOnSegment,
             vec![x, gc, gd],
             vec![[gc, gd]],
-            format!("vertex {x} lies inside segment ({gc}, {gd})"),
+            format!("vertex #{x} lies inside segment (#{gc}, #{gd})"),
         ))
     };
     match (t1, t2, t3) {
@@ -270,7 +303,7 @@ fn rotation_system(lv: &LocalView, kept: &[(u32, u32)]) -> Result<Vec<Vec<u32>>,
             return Err(bad(
                 lv.v,
                 format!(
-                    "neighbour {u} of vertex {} keeps {} segment(s) to other neighbours once punctured segments are removed; a link vertex needs at least 2",
+                    "neighbour #{u} of vertex #{} keeps {} segment(s) to other neighbours once punctured segments are removed; a link vertex needs at least 2",
                     lv.v,
                     list.len()
                 ),
@@ -311,12 +344,16 @@ fn sort_around(lv: &LocalView, a: usize, list: &mut [u32]) -> Result<(), Witness
         })
     });
     for w in keyed.windows(2) {
-        let same = w[0].0 == w[1].0 && (w[0].0 % 2 == 0 || lv.orient(a, w[0].1 as usize, w[1].1 as usize) == 0);
+        let same = w[0].0 == w[1].0
+            && (w[0].0 % 2 == 0 || lv.orient(a, w[0].1 as usize, w[1].1 as usize) == 0);
         if same {
             let (u, x, y) = (lv.g(a as u32), lv.g(w[0].1), lv.g(w[1].1));
             return Err(bad(
                 lv.v,
-                format!("seen from vertex {}, segments ({u}, {x}) and ({u}, {y}) leave {u} in the same direction", lv.v),
+                format!(
+                    "seen from vertex #{}, segments (#{u}, #{x}) and (#{u}, #{y}) leave #{u} in the same direction",
+                    lv.v
+                ),
             ));
         }
     }
@@ -327,7 +364,12 @@ fn sort_around(lv: &LocalView, a: usize, list: &mut [u32]) -> Result<(), Witness
 }
 
 /// Traces the faces of the rotation system and checks they form the link of `v`.
-fn faces(lv: &LocalView, hull: &Hull3, rot: &[Vec<u32>], edge_count: usize) -> Result<Vec<[u32; 3]>, Witness> {
+fn faces(
+    lv: &LocalView,
+    hull: &Hull3,
+    rot: &[Vec<u32>],
+    edge_count: usize,
+) -> Result<Vec<[u32; 3]>, Witness> {
     let v = lv.v;
     let k = rot.len();
     let mut start = vec![0usize; k + 1];
@@ -349,12 +391,17 @@ fn faces(lv: &LocalView, hull: &Hull3, rot: &[Vec<u32>], edge_count: usize) -> R
                 seen[start[x] + px] = true;
                 cycle.push(x as u32);
                 let y = rot[x][px] as usize;
-                let back = rot[y].iter().position(|&z| z as usize == x).expect("symmetric adjacency");
+                let back = rot[y]
+                    .iter()
+                    .position(|&z| z as usize == x)
+                    .expect("symmetric adjacency");
                 let py = (back + rot[y].len() - 1) % rot[y].len();
                 (x, px) = (y, py);
             }
             face_count += 1;
-            if cycle.len() == 3 && lv.orient(cycle[0] as usize, cycle[1] as usize, cycle[2] as usize) > 0 {
+            if cycle.len() == 3
+                && lv.orient(cycle[0] as usize, cycle[1] as usize, cycle[2] as usize) > 0
+            {
                 inner.push([lv.g(cycle[0]), lv.g(cycle[1]), lv.g(cycle[2])]);
             } else {
                 outer.push(cycle);
@@ -366,7 +413,7 @@ fn faces(lv: &LocalView, hull: &Hull3, rot: &[Vec<u32>], edge_count: usize) -> R
         return Err(bad(
             v,
             format!(
-                "once punctured segments are removed, the link of vertex {v} has {k} vertices, {edge_count} edges and {face_count} faces (V-E+F = {euler}{}), not a triangulated sphere",
+                "once punctured segments are removed, the link of vertex #{v} has {k} vertices, {edge_count} edges and {face_count} faces (V-E+F = {euler}{}), not a triangulated sphere",
                 if connected(rot) { "" } else { ", disconnected" }
             ),
         ));
@@ -375,11 +422,20 @@ fn faces(lv: &LocalView, hull: &Hull3, rot: &[Vec<u32>], edge_count: usize) -> R
     let expected_outer = usize::from(on_hull);
     if outer.len() != expected_outer {
         let f = outer.iter().find(|c| c.len() != 3).or(outer.first());
-        let names: Vec<u32> = f.map(|c| c.iter().map(|&x| lv.g(x)).collect()).unwrap_or_default();
+        let names: Vec<u32> = f
+            .map(|c| c.iter().map(|&x| lv.g(x)).collect())
+            .unwrap_or_default();
         let detail = if on_hull {
-            format!("vertex {v} is on the hull, so its link must be a triangulated disk, but it has {} non-triangular or reflex faces (one of them: {names:?})", outer.len())
+            format!(
+                "vertex #{v} is on the hull, so its link must be a triangulated disk, but it has {} non-triangular or reflex faces (one of them: {})",
+                outer.len(),
+                ids(&names)
+            )
         } else {
-            format!("vertex {v} is inside the hull, so its link must be a closed triangulated surface around it, but face {names:?} is not a triangle seen positively from {v}")
+            format!(
+                "vertex #{v} is inside the hull, so its link must be a closed triangulated surface around it, but face {} is not a triangle seen positively from #{v}",
+                ids(&names)
+            )
         };
         let mut w = bad(v, detail);
         w.vertices.extend(names);
@@ -388,12 +444,17 @@ fn faces(lv: &LocalView, hull: &Hull3, rot: &[Vec<u32>], edge_count: usize) -> R
     if let Some(cycle) = outer.first() {
         for i in 0..cycle.len() {
             let (x, y) = (lv.g(cycle[i]), lv.g(cycle[(i + 1) % cycle.len()]));
-            if hull.common_facet(v as usize, x as usize, y as usize).is_none() {
+            if hull
+                .common_facet(v as usize, x as usize, y as usize)
+                .is_none()
+            {
                 return Err(Witness::new(
                     WitnessKind::BadLink,
                     vec![v, x, y],
                     vec![[x, y]],
-                    format!("the boundary of the link of hull vertex {v} passes along segment ({x}, {y}), but triangle ({v}, {x}, {y}) is not on the hull"),
+                    format!(
+                        "the boundary of the link of hull vertex #{v} passes along segment (#{x}, #{y}), but triangle (#{v}, #{x}, #{y}) is not on the hull"
+                    ),
                 ));
             }
         }

@@ -29,6 +29,7 @@ mod witness;
 
 pub use graph::Graph;
 pub use witness::{Witness, WitnessKind};
+pub use witness::{ids, renumber_text};
 
 use crate::geom::{Hull3, Point3};
 use crate::mesh;
@@ -87,7 +88,12 @@ pub fn detect(points: &[Point3], segments: &[(u32, u32)]) -> Result<Detection, S
         segments: segments.len(),
         hull_vertices: 0,
         dimension: hull.dimension,
-        result: Err(Witness::new(WitnessKind::Degenerate, vec![], vec![], String::new())),
+        result: Err(Witness::new(
+            WitnessKind::Degenerate,
+            vec![],
+            vec![],
+            String::new(),
+        )),
     };
     if hull.dimension == 2 {
         let (hv, result) = planar::detect(points, &g);
@@ -101,7 +107,10 @@ pub fn detect(points: &[Point3], segments: &[(u32, u32)]) -> Result<Detection, S
             WitnessKind::Degenerate,
             vec![],
             vec![],
-            format!("all {} points lie on one line: they span no triangle or tetrahedron", points.len()),
+            format!(
+                "all {} points lie on one line: they span no triangle or tetrahedron",
+                points.len()
+            ),
         ));
         return Ok(out);
     }
@@ -113,13 +122,21 @@ pub fn detect(points: &[Point3], segments: &[(u32, u32)]) -> Result<Detection, S
 fn detect3(points: &[Point3], g: &Graph, hull: &Hull3) -> Result<Cells, Witness> {
     connectivity(g)?;
     hull_edges(points, g, hull)?;
-    let ctx = Ctx { pts: points, g, hull };
+    let ctx = Ctx {
+        pts: points,
+        g,
+        hull,
+    };
     let n = points.len();
     let links: Vec<Result<Vec<[u32; 3]>, Witness>> = (0..n as u32)
         .into_par_iter()
         .map_init(|| Scratch::new(n), |s, v| link::link(&ctx, v, s))
         .collect();
-    if let Some(w) = links.iter().filter_map(|r| r.as_ref().err()).min_by_key(|w| w.rank()) {
+    if let Some(w) = links
+        .iter()
+        .filter_map(|r| r.as_ref().err())
+        .min_by_key(|w| w.rank())
+    {
         return Err(w.clone());
     }
     let links: Vec<Vec<[u32; 3]>> = links.into_iter().map(|r| r.unwrap_or_default()).collect();
@@ -130,11 +147,19 @@ fn detect3(points: &[Point3], g: &Graph, hull: &Hull3) -> Result<Cells, Witness>
             WitnessKind::Inconsistent,
             p.vertices.clone(),
             vec![],
-            format!("the tetrahedra found from the links fail verification: {}", p.detail),
+            format!(
+                "the tetrahedra found from the links fail verification: {}",
+                p.detail
+            ),
         ));
     }
     let mut want: Vec<(u32, u32)> = (0..n as u32)
-        .flat_map(|v| g.nbrs(v).iter().filter(move |&&w| w > v).map(move |&w| (v, w)))
+        .flat_map(|v| {
+            g.nbrs(v)
+                .iter()
+                .filter(move |&&w| w > v)
+                .map(move |&w| (v, w))
+        })
         .collect();
     want.sort_unstable();
     if mesh::edges_of(&tets) != want {
@@ -156,11 +181,16 @@ fn connectivity(g: &Graph) -> Result<(), Witness> {
     };
     let size = comp.iter().filter(|&&c| c == comp[v]).count();
     let detail = if g.nbrs(v as u32).is_empty() {
-        format!("point {v} is on no segment")
+        format!("point #{v} is on no segment")
     } else {
-        format!("the {size} points of the component of vertex {v} are not connected to vertex 0")
+        format!("the {size} points of the component of vertex #{v} are not connected to vertex #0")
     };
-    Err(Witness::new(WitnessKind::Disconnected, vec![0, v as u32], vec![], detail))
+    Err(Witness::new(
+        WitnessKind::Disconnected,
+        vec![0, v as u32],
+        vec![],
+        detail,
+    ))
 }
 
 /// Step 1: consecutive points along each polytope edge must be joined by a segment.
@@ -172,7 +202,10 @@ fn hull_edges(points: &[Point3], g: &Graph, hull: &Hull3) -> Result<(), Witness>
                     WitnessKind::MissingHullEdge,
                     vec![w[0], w[1]],
                     vec![[w[0], w[1]]],
-                    format!("points {} and {} are consecutive along an edge of the convex hull but not joined by a segment", w[0], w[1]),
+                    format!(
+                        "points #{} and #{} are consecutive along an edge of the convex hull but not joined by a segment",
+                        w[0], w[1]
+                    ),
                 ));
             }
         }
@@ -202,12 +235,18 @@ fn confirm(links: &[Vec<[u32; 3]>]) -> Result<Vec<[u32; 4]>, Witness> {
         .enumerate()
         .flat_map_iter(|(v, fs)| {
             let v = v as u32;
-            fs.iter().filter(move |f| f.iter().all(|&x| x > v)).map(move |f| [v, f[0], f[1], f[2]])
+            fs.iter()
+                .filter(move |f| f.iter().all(|&x| x > v))
+                .map(move |f| [v, f[0], f[1], f[2]])
         })
         .collect();
     let unconfirmed = tets.par_iter().find_any(|t| {
         (1..4).any(|i| {
-            let others = [0, 1, 2, 3].iter().filter(|&&j| j != i).map(|&j| t[j]).collect::<Vec<_>>();
+            let others = [0, 1, 2, 3]
+                .iter()
+                .filter(|&&j| j != i)
+                .map(|&j| t[j])
+                .collect::<Vec<_>>();
             !found(t[i], [others[0], others[1], others[2]])
         })
     });
@@ -245,8 +284,10 @@ fn unconfirmed_witness(t: [u32; 4], found: &dyn Fn(u32, [u32; 3]) -> bool) -> Wi
         s.to_vec(),
         vec![],
         format!(
-            "tetrahedron {s:?} is found from the links of {} of its vertices ({from:?}), not all four",
-            from.len()
+            "tetrahedron {} is found from the links of {} of its vertices ({}), not all four",
+            ids(&s),
+            from.len(),
+            ids(&from)
         ),
     )
 }

@@ -31,7 +31,10 @@ pub fn forms_tetrahedralization(points: &[Point3], segments: &[(u32, u32)]) -> b
         adj[a as usize * n + b as usize] = true;
         adj[b as usize * n + a as usize] = true;
     }
-    let mut want: Vec<(u32, u32)> = segments.iter().map(|&(a, b)| (a.min(b), a.max(b))).collect();
+    let mut want: Vec<(u32, u32)> = segments
+        .iter()
+        .map(|&(a, b)| (a.min(b), a.max(b)))
+        .collect();
     want.sort_unstable();
     let hull = Hull3::new(points);
     let e = |a: usize, b: usize| adj[a * n + b];
@@ -41,16 +44,26 @@ pub fn forms_tetrahedralization(points: &[Point3], segments: &[(u32, u32)]) -> b
             let mut tets = Vec::new();
             for a in 0..n {
                 for b in a + 1..n {
-                    if !e(a, b) { continue }
+                    if !e(a, b) {
+                        continue;
+                    }
                     for c in b + 1..n {
-                        if !(e(a, c) && e(b, c)) { continue }
+                        if !(e(a, c) && e(b, c)) {
+                            continue;
+                        }
                         for d in c + 1..n {
-                            if !(e(a, d) && e(b, d) && e(c, d)) { continue }
+                            if !(e(a, d) && e(b, d) && e(c, d)) {
+                                continue;
+                            }
                             let o = orient3d(pt(a), pt(b), pt(c), pt(d));
-                            if o == 0 { continue }
+                            if o == 0 {
+                                continue;
+                            }
                             let t = [*pt(a), *pt(b), *pt(c), *pt(d)];
-                            let empty = segments.iter().all(|&(p, q)| !segment_meets_open_tetrahedron(pt(p as usize), pt(q as usize), &t))
-                                && (0..n).all(|x| !point_in_closed_tetrahedron(pt(x), &t));
+                            let empty = segments.iter().all(|&(p, q)| {
+                                !segment_meets_open_tetrahedron(pt(p as usize), pt(q as usize), &t)
+                            }) && (0..n)
+                                .all(|x| !point_in_closed_tetrahedron(pt(x), &t));
                             if empty {
                                 let (a, b, c, d) = (a as u32, b as u32, c as u32, d as u32);
                                 tets.push(if o > 0 { [a, b, c, d] } else { [a, b, d, c] });
@@ -62,20 +75,39 @@ pub fn forms_tetrahedralization(points: &[Point3], segments: &[(u32, u32)]) -> b
             verify(points, &tets, Some(&hull)).is_valid() && edges_of(&tets) == want
         }
         2 => {
-            let Some(p2) = crate::detect::planar::project(points) else { return false };
+            let Some(p2) = crate::detect::planar::project(points) else {
+                return false;
+            };
             let mut tris = Vec::new();
             for a in 0..n {
                 for b in a + 1..n {
-                    if !e(a, b) { continue }
+                    if !e(a, b) {
+                        continue;
+                    }
                     for c in b + 1..n {
-                        if !(e(a, c) && e(b, c)) { continue }
+                        if !(e(a, c) && e(b, c)) {
+                            continue;
+                        }
                         let o = orient2d(&p2[a], &p2[b], &p2[c]);
-                        if o == 0 { continue }
-                        let empty = segments.iter().all(|&(p, q)| !segment_meets_open_triangle(pt(p as usize), pt(q as usize), pt(a), pt(b), pt(c)))
-                            && (0..n).filter(|&x| x != a && x != b && x != c).all(|x| {
-                                let s = [orient2d(&p2[a], &p2[b], &p2[x]), orient2d(&p2[b], &p2[c], &p2[x]), orient2d(&p2[c], &p2[a], &p2[x])];
-                                !s.iter().all(|&si| si * o >= 0)
-                            });
+                        if o == 0 {
+                            continue;
+                        }
+                        let empty = segments.iter().all(|&(p, q)| {
+                            !segment_meets_open_triangle(
+                                pt(p as usize),
+                                pt(q as usize),
+                                pt(a),
+                                pt(b),
+                                pt(c),
+                            )
+                        }) && (0..n).filter(|&x| x != a && x != b && x != c).all(|x| {
+                            let s = [
+                                orient2d(&p2[a], &p2[b], &p2[x]),
+                                orient2d(&p2[b], &p2[c], &p2[x]),
+                                orient2d(&p2[c], &p2[a], &p2[x]),
+                            ];
+                            !s.iter().all(|&si| si * o >= 0)
+                        });
                         if empty {
                             let (a, b, c) = (a as u32, b as u32, c as u32);
                             tris.push(if o > 0 { [a, b, c] } else { [a, c, b] });
@@ -85,7 +117,9 @@ pub fn forms_tetrahedralization(points: &[Point3], segments: &[(u32, u32)]) -> b
             }
             let mut te: Vec<(u32, u32)> = tris
                 .iter()
-                .flat_map(|t| [(t[0], t[1]), (t[1], t[2]), (t[0], t[2])].map(|(x, y)| (x.min(y), x.max(y))))
+                .flat_map(|t| {
+                    [(t[0], t[1]), (t[1], t[2]), (t[0], t[2])].map(|(x, y)| (x.min(y), x.max(y)))
+                })
                 .collect();
             te.sort_unstable();
             te.dedup();

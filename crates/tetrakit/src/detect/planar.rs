@@ -7,9 +7,9 @@
 //! outer face, and Euler's formula holds (so Theorem 2.4's count |E| = 3|V| − |V(CH)| − 3
 //! holds); the triangles are then certified by [`crate::mesh::verify_triangulation`].
 
-use super::graph::Graph;
-use super::witness::{Witness, WitnessKind};
 use super::Cells;
+use super::graph::Graph;
+use super::witness::{Witness, WitnessKind, ids};
 use crate::geom::{Hull2, Point2, Point3, drop_axis, orient2d, projection_axis, segments_meet};
 use crate::mesh::verify_triangulation;
 
@@ -24,7 +24,15 @@ pub(crate) fn project(points: &[Point3]) -> Option<Vec<Point2>> {
 
 pub(super) fn detect(points: &[Point3], g: &Graph) -> (usize, Result<Cells, Witness>) {
     let Some(p) = project(points) else {
-        return (points.len(), Err(Witness::new(WitnessKind::Degenerate, vec![], vec![], "points are collinear".into())));
+        return (
+            points.len(),
+            Err(Witness::new(
+                WitnessKind::Degenerate,
+                vec![],
+                vec![],
+                "points are collinear".into(),
+            )),
+        );
     };
     let hull = Hull2::new(&p);
     let hv = hull.on_boundary.iter().filter(|&&b| b).count();
@@ -56,7 +64,10 @@ fn detect2(p: &[Point2], g: &Graph, hull: &Hull2) -> Result<Cells, Witness> {
                 seen[start[x] + px] = true;
                 cycle.push(x as u32);
                 let y = rot[x][px] as usize;
-                let back = rot[y].iter().position(|&z| z as usize == x).expect("symmetric");
+                let back = rot[y]
+                    .iter()
+                    .position(|&z| z as usize == x)
+                    .expect("symmetric");
                 (x, px) = (y, (back + rot[y].len() - 1) % rot[y].len());
             }
             let q = |i: usize| &p[cycle[i] as usize];
@@ -70,7 +81,12 @@ fn detect2(p: &[Point2], g: &Graph, hull: &Hull2) -> Result<Cells, Witness> {
     let faces = tris.len() + outer.len();
     let euler = n as i64 - g.edge_count() as i64 + faces as i64;
     if outer.len() != 1 || euler != 2 {
-        let face = outer.iter().find(|c| c.len() != 3).or(outer.first()).cloned().unwrap_or_default();
+        let face = outer
+            .iter()
+            .find(|c| c.len() != 3)
+            .or(outer.first())
+            .cloned()
+            .unwrap_or_default();
         if let Some(w) = local_crossing(p, g, &face) {
             return Err(w);
         }
@@ -79,8 +95,9 @@ fn detect2(p: &[Point2], g: &Graph, hull: &Hull2) -> Result<Cells, Witness> {
             face.clone(),
             vec![],
             format!(
-                "the segments bound {} faces that are not counter-clockwise triangles (one is {face:?}) and V-E+F = {euler}; a triangulation has exactly one outer face and V-E+F = 2",
-                outer.len()
+                "the segments bound {} faces that are not counter-clockwise triangles (one is {}) and V-E+F = {euler}; a triangulation has exactly one outer face and V-E+F = 2",
+                outer.len(),
+                ids(&face)
             ),
         ));
     }
@@ -90,7 +107,12 @@ fn detect2(p: &[Point2], g: &Graph, hull: &Hull2) -> Result<Cells, Witness> {
         if let Some(w) = local_crossing(p, g, &vs) {
             return Err(w);
         }
-        return Err(Witness::new(WitnessKind::Inconsistent, vs, vec![], pb.detail.clone()));
+        return Err(Witness::new(
+            WitnessKind::Inconsistent,
+            vs,
+            vec![],
+            pb.detail.clone(),
+        ));
     }
     Ok(Cells::Triangles(tris))
 }
@@ -113,7 +135,10 @@ fn hull_edges(p: &[Point2], g: &Graph, hull: &Hull2) -> Result<(), Witness> {
                     WitnessKind::MissingHullEdge,
                     vec![w[0], w[1]],
                     vec![[w[0], w[1]]],
-                    format!("points {} and {} are consecutive along an edge of the convex hull but not joined by a segment", w[0], w[1]),
+                    format!(
+                        "points #{} and #{} are consecutive along an edge of the convex hull but not joined by a segment",
+                        w[0], w[1]
+                    ),
                 ));
             }
         }
@@ -124,10 +149,14 @@ fn hull_edges(p: &[Point2], g: &Graph, hull: &Hull2) -> Result<(), Witness> {
 /// Neighbours of `v` sorted counter-clockwise, starting from the first one.
 fn sort_around(p: &[Point2], v: u32, nbrs: &[u32]) -> Result<Vec<u32>, Witness> {
     let pv = &p[v as usize];
-    let Some(&b0) = nbrs.first() else { return Ok(vec![]) };
+    let Some(&b0) = nbrs.first() else {
+        return Ok(vec![]);
+    };
     let pb0 = &p[b0 as usize];
     let same_ray = |x: &Point2, y: &Point2| {
-        (0..2).all(|k| (x[k] - pv[k]).signum() == (y[k] - pv[k]).signum() || (x[k] == pv[k] && y[k] == pv[k]))
+        (0..2).all(|k| {
+            (x[k] - pv[k]).signum() == (y[k] - pv[k]).signum() || (x[k] == pv[k] && y[k] == pv[k])
+        })
     };
     let half = |b: u32| -> u8 {
         let pb = &p[b as usize];
@@ -154,7 +183,9 @@ fn sort_around(p: &[Point2], v: u32, nbrs: &[u32]) -> Result<Vec<u32>, Witness> 
                 WitnessKind::CrossingSegments,
                 vec![v, a, b],
                 vec![[v, a], [v, b]],
-                format!("segments ({v}, {a}) and ({v}, {b}) overlap: {a} and {b} lie on one ray from {v}"),
+                format!(
+                    "segments (#{v}, #{a}) and (#{v}, #{b}) overlap: #{a} and #{b} lie on one ray from #{v}"
+                ),
             ));
         }
     }
@@ -182,7 +213,7 @@ fn local_crossing(p: &[Point2], g: &Graph, vs: &[u32]) -> Option<Witness> {
                     WitnessKind::CrossingSegments,
                     vec![a, b, c, d],
                     vec![[a, b], [c, d]],
-                    format!("segments ({a}, {b}) and ({c}, {d}) meet ({m:?})"),
+                    format!("segments (#{a}, #{b}) and (#{c}, #{d}) meet ({m:?})"),
                 ));
             }
         }

@@ -30,7 +30,11 @@ pub enum WitnessKind {
 impl fmt::Display for WitnessKind {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let v = serde_json::to_value(self).ok();
-        write!(f, "{}", v.as_ref().and_then(|v| v.as_str()).unwrap_or("witness"))
+        write!(
+            f,
+            "{}",
+            v.as_ref().and_then(|v| v.as_str()).unwrap_or("witness")
+        )
     }
 }
 
@@ -50,8 +54,33 @@ pub struct Witness {
 
 impl Witness {
     /// A witness of `kind`.
-    pub fn new(kind: WitnessKind, vertices: Vec<u32>, segments: Vec<[u32; 2]>, detail: String) -> Self {
-        Witness { kind, vertices, segments, detail }
+    pub fn new(
+        kind: WitnessKind,
+        vertices: Vec<u32>,
+        segments: Vec<[u32; 2]>,
+        detail: String,
+    ) -> Self {
+        Witness {
+            kind,
+            vertices,
+            segments,
+            detail,
+        }
+    }
+
+    /// Shifts every vertex number by `base` (0 or 1), in the fields and in the text, where
+    /// vertex numbers are written `#12`, so the witness names vertices as the input file did.
+    ///
+    /// ```
+    /// use tetrakit::detect::{Witness, WitnessKind};
+    /// let w = Witness::new(WitnessKind::VertexOnSegment, vec![4], vec![[1, 2]], "vertex #4 lies inside segment (#1, #2)".into());
+    /// assert_eq!(w.renumbered(1).detail, "vertex #5 lies inside segment (#2, #3)");
+    /// ```
+    pub fn renumbered(mut self, base: u32) -> Self {
+        self.vertices.iter_mut().for_each(|v| *v += base);
+        self.segments.iter_mut().flatten().for_each(|v| *v += base);
+        self.detail = renumber_text(&self.detail, base);
+        self
     }
 
     /// Rank used to pick the most telling witness among several: crossings first.
@@ -61,4 +90,29 @@ impl Witness {
             _ => 1,
         }
     }
+}
+
+/// Adds `base` to every `#<digits>` vertex number in `text`.
+pub fn renumber_text(text: &str, base: u32) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut rest = text;
+    while let Some(i) = rest.find('#') {
+        out.push_str(&rest[..=i]);
+        rest = &rest[i + 1..];
+        let digits = rest.bytes().take_while(u8::is_ascii_digit).count();
+        if let Ok(x) = rest[..digits].parse::<u64>() {
+            out.push_str(&(x + base as u64).to_string());
+        } else {
+            out.push_str(&rest[..digits]);
+        }
+        rest = &rest[digits..];
+    }
+    out.push_str(rest);
+    out
+}
+
+/// Formats vertex numbers as `[#1, #2, #3]`.
+pub fn ids(v: &[u32]) -> String {
+    let parts: Vec<String> = v.iter().map(|x| format!("#{x}")).collect();
+    format!("[{}]", parts.join(", "))
 }

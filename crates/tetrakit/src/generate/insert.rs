@@ -15,18 +15,25 @@ use std::collections::HashMap;
 /// A tetrahedralization of `points` (which must not be all coplanar, and must be distinct).
 pub fn tetrahedralize_points(points: Vec<Point3>, seed: u64) -> Tetrahedralization {
     let hull = Hull3::new(&points);
-    let mut t = Tetrahedralization { points, tets: Vec::new() };
+    let mut t = Tetrahedralization {
+        points,
+        tets: Vec::new(),
+    };
     if hull.dimension < 3 {
         return t;
     }
     // Seed with a non-degenerate hull triangle and a point off its plane.
     let f = hull.triangles[0];
     let p = |i: u32| t.points[i as usize];
-    let apex = (0..t.points.len() as u32).find(|&x| orient3d(&p(f[0]), &p(f[1]), &p(f[2]), &p(x)) != 0).unwrap();
+    let apex = (0..t.points.len() as u32)
+        .find(|&x| orient3d(&p(f[0]), &p(f[1]), &p(f[2]), &p(x)) != 0)
+        .unwrap();
     let first = [f[0], f[1], f[2], apex];
     t.tets.push(first);
     t.orient_positively();
-    let mut order: Vec<u32> = (0..t.points.len() as u32).filter(|x| !first.contains(x)).collect();
+    let mut order: Vec<u32> = (0..t.points.len() as u32)
+        .filter(|x| !first.contains(x))
+        .collect();
     Rng::new(seed).shuffle(&mut order);
     for x in order {
         insert(&mut t, x);
@@ -41,7 +48,12 @@ fn insert(t: &mut Tetrahedralization, x: u32) {
     let mut containing: Vec<(usize, Vec<usize>)> = Vec::new(); // tet, faces with x on them
     for (i, tet) in t.tets.iter().enumerate() {
         let [a, b, c, d] = *tet;
-        let s = [orient3d(p(b), p(c), p(d), &px), orient3d(p(a), p(d), p(c), &px), orient3d(p(a), p(b), p(d), &px), orient3d(p(a), p(c), p(b), &px)];
+        let s = [
+            orient3d(p(b), p(c), p(d), &px),
+            orient3d(p(a), p(d), p(c), &px),
+            orient3d(p(a), p(b), p(d), &px),
+            orient3d(p(a), p(c), p(b), &px),
+        ];
         if s.iter().all(|&v| v <= 0) {
             containing.push((i, (0..4).filter(|&k| s[k] == 0).collect()));
         }

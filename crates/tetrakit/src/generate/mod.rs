@@ -31,7 +31,14 @@ pub fn kuhn(k: usize) -> Tetrahedralization {
             }
         }
     }
-    let perms = [[0, 1, 2], [0, 2, 1], [1, 0, 2], [1, 2, 0], [2, 0, 1], [2, 1, 0]];
+    let perms = [
+        [0, 1, 2],
+        [0, 2, 1],
+        [1, 0, 2],
+        [1, 2, 0],
+        [2, 0, 1],
+        [2, 1, 0],
+    ];
     let mut tets = Vec::with_capacity(6 * k * k * k);
     for i in 0..k {
         for j in 0..k {
@@ -58,7 +65,9 @@ pub fn kuhn(k: usize) -> Tetrahedralization {
 pub fn random_points(n: usize, seed: u64, grid: Option<u32>) -> Vec<Point3> {
     let mut rng = Rng::new(seed);
     match grid {
-        None => (0..n).map(|_| [rng.unit(), rng.unit(), rng.unit()]).collect(),
+        None => (0..n)
+            .map(|_| [rng.unit(), rng.unit(), rng.unit()])
+            .collect(),
         Some(g) => {
             let g = g.max(2) as usize;
             let n = n.min(g * g * g);
@@ -99,7 +108,12 @@ pub fn cospherical_points(r2: i64) -> Vec<Point3> {
 /// let t = tetrakit::generate::random_tetrahedralization(30, 40, 7, None);
 /// assert!(t.verify_convex().is_valid());
 /// ```
-pub fn random_tetrahedralization(n: usize, flips: usize, seed: u64, grid: Option<u32>) -> Tetrahedralization {
+pub fn random_tetrahedralization(
+    n: usize,
+    flips: usize,
+    seed: u64,
+    grid: Option<u32>,
+) -> Tetrahedralization {
     let points = random_points(n, seed, grid);
     let mut t = tetrahedralize_points(points, seed);
     random_flips(&mut t, flips, seed ^ 0x5eed);
@@ -114,7 +128,11 @@ pub fn random_flips(t: &mut Tetrahedralization, flips: usize, seed: u64) -> usiz
     while done < flips && attempts < 20 * flips + 20 && !t.tets.is_empty() {
         attempts += 1;
         let ti = rng.below(t.tets.len());
-        let ok = if rng.below(2) == 0 { flip23(t, ti, rng.below(4)) } else { flip32(t, ti, rng.below(6)) };
+        let ok = if rng.below(2) == 0 {
+            flip23(t, ti, rng.below(4))
+        } else {
+            flip32(t, ti, rng.below(6))
+        };
         done += usize::from(ok);
     }
     done
@@ -122,13 +140,21 @@ pub fn random_flips(t: &mut Tetrahedralization, flips: usize, seed: u64) -> usiz
 
 fn pos(t: &Tetrahedralization, tet: [u32; 4]) -> [u32; 4] {
     let p = |i: u32| &t.points[i as usize];
-    if orient3d(p(tet[0]), p(tet[1]), p(tet[2]), p(tet[3])) < 0 { [tet[0], tet[1], tet[3], tet[2]] } else { tet }
+    if orient3d(p(tet[0]), p(tet[1]), p(tet[2]), p(tet[3])) < 0 {
+        [tet[0], tet[1], tet[3], tet[2]]
+    } else {
+        tet
+    }
 }
 
 /// True when the line `de` passes through the open triangle `abc`.
 fn pierces(t: &Tetrahedralization, d: u32, e: u32, [a, b, c]: [u32; 3]) -> bool {
     let p = |i: u32| &t.points[i as usize];
-    let s = [orient3d(p(d), p(e), p(a), p(b)), orient3d(p(d), p(e), p(b), p(c)), orient3d(p(d), p(e), p(c), p(a))];
+    let s = [
+        orient3d(p(d), p(e), p(a), p(b)),
+        orient3d(p(d), p(e), p(b), p(c)),
+        orient3d(p(d), p(e), p(c), p(a)),
+    ];
     s[0] != 0 && s[0] == s[1] && s[1] == s[2]
 }
 
@@ -137,7 +163,9 @@ fn flip23(t: &mut Tetrahedralization, ti: usize, f: usize) -> bool {
     let tet = t.tets[ti];
     let d = tet[f];
     let face: Vec<u32> = tet.iter().copied().filter(|&x| x != d).collect();
-    let Some(tj) = (0..t.tets.len()).find(|&j| j != ti && face.iter().all(|x| t.tets[j].contains(x))) else {
+    let Some(tj) =
+        (0..t.tets.len()).find(|&j| j != ti && face.iter().all(|x| t.tets[j].contains(x)))
+    else {
         return false;
     };
     let e = *t.tets[tj].iter().find(|x| !face.contains(x)).unwrap();
@@ -145,7 +173,11 @@ fn flip23(t: &mut Tetrahedralization, ti: usize, f: usize) -> bool {
     if !pierces(t, d, e, [a, b, c]) {
         return false;
     }
-    let new = [pos(t, [a, b, d, e]), pos(t, [b, c, d, e]), pos(t, [c, a, d, e])];
+    let new = [
+        pos(t, [a, b, d, e]),
+        pos(t, [b, c, d, e]),
+        pos(t, [c, a, d, e]),
+    ];
     t.tets[ti] = new[0];
     t.tets[tj] = new[1];
     t.tets.push(new[2]);
@@ -156,11 +188,17 @@ fn flip23(t: &mut Tetrahedralization, ti: usize, f: usize) -> bool {
 fn flip32(t: &mut Tetrahedralization, ti: usize, k: usize) -> bool {
     let (i, j) = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)][k];
     let (d, e) = (t.tets[ti][i], t.tets[ti][j]);
-    let around: Vec<usize> = (0..t.tets.len()).filter(|&x| t.tets[x].contains(&d) && t.tets[x].contains(&e)).collect();
+    let around: Vec<usize> = (0..t.tets.len())
+        .filter(|&x| t.tets[x].contains(&d) && t.tets[x].contains(&e))
+        .collect();
     if around.len() != 3 {
         return false;
     }
-    let mut ring: Vec<u32> = around.iter().flat_map(|&x| t.tets[x]).filter(|&x| x != d && x != e).collect();
+    let mut ring: Vec<u32> = around
+        .iter()
+        .flat_map(|&x| t.tets[x])
+        .filter(|&x| x != d && x != e)
+        .collect();
     ring.sort_unstable();
     ring.dedup();
     if ring.len() != 3 || !pierces(t, d, e, [ring[0], ring[1], ring[2]]) {
@@ -220,7 +258,12 @@ pub enum Corruption {
 /// can cross another when the points are in general position). The result is never the edge
 /// set of a tetrahedralization: a dropped edge leaves a face or hull edge unjoined, and an
 /// added segment crosses, overlaps or passes through something.
-pub fn corrupt_edges(points: &[Point3], edges: &[(u32, u32)], c: Corruption, seed: u64) -> Option<Vec<(u32, u32)>> {
+pub fn corrupt_edges(
+    points: &[Point3],
+    edges: &[(u32, u32)],
+    c: Corruption,
+    seed: u64,
+) -> Option<Vec<(u32, u32)>> {
     let mut rng = Rng::new(seed);
     let mut out = edges.to_vec();
     if c == Corruption::DropEdge {
@@ -259,8 +302,15 @@ pub fn corrupt_edges(points: &[Point3], edges: &[(u32, u32)], c: Corruption, see
             }
             let meets = |&(x, y): &(u32, u32)| segments_meet(p(a), p(b), p(x), p(y));
             let hit = match c {
-                Corruption::AddOverlap => near.iter().any(|e| meets(e) == Some(crate::geom::SegmentMeet::Overlap)),
-                _ => cands.iter().any(|&x| point_in_segment_interior(p(x), p(a), p(b))) || near.iter().any(|e| meets(e).is_some()),
+                Corruption::AddOverlap => near
+                    .iter()
+                    .any(|e| meets(e) == Some(crate::geom::SegmentMeet::Overlap)),
+                _ => {
+                    cands
+                        .iter()
+                        .any(|&x| point_in_segment_interior(p(x), p(a), p(b)))
+                        || near.iter().any(|e| meets(e).is_some())
+                }
             };
             if hit {
                 out.push((a.min(b), a.max(b)));
@@ -284,8 +334,11 @@ pub fn add_overlapping_tet(t: &Tetrahedralization, seed: u64) -> Option<Tetrahed
             faces.entry([f[0], f[1], f[2]]).or_default().push(i);
         }
     }
-    let mut shared: Vec<([u32; 3], usize, usize)> =
-        faces.into_iter().filter(|(_, v)| v.len() == 2).map(|(f, v)| (f, v[0], v[1])).collect();
+    let mut shared: Vec<([u32; 3], usize, usize)> = faces
+        .into_iter()
+        .filter(|(_, v)| v.len() == 2)
+        .map(|(f, v)| (f, v[0], v[1]))
+        .collect();
     shared.sort_unstable();
     rng.shuffle(&mut shared);
     for (f, i, j) in shared {

@@ -25,13 +25,20 @@ impl Hull2 {
     pub fn new(points: &[Point2]) -> Hull2 {
         let mut idx: Vec<u32> = (0..points.len() as u32).collect();
         let p = |i: u32| &points[i as usize];
-        idx.sort_by(|&a, &b| p(a)[0].total_cmp(&p(b)[0]).then(p(a)[1].total_cmp(&p(b)[1])));
+        idx.sort_by(|&a, &b| {
+            p(a)[0]
+                .total_cmp(&p(b)[0])
+                .then(p(a)[1].total_cmp(&p(b)[1]))
+        });
         idx.dedup_by(|a, b| p(*a) == p(*b));
         let mut hull: Vec<u32> = Vec::new();
         for pass in 0..2 {
             let start = hull.len();
-            let seq: Box<dyn Iterator<Item = &u32>> =
-                if pass == 0 { Box::new(idx.iter()) } else { Box::new(idx.iter().rev()) };
+            let seq: Box<dyn Iterator<Item = &u32>> = if pass == 0 {
+                Box::new(idx.iter())
+            } else {
+                Box::new(idx.iter().rev())
+            };
             for &i in seq {
                 while hull.len() >= start + 2
                     && orient2d(p(hull[hull.len() - 2]), p(hull[hull.len() - 1]), p(i)) <= 0
@@ -58,7 +65,10 @@ impl Hull2 {
                 })
             })
             .collect();
-        Hull2 { vertices: hull, on_boundary }
+        Hull2 {
+            vertices: hull,
+            on_boundary,
+        }
     }
 }
 
@@ -68,7 +78,14 @@ mod tests {
 
     #[test]
     fn collinear_and_duplicate_points() {
-        let pts = [[0.0, 0.0], [1.0, 1.0], [2.0, 2.0], [2.0, 2.0], [0.0, 2.0], [0.5, 1.5]];
+        let pts = [
+            [0.0, 0.0],
+            [1.0, 1.0],
+            [2.0, 2.0],
+            [2.0, 2.0],
+            [0.0, 2.0],
+            [0.5, 1.5],
+        ];
         let h = Hull2::new(&pts);
         assert_eq!(h.vertices.len(), 3, "{:?}", h.vertices);
         assert_eq!(h.on_boundary, [true, true, true, true, true, false]);

@@ -59,13 +59,23 @@ impl Hull3 {
     /// Computes the hull of `points` exactly. Duplicate points are allowed.
     pub fn new(points: &[Point3]) -> Hull3 {
         let Some((seed, dimension)) = initial_simplex(points) else {
-            return Hull3 { dimension: affine_dimension(points), ..Default::default() };
+            return Hull3 {
+                dimension: affine_dimension(points),
+                ..Default::default()
+            };
         };
-        let mut b = Builder { pts: points, tris: Vec::new() };
+        let mut b = Builder {
+            pts: points,
+            tris: Vec::new(),
+        };
         b.start(seed);
         b.run();
         let triangles: Vec<[u32; 3]> = b.tris.iter().filter(|t| t.alive).map(|t| t.v).collect();
-        let mut h = Hull3 { dimension, triangles, ..Default::default() };
+        let mut h = Hull3 {
+            dimension,
+            triangles,
+            ..Default::default()
+        };
         h.build_facets(points);
         h.assign_points(points);
         h
@@ -155,9 +165,14 @@ impl Hull3 {
         }
         let edges = self.triangle_edges();
         for (&(a, b), &(t, _)) in &edges {
-            let Some(&(u, _)) = edges.get(&(b, a)) else { continue };
+            let Some(&(u, _)) = edges.get(&(b, a)) else {
+                continue;
+            };
             let tv = self.triangles[t];
-            let apex = *self.triangles[u].iter().find(|&&x| x != a && x != b).unwrap();
+            let apex = *self.triangles[u]
+                .iter()
+                .find(|&&x| x != a && x != b)
+                .unwrap();
             let p = |i: u32| &pts[i as usize];
             if orient3d(p(tv[0]), p(tv[1]), p(tv[2]), p(apex)) == 0 {
                 let (rt, ru) = (find(&mut parent, t), find(&mut parent, u));
@@ -181,7 +196,13 @@ impl Hull3 {
         let planes: Vec<Plane> = self
             .facet_planes
             .iter()
-            .map(|f| Plane::new(&pts[f[0] as usize], &pts[f[1] as usize], &pts[f[2] as usize]))
+            .map(|f| {
+                Plane::new(
+                    &pts[f[0] as usize],
+                    &pts[f[1] as usize],
+                    &pts[f[2] as usize],
+                )
+            })
             .collect();
         let lists: Vec<Vec<u32>> = pts
             .par_iter()
@@ -210,7 +231,9 @@ pub fn affine_dimension(points: &[Point3]) -> usize {
         Some((_, d)) => d,
         None => {
             let Some(a) = points.first() else { return 0 };
-            let Some(b) = points.iter().find(|p| *p != a) else { return 0 };
+            let Some(b) = points.iter().find(|p| *p != a) else {
+                return 0;
+            };
             if points.iter().all(|c| collinear3(a, b, c)) {
                 1
             } else {
@@ -253,7 +276,12 @@ impl Builder<'_> {
             std::mem::swap(&mut b, &mut c);
         }
         for v in [[b, c, d], [a, d, c], [a, b, d], [a, c, b]] {
-            self.tris.push(Tri { v, nb: [NONE; 3], alive: true, conflicts: Vec::new() });
+            self.tris.push(Tri {
+                v,
+                nb: [NONE; 3],
+                alive: true,
+                conflicts: Vec::new(),
+            });
         }
         let mut edges = HashMap::new();
         for t in 0..4 {
@@ -285,7 +313,10 @@ impl Builder<'_> {
             }
             let p = self.furthest(t);
             let new = self.insert(t, p);
-            work.extend(new.into_iter().filter(|&u| !self.tris[u].conflicts.is_empty()));
+            work.extend(
+                new.into_iter()
+                    .filter(|&u| !self.tris[u].conflicts.is_empty()),
+            );
         }
     }
 
@@ -294,7 +325,11 @@ impl Builder<'_> {
         let plane = Plane::new(self.p(v[0]), self.p(v[1]), self.p(v[2]));
         let c = &self.tris[t].conflicts;
         *c.iter()
-            .max_by(|&&a, &&b| plane.estimate(self.p(a)).total_cmp(&plane.estimate(self.p(b))))
+            .max_by(|&&a, &&b| {
+                plane
+                    .estimate(self.p(a))
+                    .total_cmp(&plane.estimate(self.p(b)))
+            })
             .unwrap()
     }
 
@@ -331,7 +366,12 @@ impl Builder<'_> {
         let mut new = Vec::with_capacity(horizon.len());
         for &(a, b, n, j) in &horizon {
             let id = self.tris.len();
-            self.tris.push(Tri { v: [a, b, p], nb: [n as u32, NONE, NONE], alive: true, conflicts: vec![] });
+            self.tris.push(Tri {
+                v: [a, b, p],
+                nb: [n as u32, NONE, NONE],
+                alive: true,
+                conflicts: vec![],
+            });
             self.tris[n].nb[j] = id as u32;
             by_start.insert(a, id);
             new.push(id);
@@ -422,7 +462,13 @@ mod tests {
     #[test]
     fn flat_sets_report_their_dimension() {
         assert_eq!(Hull3::new(&[[1.0, 2.0, 3.0]; 5]).dimension, 0);
-        assert_eq!(Hull3::new(&[[0.0; 3], [1.0, 1.0, 1.0], [2.0, 2.0, 2.0]]).dimension, 1);
-        assert_eq!(Hull3::new(&[[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [3.0, 3.0, 0.0]]).dimension, 2);
+        assert_eq!(
+            Hull3::new(&[[0.0; 3], [1.0, 1.0, 1.0], [2.0, 2.0, 2.0]]).dimension,
+            1
+        );
+        assert_eq!(
+            Hull3::new(&[[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [3.0, 3.0, 0.0]]).dimension,
+            2
+        );
     }
 }

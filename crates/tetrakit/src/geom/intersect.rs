@@ -178,9 +178,8 @@ pub fn segment_meets_open_tetrahedron(p: &Point3, q: &Point3, t: &[Point3; 4]) -
     }
     // Faces oriented so that the inside is positive.
     let faces = [(1, 2, 3, 0), (0, 3, 2, 1), (0, 1, 3, 2), (0, 2, 1, 3)];
-    let side = |x: &Point3, f: (usize, usize, usize, usize)| {
-        s * orient3d(&t[f.0], &t[f.1], &t[f.2], x) * -1
-    };
+    let side =
+        |x: &Point3, f: (usize, usize, usize, usize)| -(s * orient3d(&t[f.0], &t[f.1], &t[f.2], x));
     let inside = |x: &Point3| faces.iter().all(|&f| side(x, f) > 0);
     if inside(p) || inside(q) {
         return true;
@@ -262,29 +261,65 @@ mod tests {
             Some(SegmentMeet::Overlap)
         );
         // coplanar disjoint
-        assert_eq!(segments_meet(&O, &b, &[0.0, 1.0, 0.0], &[2.0, 1.0, 0.0]), None);
+        assert_eq!(
+            segments_meet(&O, &b, &[0.0, 1.0, 0.0], &[2.0, 1.0, 0.0]),
+            None
+        );
         // crossing in a vertical plane (projection axis matters)
         assert_eq!(
             segments_meet(&O, &[0.0, 0.0, 2.0], &[0.0, -1.0, 1.0], &[0.0, 1.0, 1.0]),
             Some(SegmentMeet::Cross)
         );
         // skew
-        assert_eq!(segments_meet(&O, &b, &[1.0, -1.0, 1.0], &[1.0, 1.0, 1.0]), None);
+        assert_eq!(
+            segments_meet(&O, &b, &[1.0, -1.0, 1.0], &[1.0, 1.0, 1.0]),
+            None
+        );
     }
 
     #[test]
     fn puncture_coplanar_and_boundary_cases() {
         let (a, b, c) = (O, [4.0, 0.0, 0.0], [0.0, 4.0, 0.0]);
         // coplanar segment through the interior
-        assert!(segment_punctures_triangle(&[-1.0, 1.0, 0.0], &[5.0, 1.0, 0.0], &a, &b, &c));
+        assert!(segment_punctures_triangle(
+            &[-1.0, 1.0, 0.0],
+            &[5.0, 1.0, 0.0],
+            &a,
+            &b,
+            &c
+        ));
         // coplanar segment along an edge
-        assert!(!segment_punctures_triangle(&[-1.0, 0.0, 0.0], &[5.0, 0.0, 0.0], &a, &b, &c));
+        assert!(!segment_punctures_triangle(
+            &[-1.0, 0.0, 0.0],
+            &[5.0, 0.0, 0.0],
+            &a,
+            &b,
+            &c
+        ));
         // crossing exactly through an edge
-        assert!(!segment_punctures_triangle(&[2.0, 0.0, -1.0], &[2.0, 0.0, 1.0], &a, &b, &c));
+        assert!(!segment_punctures_triangle(
+            &[2.0, 0.0, -1.0],
+            &[2.0, 0.0, 1.0],
+            &a,
+            &b,
+            &c
+        ));
         // through a vertex
-        assert!(!segment_punctures_triangle(&[0.0, 0.0, -1.0], &[0.0, 0.0, 1.0], &a, &b, &c));
+        assert!(!segment_punctures_triangle(
+            &[0.0, 0.0, -1.0],
+            &[0.0, 0.0, 1.0],
+            &a,
+            &b,
+            &c
+        ));
         // closed segment ending in the open triangle
-        assert!(segment_meets_open_triangle(&[1.0, 1.0, 0.0], &[1.0, 1.0, 3.0], &a, &b, &c));
+        assert!(segment_meets_open_triangle(
+            &[1.0, 1.0, 0.0],
+            &[1.0, 1.0, 3.0],
+            &a,
+            &b,
+            &c
+        ));
         // a segment from a vertex into the triangle (coplanar)
         assert!(segment_punctures_triangle(&a, &[1.0, 1.0, 0.0], &a, &b, &c));
     }
@@ -293,15 +328,31 @@ mod tests {
     fn open_tetrahedron_cases() {
         let t = [O, [4.0, 0.0, 0.0], [0.0, 4.0, 0.0], [0.0, 0.0, 4.0]];
         // through two opposite edges (midpoints of edge 01 and edge 23)
-        assert!(segment_meets_open_tetrahedron(&[2.0, 0.0, 0.0], &[0.0, 2.0, 2.0], &t));
+        assert!(segment_meets_open_tetrahedron(
+            &[2.0, 0.0, 0.0],
+            &[0.0, 2.0, 2.0],
+            &t
+        ));
         // along a face
-        assert!(!segment_meets_open_tetrahedron(&[1.0, 0.0, 0.0], &[0.0, 1.0, 0.0], &t));
+        assert!(!segment_meets_open_tetrahedron(
+            &[1.0, 0.0, 0.0],
+            &[0.0, 1.0, 0.0],
+            &t
+        ));
         // from a vertex through the interior
         assert!(segment_meets_open_tetrahedron(&O, &[3.0, 3.0, 3.0], &t));
         // ending on a face from outside
-        assert!(!segment_meets_open_tetrahedron(&[1.0, 1.0, -1.0], &[1.0, 1.0, 0.0], &t));
+        assert!(!segment_meets_open_tetrahedron(
+            &[1.0, 1.0, -1.0],
+            &[1.0, 1.0, 0.0],
+            &t
+        ));
         // crossing a face into the interior and ending inside
-        assert!(segment_meets_open_tetrahedron(&[1.0, 1.0, -1.0], &[1.0, 1.0, 0.5], &t));
+        assert!(segment_meets_open_tetrahedron(
+            &[1.0, 1.0, -1.0],
+            &[1.0, 1.0, 0.5],
+            &t
+        ));
         assert!(point_in_closed_tetrahedron(&[1.0, 1.0, 0.0], &t));
         assert!(!point_in_closed_tetrahedron(&O, &t));
     }
@@ -309,8 +360,14 @@ mod tests {
     #[test]
     fn coplanar_triangle_overlap() {
         let t = [O, [2.0, 0.0, 0.0], [0.0, 2.0, 0.0]];
-        assert!(coplanar_triangles_overlap(&t, &[[1.0, 1.0, 0.0], [0.0, 0.0, 0.0], [2.0, 0.0, 0.0]]));
+        assert!(coplanar_triangles_overlap(
+            &t,
+            &[[1.0, 1.0, 0.0], [0.0, 0.0, 0.0], [2.0, 0.0, 0.0]]
+        ));
         // sharing an edge, opposite sides
-        assert!(!coplanar_triangles_overlap(&t, &[[2.0, 0.0, 0.0], [0.0, 2.0, 0.0], [2.0, 2.0, 0.0]]));
+        assert!(!coplanar_triangles_overlap(
+            &t,
+            &[[2.0, 0.0, 0.0], [0.0, 2.0, 0.0], [2.0, 2.0, 0.0]]
+        ));
     }
 }

@@ -45,7 +45,11 @@ fn sign(x: f64) -> i8 {
 
 #[inline]
 fn c3(p: &Point3) -> Coord3D<f64> {
-    Coord3D { x: p[0], y: p[1], z: p[2] }
+    Coord3D {
+        x: p[0],
+        y: p[1],
+        z: p[2],
+    }
 }
 
 /// Sign of `det[b−a, c−a, d−a]`: +1 when `abcd` is a positively oriented tetrahedron.
@@ -154,7 +158,13 @@ impl Plane {
     /// The plane through `a, b, c`.
     pub fn new(a: &Point3, b: &Point3, c: &Point3) -> Self {
         let f = Frame::new(a);
-        Plane { a: *a, b: *b, c: *c, db: f.dir(b), dc: f.dir(c) }
+        Plane {
+            a: *a,
+            b: *b,
+            c: *c,
+            db: f.dir(b),
+            dc: f.dir(c),
+        }
     }
     /// Exact sign of `orient3d(a, b, c, x)`.
     #[inline]
@@ -192,7 +202,11 @@ pub fn orient2d(a: &Point2, b: &Point2, c: &Point2) -> i8 {
 /// (the remaining two coordinates keep their order). Dropping a coordinate is exact.
 #[inline]
 pub fn orient2d_drop(a: &Point3, b: &Point3, c: &Point3, axis: usize) -> i8 {
-    orient2d(&drop_axis(a, axis), &drop_axis(b, axis), &drop_axis(c, axis))
+    orient2d(
+        &drop_axis(a, axis),
+        &drop_axis(b, axis),
+        &drop_axis(c, axis),
+    )
 }
 
 /// The 2D point left when coordinate `axis` of `p` is dropped.
@@ -304,9 +318,20 @@ mod tests {
     #[test]
     fn orient2d_and_collinearity() {
         assert_eq!(orient2d(&[0.0, 0.0], &[1.0, 0.0], &[2.0, 0.0]), 0);
-        assert!(collinear3(&[0.0, 0.0, 0.0], &[1.0, 2.0, 3.0], &[2.0, 4.0, 6.0]));
-        assert!(!collinear3(&[0.0, 0.0, 0.0], &[1.0, 2.0, 3.0], &[2.0, 4.0, 6.5]));
-        assert_eq!(projection_axis(&[0.0, 0.0, 0.0], &[1.0, 0.0, 0.0], &[0.0, 0.0, 1.0]), Some(1));
+        assert!(collinear3(
+            &[0.0, 0.0, 0.0],
+            &[1.0, 2.0, 3.0],
+            &[2.0, 4.0, 6.0]
+        ));
+        assert!(!collinear3(
+            &[0.0, 0.0, 0.0],
+            &[1.0, 2.0, 3.0],
+            &[2.0, 4.0, 6.5]
+        ));
+        assert_eq!(
+            projection_axis(&[0.0, 0.0, 0.0], &[1.0, 0.0, 0.0], &[0.0, 0.0, 1.0]),
+            Some(1)
+        );
     }
 
     #[test]
@@ -318,8 +343,14 @@ mod tests {
         assert_eq!(insphere(&a, &b, &c, &d, &[0.2, 0.2, 0.2]), 1);
         assert_eq!(insphere(&a, &b, &c, &d, &[5.0, 5.0, 5.0]), -1);
         assert_eq!(insphere(&a, &b, &c, &d, &[1.0, 1.0, 0.0]), 0); // cospherical
-        assert_eq!(incircle(&[0.0, 0.0], &[1.0, 0.0], &[0.0, 1.0], &[0.5, 0.5]), 1);
-        assert_eq!(incircle(&[0.0, 0.0], &[1.0, 0.0], &[0.0, 1.0], &[1.0, 1.0]), 0);
+        assert_eq!(
+            incircle(&[0.0, 0.0], &[1.0, 0.0], &[0.0, 1.0], &[0.5, 0.5]),
+            1
+        );
+        assert_eq!(
+            incircle(&[0.0, 0.0], &[1.0, 0.0], &[0.0, 1.0], &[1.0, 1.0]),
+            0
+        );
     }
 
     #[test]

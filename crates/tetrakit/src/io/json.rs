@@ -21,15 +21,31 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
     let text = read_text(path)?;
     let doc: Doc = serde_json::from_str(&text)
         .map_err(|e| InputError::new(path, e.line(), format!("invalid JSON input: {e}")))?;
-    let mut input = Input { dim: 3, point_file: path.to_path_buf(), ..Default::default() };
+    let mut input = Input {
+        dim: 3,
+        point_file: path.to_path_buf(),
+        ..Default::default()
+    };
     for (k, p) in doc.points.iter().enumerate() {
         if !(2..=3).contains(&p.len()) {
-            return Err(InputError::new(path, 0, format!("points[{k}] has {} coordinates (expected 2 or 3)", p.len())));
+            return Err(InputError::new(
+                path,
+                0,
+                format!("points[{k}] has {} coordinates (expected 2 or 3)", p.len()),
+            ));
         }
         if let Some(x) = p.iter().find(|x| !coordinate_in_range(**x)) {
-            return Err(InputError::new(path, 0, format!("points[{k}] coordinate {x} is outside the exactly supported range [2^-142, 2^201]")));
+            return Err(InputError::new(
+                path,
+                0,
+                format!(
+                    "points[{k}] coordinate {x} is outside the exactly supported range [2^-142, 2^201]"
+                ),
+            ));
         }
-        input.points.push([p[0], p[1], p.get(2).copied().unwrap_or(0.0)]);
+        input
+            .points
+            .push([p[0], p[1], p.get(2).copied().unwrap_or(0.0)]);
     }
     if doc.points.is_empty() {
         return Err(InputError::new(path, 0, "no points"));
@@ -38,14 +54,26 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
         input.dim = 2;
     }
     let n = input.points.len();
-    fn idx<const K: usize>(rows: &[[i64; K]], n: usize, field: &str, path: &Path) -> Result<Vec<[u32; K]>, InputError> {
+    fn idx<const K: usize>(
+        rows: &[[i64; K]],
+        n: usize,
+        field: &str,
+        path: &Path,
+    ) -> Result<Vec<[u32; K]>, InputError> {
         rows.iter()
             .enumerate()
             .map(|(k, r)| {
                 let mut out = [0u32; K];
                 for (o, &v) in out.iter_mut().zip(r) {
                     if v < 0 || v as usize >= n {
-                        return Err(InputError::new(path, 0, format!("{field}[{k}] names vertex {v}, but points are numbered 0..={}", n - 1)));
+                        return Err(InputError::new(
+                            path,
+                            0,
+                            format!(
+                                "{field}[{k}] names vertex {v}, but points are numbered 0..={}",
+                                n - 1
+                            ),
+                        ));
                     }
                     *o = v as u32;
                 }

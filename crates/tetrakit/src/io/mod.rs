@@ -33,7 +33,11 @@ pub struct InputError {
 impl InputError {
     /// An error at `line` of `file`.
     pub fn new(file: &Path, line: usize, message: impl Into<String>) -> Self {
-        InputError { file: file.display().to_string(), line, message: message.into() }
+        InputError {
+            file: file.display().to_string(),
+            line,
+            message: message.into(),
+        }
     }
 }
 
@@ -76,7 +80,11 @@ pub struct Input {
 /// and `.face` when present), `.edge`/`.ele`/`.face` (with the sibling `.node`), `.obj`,
 /// `.json`, `.xyz`/`.txt`.
 pub fn read_input(path: &Path) -> Result<Input, InputError> {
-    let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase();
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .unwrap_or("")
+        .to_ascii_lowercase();
     let input = match ext.as_str() {
         "node" | "edge" | "ele" | "face" => tetgen::read(path, &ext)?,
         "obj" => obj::read(path)?,
@@ -86,7 +94,9 @@ pub fn read_input(path: &Path) -> Result<Input, InputError> {
             return Err(InputError::new(
                 path,
                 0,
-                format!("unknown input format '.{ext}' (expected .node, .edge, .ele, .face, .obj, .json, .xyz or .txt)"),
+                format!(
+                    "unknown input format '.{ext}' (expected .node, .edge, .ele, .face, .obj, .json, .xyz or .txt)"
+                ),
             ));
         }
     };
@@ -107,14 +117,21 @@ pub(crate) fn parse_coord(tok: &str, path: &Path, line: usize) -> Result<f64, In
         return Err(InputError::new(
             path,
             line,
-            format!("coordinate {tok} is not finite or outside the exactly supported magnitude range [2^-142, 2^201]"),
+            format!(
+                "coordinate {tok} is not finite or outside the exactly supported magnitude range [2^-142, 2^201]"
+            ),
         ));
     }
     Ok(x)
 }
 
 /// Parses an index token as an integer.
-pub(crate) fn parse_int(tok: &str, path: &Path, line: usize, what: &str) -> Result<i64, InputError> {
+pub(crate) fn parse_int(
+    tok: &str,
+    path: &Path,
+    line: usize,
+    what: &str,
+) -> Result<i64, InputError> {
     tok.parse()
         .map_err(|_| InputError::new(path, line, format!("{what} '{tok}' is not an integer")))
 }
@@ -149,7 +166,11 @@ pub(crate) fn check_segments(
     path: &Path,
 ) -> Result<(), InputError> {
     let at = |k: usize| -> (usize, String) {
-        if lines[k] > 0 { (lines[k], format!("line {}", lines[k])) } else { (0, format!("segments[{k}]")) }
+        if lines[k] > 0 {
+            (lines[k], format!("line {}", lines[k]))
+        } else {
+            (0, format!("segments[{k}]"))
+        }
     };
     let mut keyed: Vec<(u32, u32, usize)> = Vec::with_capacity(segs.len());
     for (k, s) in segs.iter().enumerate() {
@@ -219,7 +240,11 @@ pub(crate) fn token_lines(text: &str) -> impl Iterator<Item = (usize, Vec<&str>)
 
 fn read_xyz(path: &Path) -> Result<Input, InputError> {
     let text = read_text(path)?;
-    let mut input = Input { dim: 3, point_file: path.to_path_buf(), ..Default::default() };
+    let mut input = Input {
+        dim: 3,
+        point_file: path.to_path_buf(),
+        ..Default::default()
+    };
     let mut dim = None;
     for (line, toks) in token_lines(&text) {
         let d = *dim.get_or_insert(toks.len());
@@ -227,7 +252,11 @@ fn read_xyz(path: &Path) -> Result<Input, InputError> {
             return Err(InputError::new(
                 path,
                 line,
-                format!("expected {} coordinates, found {}", if (2..=3).contains(&d) { d } else { 3 }, toks.len()),
+                format!(
+                    "expected {} coordinates, found {}",
+                    if (2..=3).contains(&d) { d } else { 3 },
+                    toks.len()
+                ),
             ));
         }
         let mut p = [0.0; 3];

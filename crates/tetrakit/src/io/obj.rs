@@ -7,7 +7,12 @@ use std::path::Path;
 
 pub(super) fn read(path: &Path) -> Result<Input, InputError> {
     let text = read_text(path)?;
-    let mut input = Input { dim: 3, index_base: 1, point_file: path.to_path_buf(), ..Default::default() };
+    let mut input = Input {
+        dim: 3,
+        index_base: 1,
+        point_file: path.to_path_buf(),
+        ..Default::default()
+    };
     let mut seg_lines = Vec::new();
     let mut face_lines: Vec<(usize, Vec<i64>)> = Vec::new();
     let mut polylines: Vec<(usize, Vec<i64>)> = Vec::new();
@@ -15,10 +20,18 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
         match toks[0] {
             "v" => {
                 if !(4..=5).contains(&toks.len()) {
-                    return Err(InputError::new(path, line, format!("'v' needs 3 coordinates, found {}", toks.len() - 1)));
+                    return Err(InputError::new(
+                        path,
+                        line,
+                        format!("'v' needs 3 coordinates, found {}", toks.len() - 1),
+                    ));
                 }
                 if toks.len() == 5 && toks[4].parse::<f64>() != Ok(1.0) {
-                    return Err(InputError::new(path, line, "homogeneous weight w other than 1 is not supported"));
+                    return Err(InputError::new(
+                        path,
+                        line,
+                        "homogeneous weight w other than 1 is not supported",
+                    ));
                 }
                 let p = [
                     parse_coord(toks[1], path, line)?,
@@ -36,15 +49,27 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
                     let raw = parse_int(head, path, line, "vertex")?;
                     let abs = if raw < 0 { n + raw + 1 } else { raw };
                     if raw == 0 || abs < 1 || abs > n {
-                        return Err(InputError::new(path, line, format!("vertex {raw} is out of range ({n} vertices so far)")));
+                        return Err(InputError::new(
+                            path,
+                            line,
+                            format!("vertex {raw} is out of range ({n} vertices so far)"),
+                        ));
                     }
                     refs.push(abs - 1);
                 }
                 let need = if toks[0] == "l" { 2 } else { 3 };
                 if refs.len() < need {
-                    return Err(InputError::new(path, line, format!("'{}' needs at least {need} vertices", toks[0])));
+                    return Err(InputError::new(
+                        path,
+                        line,
+                        format!("'{}' needs at least {need} vertices", toks[0]),
+                    ));
                 }
-                if toks[0] == "l" { polylines.push((line, refs)) } else { face_lines.push((line, refs)) }
+                if toks[0] == "l" {
+                    polylines.push((line, refs))
+                } else {
+                    face_lines.push((line, refs))
+                }
             }
             _ => {}
         }
@@ -60,9 +85,18 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
     }
     for (line, refs) in face_lines {
         if refs.len() != 3 {
-            return Err(InputError::new(path, line, format!("face with {} vertices: only triangles are supported", refs.len())));
+            return Err(InputError::new(
+                path,
+                line,
+                format!(
+                    "face with {} vertices: only triangles are supported",
+                    refs.len()
+                ),
+            ));
         }
-        input.faces.push([refs[0] as u32, refs[1] as u32, refs[2] as u32]);
+        input
+            .faces
+            .push([refs[0] as u32, refs[1] as u32, refs[2] as u32]);
     }
     check_segments(&input.segments, &seg_lines, 1, path)?;
     Ok(input)

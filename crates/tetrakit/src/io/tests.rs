@@ -19,7 +19,10 @@ const NODE: &str = "# a tetrahedron\n4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1
 #[test]
 fn reads_tetgen_one_based_with_comments() {
     let node = tmp("ok1.node", NODE);
-    tmp("ok1.edge", "6 1\n1 1 2 0\n2 1 3 0\n3 1 4 0\n4 2 3 0\n5 2 4 0\n6 3 4 0 # last\n");
+    tmp(
+        "ok1.edge",
+        "6 1\n1 1 2 0\n2 1 3 0\n3 1 4 0\n4 2 3 0\n5 2 4 0\n6 3 4 0 # last\n",
+    );
     let input = read_input(&node.with_extension("edge")).unwrap();
     assert_eq!(input.points.len(), 4);
     assert_eq!(input.index_base, 1);
@@ -76,14 +79,25 @@ fn rejects_duplicate_points() {
 
 #[test]
 fn obj_and_json() {
-    let input = read_input(&tmp("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2 3\nf 1/1 2/2 -1\n")).unwrap();
+    let input = read_input(&tmp(
+        "a.obj",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2 3\nf 1/1 2/2 -1\n",
+    ))
+    .unwrap();
     assert_eq!(input.segments, vec![[0, 1], [1, 2]]);
     assert_eq!(input.faces, vec![[0, 1, 2]]);
     let e = err("b.obj", "v 0 0 0\nl 1 5\n");
     assert_eq!(e.line, 2);
-    let input = read_input(&tmp("a.json", r#"{"points":[[0,0,0],[1,0,0]],"segments":[[0,1]]}"#)).unwrap();
+    let input = read_input(&tmp(
+        "a.json",
+        r#"{"points":[[0,0,0],[1,0,0]],"segments":[[0,1]]}"#,
+    ))
+    .unwrap();
     assert_eq!(input.segments, vec![[0, 1]]);
-    let e = err("b.json", "{\"points\": [[0,0,0],\n [1,0,0]],\n \"segments\": [[0,7]]}");
+    let e = err(
+        "b.json",
+        "{\"points\": [[0,0,0],\n [1,0,0]],\n \"segments\": [[0,7]]}",
+    );
     assert!(e.message.contains("segments[0]"), "{e}");
     let e = err("c.json", "{\"points\": [[0,0,0],\n [1,0,\"a\"]]}");
     assert_eq!(e.line, 2, "{e}");
@@ -91,7 +105,12 @@ fn obj_and_json() {
 
 #[test]
 fn written_files_read_back_exactly() {
-    let pts = vec![[0.1, 0.2, 0.3], [1.0 / 3.0, 0.0, 0.0], [0.0, 1e-30, 0.0], [0.0, 0.0, 7.0]];
+    let pts = vec![
+        [0.1, 0.2, 0.3],
+        [1.0 / 3.0, 0.0, 0.0],
+        [0.0, 1e-30, 0.0],
+        [0.0, 0.0, 7.0],
+    ];
     let dir = std::env::temp_dir().join(format!("tetrakit-io-rt-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     write_mesh(&dir.join("m.ele"), &pts, &[[0, 1, 2, 3]], 1).unwrap();
@@ -99,5 +118,8 @@ fn written_files_read_back_exactly() {
     assert_eq!(back.points, pts);
     assert_eq!(back.tets, vec![[0, 1, 2, 3]]);
     write_edges(&dir.join("m.obj"), &pts, &[(0, 1), (2, 3)], 1).unwrap();
-    assert_eq!(read_input(&dir.join("m.obj")).unwrap().segments, vec![[0, 1], [2, 3]]);
+    assert_eq!(
+        read_input(&dir.join("m.obj")).unwrap().segments,
+        vec![[0, 1], [2, 3]]
+    );
 }

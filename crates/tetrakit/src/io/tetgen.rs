@@ -10,7 +10,11 @@ use std::path::Path;
 pub(super) fn read(path: &Path, ext: &str) -> Result<Input, InputError> {
     let node = path.with_extension("node");
     if ext != "node" && !node.exists() {
-        return Err(InputError::new(path, 0, format!("needs the point file {} beside it", node.display())));
+        return Err(InputError::new(
+            path,
+            0,
+            format!("needs the point file {} beside it", node.display()),
+        ));
     }
     let mut input = read_node(&node)?;
     let sibling = |e: &str| {
@@ -55,28 +59,47 @@ fn read_node(path: &Path) -> Result<Input, InputError> {
     let declared = h[0] as usize;
     let dim = h.get(1).copied().unwrap_or(3) as usize;
     if !(2..=3).contains(&dim) {
-        return Err(InputError::new(path, hline, format!("dimension {dim} is not 2 or 3")));
+        return Err(InputError::new(
+            path,
+            hline,
+            format!("dimension {dim} is not 2 or 3"),
+        ));
     }
     let extra = (h.get(2).copied().unwrap_or(0) + h.get(3).copied().unwrap_or(0)) as usize;
-    let mut input = Input { dim, point_file: path.to_path_buf(), ..Default::default() };
+    let mut input = Input {
+        dim,
+        point_file: path.to_path_buf(),
+        ..Default::default()
+    };
     for (line, toks) in lines {
         if toks.len() < 1 + dim || toks.len() > 1 + dim + extra {
             return Err(InputError::new(
                 path,
                 line,
-                format!("expected an index, {dim} coordinates and {extra} attributes/markers, found {} values", toks.len()),
+                format!(
+                    "expected an index, {dim} coordinates and {extra} attributes/markers, found {} values",
+                    toks.len()
+                ),
             ));
         }
         let idx = parse_int(toks[0], path, line, "point index")?;
         if input.points.is_empty() {
             if idx != 0 && idx != 1 {
-                return Err(InputError::new(path, line, format!("first point is numbered {idx}; TetGen numbering starts at 0 or 1")));
+                return Err(InputError::new(
+                    path,
+                    line,
+                    format!("first point is numbered {idx}; TetGen numbering starts at 0 or 1"),
+                ));
             }
             input.index_base = idx as u32;
         }
         let expect = input.points.len() as i64 + input.index_base as i64;
         if idx != expect {
-            return Err(InputError::new(path, line, format!("point numbered {idx}, expected {expect}")));
+            return Err(InputError::new(
+                path,
+                line,
+                format!("point numbered {idx}, expected {expect}"),
+            ));
         }
         let mut p = [0.0; 3];
         for k in 0..dim {
@@ -85,14 +108,21 @@ fn read_node(path: &Path) -> Result<Input, InputError> {
         input.points.push(p);
         input.point_lines.push(line);
         if input.points.len() > declared {
-            return Err(InputError::new(path, line, format!("more points than the {declared} the header declares")));
+            return Err(InputError::new(
+                path,
+                line,
+                format!("more points than the {declared} the header declares"),
+            ));
         }
     }
     if input.points.len() != declared {
         return Err(InputError::new(
             path,
             0,
-            format!("header declares {declared} points but the file has {} (truncated?)", input.points.len()),
+            format!(
+                "header declares {declared} points but the file has {} (truncated?)",
+                input.points.len()
+            ),
         ));
     }
     if declared == 0 {
@@ -112,11 +142,23 @@ fn read_rows<const K: usize>(
     let mut lines = token_lines(&text);
     let (hline, h) = header(path, &mut lines)?;
     let declared = h[0] as usize;
-    let per_row = if K == 4 { h.get(1).copied().unwrap_or(4) as usize } else { K };
+    let per_row = if K == 4 {
+        h.get(1).copied().unwrap_or(4) as usize
+    } else {
+        K
+    };
     if K == 4 && per_row != 4 && per_row != 10 {
-        return Err(InputError::new(path, hline, format!("{per_row} nodes per tetrahedron (expected 4 or 10)")));
+        return Err(InputError::new(
+            path,
+            hline,
+            format!("{per_row} nodes per tetrahedron (expected 4 or 10)"),
+        ));
     }
-    let extra = if K == 4 { h.get(2).copied().unwrap_or(0) as usize } else { h.get(1).copied().unwrap_or(0) as usize };
+    let extra = if K == 4 {
+        h.get(2).copied().unwrap_or(0) as usize
+    } else {
+        h.get(1).copied().unwrap_or(0) as usize
+    };
     let mut rows = Vec::new();
     let mut row_lines = Vec::new();
     let mut base = None;
@@ -125,13 +167,27 @@ fn read_rows<const K: usize>(
             return Err(InputError::new(
                 path,
                 line,
-                format!("expected an index and {per_row} vertices (plus {extra} attributes/markers), found {} values", toks.len()),
+                format!(
+                    "expected an index and {per_row} vertices (plus {extra} attributes/markers), found {} values",
+                    toks.len()
+                ),
             ));
         }
         let idx = parse_int(toks[0], path, line, "index")?;
         let b = *base.get_or_insert(idx);
         if (b != 0 && b != 1) || idx != b + rows.len() as i64 {
-            return Err(InputError::new(path, line, format!("{what} numbered {idx}, expected {}", if b == 0 || b == 1 { b + rows.len() as i64 } else { 1 })));
+            return Err(InputError::new(
+                path,
+                line,
+                format!(
+                    "{what} numbered {idx}, expected {}",
+                    if b == 0 || b == 1 {
+                        b + rows.len() as i64
+                    } else {
+                        1
+                    }
+                ),
+            ));
         }
         let mut r = [0u32; K];
         for k in 0..K {
@@ -141,14 +197,21 @@ fn read_rows<const K: usize>(
         rows.push(r);
         row_lines.push(line);
         if rows.len() > declared {
-            return Err(InputError::new(path, line, format!("more rows than the {declared} the header declares")));
+            return Err(InputError::new(
+                path,
+                line,
+                format!("more rows than the {declared} the header declares"),
+            ));
         }
     }
     if rows.len() != declared {
         return Err(InputError::new(
             path,
             0,
-            format!("header declares {declared} {what}s but the file has {} (truncated?)", rows.len()),
+            format!(
+                "header declares {declared} {what}s but the file has {} (truncated?)",
+                rows.len()
+            ),
         ));
     }
     Ok((rows, row_lines))

@@ -35,7 +35,15 @@ pub fn write_mesh(path: &Path, points: &[Point3], tets: &[[u32; 4]], base: u32) 
             save(&path.with_extension("node"), node_text(points, base))?;
             let mut s = format!("{} 4 0\n", tets.len());
             for (i, t) in tets.iter().enumerate() {
-                let _ = writeln!(s, "{} {} {} {} {}", i as u32 + base, t[0] + base, t[1] + base, t[2] + base, t[3] + base);
+                let _ = writeln!(
+                    s,
+                    "{} {} {} {} {}",
+                    i as u32 + base,
+                    t[0] + base,
+                    t[1] + base,
+                    t[2] + base,
+                    t[3] + base
+                );
             }
             save(path, s)
         }
@@ -49,7 +57,12 @@ pub fn write_mesh(path: &Path, points: &[Point3], tets: &[[u32; 4]], base: u32) 
 }
 
 /// Writes a segment set: `.edge` (with `.node` beside it), `.obj` (`l` lines) or `.json`.
-pub fn write_edges(path: &Path, points: &[Point3], edges: &[(u32, u32)], base: u32) -> io::Result<()> {
+pub fn write_edges(
+    path: &Path,
+    points: &[Point3],
+    edges: &[(u32, u32)],
+    base: u32,
+) -> io::Result<()> {
     match ext(path).as_str() {
         "edge" => {
             save(&path.with_extension("node"), node_text(points, base))?;
@@ -71,7 +84,10 @@ pub fn write_edges(path: &Path, points: &[Point3], edges: &[(u32, u32)], base: u
         }
         "json" => {
             let segs: Vec<[u32; 2]> = edges.iter().map(|&(a, b)| [a, b]).collect();
-            save(path, serde_json::json!({ "points": points, "segments": segs }).to_string())
+            save(
+                path,
+                serde_json::json!({ "points": points, "segments": segs }).to_string(),
+            )
         }
         other => Err(unsupported(other, ".edge, .obj or .json")),
     }
@@ -79,7 +95,9 @@ pub fn write_edges(path: &Path, points: &[Point3], edges: &[(u32, u32)], base: u
 
 /// Writes a legacy ASCII VTK unstructured grid of tetrahedra (cell type 10).
 pub fn write_vtk(path: &Path, points: &[Point3], tets: &[[u32; 4]]) -> io::Result<()> {
-    let mut s = String::from("# vtk DataFile Version 3.0\ntetrakit tetrahedralization\nASCII\nDATASET UNSTRUCTURED_GRID\n");
+    let mut s = String::from(
+        "# vtk DataFile Version 3.0\ntetrakit tetrahedralization\nASCII\nDATASET UNSTRUCTURED_GRID\n",
+    );
     let _ = writeln!(s, "POINTS {} double", points.len());
     for p in points {
         let _ = writeln!(s, "{} {} {}", p[0], p[1], p[2]);
@@ -96,9 +114,15 @@ pub fn write_vtk(path: &Path, points: &[Point3], tets: &[[u32; 4]]) -> io::Resul
 }
 
 fn ext(path: &Path) -> String {
-    path.extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase()
+    path.extension()
+        .and_then(|e| e.to_str())
+        .unwrap_or("")
+        .to_ascii_lowercase()
 }
 
 fn unsupported(ext: &str, expected: &str) -> io::Error {
-    io::Error::new(io::ErrorKind::InvalidInput, format!("cannot write '.{ext}' files here (expected {expected})"))
+    io::Error::new(
+        io::ErrorKind::InvalidInput,
+        format!("cannot write '.{ext}' files here (expected {expected})"),
+    )
 }

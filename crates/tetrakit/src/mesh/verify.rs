@@ -16,6 +16,7 @@
 //! faces on a facet do not overlap. With d = 1 the tetrahedra have disjoint interiors and
 //! cover the hull, and pairing excludes hanging vertices.
 
+use crate::detect::ids;
 use crate::geom::{Hull3, Point3, coplanar_triangles_overlap, orient3d};
 use rayon::prelude::*;
 use serde::Serialize;
@@ -50,7 +51,11 @@ pub enum ProblemKind {
 impl fmt::Display for ProblemKind {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let s = serde_json::to_value(self).ok();
-        write!(f, "{}", s.as_ref().and_then(|v| v.as_str()).unwrap_or("problem"))
+        write!(
+            f,
+            "{}",
+            s.as_ref().and_then(|v| v.as_str()).unwrap_or("problem")
+        )
     }
 }
 
@@ -82,6 +87,16 @@ impl Report {
     /// How many problems are kept in detail.
     pub const LIMIT: usize = 1000;
 
+    /// Shifts tetrahedron and vertex numbers by `base` (fields and `#12` numbers in the text).
+    pub fn renumbered(mut self, base: u32) -> Self {
+        for p in &mut self.problems {
+            p.tets.iter_mut().for_each(|t| *t += base);
+            p.vertices.iter_mut().for_each(|v| *v += base);
+            p.detail = crate::detect::renumber_text(&p.detail, base);
+        }
+        self
+    }
+
     /// True when no problem was found: the mesh is certified.
     pub fn is_valid(&self) -> bool {
         self.problem_count == 0
@@ -111,7 +126,11 @@ pub fn verify(points: &[Point3], tets: &[[u32; 4]], hull: Option<&Hull3>) -> Rep
     for p in check_tets(points, tets) {
         report.push(p);
     }
-    if report.problems.iter().any(|p| p.kind == ProblemKind::BadIndex) {
+    if report
+        .problems
+        .iter()
+        .any(|p| p.kind == ProblemKind::BadIndex)
+    {
         return report;
     }
     let (boundary, pairing) = pair_faces(points, tets);
@@ -131,7 +150,12 @@ pub fn verify(points: &[Point3], tets: &[[u32; 4]], hull: Option<&Hull3>) -> Rep
 }
 
 fn problem(kind: ProblemKind, tets: Vec<u32>, vertices: Vec<u32>, detail: String) -> Problem {
-    Problem { kind, tets, vertices, detail }
+    Problem {
+        kind,
+        tets,
+        vertices,
+        detail,
+    }
 }
 
 fn check_tets(points: &[Point3], tets: &[[u32; 4]]) -> Vec<Problem> {
@@ -141,11 +165,11 @@ fn check_tets(points: &[Point3], tets: &[[u32; 4]]) -> Vec<Problem> {
         .filter_map(|(i, t)| {
             let i = i as u32;
             if let Some(&v) = t.iter().find(|&&v| v >= n) {
-                let d = format!("tetrahedron {i} names vertex {v}, but there are {n} points");
+                let d = format!("tetrahedron #{i} names vertex #{v}, but there are {n} points");
                 return Some(problem(ProblemKind::BadIndex, vec![i], vec![v], d));
             }
             if (0..4).any(|a| (a + 1..4).any(|b| t[a] == t[b])) {
-                let d = format!("tetrahedron {i} repeats a vertex: {t:?}");
+                let d = format!("tetrahedron #{i} repeats a vertex: {}", ids(t));
                 return Some(problem(ProblemKind::RepeatedVertex, vec![i], t.to_vec(), d));
             }
             let p = |k: usize| &points[t[k] as usize];
@@ -155,13 +179,16 @@ fn check_tets(points: &[Point3], tets: &[[u32; 4]]) -> Vec<Problem> {
                     ProblemKind::Degenerate,
                     vec![i],
                     t.to_vec(),
-                    format!("tetrahedron {i} {t:?} has its four vertices in one plane"),
+                    format!(
+                        "tetrahedron #{i} {} has its four vertices in one plane",
+                        ids(t)
+                    ),
                 )),
                 _ => Some(problem(
                     ProblemKind::Inverted,
                     vec![i],
                     t.to_vec(),
-                    format!("tetrahedron {i} {t:?} is negatively oriented"),
+                    format!("tetrahedron #{i} {} is negatively oriented", ids(t)),
                 )),
             }
         })
@@ -223,7 +250,10 @@ fn pair_faces(points: &[Point3], tets: &[[u32; 4]]) -> (Vec<BoundaryFace>, Vec<P
         for f in outward_faces(*t) {
             let (s, odd) = sort3(f);
             let slot = &mut fill[s[0] as usize];
-            recs[*slot] = (((s[1] as u64) << 32) | s[2] as u64, ((ti as u32) << 1) | odd as u32);
+            recs[*slot] = (
+                ((s[1] as u64) << 32) | s[2] as u64,
+                ((ti as u32) << 1) | odd as u32,
+            );
             *slot += 1;
         }
     }
@@ -234,8 +264,10 @@ fn pair_faces(points: &[Point3], tets: &[[u32; 4]]) -> (Vec<BoundaryFace>, Vec<P
         chunks.push((i as u32, head));
         rest = tail;
     }
-    let results: Vec<(Vec<BoundaryFace>, Vec<Problem>)> =
-        chunks.into_par_iter().map(|(a, c)| pair_bucket(a, c)).collect();
+    let results: Vec<(Vec<BoundaryFace>, Vec<Problem>)> = chunks
+        .into_par_iter()
+        .map(|(a, c)| pair_bucket(a, c))
+        .collect();
     let mut boundary = Vec::new();
     let mut problems = Vec::new();
     for (b, p) in results {
@@ -259,7 +291,11 @@ fn pair_bucket(a: u32, recs: &mut [(u64, u32)]) -> (Vec<BoundaryFace>, Vec<Probl
         match group.len() {
             1 => {
                 let odd = group[0].1 & 1 == 1;
-                let v = if odd { [face[0], face[2], face[1]] } else { face };
+                let v = if odd {
+                    [face[0], face[2], face[1]]
+                } else {
+                    face
+                };
                 boundary.push(BoundaryFace { v, tet: tets[0] });
             }
             2 if (group[0].1 ^ group[1].1) & 1 == 1 => {}
@@ -267,13 +303,22 @@ fn pair_bucket(a: u32, recs: &mut [(u64, u32)]) -> (Vec<BoundaryFace>, Vec<Probl
                 ProblemKind::SameSide,
                 tets.clone(),
                 face.to_vec(),
-                format!("tetrahedra {} and {} lie on the same side of their common face {face:?}", tets[0], tets[1]),
+                format!(
+                    "tetrahedra #{} and #{} lie on the same side of their common face {}",
+                    tets[0],
+                    tets[1],
+                    ids(&face)
+                ),
             )),
             k => problems.push(problem(
                 ProblemKind::FaceSharedByMore,
                 tets.clone(),
                 face.to_vec(),
-                format!("triangle {face:?} is a face of {k} tetrahedra {tets:?}"),
+                format!(
+                    "triangle {} is a face of {k} tetrahedra {}",
+                    ids(&face),
+                    ids(&tets)
+                ),
             )),
         }
         i = j;
@@ -303,7 +348,7 @@ fn check_closed(boundary: &[BoundaryFace]) -> Vec<Problem> {
                 ProblemKind::OpenBoundary,
                 vec![t],
                 vec![a, b],
-                format!("boundary edge ({a}, {b}) is used {fw} times in one direction and {bw} in the other; the boundary is not a closed surface"),
+                format!("boundary edge (#{a}, #{b}) is used {fw} times in one direction and {bw} in the other; the boundary is not a closed surface"),
             ));
         }
     }
@@ -329,7 +374,7 @@ fn check_hull(
             ProblemKind::UnusedVertex,
             vec![],
             vec![v],
-            format!("point {v} is not a vertex of any tetrahedron"),
+            format!("point #{v} is not a vertex of any tetrahedron"),
         ));
     }
     let facets: Vec<Option<u32>> = boundary
@@ -342,7 +387,7 @@ fn check_hull(
                 ProblemKind::BoundaryNotOnHull,
                 vec![f.tet],
                 f.v.to_vec(),
-                format!("face {:?} of tetrahedron {} has no neighbour across it but is not on the convex hull", f.v, f.tet),
+                format!("face {} of tetrahedron #{} has no neighbour across it but is not on the convex hull", ids(&f.v), f.tet),
             ));
         }
     }
@@ -359,8 +404,11 @@ fn check_hull(
                 vec![f0.tet, g.tet],
                 f0.v.iter().chain(&g.v).copied().collect(),
                 format!(
-                    "boundary faces {:?} and {:?} overlap on the hull, so tetrahedra {} and {} overlap",
-                    f0.v, g.v, f0.tet, g.tet
+                    "boundary faces {} and {} overlap on the hull, so tetrahedra #{} and #{} overlap",
+                    ids(&f0.v),
+                    ids(&g.v),
+                    f0.tet,
+                    g.tet
                 ),
             ));
         }
@@ -407,7 +455,11 @@ mod tests {
         let (pts, mut tets) = cube();
         tets.pop();
         let r = verify(&pts, &tets, Some(&Hull3::new(&pts)));
-        assert!(r.problems.iter().any(|p| p.kind == ProblemKind::BoundaryNotOnHull));
+        assert!(
+            r.problems
+                .iter()
+                .any(|p| p.kind == ProblemKind::BoundaryNotOnHull)
+        );
     }
 
     #[test]
@@ -443,7 +495,10 @@ mod tests {
         let r = verify(&pts, &tets, Some(&Hull3::new(&pts)));
         assert!(!r.is_valid());
         let r = verify(&pts, &tets, None);
-        assert!(!r.is_valid(), "local checks alone catch a tet sharing faces");
+        assert!(
+            !r.is_valid(),
+            "local checks alone catch a tet sharing faces"
+        );
     }
 
     #[test]

@@ -1,0 +1,308 @@
+//! The commands: read, call the library, print.
+
+use crate::{CorruptKind, GenCommon, GenKind};
+use serde_json::json;
+use std::path::Path;
+use std::time::Instant;
+use tetrakit::detect::{Cells, Detection, detect as detect_segments};
+use tetrakit::generate::{self, Corruption};
+use tetrakit::geom::Hull3;
+use tetrakit::io::{self, Input};
+use tetrakit::mesh::{self, Tetrahedralization};
+
+/// Prints one line for a bad input or usage and returns exit code 2.
+pub fn fail(msg: impl std::fmt::Display) -> u8 {
+    eprintln!("tetrakit: {msg}");
+    2
+}
+
+fn read(path: &Path) -> Result<Input, u8> {
+    io::read_input(path).map_err(fail)
+}
+
+pub fn detect(path: &Path, as_json: bool, output: Option<&Path>) -> u8 {
+    let start = Instant::now();
+    let input = match read(path) {
+        Ok(i) => i,
+        Err(c) => return c,
+    };
+    let parsed = start.elapsed().as_secs_f64();
+    let (segments, from_tets) = if !input.segments.is_empty() {
+        (
+            input
+                .segments
+                .iter()
+                .map(|s| (s[0], s[1]))
+                .collect::<Vec<_>>(),
+            false,
+        )
+    } else if !input.tets.is_empty() {
+        (mesh::edges_of(&input.tets), true)
+    } else {
+        return fail(format!(
+            "{}: no segments to test (give an .edge file, OBJ 'l' lines or JSON \"segments\")",
+            path.display()
+        ));
+    };
+    let d = match detect_segments(&input.points, &segments) {
+        Ok(d) => d,
+        Err(e) => return fail(format!("{}: {e}", path.display())),
+    };
+    let seconds = start.elapsed().as_secs_f64();
+    if let (Some(out), Ok(cells)) = (output, &d.result)
+        && let Err(e) = write_cells(out, &input, cells)
+    {
+        return fail(format!("{}: {e}", out.display()));
+    }
+    let base = input.index_base;
+    if as_json {
+        println!("{}", detection_json(&d, base, seconds, parsed));
+    } else {
+        print_detection(&d, base, from_tets, seconds);
+    }
+    if d.is_yes() { 0 } else { 1 }
+}
+
+fn write_cells(out: &Path, input: &Input, cells: &Cells) -> std::io::Result<()> {
+    match cells {
+        Cells::Tetrahedra(t) => io::write_mesh(out, &input.points, t, input.index_base),
+        Cells::Triangles(t) => {
+            let v = json!({ "points": input.points, "triangles": t });
+            if out.extension().and_then(|e| e.to_str()) == Some("json") {
+                std::fs::write(out, v.to_string())
+            } else {
+                Err(std::io::Error::other(
+                    "a triangulation can only be written as .json",
+                ))
+            }
+        }
+    }
+}
+
+fn detection_json(d: &Detection, base: u32, seconds: f64, parsed: f64) -> serde_json::Value {
+    let mut v = json!({
+        "verdict": if d.is_yes() { "yes" } else { "no" },
+        "vertices": d.vertices,
+        "segments": d.segments,
+        "hull_vertices": d.hull_vertices,
+        "dimension": d.dimension,
+        "seconds": seconds,
+        "parse_seconds": parsed,
+    });
+    match &d.result {
+        Ok(Cells::Tetrahedra(t)) => v["tetrahedra"] = json!(t.len()),
+        Ok(Cells::Triangles(t)) => v["triangles"] = json!(t.len()),
+        Err(w) => v["witness"] = json!(w.clone().renumbered(base)),
+    }
+    v
+}
+
+fn print_detection(d: &Detection, base: u32, from_tets: bool, seconds: f64) {
+    let src = if from_tets {
+        " (the edges of the given tetrahedra)"
+    } else {
+        ""
+    };
+    match &d.result {
+        Ok(Cells::Tetrahedra(t)) => println!(
+            "YES: the {} segments{src} on {} points form a tetrahedralization with {} tetrahedra ({} points on the hull). [{seconds:.3} s]",
+            d.segments,
+            d.vertices,
+            t.len(),
+            d.hull_vertices
+        ),
+        Ok(Cells::Triangles(t)) => println!(
+            "YES: the {} segments{src} on {} coplanar points form a triangulation with {} triangles ({} points on the hull). [{seconds:.3} s]",
+            d.segments,
+            d.vertices,
+            t.len(),
+            d.hull_vertices
+        ),
+        Err(w) => {
+            let w = w.clone().renumbered(base);
+            let what = if d.dimension == 2 {
+                "triangulation"
+            } else {
+                "tetrahedralization"
+            };
+            println!(
+                "NO: the {} segments{src} on {} points are not the edge set of a {what}.",
+                d.segments, d.vertices
+            );
+            println!("  witness: {}: {}", w.kind, w.detail);
+            if !w.vertices.is_empty() {
+                let v: Vec<String> = w.vertices.iter().map(|x| x.to_string()).collect();
+                println!("  vertices: {}", v.join(" "));
+            }
+            if !w.segments.is_empty() {
+                let s: Vec<String> = w
+                    .segments
+                    .iter()
+                    .map(|s| format!("{}-{}", s[0], s[1]))
+                    .collect();
+                println!("  segments: {}", s.join(" "));
+            }
+            println!("  [{seconds:.3} s]");
+        }
+    }
+}
+
+pub fn check(path: &Path, convex: bool, as_json: bool) -> u8 {
+    let start = Instant::now();
+    let input = match read(path) {
+        Ok(i) => i,
+        Err(c) => return c,
+    };
+    if input.tets.is_empty() {
+        return fail(format!(
+            "{}: no tetrahedra to check (give an .ele file or JSON \"tets\")",
+            path.display()
+        ));
+    }
+    let hull = convex.then(|| Hull3::new(&input.points));
+    let report =
+        mesh::verify(&input.points, &input.tets, hull.as_ref()).renumbered(input.index_base);
+    let seconds = start.elapsed().as_secs_f64();
+    if as_json {
+        let v = json!({
+            "verdict": if report.is_valid() { "yes" } else { "no" },
+            "tetrahedra": input.tets.len(),
+            "vertices": input.points.len(),
+            "boundary_faces": report.boundary_faces,
+            "convex": convex,
+            "problem_count": report.problem_count,
+            "problems": report.problems,
+            "seconds": seconds,
+        });
+        println!("{v}");
+    } else if report.is_valid() {
+        let scope = if convex {
+            "a tetrahedralization of the convex hull of its points"
+        } else {
+            "locally valid (oriented, face-paired, closed boundary); add --convex to certify it covers the hull exactly once"
+        };
+        println!(
+            "VALID: {} tetrahedra on {} points: {scope}. [{seconds:.3} s]",
+            input.tets.len(),
+            input.points.len()
+        );
+    } else {
+        println!(
+            "INVALID: {} problem(s) in {} tetrahedra:",
+            report.problem_count,
+            input.tets.len()
+        );
+        for p in report.problems.iter().take(20) {
+            println!("  {}: {}", p.kind, p.detail);
+        }
+        if report.problem_count > 20 {
+            println!(
+                "  ... ({} more; --json lists up to {})",
+                report.problem_count - 20,
+                mesh::Report::LIMIT
+            );
+        }
+    }
+    if report.is_valid() { 0 } else { 1 }
+}
+
+pub fn generate(kind: GenKind) -> u8 {
+    let (name, mesh, common) = match kind {
+        GenKind::Kuhn { size, common } => {
+            if size == 0 || size > 200 {
+                return fail("--size must be between 1 and 200");
+            }
+            (format!("kuhn --size {size}"), generate::kuhn(size), common)
+        }
+        GenKind::RandomTetrahedralization {
+            points,
+            flips,
+            grid,
+            common,
+        } => {
+            if !(4..=20_000).contains(&points) {
+                return fail(
+                    "--points must be between 4 and 20000 (the generator locates points by brute force)",
+                );
+            }
+            let t = generate::random_tetrahedralization(points, flips, common.seed, grid);
+            if t.tets.is_empty() {
+                return fail("the random points are coplanar; use more points or a larger --grid");
+            }
+            (
+                format!("random-tetrahedralization --points {points} --flips {flips}"),
+                t,
+                common,
+            )
+        }
+        GenKind::SkewLines { points, common } => {
+            if !(4..=20_000).contains(&points) {
+                return fail("--points must be between 4 and 20000");
+            }
+            (
+                format!("skew-lines --points {points}"),
+                generate::skew_lines(points),
+                common,
+            )
+        }
+    };
+    write_generated(&name, mesh, &common)
+}
+
+fn write_generated(name: &str, mut mesh: Tetrahedralization, c: &GenCommon) -> u8 {
+    let mut edges = mesh.edges();
+    if let Some(k) = c.corrupt {
+        let kind = match k {
+            CorruptKind::DropEdge => Corruption::DropEdge,
+            CorruptKind::AddCrossing => Corruption::AddCrossing,
+            CorruptKind::AddOverlap => Corruption::AddOverlap,
+        };
+        match generate::corrupt_edges(&mesh.points, &edges, kind, c.seed) {
+            Some(e) => edges = e,
+            None => {
+                return fail(format!(
+                    "cannot apply {k:?} to this instance: no segment can cross or overlap another (points in general position); try --grid or drop-edge"
+                ));
+            }
+        }
+        if matches!(k, CorruptKind::AddOverlap)
+            && let Some(m) = generate::add_overlapping_tet(&mesh, c.seed)
+        {
+            mesh = m;
+        }
+    }
+    let out = &c.output;
+    let ext = out
+        .extension()
+        .and_then(|e| e.to_str())
+        .unwrap_or("")
+        .to_ascii_lowercase();
+    let result = match ext.as_str() {
+        "ele" => io::write_mesh(out, &mesh.points, &mesh.tets, 1)
+            .and_then(|_| io::write_edges(&out.with_extension("edge"), &mesh.points, &edges, 1)),
+        "vtk" => io::write_mesh(out, &mesh.points, &mesh.tets, 0),
+        "json" => {
+            let segs: Vec<[u32; 2]> = edges.iter().map(|&(a, b)| [a, b]).collect();
+            std::fs::write(
+                out,
+                json!({ "points": mesh.points, "segments": segs, "tets": mesh.tets }).to_string(),
+            )
+        }
+        _ => io::write_edges(out, &mesh.points, &edges, 1),
+    };
+    if let Err(e) = result {
+        return fail(format!("{}: {e}", out.display()));
+    }
+    let corrupted = c
+        .corrupt
+        .map(|k| format!(", corrupted by {k:?}"))
+        .unwrap_or_default();
+    println!(
+        "wrote {name}: {} points, {} segments, {} tetrahedra{corrupted} to {}",
+        mesh.points.len(),
+        edges.len(),
+        mesh.tets.len(),
+        out.display()
+    );
+    0
+}

@@ -1,0 +1,218 @@
+//! End-to-end tests of the `tetrakit` binary: exit codes, JSON fields, numbering, and one
+//! clear line for every bad input.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_tetrakit"))
+}
+
+fn dir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("tetrakit-cli-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn run(args: &[&str]) -> Output {
+    bin().args(args).output().expect("binary runs")
+}
+
+fn s(p: &Path) -> &str {
+    p.to_str().unwrap()
+}
+
+fn json(o: &Output) -> serde_json::Value {
+    serde_json::from_slice(&o.stdout).expect("stdout is one JSON object")
+}
+
+#[test]
+fn generate_then_detect_yes_with_json_fields() {
+    let d = dir("yes");
+    let ele = d.join("k.ele");
+    let o = run(&["generate", "kuhn", "--size", "3", "-o", s(&ele)]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = run(&[
+        "detect",
+        s(&d.join("k.edge")),
+        "--json",
+        "--output",
+        s(&d.join("t.vtk")),
+    ]);
+    assert_eq!(o.status.code(), Some(0));
+    let v = json(&o);
+    assert_eq!(v["verdict"], "yes");
+    assert_eq!(v["vertices"], 64);
+    assert_eq!(v["tetrahedra"], 162);
+    assert_eq!(v["hull_vertices"], 56);
+    assert!(v["seconds"].as_f64().unwrap() >= 0.0);
+    let vtk = std::fs::read_to_string(d.join("t.vtk")).unwrap();
+    assert!(vtk.contains("CELL_TYPES 162"));
+}
+
+#[test]
+fn corrupted_instances_give_no_with_witness_in_file_numbering() {
+    let d = dir("no");
+    for (k, kind) in [
+        ("drop-edge", None),
+        ("add-crossing", Some("crossing_segments")),
+        ("add-overlap", None),
+    ] {
+        let ele = d.join(format!("{k}.ele"));
+        let o = run(&[
+            "generate",
+            "kuhn",
+            "--size",
+            "2",
+            "--corrupt",
+            k,
+            "-o",
+            s(&ele),
+        ]);
+        assert!(
+            o.status.success(),
+            "{k}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        let o = run(&["detect", s(&ele.with_extension("edge")), "--json"]);
+        assert_eq!(o.status.code(), Some(1), "{k}");
+        let v = json(&o);
+        assert_eq!(v["verdict"], "no");
+        let w = &v["witness"];
+        assert!(w["detail"].as_str().unwrap().len() > 10);
+        if let Some(kind) = kind {
+            assert_eq!(w["kind"], kind, "{k}: {w}");
+        }
+        // TetGen files from `generate` are 1-based: no vertex 0 may be named.
+        let verts: Vec<u64> = w["vertices"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_u64().unwrap())
+            .collect();
+        assert!(verts.iter().all(|&x| (1..=27).contains(&x)), "{k}: {w}");
+        let o = run(&["detect", s(&ele.with_extension("edge"))]);
+        let text = String::from_utf8_lossy(&o.stdout);
+        assert!(text.starts_with("NO") && text.contains("witness"), "{text}");
+    }
+}
+
+#[test]
+fn check_valid_and_overlapping_meshes() {
+    let d = dir("check");
+    let ele = d.join("r.ele");
+    assert!(
+        run(&[
+            "generate",
+            "random-tetrahedralization",
+            "--points",
+            "60",
+            "--flips",
+            "50",
+            "-o",
+            s(&ele)
+        ])
+        .status
+        .success()
+    );
+    let o = run(&["check", s(&ele), "--convex", "--json"]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stdout)
+    );
+    assert_eq!(json(&o)["verdict"], "yes");
+    let bad = d.join("bad.ele");
+    assert!(
+        run(&[
+            "generate",
+            "random-tetrahedralization",
+            "--points",
+            "60",
+            "--flips",
+            "50",
+            "--corrupt",
+            "add-overlap",
+            "--grid",
+            "5",
+            "-o",
+            s(&bad)
+        ])
+        .status
+        .success()
+    );
+    let o = run(&["check", s(&bad), "--json"]);
+    assert_eq!(o.status.code(), Some(1));
+    let v = json(&o);
+    assert!(v["problem_count"].as_u64().unwrap() > 0);
+    assert!(!v["problems"][0]["tets"].as_array().unwrap().is_empty());
+}
+
+#[test]
+fn planar_input_is_a_triangulation_question() {
+    let d = dir("planar");
+    let p = d.join("sq.json");
+    std::fs::write(
+        &p,
+        r#"{"points":[[0,0],[1,0],[1,1],[0,1]],"segments":[[0,1],[1,2],[2,3],[3,0],[0,2]]}"#,
+    )
+    .unwrap();
+    let o = run(&["detect", s(&p), "--json"]);
+    assert_eq!(o.status.code(), Some(0));
+    assert_eq!(json(&o)["triangles"], 2);
+    std::fs::write(
+        &p,
+        r#"{"points":[[0,0],[1,0],[1,1],[0,1]],"segments":[[0,1],[1,2],[2,3],[3,0],[0,2],[1,3]]}"#,
+    )
+    .unwrap();
+    let o = run(&["detect", s(&p), "--json"]);
+    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(json(&o)["witness"]["kind"], "crossing_segments");
+}
+
+#[test]
+fn bad_input_exits_2_with_one_line_naming_file_and_line() {
+    let d = dir("bad");
+    let cases = [
+        ("a.node", "3 3 0 0\n1 0 0 0\n2 1 x 0\n3 0 1 0\n", ":3:"),
+        ("b.node", "3 3 0 0\n1 0 0 0\n2 nan 0 0\n3 0 1 0\n", ":3:"),
+        ("c.node", "4 3 0 0\n1 0 0 0\n", "truncated"),
+        ("d.node", "", "empty"),
+        ("e.node", "2 3 0 0\n1 0 0 0\n2 0 0 0\n", "coincide"),
+    ];
+    for (name, text, needle) in cases {
+        let p = d.join(name);
+        std::fs::write(&p, text).unwrap();
+        let o = run(&["detect", s(&p)]);
+        assert_eq!(o.status.code(), Some(2), "{name}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(err.lines().count(), 1, "{name}: {err}");
+        assert!(err.contains(name) && err.contains(needle), "{name}: {err}");
+    }
+    let node = d.join("f.node");
+    std::fs::write(&node, "4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n").unwrap();
+    for (text, needle) in [
+        ("1 0\n1 1 7\n", "out of range"),
+        ("1 0\n1 2 2\n", "itself"),
+        ("2 0\n1 1 2\n2 2 1\n", "twice"),
+    ] {
+        let e = d.join("f.edge");
+        std::fs::write(&e, text).unwrap();
+        let o = run(&["detect", s(&e)]);
+        assert_eq!(o.status.code(), Some(2));
+        assert!(String::from_utf8_lossy(&o.stderr).contains(needle));
+    }
+    let o = run(&["detect", "/nonexistent/x.edge"]);
+    assert_eq!(o.status.code(), Some(2));
+    let o = run(&["frobnicate"]);
+    assert_eq!(o.status.code(), Some(2));
+}
+
+#[test]
+fn demo_runs() {
+    let o = run(&["demo"]);
+    assert!(o.status.success());
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(text.contains("YES") && text.contains("NO") && text.contains("witness"));
+}
