@@ -33,25 +33,10 @@
 
 use super::graph::Graph;
 use super::witness::{Witness, WitnessKind, ids};
-use crate::geom::{Frame, Hull3, Point3, collinear3, orient2d_drop, orient3d, projection_axis};
+use crate::geom::{
+    Dir, Frame, Hull3, Point3, collinear3, orient2d_drop, orient3d, projection_axis, segments_meet,
+};
 use std::cmp::Ordering;
-
-/// Per-thread scratch space, reused across vertices.
-pub(super) struct Scratch {
-    stamp: Vec<u32>,
-    local: Vec<u32>,
-    round: u32,
-}
-
-impl Scratch {
-    pub(super) fn new(n: usize) -> Self {
-        Scratch {
-            stamp: vec![0; n],
-            local: vec![0; n],
-            round: 0,
-        }
-    }
-}
 
 /// Shared read-only context.
 pub(super) struct Ctx<'a> {
@@ -62,7 +47,7 @@ pub(super) struct Ctx<'a> {
 
 /// The link triangles of `v` (each `(a, b, c)` with `(v, a, b, c)` positively oriented), or
 /// a witness that `L` is not the edge set of a tetrahedralization.
-pub(super) fn link(ctx: &Ctx, v: u32, s: &mut Scratch) -> Result<Vec<[u32; 3]>, Witness> {
+pub(super) fn link(ctx: &Ctx, v: u32) -> Result<Vec<[u32; 3]>, Witness> {
     let nb = ctx.g.nbrs(v);
     let k = nb.len();
     let pv = &ctx.pts[v as usize];
@@ -74,16 +59,11 @@ pub(super) fn link(ctx: &Ctx, v: u32, s: &mut Scratch) -> Result<Vec<[u32; 3]>, 
             ),
         ));
     }
-    s.round += 1;
-    for (i, &a) in nb.iter().enumerate() {
-        s.stamp[a as usize] = s.round;
-        s.local[a as usize] = i as u32;
-    }
     let frame = Frame::new(pv);
     let p: Vec<&Point3> = nb.iter().map(|&a| &ctx.pts[a as usize]).collect();
-    let d: Vec<Point3> = p.iter().map(|x| frame.dir(x)).collect();
+    let d: Vec<Dir> = p.iter().map(|x| frame.dir(x)).collect();
     same_direction(v, nb, pv, &p, &d)?;
-    let edges = local_edges(ctx.g, nb, s);
+    let edges = local_edges(ctx.g, nb);
     let lv = LocalView {
         v,
         pv,
@@ -112,7 +92,7 @@ struct LocalView<'a> {
     pv: &'a Point3,
     nb: &'a [u32],
     p: &'a [&'a Point3],
-    d: &'a [Point3],
+    d: &'a [Dir],
     frame: Frame,
 }
 
@@ -135,11 +115,12 @@ fn same_direction(
     nb: &[u32],
     pv: &Point3,
     p: &[&Point3],
-    d: &[Point3],
+    d: &[Dir],
 ) -> Result<(), Witness> {
     let unit: Vec<Point3> = d
         .iter()
         .map(|x| {
+            let x = &x.d;
             let l = (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]).sqrt();
             [x[0] / l, x[1] / l, x[2] / l]
         })
@@ -171,13 +152,15 @@ fn same_direction(
     Ok(())
 }
 
-/// The segments among neighbours, as pairs of local indices.
-fn local_edges(g: &Graph, nb: &[u32], s: &Scratch) -> Vec<(u32, u32)> {
-    let mut edges = Vec::new();
+/// The segments among neighbours, as pairs of local indices (listed from the neighbours'
+/// sorted adjacency lists, never by scanning all segments).
+fn local_edges(g: &Graph, nb: &[u32]) -> Vec<(u32, u32)> {
+    let mut edges = Vec::with_capacity(4 * nb.len());
     for (i, &a) in nb.iter().enumerate() {
-        for &b in g.nbrs(a) {
-            if b > a && s.stamp[b as usize] == s.round {
-                edges.push((i as u32, s.local[b as usize]));
+        let rest = &nb[i + 1..];
+        for &b in g.nbrs(a).iter().filter(|&&b| b > a) {
+            if let Ok(j) = rest.binary_search(&b) {
+                edges.push((i as u32, (i + 1 + j) as u32));
             }
         }
     }
@@ -219,22 +202,63 @@ fn puncture_free(lv: &LocalView, edges: &[(u32, u32)]) -> Result<Vec<bool>, Witn
     }
     for e in 0..m {
         let (a, b) = edges[e];
+        let row_e = &side[e * k..(e + 1) * k];
         for f in e + 1..m {
             let (c, d) = edges[f];
             if a == c || a == d || b == c || b == d {
                 continue;
             }
-            let (sc, sd) = (side[e * k + c as usize], side[e * k + d as usize]);
-            if sc * sd < 0 && punctures(lv, (c, d), (a, b))? {
-                keep[e] = false;
-            }
+            let (sc, sd) = (row_e[c as usize], row_e[d as usize]);
             let (sa, sb) = (side[f * k + a as usize], side[f * k + b as usize]);
-            if sa * sb < 0 && punctures(lv, (a, b), (c, d))? {
-                keep[f] = false;
+            // Seen from v, the arcs ab and cd can only cross (and a segment only puncture the
+            // other's triangle) when each straddles the other's plane through v.
+            if sc * sd >= 0 || sa * sb >= 0 {
+                continue;
+            }
+            match crossing(lv, (a, b), (c, d), sa, sc)? {
+                Some(true) => keep[e] = false,
+                Some(false) => keep[f] = false,
+                None => {}
             }
         }
     }
     Ok(keep)
+}
+
+/// For segments `ab`, `cd` of `L_v` that straddle each other's planes through `v`
+/// (`sa = orient3d(v, c, d, a)`, `sc = orient3d(v, a, b, c)`, both non-zero): `Some(true)`
+/// when `cd` punctures the triangle `vab`, `Some(false)` when `ab` punctures `vcd`, `None`
+/// when their arcs meet only antipodally. Segments that intersect are a witness.
+///
+/// Of the three orientations deciding whether line `cd` passes inside triangle `vab`, two
+/// are `orient3d(c, d, v, a) = sa` and `orient3d(c, d, b, v) = −orient3d(v, c, d, b) = sa`;
+/// the third, `orient3d(c, d, a, b) = orient3d(a, b, c, d)`, is the only new test, and
+/// symmetrically for `ab` inside `vcd` (against `sc`).
+fn crossing(
+    lv: &LocalView,
+    (a, b): (u32, u32),
+    (c, d): (u32, u32),
+    sa: i8,
+    sc: i8,
+) -> Result<Option<bool>, Witness> {
+    let q = |i: u32| lv.p[i as usize];
+    let t = orient3d(q(a), q(b), q(c), q(d));
+    if t == sa {
+        return Ok(Some(true));
+    }
+    if t == sc {
+        return Ok(Some(false));
+    }
+    if t == 0 && segments_meet(q(a), q(b), q(c), q(d)).is_some() {
+        let (ga, gb, gc, gd) = (lv.g(a), lv.g(b), lv.g(c), lv.g(d));
+        return Err(Witness::new(
+            WitnessKind::CrossingSegments,
+            vec![ga, gb, gc, gd],
+            vec![[ga, gb], [gc, gd]],
+            format!("segments (#{ga}, #{gb}) and (#{gc}, #{gd}) cross"),
+        ));
+    }
+    Ok(None)
 }
 
 /// Does a neighbour `c`, coplanar with `v, a, b`, lie strictly inside the angle `avb`?
@@ -248,44 +272,6 @@ fn blocked(lv: &LocalView, a: usize, b: usize, coplanar: &[usize]) -> bool {
         orient2d_drop(lv.pv, lv.p[a], lv.p[c], axis) == s
             && orient2d_drop(lv.pv, lv.p[c], lv.p[b], axis) == s
     })
-}
-
-/// Given that `c` and `d` lie strictly on opposite sides of the plane `vab`: does `cd`
-/// puncture the triangle `vab`? Meeting the triangle's boundary instead is a witness.
-fn punctures(lv: &LocalView, (c, d): (u32, u32), (a, b): (u32, u32)) -> Result<bool, Witness> {
-    let q = |i: u32| lv.p[i as usize];
-    let t1 = orient3d(q(c), q(d), lv.pv, q(a));
-    let t2 = orient3d(q(c), q(d), q(a), q(b));
-    let t3 = orient3d(q(c), q(d), q(b), lv.pv);
-    if t1 != 0 && t1 == t2 && t2 == t3 {
-        return Ok(true);
-    }
-    let (v, ga, gb, gc, gd) = (lv.v, lv.g(a), lv.g(b), lv.g(c), lv.g(d));
-    let cross = |s: [u32; 2]| {
-        Err(Witness::new(
-            WitnessKind::CrossingSegments,
-            vec![s[0], s[1], gc, gd],
-            vec![s, [gc, gd]],
-            format!("segments (#{}, #{}) and (#{gc}, #{gd}) cross", s[0], s[1]),
-        ))
-    };
-    let through = |x: u32| {
-        Err(Witness::new(
-            WitnessKind::VertexOnSegment,
-            vec![x, gc, gd],
-            vec![[gc, gd]],
-            format!("vertex #{x} lies inside segment (#{gc}, #{gd})"),
-        ))
-    };
-    match (t1, t2, t3) {
-        (0, x, y) if x != 0 && x == y => cross([v, ga]),
-        (x, 0, y) if x != 0 && x == y => cross([ga, gb]),
-        (x, y, 0) if x != 0 && x == y => cross([gb, v]),
-        (0, 0, y) if y != 0 => through(ga),
-        (x, 0, 0) if x != 0 => through(gb),
-        (0, y, 0) if y != 0 => through(v),
-        _ => Ok(false),
-    }
 }
 
 /// For each local vertex, its kept neighbours sorted counter-clockwise around the axis

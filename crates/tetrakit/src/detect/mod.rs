@@ -33,7 +33,7 @@ pub use witness::{ids, renumber_text};
 
 use crate::geom::{Hull3, Point3};
 use crate::mesh;
-use link::{Ctx, Scratch};
+use link::Ctx;
 use rayon::prelude::*;
 
 /// The cells of a YES answer.
@@ -81,8 +81,11 @@ impl Detection {
 /// ```
 pub fn detect(points: &[Point3], segments: &[(u32, u32)]) -> Result<Detection, String> {
     let segs: Vec<[u32; 2]> = segments.iter().map(|&(a, b)| [a, b]).collect();
+    let mut phases = Phases::new();
     let g = Graph::new(points.len(), &segs)?;
+    phases.mark("graph");
     let hull = Hull3::new(points);
+    phases.mark("hull");
     let mut out = Detection {
         vertices: points.len(),
         segments: segments.len(),
@@ -119,9 +122,26 @@ pub fn detect(points: &[Point3], segments: &[(u32, u32)]) -> Result<Detection, S
     Ok(out)
 }
 
+/// Prints the time of each phase on stderr when `TETRAKIT_PHASES` is set.
+struct Phases(Option<std::time::Instant>);
+
+impl Phases {
+    fn new() -> Self {
+        Phases(std::env::var_os("TETRAKIT_PHASES").map(|_| std::time::Instant::now()))
+    }
+    fn mark(&mut self, name: &str) {
+        if let Some(t) = self.0 {
+            eprintln!("phase {name}: {:.3} s", t.elapsed().as_secs_f64());
+            self.0 = Some(std::time::Instant::now());
+        }
+    }
+}
+
 fn detect3(points: &[Point3], g: &Graph, hull: &Hull3) -> Result<Cells, Witness> {
+    let mut phases = Phases::new();
     connectivity(g)?;
     hull_edges(points, g, hull)?;
+    phases.mark("connectivity and hull edges");
     let ctx = Ctx {
         pts: points,
         g,
@@ -130,7 +150,7 @@ fn detect3(points: &[Point3], g: &Graph, hull: &Hull3) -> Result<Cells, Witness>
     let n = points.len();
     let links: Vec<Result<Vec<[u32; 3]>, Witness>> = (0..n as u32)
         .into_par_iter()
-        .map_init(|| Scratch::new(n), |s, v| link::link(&ctx, v, s))
+        .map(|v| link::link(&ctx, v))
         .collect();
     if let Some(w) = links
         .iter()
@@ -140,8 +160,11 @@ fn detect3(points: &[Point3], g: &Graph, hull: &Hull3) -> Result<Cells, Witness>
         return Err(w.clone());
     }
     let links: Vec<Vec<[u32; 3]>> = links.into_iter().map(|r| r.unwrap_or_default()).collect();
+    phases.mark("links");
     let tets = confirm(&links)?;
+    phases.mark("confirm");
     let report = mesh::verify(points, &tets, Some(hull));
+    phases.mark("verify");
     if let Some(p) = report.problems.first() {
         return Err(Witness::new(
             WitnessKind::Inconsistent,

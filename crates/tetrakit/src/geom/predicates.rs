@@ -69,10 +69,47 @@ pub fn orient3d(a: &Point3, b: &Point3, c: &Point3, d: &Point3) -> i8 {
 /// permanent. Shewchuk's own bound for the same evaluation is (7 + 56u)u; we use 16u.
 const FRAME_ERR: f64 = 16.0 * f64::EPSILON / 2.0;
 
+/// A direction `p − v` prepared for [`Frame::sign`]: its rounded value and, when the
+/// subtraction was exact, the range of binary exponents its components span.
+#[derive(Clone, Copy, Debug)]
+pub struct Dir {
+    /// The rounded difference `p − v`.
+    pub d: Point3,
+    /// Lowest exponent of a set bit over the components (`i32::MAX` if all are zero).
+    lo: i32,
+    /// Highest exponent over the components, or `i32::MIN` when the subtraction rounded.
+    hi: i32,
+}
+
+/// Exponents `(lowest set bit, highest set bit)` of a non-zero finite double.
+#[inline]
+fn bit_span(x: f64) -> (i32, i32) {
+    let bits = x.to_bits();
+    let exp = ((bits >> 52) & 0x7ff) as i32;
+    let mant = (bits & ((1u64 << 52) - 1)) | if exp > 0 { 1u64 << 52 } else { 0 };
+    let e = if exp > 0 { exp - 1075 } else { -1074 };
+    (
+        e + mant.trailing_zeros() as i32,
+        e + 63 - mant.leading_zeros() as i32,
+    )
+}
+
+/// True when `a − b` is computed without rounding (Knuth's TwoDiff error term is zero).
+#[inline]
+fn exact_diff(a: f64, b: f64) -> bool {
+    let x = a - b;
+    let bv = a - x;
+    let av = x + bv;
+    (a - av) + (bv - b) == 0.0
+}
+
 /// Orientation tests that share one apex `v`, with a cached floating-point filter.
 ///
 /// `sign(v, a, b, c)` equals [`orient3d`]`(v, a, b, c)` exactly: the float determinant is
-/// trusted only when it exceeds a proven error bound, otherwise the exact predicate decides.
+/// trusted when it exceeds a proven error bound, or when it is provably computed without
+/// any rounding (exact differences whose nine components span at most 15 bits: then every
+/// product and sum is exact, which covers grids and other integer data, where exact zeros
+/// abound); otherwise the adaptive exact predicate decides.
 ///
 /// ```
 /// use tetrakit::geom::{Frame, orient3d};
@@ -91,30 +128,52 @@ impl Frame {
     pub fn new(v: &Point3) -> Self {
         Frame { v: *v }
     }
-    /// The rounded direction `p − v` used by the filter.
+    /// The direction `p − v`, prepared for [`Frame::sign`].
     #[inline]
-    pub fn dir(&self, p: &Point3) -> Point3 {
-        [p[0] - self.v[0], p[1] - self.v[1], p[2] - self.v[2]]
+    pub fn dir(&self, p: &Point3) -> Dir {
+        let d = [p[0] - self.v[0], p[1] - self.v[1], p[2] - self.v[2]];
+        let (mut lo, mut hi) = (i32::MAX, i32::MIN + 1);
+        for k in 0..3 {
+            if !exact_diff(p[k], self.v[k]) {
+                return Dir {
+                    d,
+                    lo: i32::MAX,
+                    hi: i32::MIN,
+                };
+            }
+            if d[k] != 0.0 {
+                let (l, h) = bit_span(d[k]);
+                lo = lo.min(l);
+                hi = hi.max(h);
+            }
+        }
+        Dir { d, lo, hi }
     }
-    /// Exact sign of `orient3d(v, a, b, c)`, given the rounded directions of `a, b, c`.
+    /// Exact sign of `orient3d(v, a, b, c)`, given the prepared directions of `a, b, c`.
     #[inline]
-    pub fn sign(
-        &self,
-        a: &Point3,
-        b: &Point3,
-        c: &Point3,
-        da: &Point3,
-        db: &Point3,
-        dc: &Point3,
-    ) -> i8 {
-        filtered_det(da, db, dc).unwrap_or_else(|| orient3d(&self.v, a, b, c))
+    pub fn sign(&self, a: &Point3, b: &Point3, c: &Point3, da: &Dir, db: &Dir, dc: &Dir) -> i8 {
+        let (det, perm) = det_perm(&da.d, &db.d, &dc.d);
+        let bound = FRAME_ERR * perm;
+        if det > bound {
+            return 1;
+        }
+        if det < -bound {
+            return -1;
+        }
+        let inexact = da.hi == i32::MIN || db.hi == i32::MIN || dc.hi == i32::MIN;
+        let lo = da.lo.min(db.lo).min(dc.lo);
+        let hi = da.hi.max(db.hi).max(dc.hi);
+        if !inexact && (lo == i32::MAX || hi - lo <= 15) {
+            // Every operation of det_perm was exact.
+            return sign(det);
+        }
+        orient3d(&self.v, a, b, c)
     }
 }
 
-/// Sign of `det[da, db, dc]` for rounded differences, or `None` when the rounding error
-/// bound does not certify it.
+/// The float determinant `det[da, db, dc]` and its permanent (for the error bound).
 #[inline]
-fn filtered_det(da: &Point3, db: &Point3, dc: &Point3) -> Option<i8> {
+fn det_perm(da: &Point3, db: &Point3, dc: &Point3) -> (f64, f64) {
     let m0 = db[1] * dc[2];
     let m1 = db[2] * dc[1];
     let m2 = db[2] * dc[0];
@@ -125,6 +184,14 @@ fn filtered_det(da: &Point3, db: &Point3, dc: &Point3) -> Option<i8> {
     let perm = da[0].abs() * (m0.abs() + m1.abs())
         + da[1].abs() * (m2.abs() + m3.abs())
         + da[2].abs() * (m4.abs() + m5.abs());
+    (det, perm)
+}
+
+/// Sign of `det[da, db, dc]` for rounded differences, or `None` when the rounding error
+/// bound does not certify it.
+#[inline]
+fn filtered_det(da: &Point3, db: &Point3, dc: &Point3) -> Option<i8> {
+    let (det, perm) = det_perm(da, db, dc);
     let bound = FRAME_ERR * perm;
     if det > bound {
         Some(1)
@@ -162,8 +229,8 @@ impl Plane {
             a: *a,
             b: *b,
             c: *c,
-            db: f.dir(b),
-            dc: f.dir(c),
+            db: f.dir(b).d,
+            dc: f.dir(c).d,
         }
     }
     /// Exact sign of `orient3d(a, b, c, x)`.
@@ -312,6 +379,38 @@ mod tests {
                     }
                 }
             }
+        }
+    }
+
+    #[test]
+    fn frame_exact_path_never_disagrees() {
+        // Integer grids take the no-rounding path; decimals and wide spans must not.
+        let mut rng = crate::rng::Rng::new(9);
+        let mut pick = |k: usize| -> Point3 {
+            match k % 3 {
+                0 => [
+                    rng.below(5) as f64,
+                    rng.below(5) as f64,
+                    rng.below(5) as f64,
+                ],
+                1 => [
+                    rng.below(5) as f64 * 0.1,
+                    rng.below(5) as f64 * 0.1,
+                    rng.below(5) as f64 * 0.1,
+                ],
+                _ => [
+                    rng.below(5) as f64 * 1e9 + 0.5,
+                    rng.below(3) as f64,
+                    rng.below(5) as f64 * 3e-7,
+                ],
+            }
+        };
+        for k in 0..30000 {
+            let v = pick(k);
+            let [a, b, c] = [pick(k), pick(k), pick(k)];
+            let f = Frame::new(&v);
+            let s = f.sign(&a, &b, &c, &f.dir(&a), &f.dir(&b), &f.dir(&c));
+            assert_eq!(s, orient3d(&v, &a, &b, &c), "{v:?} {a:?} {b:?} {c:?}");
         }
     }
 
