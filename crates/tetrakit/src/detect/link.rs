@@ -72,7 +72,10 @@ pub(super) fn link(ctx: &Ctx, v: u32) -> Result<Vec<[u32; 3]>, Witness> {
         d: &d,
         frame,
     };
-    let keep = puncture_free(&lv, &edges)?;
+    let (keep, side) = puncture_free(&lv, &edges)?;
+    if let Some(f) = faces_from_signs(&lv, ctx.hull, &edges, &keep, &side) {
+        return Ok(f);
+    }
     let kept: Vec<(u32, u32)> = edges
         .iter()
         .zip(&keep)
@@ -81,6 +84,129 @@ pub(super) fn link(ctx: &Ctx, v: u32) -> Result<Vec<[u32; 3]>, Witness> {
         .collect();
     let rot = rotation_system(&lv, &kept)?;
     faces(&lv, ctx.hull, &rot, kept.len())
+}
+
+/// The fast path to the link triangles: for each kept segment `ab`, the face on each side
+/// of the plane `vab` has as apex the common kept neighbour of `a` and `b` on that side that
+/// comes first in angle around the axis `v→a` (signs already in the table; more than one
+/// candidate only around separating triangles of the link). When every triangle is then
+/// seen from its three edges, the boundary lies on the hull, the Euler characteristic is
+/// right and the link is connected, these are the faces of the link; anything else returns
+/// `None` and the exact rotation system decides (and names the problem).
+fn faces_from_signs(
+    lv: &LocalView,
+    hull: &Hull3,
+    edges: &[(u32, u32)],
+    keep: &[bool],
+    side: &[i8],
+) -> Option<Vec<[u32; 3]>> {
+    let k = lv.nb.len();
+    let mut deg = vec![0u32; k + 1];
+    for (e, &(a, b)) in edges.iter().enumerate() {
+        if keep[e] {
+            deg[a as usize + 1] += 1;
+            deg[b as usize + 1] += 1;
+        }
+    }
+    for i in 0..k {
+        deg[i + 1] += deg[i];
+    }
+    let mut fill = deg.clone();
+    let mut adj = vec![0u32; deg[k] as usize];
+    for (e, &(a, b)) in edges.iter().enumerate() {
+        if keep[e] {
+            adj[fill[a as usize] as usize] = b;
+            fill[a as usize] += 1;
+            adj[fill[b as usize] as usize] = a;
+            fill[b as usize] += 1;
+        }
+    }
+    for i in 0..k {
+        adj[deg[i] as usize..deg[i + 1] as usize].sort_unstable();
+    }
+    let nbr = |a: u32| &adj[deg[a as usize] as usize..deg[a as usize + 1] as usize];
+    let on_hull = hull.on_boundary(lv.v as usize);
+    let mut faces: Vec<[u32; 3]> = Vec::with_capacity(2 * k);
+    let mut kept_edges = 0usize;
+    for (e, &(a, b)) in edges.iter().enumerate() {
+        if !keep[e] {
+            continue;
+        }
+        kept_edges += 1;
+        let row = &side[e * k..(e + 1) * k];
+        let (mut plus, mut minus) = (u32::MAX, u32::MAX);
+        let (na, nb) = (nbr(a), nbr(b));
+        let (mut i, mut j) = (0, 0);
+        while i < na.len() && j < nb.len() {
+            match na[i].cmp(&nb[j]) {
+                Ordering::Less => i += 1,
+                Ordering::Greater => j += 1,
+                Ordering::Equal => {
+                    let c = na[i];
+                    i += 1;
+                    j += 1;
+                    // Around the axis v→a, the face apex on each side is the candidate
+                    // nearest to b in angle (orient3d(v, a, x, y) > 0: x comes first ccw).
+                    let (slot, nearer) = match row[c as usize] {
+                        1 => (&mut plus, 1),
+                        -1 => (&mut minus, -1),
+                        _ => continue,
+                    };
+                    if *slot != u32::MAX {
+                        match lv.orient(a as usize, c as usize, *slot as usize) * nearer {
+                            1 => {}
+                            -1 => continue,
+                            _ => return None,
+                        }
+                    }
+                    *slot = c;
+                }
+            }
+        }
+        for (apex, tri) in [(plus, [a, b, plus]), (minus, [b, a, minus])] {
+            if apex != u32::MAX {
+                faces.push(tri);
+            } else if !on_hull
+                || hull
+                    .common_facet(lv.v as usize, lv.g(a) as usize, lv.g(b) as usize)
+                    .is_none()
+            {
+                return None;
+            }
+        }
+    }
+    // Each face must have been seen from its three edges, in one rotation.
+    for f in &mut faces {
+        let m = (0..3).min_by_key(|&i| f[i]).unwrap_or(0);
+        f.rotate_left(m);
+    }
+    faces.sort_unstable();
+    if !faces.len().is_multiple_of(3) || faces.chunks(3).any(|c| c[0] != c[1] || c[1] != c[2]) {
+        return None;
+    }
+    let f = faces.len() / 3;
+    let euler = k as i64 - kept_edges as i64 + f as i64;
+    if euler != if on_hull { 1 } else { 2 } || !connected_csr(k, &deg, &adj) {
+        return None;
+    }
+    Some(faces.chunks(3).map(|c| c[0].map(|x| lv.g(x))).collect())
+}
+
+fn connected_csr(k: usize, start: &[u32], adj: &[u32]) -> bool {
+    let mut seen = vec![false; k];
+    let mut stack = vec![0u32];
+    seen[0] = true;
+    let mut count = 1;
+    while let Some(x) = stack.pop() {
+        for &y in &adj[start[x as usize] as usize..start[x as usize + 1] as usize] {
+            if !seen[y as usize] {
+                seen[y as usize] = true;
+                count += 1;
+                stack.push(y);
+            }
+        }
+    }
+    count == k
 }
 
 fn bad(v: u32, detail: String) -> Witness {
@@ -168,7 +294,7 @@ fn local_edges(g: &Graph, nb: &[u32]) -> Vec<(u32, u32)> {
 }
 
 /// Which segments of `L_v` survive the generalized puncture rule.
-fn puncture_free(lv: &LocalView, edges: &[(u32, u32)]) -> Result<Vec<bool>, Witness> {
+fn puncture_free(lv: &LocalView, edges: &[(u32, u32)]) -> Result<(Vec<bool>, Vec<i8>), Witness> {
     let k = lv.nb.len();
     let m = edges.len();
     // side[e * k + c] = orient3d(v, a, b, c) for edge e = (a, b).
@@ -178,9 +304,10 @@ fn puncture_free(lv: &LocalView, edges: &[(u32, u32)]) -> Result<Vec<bool>, Witn
         let (a, b) = (a as usize, b as usize);
         let row = &mut side[e * k..(e + 1) * k];
         let mut coplanar = Vec::new();
+        let plane = lv.frame.plane(&lv.d[a], &lv.d[b]);
         for (c, slot) in row.iter_mut().enumerate() {
             if c != a && c != b {
-                *slot = lv.orient(a, b, c);
+                *slot = lv.frame.side(&plane, lv.p[a], lv.p[b], lv.p[c], &lv.d[c]);
                 if *slot == 0 {
                     coplanar.push(c);
                 }
@@ -200,21 +327,40 @@ fn puncture_free(lv: &LocalView, edges: &[(u32, u32)]) -> Result<Vec<bool>, Witn
             keep[e] = false;
         }
     }
+    // Bitmasks of the neighbours strictly on each side of each segment's plane through v
+    // (when there are at most 64 neighbours) turn the straddle tests into bit operations.
+    let masks: Vec<(u64, u64)> = if k <= 64 {
+        (0..m)
+            .map(|e| {
+                let row = &side[e * k..(e + 1) * k];
+                row.iter()
+                    .enumerate()
+                    .fold((0u64, 0u64), |(p, q), (c, &x)| {
+                        (p | (u64::from(x > 0) << c), q | (u64::from(x < 0) << c))
+                    })
+            })
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let straddles = |e: usize, c: u32, d: u32| -> bool {
+        if let Some(&(p, q)) = masks.get(e) {
+            ((p >> c) & (q >> d) & 1) | ((p >> d) & (q >> c) & 1) != 0
+        } else {
+            side[e * k + c as usize] * side[e * k + d as usize] < 0
+        }
+    };
     for e in 0..m {
         let (a, b) = edges[e];
-        let row_e = &side[e * k..(e + 1) * k];
         for f in e + 1..m {
             let (c, d) = edges[f];
-            if a == c || a == d || b == c || b == d {
-                continue;
-            }
-            let (sc, sd) = (row_e[c as usize], row_e[d as usize]);
-            let (sa, sb) = (side[f * k + a as usize], side[f * k + b as usize]);
             // Seen from v, the arcs ab and cd can only cross (and a segment only puncture the
-            // other's triangle) when each straddles the other's plane through v.
-            if sc * sd >= 0 || sa * sb >= 0 {
+            // other's triangle) when each straddles the other's plane through v; segments
+            // sharing an endpoint never do (the shared endpoint has sign 0).
+            if !straddles(e, c, d) || !straddles(f, a, b) {
                 continue;
             }
+            let (sa, sc) = (side[f * k + a as usize], side[e * k + c as usize]);
             match crossing(lv, (a, b), (c, d), sa, sc)? {
                 Some(true) => keep[e] = false,
                 Some(false) => keep[f] = false,
@@ -222,7 +368,7 @@ fn puncture_free(lv: &LocalView, edges: &[(u32, u32)]) -> Result<Vec<bool>, Witn
             }
         }
     }
-    Ok(keep)
+    Ok((keep, side))
 }
 
 /// For segments `ab`, `cd` of `L_v` that straddle each other's planes through `v`
@@ -463,4 +609,70 @@ fn connected(rot: &[Vec<u32>]) -> bool {
         }
     }
     count == rot.len()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::generate;
+
+    /// The sign-table fast path and the exact rotation system agree on every vertex of
+    /// valid tetrahedralizations (grids, random, cospherical, skew lines).
+    #[test]
+    fn fast_faces_agree_with_rotation_system() {
+        let meshes = [
+            generate::kuhn(3),
+            generate::random_tetrahedralization(300, 600, 3, None),
+            generate::random_tetrahedralization(200, 300, 4, Some(6)),
+            generate::tetrahedralize_points(generate::cospherical_points(50), 2),
+            generate::skew_lines(16),
+        ];
+        let mut fast_hits = 0;
+        for t in &meshes {
+            let segs: Vec<[u32; 2]> = t.edges().iter().map(|&(a, b)| [a, b]).collect();
+            let g = Graph::new(t.points.len(), &segs).unwrap();
+            let hull = Hull3::new(&t.points);
+            for v in 0..t.points.len() as u32 {
+                let nb = g.nbrs(v);
+                let frame = Frame::new(&t.points[v as usize]);
+                let p: Vec<&Point3> = nb.iter().map(|&a| &t.points[a as usize]).collect();
+                let d: Vec<Dir> = p.iter().map(|x| frame.dir(x)).collect();
+                let lv = LocalView {
+                    v,
+                    pv: &t.points[v as usize],
+                    nb,
+                    p: &p,
+                    d: &d,
+                    frame,
+                };
+                let edges = local_edges(&g, nb);
+                let (keep, side) = puncture_free(&lv, &edges).unwrap();
+                let kept: Vec<(u32, u32)> = edges
+                    .iter()
+                    .zip(&keep)
+                    .filter(|(_, k)| **k)
+                    .map(|(e, _)| *e)
+                    .collect();
+                let rot = rotation_system(&lv, &kept).unwrap();
+                let mut slow = faces(&lv, &hull, &rot, kept.len()).unwrap();
+                let norm = |f: &mut Vec<[u32; 3]>| {
+                    for x in f.iter_mut() {
+                        let m = (0..3).min_by_key(|&i| x[i]).unwrap();
+                        x.rotate_left(m);
+                    }
+                    f.sort_unstable();
+                };
+                norm(&mut slow);
+                if let Some(mut fast) = faces_from_signs(&lv, &hull, &edges, &keep, &side) {
+                    norm(&mut fast);
+                    assert_eq!(fast, slow, "vertex {v}");
+                    fast_hits += 1;
+                }
+            }
+        }
+        assert!(
+            fast_hits > 500,
+            "the fast path should handle most vertices: {fast_hits}"
+        );
+    }
 }

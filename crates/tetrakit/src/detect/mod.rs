@@ -80,15 +80,87 @@ impl Detection {
 /// assert_eq!(no.result.unwrap_err().kind, WitnessKind::MissingHullEdge);
 /// ```
 pub fn detect(points: &[Point3], segments: &[(u32, u32)]) -> Result<Detection, String> {
+    let n = points.len();
+    if let Some(k) = segments
+        .iter()
+        .position(|&(a, b)| a as usize >= n || b as usize >= n || a == b)
+    {
+        // Name malformed segments in the caller's numbering.
+        Graph::new(n, &[[segments[k].0, segments[k].1]])?;
+    }
     let segs: Vec<[u32; 2]> = segments.iter().map(|&(a, b)| [a, b]).collect();
+    // Work in a space-filling-curve order: neighbours then sit close in memory.
+    let order = spatial_order(points);
+    let mut rank = vec![0u32; points.len()];
+    for (new, &old) in order.iter().enumerate() {
+        rank[old as usize] = new as u32;
+    }
+    let pts: Vec<Point3> = order.iter().map(|&o| points[o as usize]).collect();
+    let segs: Vec<[u32; 2]> = segs
+        .iter()
+        .map(|s| [rank[s[0] as usize], rank[s[1] as usize]])
+        .collect();
+    let Ok(mut d) = detect_ordered(&pts, &segs) else {
+        // Only a repeated segment gets here: name it in the caller's numbering.
+        let orig: Vec<[u32; 2]> = segments.iter().map(|&(a, b)| [a, b]).collect();
+        return Err(Graph::new(n, &orig)
+            .err()
+            .unwrap_or_else(|| "invalid segments".into()));
+    };
+    let back = |v: u32| order[v as usize];
+    d.result = match d.result {
+        Ok(Cells::Tetrahedra(t)) => Ok(Cells::Tetrahedra(t.iter().map(|t| t.map(back)).collect())),
+        Ok(Cells::Triangles(t)) => Ok(Cells::Triangles(t.iter().map(|t| t.map(back)).collect())),
+        Err(w) => Err(w.mapped(back)),
+    };
+    Ok(d)
+}
+
+/// Point indices sorted along a Morton (Z-order) curve of the bounding box (a heuristic
+/// for memory locality only; no decision depends on it).
+fn spatial_order(points: &[Point3]) -> Vec<u32> {
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    for p in points {
+        for k in 0..3 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    let spread = |k: usize| if hi[k] > lo[k] { hi[k] - lo[k] } else { 1.0 };
+    let scale: [f64; 3] = std::array::from_fn(|k| ((1u64 << 21) - 1) as f64 / spread(k));
+    fn spread_bits(x: u64) -> u64 {
+        let mut x = x & 0x1f_ffff;
+        x = (x | (x << 32)) & 0x1f_0000_0000_ffff;
+        x = (x | (x << 16)) & 0x1f_0000_ff00_00ff;
+        x = (x | (x << 8)) & 0x100f_00f0_0f00_f00f;
+        x = (x | (x << 4)) & 0x10c3_0c30_c30c_30c3;
+        (x | (x << 2)) & 0x1249_2492_4924_9249
+    }
+    let mut keyed: Vec<(u64, u32)> = points
+        .par_iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let q: [u64; 3] = std::array::from_fn(|k| ((p[k] - lo[k]) * scale[k]) as u64);
+            (
+                spread_bits(q[0]) | (spread_bits(q[1]) << 1) | (spread_bits(q[2]) << 2),
+                i as u32,
+            )
+        })
+        .collect();
+    keyed.par_sort_unstable();
+    keyed.into_iter().map(|(_, i)| i).collect()
+}
+
+fn detect_ordered(points: &[Point3], segs: &[[u32; 2]]) -> Result<Detection, String> {
     let mut phases = Phases::new();
-    let g = Graph::new(points.len(), &segs)?;
+    let g = Graph::new(points.len(), segs)?;
     phases.mark("graph");
     let hull = Hull3::new(points);
     phases.mark("hull");
     let mut out = Detection {
         vertices: points.len(),
-        segments: segments.len(),
+        segments: segs.len(),
         hull_vertices: 0,
         dimension: hull.dimension,
         result: Err(Witness::new(
@@ -159,9 +231,9 @@ fn detect3(points: &[Point3], g: &Graph, hull: &Hull3) -> Result<Cells, Witness>
     {
         return Err(w.clone());
     }
-    let links: Vec<Vec<[u32; 3]>> = links.into_iter().map(|r| r.unwrap_or_default()).collect();
+    let mut links: Vec<Vec<[u32; 3]>> = links.into_iter().map(|r| r.unwrap_or_default()).collect();
     phases.mark("links");
-    let tets = confirm(&links)?;
+    let tets = confirm(&mut links)?;
     phases.mark("confirm");
     let report = mesh::verify(points, &tets, Some(hull));
     phases.mark("verify");
@@ -242,17 +314,8 @@ fn sorted3(mut f: [u32; 3]) -> [u32; 3] {
 }
 
 /// Step 4: keep each tetrahedron found from its smallest vertex and confirm it from the
-/// other three; every link triangle must be accounted for.
-fn confirm(links: &[Vec<[u32; 3]>]) -> Result<Vec<[u32; 4]>, Witness> {
-    let sorted: Vec<Vec<[u32; 3]>> = links
-        .par_iter()
-        .map(|fs| {
-            let mut s: Vec<[u32; 3]> = fs.iter().map(|&f| sorted3(f)).collect();
-            s.sort_unstable();
-            s
-        })
-        .collect();
-    let found = |u: u32, f: [u32; 3]| sorted[u as usize].binary_search(&sorted3(f)).is_ok();
+/// other three; every link triangle must be accounted for. Sorts each link in place.
+fn confirm(links: &mut [Vec<[u32; 3]>]) -> Result<Vec<[u32; 4]>, Witness> {
     let tets: Vec<[u32; 4]> = links
         .par_iter()
         .enumerate()
@@ -263,20 +326,22 @@ fn confirm(links: &[Vec<[u32; 3]>]) -> Result<Vec<[u32; 4]>, Witness> {
                 .map(move |f| [v, f[0], f[1], f[2]])
         })
         .collect();
+    let total: usize = links.iter().map(Vec::len).sum();
+    links.par_iter_mut().for_each(|fs| {
+        fs.iter_mut().for_each(|f| *f = sorted3(*f));
+        fs.sort_unstable();
+    });
+    let links: &[Vec<[u32; 3]>] = links;
+    let found = |u: u32, f: [u32; 3]| links[u as usize].binary_search(&sorted3(f)).is_ok();
     let unconfirmed = tets.par_iter().find_any(|t| {
         (1..4).any(|i| {
-            let others = [0, 1, 2, 3]
-                .iter()
-                .filter(|&&j| j != i)
-                .map(|&j| t[j])
-                .collect::<Vec<_>>();
-            !found(t[i], [others[0], others[1], others[2]])
+            let o: Vec<u32> = (0..4).filter(|&j| j != i).map(|j| t[j]).collect();
+            !found(t[i], [o[0], o[1], o[2]])
         })
     });
     if let Some(t) = unconfirmed {
         return Err(unconfirmed_witness(*t, &found));
     }
-    let total: usize = links.iter().map(Vec::len).sum();
     if total != 4 * tets.len() {
         // Some link triangle's tetrahedron was not found from its smallest vertex.
         for (u, fs) in links.iter().enumerate() {

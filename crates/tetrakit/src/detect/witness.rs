@@ -76,10 +76,15 @@ impl Witness {
     /// let w = Witness::new(WitnessKind::VertexOnSegment, vec![4], vec![[1, 2]], "vertex #4 lies inside segment (#1, #2)".into());
     /// assert_eq!(w.renumbered(1).detail, "vertex #5 lies inside segment (#2, #3)");
     /// ```
-    pub fn renumbered(mut self, base: u32) -> Self {
-        self.vertices.iter_mut().for_each(|v| *v += base);
-        self.segments.iter_mut().flatten().for_each(|v| *v += base);
-        self.detail = renumber_text(&self.detail, base);
+    pub fn renumbered(self, base: u32) -> Self {
+        self.mapped(|v| v + base)
+    }
+
+    /// Renames every vertex `v` to `f(v)`, in the fields and in the text.
+    pub fn mapped(mut self, f: impl Fn(u32) -> u32) -> Self {
+        self.vertices.iter_mut().for_each(|v| *v = f(*v));
+        self.segments.iter_mut().flatten().for_each(|v| *v = f(*v));
+        self.detail = map_text(&self.detail, f);
         self
     }
 
@@ -94,14 +99,19 @@ impl Witness {
 
 /// Adds `base` to every `#<digits>` vertex number in `text`.
 pub fn renumber_text(text: &str, base: u32) -> String {
+    map_text(text, |v| v + base)
+}
+
+/// Renames every `#<digits>` vertex number `v` in `text` to `f(v)`.
+fn map_text(text: &str, f: impl Fn(u32) -> u32) -> String {
     let mut out = String::with_capacity(text.len());
     let mut rest = text;
     while let Some(i) = rest.find('#') {
         out.push_str(&rest[..=i]);
         rest = &rest[i + 1..];
         let digits = rest.bytes().take_while(u8::is_ascii_digit).count();
-        if let Ok(x) = rest[..digits].parse::<u64>() {
-            out.push_str(&(x + base as u64).to_string());
+        if let Ok(x) = rest[..digits].parse::<u32>() {
+            out.push_str(&f(x).to_string());
         } else {
             out.push_str(&rest[..digits]);
         }

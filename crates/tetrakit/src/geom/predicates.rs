@@ -171,6 +171,62 @@ impl Frame {
     }
 }
 
+/// The plane through the apex `v` and two points `a, b`, prepared for many exact side
+/// tests `orient3d(v, a, b, c)` (one dot product each, same rounding as [`Frame::sign`]).
+#[derive(Clone, Copy, Debug)]
+pub struct ApexPlane {
+    n: Point3,
+    pm: Point3,
+    lo: i32,
+    hi: i32,
+}
+
+impl Frame {
+    /// Prepares the plane through `v` and the points with directions `da`, `db`.
+    #[inline]
+    pub fn plane(&self, da: &Dir, db: &Dir) -> ApexPlane {
+        let (a, b) = (&da.d, &db.d);
+        let m = [
+            a[1] * b[2],
+            a[2] * b[1],
+            a[2] * b[0],
+            a[0] * b[2],
+            a[0] * b[1],
+            a[1] * b[0],
+        ];
+        let inexact = da.hi == i32::MIN || db.hi == i32::MIN;
+        ApexPlane {
+            n: [m[0] - m[1], m[2] - m[3], m[4] - m[5]],
+            pm: [
+                m[0].abs() + m[1].abs(),
+                m[2].abs() + m[3].abs(),
+                m[4].abs() + m[5].abs(),
+            ],
+            lo: da.lo.min(db.lo),
+            hi: if inexact { i32::MIN } else { da.hi.max(db.hi) },
+        }
+    }
+
+    /// Exact sign of `orient3d(v, a, b, c)` for the plane `pl` through `v, a, b`.
+    #[inline]
+    pub fn side(&self, pl: &ApexPlane, a: &Point3, b: &Point3, c: &Point3, dc: &Dir) -> i8 {
+        let d = &dc.d;
+        let det = d[0] * pl.n[0] + d[1] * pl.n[1] + d[2] * pl.n[2];
+        let perm = d[0].abs() * pl.pm[0] + d[1].abs() * pl.pm[1] + d[2].abs() * pl.pm[2];
+        let bound = FRAME_ERR * perm;
+        // Branch-free on the certain case: signs are unpredictable, certainty is not.
+        let (pos, neg) = (det > bound, det < -bound);
+        if pos | neg {
+            return i8::from(pos) - i8::from(neg);
+        }
+        let (lo, hi) = (pl.lo.min(dc.lo), pl.hi.max(dc.hi));
+        if pl.hi != i32::MIN && dc.hi != i32::MIN && (lo == i32::MAX || hi - lo <= 15) {
+            return sign(det);
+        }
+        orient3d(&self.v, a, b, c)
+    }
+}
+
 /// The float determinant `det[da, db, dc]` and its permanent (for the error bound).
 #[inline]
 fn det_perm(da: &Point3, db: &Point3, dc: &Point3) -> (f64, f64) {
@@ -411,6 +467,8 @@ mod tests {
             let f = Frame::new(&v);
             let s = f.sign(&a, &b, &c, &f.dir(&a), &f.dir(&b), &f.dir(&c));
             assert_eq!(s, orient3d(&v, &a, &b, &c), "{v:?} {a:?} {b:?} {c:?}");
+            let pl = f.plane(&f.dir(&a), &f.dir(&b));
+            assert_eq!(f.side(&pl, &a, &b, &c, &f.dir(&c)), s);
         }
     }
 
