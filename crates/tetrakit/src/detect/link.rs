@@ -32,6 +32,7 @@
 //! and neighbour (`|L_v|·|N(v)|` filtered orientation tests), the rest are table look-ups.
 
 use super::graph::Graph;
+use super::rotation::{connected, trace_faces};
 use super::witness::{Witness, WitnessKind, ids};
 use crate::geom::{
     Dir, Frame, Hull3, Point3, collinear3, orient2d_drop, orient3d, projection_axis, segments_meet,
@@ -186,27 +187,12 @@ fn faces_from_signs(
     }
     let f = faces.len() / 3;
     let euler = k as i64 - kept_edges as i64 + f as i64;
-    if euler != if on_hull { 1 } else { 2 } || !connected_csr(k, &deg, &adj) {
+    if euler != if on_hull { 1 } else { 2 }
+        || !connected(k, |x| &adj[deg[x] as usize..deg[x + 1] as usize])
+    {
         return None;
     }
     Some(faces.chunks(3).map(|c| c[0].map(|x| lv.g(x))).collect())
-}
-
-fn connected_csr(k: usize, start: &[u32], adj: &[u32]) -> bool {
-    let mut seen = vec![false; k];
-    let mut stack = vec![0u32];
-    seen[0] = true;
-    let mut count = 1;
-    while let Some(x) = stack.pop() {
-        for &y in &adj[start[x as usize] as usize..start[x as usize + 1] as usize] {
-            if !seen[y as usize] {
-                seen[y as usize] = true;
-                count += 1;
-                stack.push(y);
-            }
-        }
-    }
-    count == k
 }
 
 fn bad(v: u32, detail: String) -> Witness {
@@ -504,49 +490,30 @@ fn faces(
 ) -> Result<Vec<[u32; 3]>, Witness> {
     let v = lv.v;
     let k = rot.len();
-    let mut start = vec![0usize; k + 1];
-    for i in 0..k {
-        start[i + 1] = start[i] + rot[i].len();
-    }
-    let mut seen = vec![false; start[k]];
     let mut inner = Vec::new();
     let mut outer: Vec<Vec<u32>> = Vec::new();
-    let mut face_count = 0usize;
-    for a in 0..k {
-        for (pos, _) in rot[a].iter().enumerate() {
-            if seen[start[a] + pos] {
-                continue;
-            }
-            let mut cycle = Vec::new();
-            let (mut x, mut px) = (a, pos);
-            while !seen[start[x] + px] {
-                seen[start[x] + px] = true;
-                cycle.push(x as u32);
-                let y = rot[x][px] as usize;
-                let back = rot[y]
-                    .iter()
-                    .position(|&z| z as usize == x)
-                    .expect("symmetric adjacency");
-                let py = (back + rot[y].len() - 1) % rot[y].len();
-                (x, px) = (y, py);
-            }
-            face_count += 1;
-            if cycle.len() == 3
-                && lv.orient(cycle[0] as usize, cycle[1] as usize, cycle[2] as usize) > 0
-            {
-                inner.push([lv.g(cycle[0]), lv.g(cycle[1]), lv.g(cycle[2])]);
-            } else {
-                outer.push(cycle);
-            }
+    let all = trace_faces(rot);
+    let face_count = all.len();
+    for cycle in all {
+        if cycle.len() == 3
+            && lv.orient(cycle[0] as usize, cycle[1] as usize, cycle[2] as usize) > 0
+        {
+            inner.push([lv.g(cycle[0]), lv.g(cycle[1]), lv.g(cycle[2])]);
+        } else {
+            outer.push(cycle);
         }
     }
     let euler = k as i64 - edge_count as i64 + face_count as i64;
-    if euler != 2 || !connected(rot) {
+    if euler != 2 || !connected(k, |x| &rot[x]) {
         return Err(bad(
             v,
             format!(
                 "once punctured segments are removed, the link of vertex #{v} has {k} vertices, {edge_count} edges and {face_count} faces (V-E+F = {euler}{}), not a triangulated sphere",
-                if connected(rot) { "" } else { ", disconnected" }
+                if connected(k, |x| &rot[x]) {
+                    ""
+                } else {
+                    ", disconnected"
+                }
             ),
         ));
     }
@@ -592,23 +559,6 @@ fn faces(
         }
     }
     Ok(inner)
-}
-
-fn connected(rot: &[Vec<u32>]) -> bool {
-    let mut seen = vec![false; rot.len()];
-    let mut stack = vec![0usize];
-    seen[0] = true;
-    let mut count = 1;
-    while let Some(x) = stack.pop() {
-        for &y in &rot[x] {
-            if !seen[y as usize] {
-                seen[y as usize] = true;
-                count += 1;
-                stack.push(y as usize);
-            }
-        }
-    }
-    count == rot.len()
 }
 
 #[cfg(test)]

@@ -25,6 +25,7 @@ mod graph;
 mod link;
 pub mod oracle;
 mod planar;
+mod rotation;
 mod witness;
 
 pub use graph::Graph;
@@ -212,7 +213,7 @@ impl Phases {
 fn detect3(points: &[Point3], g: &Graph, hull: &Hull3) -> Result<Cells, Witness> {
     let mut phases = Phases::new();
     connectivity(g)?;
-    hull_edges(points, g, hull)?;
+    rotation::check_chains(hull.polytope_edges(points), g)?;
     phases.mark("connectivity and hull edges");
     let ctx = Ctx {
         pts: points,
@@ -286,26 +287,6 @@ fn connectivity(g: &Graph) -> Result<(), Witness> {
         vec![],
         detail,
     ))
-}
-
-/// Step 1: consecutive points along each polytope edge must be joined by a segment.
-fn hull_edges(points: &[Point3], g: &Graph, hull: &Hull3) -> Result<(), Witness> {
-    for chain in hull.polytope_edges(points) {
-        for w in chain.windows(2) {
-            if !g.has_edge(w[0], w[1]) {
-                return Err(Witness::new(
-                    WitnessKind::MissingHullEdge,
-                    vec![w[0], w[1]],
-                    vec![[w[0], w[1]]],
-                    format!(
-                        "points #{} and #{} are consecutive along an edge of the convex hull but not joined by a segment",
-                        w[0], w[1]
-                    ),
-                ));
-            }
-        }
-    }
-    Ok(())
 }
 
 fn sorted3(mut f: [u32; 3]) -> [u32; 3] {

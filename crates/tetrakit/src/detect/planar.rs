@@ -9,6 +9,7 @@
 
 use super::Cells;
 use super::graph::Graph;
+use super::rotation::{check_chains, trace_faces};
 use super::witness::{Witness, WitnessKind, ids};
 use crate::geom::{Hull2, Point2, Point3, drop_axis, orient2d, projection_axis, segments_meet};
 use crate::mesh::verify_triangulation;
@@ -41,41 +42,19 @@ pub(super) fn detect(points: &[Point3], g: &Graph) -> (usize, Result<Cells, Witn
 
 fn detect2(p: &[Point2], g: &Graph, hull: &Hull2) -> Result<Cells, Witness> {
     super::connectivity(g)?;
-    hull_edges(p, g, hull)?;
+    check_chains(hull_chains(p, hull), g)?;
     let n = p.len();
     let mut rot: Vec<Vec<u32>> = Vec::with_capacity(n);
     for v in 0..n as u32 {
         rot.push(sort_around(p, v, g.nbrs(v))?);
     }
-    let mut start = vec![0usize; n + 1];
-    for i in 0..n {
-        start[i + 1] = start[i] + rot[i].len();
-    }
-    let mut seen = vec![false; start[n]];
     let (mut tris, mut outer) = (Vec::new(), Vec::new());
-    for a in 0..n {
-        for pos in 0..rot[a].len() {
-            if seen[start[a] + pos] {
-                continue;
-            }
-            let mut cycle = Vec::new();
-            let (mut x, mut px) = (a, pos);
-            while !seen[start[x] + px] {
-                seen[start[x] + px] = true;
-                cycle.push(x as u32);
-                let y = rot[x][px] as usize;
-                let back = rot[y]
-                    .iter()
-                    .position(|&z| z as usize == x)
-                    .expect("symmetric");
-                (x, px) = (y, (back + rot[y].len() - 1) % rot[y].len());
-            }
-            let q = |i: usize| &p[cycle[i] as usize];
-            if cycle.len() == 3 && orient2d(q(0), q(1), q(2)) > 0 {
-                tris.push([cycle[0], cycle[1], cycle[2]]);
-            } else {
-                outer.push(cycle);
-            }
+    for cycle in trace_faces(&rot) {
+        let q = |i: usize| &p[cycle[i] as usize];
+        if cycle.len() == 3 && orient2d(q(0), q(1), q(2)) > 0 {
+            tris.push([cycle[0], cycle[1], cycle[2]]);
+        } else {
+            outer.push(cycle);
         }
     }
     let faces = tris.len() + outer.len();
@@ -117,33 +96,22 @@ fn detect2(p: &[Point2], g: &Graph, hull: &Hull2) -> Result<Cells, Witness> {
     Ok(Cells::Triangles(tris))
 }
 
-/// Consecutive boundary points along each hull edge must be joined.
-fn hull_edges(p: &[Point2], g: &Graph, hull: &Hull2) -> Result<(), Witness> {
+/// The boundary points along each hull edge, sorted along it.
+fn hull_chains(p: &[Point2], hull: &Hull2) -> Vec<Vec<u32>> {
     let h = &hull.vertices;
-    for i in 0..h.len() {
-        let (a, b) = (&p[h[i] as usize], &p[h[(i + 1) % h.len()] as usize]);
-        let mut on: Vec<u32> = (0..p.len() as u32)
-            .filter(|&x| hull.on_boundary[x as usize] && orient2d(a, b, &p[x as usize]) == 0)
-            .collect();
-        on.sort_by(|&x, &y| {
-            let (px, py) = (&p[x as usize], &p[y as usize]);
-            px[0].total_cmp(&py[0]).then(px[1].total_cmp(&py[1]))
-        });
-        for w in on.windows(2) {
-            if !g.has_edge(w[0], w[1]) {
-                return Err(Witness::new(
-                    WitnessKind::MissingHullEdge,
-                    vec![w[0], w[1]],
-                    vec![[w[0], w[1]]],
-                    format!(
-                        "points #{} and #{} are consecutive along an edge of the convex hull but not joined by a segment",
-                        w[0], w[1]
-                    ),
-                ));
-            }
-        }
-    }
-    Ok(())
+    (0..h.len())
+        .map(|i| {
+            let (a, b) = (&p[h[i] as usize], &p[h[(i + 1) % h.len()] as usize]);
+            let mut on: Vec<u32> = (0..p.len() as u32)
+                .filter(|&x| hull.on_boundary[x as usize] && orient2d(a, b, &p[x as usize]) == 0)
+                .collect();
+            on.sort_by(|&x, &y| {
+                let (px, py) = (&p[x as usize], &p[y as usize]);
+                px[0].total_cmp(&py[0]).then(px[1].total_cmp(&py[1]))
+            });
+            on
+        })
+        .collect()
 }
 
 /// Neighbours of `v` sorted counter-clockwise, starting from the first one.
