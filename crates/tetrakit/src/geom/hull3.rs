@@ -204,10 +204,13 @@ impl Hull3 {
                 )
             })
             .collect();
+        let grid = FacetGrid::new(pts, &self.facet_planes);
         let lists: Vec<Vec<u32>> = pts
             .par_iter()
             .map(|x| {
-                (0..planes.len() as u32)
+                grid.candidates(x)
+                    .iter()
+                    .copied()
                     .filter(|&f| planes[f as usize].side(x) == 0)
                     .collect()
             })
@@ -218,6 +221,93 @@ impl Hull3 {
             self.facet_list.extend_from_slice(l);
             self.facet_start.push(self.facet_list.len() as u32);
         }
+    }
+}
+
+/// A coarse grid over the bounding box listing, per cell, the facets whose plane may pass
+/// through the cell. The float box–plane test is padded far beyond its rounding error, so
+/// it only skips facets whose plane provably misses the cell; membership itself is decided
+/// by the exact [`Plane::side`].
+struct FacetGrid {
+    lo: Point3,
+    inv: Point3,
+    res: usize,
+    start: Vec<u32>,
+    list: Vec<u32>,
+}
+
+impl FacetGrid {
+    fn new(pts: &[Point3], facets: &[[u32; 3]]) -> Self {
+        let mut lo = [f64::INFINITY; 3];
+        let mut hi = [f64::NEG_INFINITY; 3];
+        for p in pts {
+            for k in 0..3 {
+                lo[k] = lo[k].min(p[k]);
+                hi[k] = hi[k].max(p[k]);
+            }
+        }
+        // About one cell per 64 points, at most 64 per side.
+        let res = ((pts.len() as f64 / 64.0).cbrt().ceil() as usize).clamp(1, 64);
+        let size: Point3 =
+            std::array::from_fn(|k| ((hi[k] - lo[k]) / res as f64).max(f64::MIN_POSITIVE));
+        let inv = size.map(|s| 1.0 / s);
+        let cells = res * res * res;
+        let mut per_cell: Vec<Vec<u32>> = vec![Vec::new(); cells];
+        for (fi, f) in facets.iter().enumerate() {
+            let (a, b, c) = (pts[f[0] as usize], pts[f[1] as usize], pts[f[2] as usize]);
+            let u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+            let w = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
+            let n = [
+                u[1] * w[2] - u[2] * w[1],
+                u[2] * w[0] - u[0] * w[2],
+                u[0] * w[1] - u[1] * w[0],
+            ];
+            let nn = n[0].abs() + n[1].abs() + n[2].abs();
+            let scale: f64 = (0..3)
+                .map(|k| hi[k].abs().max(lo[k].abs()))
+                .fold(0.0, f64::max);
+            let pad =
+                1e-6 * nn * (scale + 1.0) + 1e-6 * nn * size.iter().fold(0.0f64, |m, s| m.max(*s));
+            for (cell, list) in per_cell.iter_mut().enumerate() {
+                let idx = [cell / (res * res), (cell / res) % res, cell % res];
+                // Signed distances (times |n|) of the cell's corners from the plane.
+                let (mut dmin, mut dmax) = (0.0f64, 0.0f64);
+                for k in 0..3 {
+                    // The cell, widened far beyond the rounding of the cell index computed
+                    // for a point (a point may be filed one ulp across a cell boundary).
+                    let margin = 1e-6 * size[k] + 1e-9 * scale;
+                    let c0 = lo[k] + idx[k] as f64 * size[k] - a[k] - margin;
+                    let c1 = c0 + size[k] + 2.0 * margin;
+                    dmin += (n[k] * c0).min(n[k] * c1);
+                    dmax += (n[k] * c0).max(n[k] * c1);
+                }
+                if dmin <= pad && dmax >= -pad {
+                    list.push(fi as u32);
+                }
+            }
+        }
+        let mut start = Vec::with_capacity(cells + 1);
+        let mut list = Vec::new();
+        start.push(0);
+        for l in per_cell {
+            list.extend(l);
+            start.push(list.len() as u32);
+        }
+        FacetGrid {
+            lo,
+            inv,
+            res,
+            start,
+            list,
+        }
+    }
+
+    fn candidates(&self, p: &Point3) -> &[u32] {
+        let cell: [usize; 3] = std::array::from_fn(|k| {
+            (((p[k] - self.lo[k]) * self.inv[k]) as usize).min(self.res - 1)
+        });
+        let c = (cell[0] * self.res + cell[1]) * self.res + cell[2];
+        &self.list[self.start[c] as usize..self.start[c + 1] as usize]
     }
 }
 
@@ -457,6 +547,46 @@ mod tests {
             .flat_map(|t| (0..3).map(move |i| (t[i], t[(i + 1) % 3])))
             .collect();
         assert!(e.iter().all(|&(a, b)| e.contains(&(b, a))));
+    }
+
+    /// The facet grid must never hide a facet from a point on it: compare with the
+    /// exhaustive exact test on many boundary points, including a tilted facet.
+    #[test]
+    fn grid_filtered_membership_is_exhaustive() {
+        let mut rng = crate::rng::Rng::new(77);
+        let mut pts: Vec<Point3> = (0..4000)
+            .map(|_| {
+                [
+                    rng.below(13) as f64,
+                    rng.below(13) as f64,
+                    rng.below(13) as f64,
+                ]
+            })
+            .collect();
+        // Points exactly on the plane x + y + z = 1 (a facet of the set below) and inside.
+        for a in 0..=16 {
+            for b in 0..=(16 - a) {
+                pts.push([
+                    a as f64 / 16.0,
+                    b as f64 / 16.0,
+                    1.0 - (a + b) as f64 / 16.0,
+                ]);
+            }
+        }
+        pts.extend((0..3000).map(|_| [rng.unit() * 0.3, rng.unit() * 0.3, rng.unit() * 0.3]));
+        pts.push([0.0, 0.0, 0.0]);
+        for set in [&pts[..4000], &pts[4000..]] {
+            let h = Hull3::new(set);
+            for (i, x) in set.iter().enumerate() {
+                let exact: Vec<u32> = (0..h.facet_planes.len() as u32)
+                    .filter(|&f| {
+                        let q = h.facet_planes[f as usize].map(|j| set[j as usize]);
+                        orient3d(&q[0], &q[1], &q[2], x) == 0
+                    })
+                    .collect();
+                assert_eq!(h.facets_of(i), &exact[..], "point {i} {x:?}");
+            }
+        }
     }
 
     #[test]

@@ -157,8 +157,9 @@ pub(crate) fn vertex_ref(
 }
 
 /// Rejects self-loops and repeated segments.
-/// `lines[k]` is the source line of segment `k`, or 0 for formats without lines (then
-/// segments are named by their position).
+/// Rejects self-loops and repeated segments. `lines[k]` is the source line of segment `k`,
+/// or 0 for formats without lines (then segments are named by their position). Repeats are
+/// found per vertex (small sorts), not by sorting all segments.
 pub(crate) fn check_segments(
     segs: &[[u32; 2]],
     lines: &[usize],
@@ -172,7 +173,12 @@ pub(crate) fn check_segments(
             (0, format!("segments[{k}]"))
         }
     };
-    let mut keyed: Vec<(u32, u32, usize)> = Vec::with_capacity(segs.len());
+    let n = segs
+        .iter()
+        .map(|s| s[0].max(s[1]) as usize + 1)
+        .max()
+        .unwrap_or(0);
+    let mut start = vec![0usize; n + 1];
     for (k, s) in segs.iter().enumerate() {
         if s[0] == s[1] {
             let (line, name) = at(k);
@@ -182,24 +188,41 @@ pub(crate) fn check_segments(
                 format!("segment {name} joins vertex {} to itself", s[0] + base),
             ));
         }
-        keyed.push((s[0].min(s[1]), s[0].max(s[1]), k));
+        start[s[0].min(s[1]) as usize + 1] += 1;
     }
-    keyed.sort_unstable();
-    for w in keyed.windows(2) {
-        if (w[0].0, w[0].1) == (w[1].0, w[1].1) {
-            let (first, second) = (at(w[0].2.min(w[1].2)), at(w[0].2.max(w[1].2)));
-            return Err(InputError::new(
-                path,
-                second.0,
-                format!(
-                    "segment ({}, {}) is listed twice ({} and {})",
-                    w[0].0 + base,
-                    w[0].1 + base,
-                    first.1,
-                    second.1
-                ),
-            ));
+    for i in 0..n {
+        start[i + 1] += start[i];
+    }
+    let mut fill = start.clone();
+    let mut rows = vec![(0u32, 0u32); segs.len()];
+    for (k, s) in segs.iter().enumerate() {
+        let lo = s[0].min(s[1]) as usize;
+        rows[fill[lo]] = (s[0].max(s[1]), k as u32);
+        fill[lo] += 1;
+    }
+    let mut first: Option<(u32, u32, u32)> = None;
+    for lo in 0..n {
+        let bucket = &mut rows[start[lo]..start[lo + 1]];
+        bucket.sort_unstable();
+        for w in bucket.windows(2) {
+            if w[0].0 == w[1].0 && first.is_none_or(|f| w[1].1 < f.2) {
+                first = Some((lo as u32, w[0].1, w[1].1));
+            }
         }
+    }
+    if let Some((lo, k1, k2)) = first {
+        let (s, (line, name2)) = (segs[k2 as usize], at(k2 as usize));
+        let hi = s[0].max(s[1]);
+        return Err(InputError::new(
+            path,
+            line,
+            format!(
+                "segment ({}, {}) is listed twice ({} and {name2})",
+                lo + base,
+                hi + base,
+                at(k1 as usize).1
+            ),
+        ));
     }
     Ok(())
 }
@@ -230,12 +253,52 @@ fn check_distinct_points(input: &Input) -> Result<(), InputError> {
 
 /// Meaningful lines of a text file: (1-based line number, tokens), comments after `#`
 /// and blank lines skipped.
-pub(crate) fn token_lines(text: &str) -> impl Iterator<Item = (usize, Vec<&str>)> {
+pub(crate) fn token_lines(text: &str) -> impl Iterator<Item = (usize, Tokens<'_>)> {
     text.lines().enumerate().filter_map(|(i, l)| {
         let l = l.split('#').next().unwrap_or("");
-        let toks: Vec<&str> = l.split_whitespace().collect();
+        let toks = Tokens::new(l);
         (!toks.is_empty()).then_some((i + 1, toks))
     })
+}
+
+/// The tokens of one line, kept inline (no allocation) up to 24 of them.
+pub(crate) struct Tokens<'a> {
+    inline: [&'a str; 24],
+    len: usize,
+    heap: Vec<&'a str>,
+}
+
+impl<'a> Tokens<'a> {
+    fn new(line: &'a str) -> Self {
+        let mut t = Tokens {
+            inline: [""; 24],
+            len: 0,
+            heap: Vec::new(),
+        };
+        for tok in line.split_whitespace() {
+            if t.len < 24 {
+                t.inline[t.len] = tok;
+            } else {
+                if t.heap.is_empty() {
+                    t.heap.extend_from_slice(&t.inline);
+                }
+                t.heap.push(tok);
+            }
+            t.len += 1;
+        }
+        t
+    }
+}
+
+impl<'a> std::ops::Deref for Tokens<'a> {
+    type Target = [&'a str];
+    fn deref(&self) -> &[&'a str] {
+        if self.heap.is_empty() {
+            &self.inline[..self.len]
+        } else {
+            &self.heap
+        }
+    }
 }
 
 fn read_xyz(path: &Path) -> Result<Input, InputError> {

@@ -37,7 +37,7 @@ pub(super) fn read(path: &Path, ext: &str) -> Result<Input, InputError> {
 
 fn header<'a>(
     path: &Path,
-    lines: &mut impl Iterator<Item = (usize, Vec<&'a str>)>,
+    lines: &mut impl Iterator<Item = (usize, super::Tokens<'a>)>,
 ) -> Result<(usize, Vec<i64>), InputError> {
     let Some((line, toks)) = lines.next() else {
         return Err(InputError::new(path, 0, "empty file: no header line"));
