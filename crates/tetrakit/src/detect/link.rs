@@ -178,8 +178,7 @@ fn faces_from_signs(
     }
     // Each face must have been seen from its three edges, in one rotation.
     for f in &mut faces {
-        let m = (0..3).min_by_key(|&i| f[i]).unwrap_or(0);
-        f.rotate_left(m);
+        *f = min_first(*f);
     }
     faces.sort_unstable();
     if !faces.len().is_multiple_of(3) || faces.chunks(3).any(|c| c[0] != c[1] || c[1] != c[2]) {
@@ -193,6 +192,18 @@ fn faces_from_signs(
         return None;
     }
     Some(faces.chunks(3).map(|c| c[0].map(|x| lv.g(x))).collect())
+}
+
+/// The same oriented triangle, rotated to start at its smallest vertex.
+#[inline]
+fn min_first([a, b, c]: [u32; 3]) -> [u32; 3] {
+    if a < b && a < c {
+        [a, b, c]
+    } else if b < c {
+        [b, c, a]
+    } else {
+        [c, a, b]
+    }
 }
 
 fn bad(v: u32, detail: String) -> Witness {
@@ -313,44 +324,61 @@ fn puncture_free(lv: &LocalView, edges: &[(u32, u32)]) -> Result<(Vec<bool>, Vec
             keep[e] = false;
         }
     }
-    // Bitmasks of the neighbours strictly on each side of each segment's plane through v
-    // (when there are at most 64 neighbours) turn the straddle tests into bit operations.
-    let masks: Vec<(u64, u64)> = if k <= 64 {
+    // Bitmasks of the neighbours strictly on each side of each segment's plane through v,
+    // and of each segment's endpoints (when there are at most 64 neighbours), turn the
+    // straddle tests into bit operations: cd straddles the plane vab when each side of it
+    // holds one endpoint (segments sharing an endpoint never do: it has sign 0).
+    let masks: Vec<(u64, u64, u64)> = if k <= 64 {
         (0..m)
             .map(|e| {
                 let row = &side[e * k..(e + 1) * k];
-                row.iter()
+                let (p, q) = row
+                    .iter()
                     .enumerate()
                     .fold((0u64, 0u64), |(p, q), (c, &x)| {
                         (p | (u64::from(x > 0) << c), q | (u64::from(x < 0) << c))
-                    })
+                    });
+                (p, q, (1u64 << edges[e].0) | (1u64 << edges[e].1))
             })
             .collect()
     } else {
         Vec::new()
     };
-    let straddles = |e: usize, c: u32, d: u32| -> bool {
-        if let Some(&(p, q)) = masks.get(e) {
-            ((p >> c) & (q >> d) & 1) | ((p >> d) & (q >> c) & 1) != 0
-        } else {
-            side[e * k + c as usize] * side[e * k + d as usize] < 0
-        }
-    };
+    let straddles =
+        |e: usize, c: u32, d: u32| side[e * k + c as usize] * side[e * k + d as usize] < 0;
     for e in 0..m {
         let (a, b) = edges[e];
-        for f in e + 1..m {
+        let mut check = |f: usize| -> Result<(), Witness> {
             let (c, d) = edges[f];
-            // Seen from v, the arcs ab and cd can only cross (and a segment only puncture the
-            // other's triangle) when each straddles the other's plane through v; segments
-            // sharing an endpoint never do (the shared endpoint has sign 0).
-            if !straddles(e, c, d) || !straddles(f, a, b) {
-                continue;
-            }
             let (sa, sc) = (side[f * k + a as usize], side[e * k + c as usize]);
+            // The great circles of ab and cd meet in ±X with X = (a×b)×(c×d) (directions
+            // from v); the point on arc cd is sign(orient(v,a,b,d))·X and the point on arc
+            // ab is sign(orient(v,c,d,a))·X. Different signs: the arcs meet only
+            // antipodally, and neither segment can puncture the other's triangle.
+            if side[e * k + d as usize] != sa {
+                return Ok(());
+            }
             match crossing(lv, (a, b), (c, d), sa, sc)? {
                 Some(true) => keep[e] = false,
                 Some(false) => keep[f] = false,
                 None => {}
+            }
+            Ok(())
+        };
+        // Seen from v, the arcs ab and cd can only cross (and a segment only puncture the
+        // other's triangle) when each straddles the other's plane through v.
+        if let Some(&(pe, qe, me)) = masks.get(e) {
+            for (f, &(pf, qf, mf)) in masks.iter().enumerate().skip(e + 1) {
+                if (pe & mf != 0) & (qe & mf != 0) & (pf & me != 0) & (qf & me != 0) {
+                    check(f)?;
+                }
+            }
+        } else {
+            for f in e + 1..m {
+                let (c, d) = edges[f];
+                if straddles(e, c, d) && straddles(f, a, b) {
+                    check(f)?;
+                }
             }
         }
     }

@@ -249,24 +249,49 @@ fn detect3(points: &[Point3], g: &Graph, hull: &Hull3) -> Result<Cells, Witness>
             ),
         ));
     }
-    let mut want: Vec<(u32, u32)> = (0..n as u32)
-        .flat_map(|v| {
-            g.nbrs(v)
-                .iter()
-                .filter(move |&&w| w > v)
-                .map(move |&w| (v, w))
-        })
-        .collect();
-    want.sort_unstable();
-    if mesh::edges_of(&tets) != want {
-        return Err(Witness::new(
-            WitnessKind::Inconsistent,
-            vec![],
-            vec![],
-            "the tetrahedra found do not have exactly the given segments as edges".into(),
-        ));
+    if let Err(w) = edges_are_segments(&tets, g) {
+        return Err(w);
     }
     Ok(Cells::Tetrahedra(tets))
+}
+
+/// `edges(T) = L`: every edge of a tetrahedron is a segment, and every segment is used.
+fn edges_are_segments(tets: &[[u32; 4]], g: &Graph) -> Result<(), Witness> {
+    let n = g.len();
+    let mut used: Vec<Vec<bool>> = (0..n as u32)
+        .map(|v| vec![false; g.nbrs(v).len()])
+        .collect();
+    for t in tets {
+        for (i, j) in [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)] {
+            let (x, y) = (t[i].min(t[j]), t[i].max(t[j]));
+            match g.nbrs(x).binary_search(&y) {
+                Ok(pos) => used[x as usize][pos] = true,
+                Err(_) => {
+                    return Err(Witness::new(
+                        WitnessKind::Inconsistent,
+                        vec![x, y],
+                        vec![],
+                        format!(
+                            "a tetrahedron found has edge (#{x}, #{y}), which is not a segment"
+                        ),
+                    ));
+                }
+            }
+        }
+    }
+    for x in 0..n as u32 {
+        for (pos, &y) in g.nbrs(x).iter().enumerate() {
+            if y > x && !used[x as usize][pos] {
+                return Err(Witness::new(
+                    WitnessKind::Inconsistent,
+                    vec![x, y],
+                    vec![[x, y]],
+                    format!("segment (#{x}, #{y}) is an edge of no tetrahedron found"),
+                ));
+            }
+        }
+    }
+    Ok(())
 }
 
 /// Step 0: a tetrahedralization's graph is connected and uses every point.
