@@ -172,6 +172,7 @@ pub fn check(path: &Path, convex: bool, as_json: bool) -> u8 {
             "convex": convex,
             "problem_count": report.problem_count,
             "problems": report.problems,
+            "notes": report.notes,
             "seconds": seconds,
         });
         println!("{v}");
@@ -179,7 +180,7 @@ pub fn check(path: &Path, convex: bool, as_json: bool) -> u8 {
         let scope = if convex {
             "a tetrahedralization of the convex hull of its points"
         } else {
-            "locally valid (oriented, face-paired, closed boundary); add --convex to certify it covers the hull exactly once"
+            "oriented, face-paired, no overlap near any vertex, boundary closed and embedded (add --convex to certify it tetrahedralizes the convex hull)"
         };
         println!(
             "VALID: {} tetrahedra on {} points: {scope}. [{seconds:.3} s]",

@@ -5,7 +5,7 @@
 use proptest::prelude::*;
 use tetrakit::detect::{detect, oracle::forms_tetrahedralization};
 use tetrakit::generate::{random_flips, tetrahedralize_points};
-use tetrakit::geom::{Frame, Point3, orient3d, segments_meet};
+use tetrakit::geom::{Frame, Point3, cones_overlap, orient3d, segments_meet};
 
 /// Points that are either small integers (degenerate configurations are frequent) or
 /// arbitrary in-range reals.
@@ -35,6 +35,18 @@ proptest! {
         let exact = orient3d(&v, &a, &b, &c);
         prop_assert_eq!(f.sign(&a, &b, &c, &da, &db, &dc), exact);
         prop_assert_eq!(f.side(&f.plane(&da, &db), &a, &b, &c, &dc), exact);
+    }
+
+    #[test]
+    fn cone_overlap_is_symmetric_and_reflexive(v in point(), a in prop::array::uniform3(point()), b in prop::array::uniform3(point())) {
+        prop_assume!(orient3d(&v, &a[0], &a[1], &a[2]) != 0 && orient3d(&v, &b[0], &b[1], &b[2]) != 0);
+        prop_assert_eq!(cones_overlap(&v, &a, &b), cones_overlap(&v, &b, &a));
+        prop_assert!(cones_overlap(&v, &a, &a));
+        // The point reflection of a cone through its apex never meets it.
+        let r = a.map(|p| [2.0 * v[0] - p[0], 2.0 * v[1] - p[1], 2.0 * v[2] - p[2]]);
+        if r.iter().zip(&a).all(|(x, y)| (0..3).all(|k| x[k] - v[k] == v[k] - y[k])) {
+            prop_assert!(!cones_overlap(&v, &a, &r));
+        }
     }
 
     #[test]

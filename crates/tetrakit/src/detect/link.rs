@@ -374,8 +374,7 @@ fn puncture_free(lv: &LocalView, edges: &[(u32, u32)]) -> Result<(Vec<bool>, Vec
                 }
             }
         } else {
-            for f in e + 1..m {
-                let (c, d) = edges[f];
+            for (f, &(c, d)) in edges.iter().enumerate().skip(e + 1) {
                 if straddles(e, c, d) && straddles(f, a, b) {
                     check(f)?;
                 }

@@ -249,9 +249,7 @@ fn detect3(points: &[Point3], g: &Graph, hull: &Hull3) -> Result<Cells, Witness>
             ),
         ));
     }
-    if let Err(w) = edges_are_segments(&tets, g) {
-        return Err(w);
-    }
+    edges_are_segments(&tets, g)?;
     Ok(Cells::Tetrahedra(tets))
 }
 

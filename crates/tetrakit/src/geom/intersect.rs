@@ -237,6 +237,95 @@ pub fn coplanar_triangles_overlap(t: &[Point3; 3], u: &[Point3; 3]) -> bool {
     !(separated_by(&t2, &u2) || separated_by(&u2, &t2))
 }
 
+/// True when the open cones with common apex `v` spanned by the directions of `a` and of
+/// `b` (three points each, not coplanar with `v`) have intersecting interiors.
+///
+/// Two convex cones with a common apex are disjoint exactly when a plane through the apex
+/// separates them; by the separating-axis theorem it can be taken through `v` and two
+/// generators (a face plane of either cone, or one generator of each), so every test is an
+/// [`orient3d`] of input points.
+///
+/// ```
+/// use tetrakit::geom::cones_overlap;
+/// let v = [0.0, 0.0, 0.0];
+/// let a = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+/// let b = [[1.0, 1.0, 1.0], [2.0, 1.0, 1.0], [1.0, 2.0, 1.0]];
+/// assert!(cones_overlap(&v, &a, &b));
+/// let c = [[-1.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, -1.0]];
+/// assert!(!cones_overlap(&v, &a, &c));
+/// ```
+pub fn cones_overlap(v: &Point3, a: &[Point3; 3], b: &[Point3; 3]) -> bool {
+    // Does the plane through v, x, y put a and b on opposite closed sides? Stops at the
+    // first generator that rules it out.
+    let separates = |x: &Point3, y: &Point3| {
+        // A degenerate plane (v, x, y collinear, e.g. a generator shared by both cones)
+        // separates nothing.
+        if collinear3(v, x, y) {
+            return false;
+        }
+        let mut side_a = 0i8;
+        for p in a {
+            match (side_a, orient3d(v, x, y, p)) {
+                (_, 0) => {}
+                (0, s) => side_a = s,
+                (s, t) if s != t => return false,
+                _ => {}
+            }
+        }
+        b.iter().all(|p| {
+            let s = orient3d(v, x, y, p);
+            s == 0 || side_a == 0 || s == -side_a
+        }) && (side_a != 0 || {
+            // a lies in the plane: b must lie on one closed side.
+            let sb: Vec<i8> = b.iter().map(|p| orient3d(v, x, y, p)).collect();
+            sb.iter().all(|&s| s >= 0) || sb.iter().all(|&s| s <= 0)
+        })
+    };
+    let pairs = [(0, 1), (1, 2), (2, 0)];
+    if pairs
+        .iter()
+        .any(|&(i, j)| separates(&a[i], &a[j]) || separates(&b[i], &b[j]))
+    {
+        return false;
+    }
+    !(0..3).any(|i| (0..3).any(|j| separates(&a[i], &b[j])))
+}
+
+/// True when two triangles meet anywhere other than in the vertices they share (given by
+/// index equality in `ti`, `ui`) and the edge between two shared vertices.
+pub fn triangles_meet_improperly(
+    t: &[Point3; 3],
+    ti: [u32; 3],
+    u: &[Point3; 3],
+    ui: [u32; 3],
+) -> bool {
+    let edges = [(0, 1), (1, 2), (2, 0)];
+    let shared = |x: u32| ui.contains(&x);
+    for (i, j) in edges {
+        // A closed edge of one entering the open other triangle.
+        if segment_meets_open_triangle(&t[i], &t[j], &u[0], &u[1], &u[2])
+            || segment_meets_open_triangle(&u[i], &u[j], &t[0], &t[1], &t[2])
+        {
+            return true;
+        }
+        for (k, l) in edges {
+            let same_edge = shared(ti[i])
+                && shared(ti[j])
+                && [ui[k], ui[l]].contains(&ti[i])
+                && [ui[k], ui[l]].contains(&ti[j]);
+            if same_edge {
+                continue;
+            }
+            if segments_meet(&t[i], &t[j], &u[k], &u[l]).is_some() {
+                return true;
+            }
+        }
+    }
+    // A vertex of one on the other that is not a shared vertex.
+    (0..3).any(|i| !shared(ti[i]) && u.contains(&t[i]))
+        || (0..3).any(|k| !ti.contains(&ui[k]) && t.contains(&u[k]))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

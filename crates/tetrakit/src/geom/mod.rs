@@ -12,9 +12,9 @@ mod predicates;
 pub use hull2::Hull2;
 pub use hull3::{Hull3, affine_dimension};
 pub use intersect::{
-    SegmentMeet, coplanar_triangles_overlap, point_in_closed_tetrahedron,
+    SegmentMeet, cones_overlap, coplanar_triangles_overlap, point_in_closed_tetrahedron,
     point_in_segment_interior, segment_meets_open_tetrahedron, segment_meets_open_triangle,
-    segment_punctures_triangle, segments_meet,
+    segment_punctures_triangle, segments_meet, triangles_meet_improperly,
 };
 pub use predicates::{
     ApexPlane, Dir, Frame, MAX_MAGNITUDE, MIN_MAGNITUDE, Plane, Point2, Point3, collinear3,

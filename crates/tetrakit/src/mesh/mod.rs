@@ -4,6 +4,7 @@
 //! (DESIGN.md, non-negotiable 3). It shares no code with the algorithms that produce
 //! tetrahedra, only the exact predicates of [`crate::geom`].
 
+mod embed;
 mod verify;
 mod verify2;
 

@@ -16,6 +16,7 @@
 //! faces on a facet do not overlap. With d = 1 the tetrahedra have disjoint interiors and
 //! cover the hull, and pairing excludes hanging vertices.
 
+use super::embed;
 use crate::detect::ids;
 use crate::geom::{Hull3, Point3, coplanar_triangles_overlap, orient3d};
 use rayon::prelude::*;
@@ -46,6 +47,8 @@ pub enum ProblemKind {
     Overlap,
     /// A point is not a vertex of any tetrahedron.
     UnusedVertex,
+    /// Two boundary faces intersect: the boundary surface is not embedded.
+    BoundarySelfIntersection,
 }
 
 impl fmt::Display for ProblemKind {
@@ -81,6 +84,8 @@ pub struct Report {
     pub problem_count: usize,
     /// Number of boundary (unpaired) faces.
     pub boundary_faces: usize,
+    /// What was not checked, for a person to know (empty when the answer is complete).
+    pub notes: Vec<String>,
 }
 
 impl Report {
@@ -145,8 +150,36 @@ pub fn verify(points: &[Point3], tets: &[[u32; 4]], hull: Option<&Hull3>) -> Rep
         for p in check_hull(points, tets, &boundary, h) {
             report.push(p);
         }
+    } else if report.is_valid() {
+        check_embedding(points, tets, &boundary, &mut report);
     }
     report
+}
+
+/// Without a convex domain: local injectivity at every vertex and an embedded boundary.
+fn check_embedding(
+    points: &[Point3],
+    tets: &[[u32; 4]],
+    boundary: &[BoundaryFace],
+    report: &mut Report,
+) {
+    let mut on_boundary = vec![false; points.len()];
+    for f in boundary {
+        f.v.iter().for_each(|&x| on_boundary[x as usize] = true);
+    }
+    for p in embed::vertex_overlaps(points, tets, &on_boundary) {
+        report.push(p);
+    }
+    let faces: Vec<([u32; 3], u32)> = boundary.iter().map(|f| (f.v, f.tet)).collect();
+    for p in embed::boundary_self_intersections(points, &faces) {
+        report.push(p);
+    }
+    let components = embed::boundary_components(&faces);
+    if components > 1 {
+        report.notes.push(format!(
+            "the boundary has {components} components; whether one encloses another with the same orientation (a separate piece overlapping) is not checked without --convex"
+        ));
+    }
 }
 
 fn problem(kind: ProblemKind, tets: Vec<u32>, vertices: Vec<u32>, detail: String) -> Problem {
@@ -499,6 +532,82 @@ mod tests {
             !r.is_valid(),
             "local checks alone catch a tet sharing faces"
         );
+    }
+
+    fn kinds(r: &Report) -> Vec<ProblemKind> {
+        r.problems.iter().map(|p| p.kind).collect()
+    }
+
+    #[test]
+    fn non_convex_mesh_is_valid_without_hull() {
+        // Kuhn 2x2x2 grid with the column of cubes at (1, 1, *) removed: an L-shaped prism.
+        let t = crate::generate::kuhn(2);
+        let tets: Vec<[u32; 4]> = t
+            .tets
+            .iter()
+            .enumerate()
+            .filter(|(i, _)| (i / 6) / 2 != 3)
+            .map(|(_, x)| *x)
+            .collect();
+        let used: Vec<Point3> = t.points.clone();
+        let r = verify(&used, &tets, None);
+        assert!(r.is_valid(), "{:?}", r.problems);
+        assert!(r.notes.is_empty());
+        assert!(!verify(&used, &tets, Some(&Hull3::new(&used))).is_valid());
+    }
+
+    #[test]
+    fn extra_tet_with_new_faces_is_an_overlap() {
+        let t = crate::generate::kuhn(3);
+        let mut tets = t.tets.clone();
+        // Interior corners (1,1,2), (1,2,1), (2,1,1), (2,2,1) of the middle cube: no face of
+        // the extra tetrahedron is a Kuhn face or touches the boundary.
+        let mut extra = [22, 25, 37, 41];
+        let p = |i: u32| &t.points[i as usize];
+        if orient3d(p(extra[0]), p(extra[1]), p(extra[2]), p(extra[3])) < 0 {
+            extra.swap(2, 3);
+        }
+        tets.push(extra);
+        let r = verify(&t.points, &tets, None);
+        assert!(
+            kinds(&r).contains(&ProblemKind::Overlap),
+            "{:?}",
+            r.problems
+        );
+        assert!(
+            r.problems
+                .iter()
+                .any(|p| p.tets.contains(&(tets.len() as u32 - 1)))
+        );
+    }
+
+    #[test]
+    fn interpenetrating_pieces_have_a_self_intersecting_boundary() {
+        let (pts, tets) = cube();
+        let mut all_pts = pts.clone();
+        all_pts.extend(pts.iter().map(|p| [p[0] + 0.5, p[1] + 0.25, p[2] + 0.125]));
+        let mut all = tets.clone();
+        all.extend(tets.iter().map(|t| t.map(|v| v + 8)));
+        let r = verify(&all_pts, &all, None);
+        assert!(
+            kinds(&r).contains(&ProblemKind::BoundarySelfIntersection),
+            "{:?}",
+            r.problems
+        );
+        // Disjoint pieces are fine but noted.
+        let far: Vec<Point3> = pts
+            .iter()
+            .chain(
+                pts.iter()
+                    .map(|p| [p[0] + 5.0, p[1], p[2]])
+                    .collect::<Vec<_>>()
+                    .iter(),
+            )
+            .copied()
+            .collect();
+        let r = verify(&far, &all, None);
+        assert!(r.is_valid(), "{:?}", r.problems);
+        assert_eq!(r.notes.len(), 1);
     }
 
     #[test]

@@ -1,0 +1,156 @@
+//! Embedding checks for meshes of non-convex domains (no hull to compare with).
+//!
+//! With oriented-face pairing in place, a mesh is embedded (its tetrahedra do not overlap)
+//! when it is injective near every vertex and its boundary surface does not intersect
+//! itself: then the mesh is a local homeomorphism that is injective on its boundary. Near a
+//! vertex `v`, injectivity means the cones at `v` of the tetrahedra around it do not
+//! overlap: for an interior vertex the covering degree of its link is constant, so one cone
+//! against all others decides; a boundary vertex's cones are tested pairwise.
+//!
+//! Not covered here: two boundary components nested with the same orientation (a separate
+//! piece of mesh floating inside another). The report notes when the boundary has more than
+//! one component; `verify` with the convex hull certifies everything.
+
+use super::verify::{Problem, ProblemKind};
+use crate::detect::ids;
+use crate::geom::{Point3, cones_overlap, triangles_meet_improperly};
+use rayon::prelude::*;
+
+/// Overlaps near vertices. `tets` are positively oriented (degenerate ones are skipped by
+/// the caller); `on_boundary[v]` tells whether `v` is a vertex of a boundary face.
+pub(super) fn vertex_overlaps(
+    points: &[Point3],
+    tets: &[[u32; 4]],
+    on_boundary: &[bool],
+) -> Vec<Problem> {
+    let n = points.len();
+    let mut start = vec![0usize; n + 1];
+    for t in tets {
+        for &v in t {
+            start[v as usize + 1] += 1;
+        }
+    }
+    for i in 0..n {
+        start[i + 1] += start[i];
+    }
+    let mut fill = start.clone();
+    let mut star = vec![0u32; start[n]];
+    for (i, t) in tets.iter().enumerate() {
+        for &v in t {
+            star[fill[v as usize]] = i as u32;
+            fill[v as usize] += 1;
+        }
+    }
+    (0..n)
+        .into_par_iter()
+        .filter_map(|v| {
+            let around = &star[start[v]..start[v + 1]];
+            let cone = |t: u32| {
+                let o: Vec<Point3> = tets[t as usize]
+                    .iter()
+                    .filter(|&&x| x as usize != v)
+                    .map(|&x| points[x as usize])
+                    .collect();
+                [o[0], o[1], o[2]]
+            };
+            let firsts = if on_boundary[v] {
+                around.len()
+            } else {
+                around.len().min(1)
+            };
+            for (i, &t) in around.iter().enumerate().take(firsts) {
+                let ct = cone(t);
+                for &u in &around[i + 1..] {
+                    if cones_overlap(&points[v], &ct, &cone(u)) {
+                        return Some(Problem {
+                            kind: ProblemKind::Overlap,
+                            tets: vec![t, u],
+                            vertices: vec![v as u32],
+                            detail: format!(
+                                "tetrahedra #{t} and #{u} overlap near their common vertex #{v}"
+                            ),
+                        });
+                    }
+                }
+            }
+            None
+        })
+        .collect()
+}
+
+/// Pairs of boundary faces that meet other than in shared vertices and edges (sweep over
+/// bounding boxes, exact tests). `faces[i] = (vertices, tetrahedron)`.
+pub(super) fn boundary_self_intersections(
+    points: &[Point3],
+    faces: &[([u32; 3], u32)],
+) -> Vec<Problem> {
+    let tri = |f: &[u32; 3]| f.map(|i| points[i as usize]);
+    let bbox = |f: &[u32; 3]| {
+        let t = tri(f);
+        let lo: [f64; 3] =
+            std::array::from_fn(|k| t.iter().map(|p| p[k]).fold(f64::INFINITY, f64::min));
+        let hi: [f64; 3] =
+            std::array::from_fn(|k| t.iter().map(|p| p[k]).fold(f64::NEG_INFINITY, f64::max));
+        (lo, hi)
+    };
+    let boxes: Vec<([f64; 3], [f64; 3])> = faces.iter().map(|(f, _)| bbox(f)).collect();
+    let mut order: Vec<usize> = (0..faces.len()).collect();
+    order.sort_by(|&a, &b| boxes[a].0[0].total_cmp(&boxes[b].0[0]));
+    let mut problems = Vec::new();
+    for (x, &i) in order.iter().enumerate() {
+        for &j in &order[x + 1..] {
+            if boxes[j].0[0] > boxes[i].1[0] {
+                break;
+            }
+            let overlap =
+                (1..3).all(|k| boxes[j].0[k] <= boxes[i].1[k] && boxes[i].0[k] <= boxes[j].1[k]);
+            let (fi, fj) = (&faces[i], &faces[j]);
+            if overlap && triangles_meet_improperly(&tri(&fi.0), fi.0, &tri(&fj.0), fj.0) {
+                problems.push(Problem {
+                    kind: ProblemKind::BoundarySelfIntersection,
+                    tets: vec![fi.1, fj.1],
+                    vertices: fi.0.iter().chain(&fj.0).copied().collect(),
+                    detail: format!(
+                        "boundary faces {} (of tetrahedron #{}) and {} (of tetrahedron #{}) intersect",
+                        ids(&fi.0),
+                        fi.1,
+                        ids(&fj.0),
+                        fj.1
+                    ),
+                });
+                if problems.len() >= 100 {
+                    return problems;
+                }
+            }
+        }
+    }
+    problems
+}
+
+/// Number of connected components of the boundary surface (faces joined across edges).
+pub(super) fn boundary_components(faces: &[([u32; 3], u32)]) -> usize {
+    let mut parent: Vec<usize> = (0..faces.len()).collect();
+    fn find(p: &mut [usize], mut x: usize) -> usize {
+        while p[x] != x {
+            p[x] = p[p[x]];
+            x = p[x];
+        }
+        x
+    }
+    let mut by_edge: std::collections::HashMap<(u32, u32), usize> =
+        std::collections::HashMap::new();
+    for (i, (f, _)) in faces.iter().enumerate() {
+        for k in 0..3 {
+            let (a, b) = (f[k].min(f[(k + 1) % 3]), f[k].max(f[(k + 1) % 3]));
+            if let Some(&j) = by_edge.get(&(a, b)) {
+                let (ri, rj) = (find(&mut parent, i), find(&mut parent, j));
+                parent[ri] = rj;
+            } else {
+                by_edge.insert((a, b), i);
+            }
+        }
+    }
+    (0..faces.len())
+        .filter(|&i| find(&mut parent, i) == i)
+        .count()
+}
