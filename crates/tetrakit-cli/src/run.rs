@@ -4,11 +4,27 @@ use crate::{CorruptKind, GenCommon, GenKind};
 use serde_json::json;
 use std::path::Path;
 use std::time::Instant;
-use tetrakit::detect::{Cells, Detection, detect as detect_segments};
+use tetrakit::detect::{Cells, Detection, detect_with_progress};
 use tetrakit::generate::{self, Corruption};
 use tetrakit::geom::Hull3;
 use tetrakit::io::{self, Input};
 use tetrakit::mesh::{self, Tetrahedralization};
+
+/// A progress bar on stderr for long work, only when stderr is a terminal.
+fn progress_bar(len: u64, what: &str) -> Option<indicatif::ProgressBar> {
+    use std::io::IsTerminal;
+    if len < 50_000 || !std::io::stderr().is_terminal() {
+        return None;
+    }
+    let bar = indicatif::ProgressBar::new(len);
+    if let Ok(style) =
+        indicatif::ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} ({eta})")
+    {
+        bar.set_style(style.progress_chars("=> "));
+    }
+    bar.set_message(what.to_string());
+    Some(bar)
+}
 
 /// Prints one line for a bad input or usage and returns exit code 2.
 pub fn fail(msg: impl std::fmt::Display) -> u8 {
@@ -44,7 +60,17 @@ pub fn detect(path: &Path, as_json: bool, output: Option<&Path>) -> u8 {
             path.display()
         ));
     };
-    let d = match detect_segments(&input.points, &segments) {
+    let bar = progress_bar(input.points.len() as u64, "vertex links");
+    let report = |done: u64, _all: u64| {
+        if let Some(b) = &bar {
+            b.set_position(done);
+        }
+    };
+    let d = detect_with_progress(&input.points, &segments, &report);
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
+    let d = match d {
         Ok(d) => d,
         Err(e) => return fail(format!("{}: {e}", path.display())),
     };

@@ -81,6 +81,19 @@ impl Detection {
 /// assert_eq!(no.result.unwrap_err().kind, WitnessKind::MissingHullEdge);
 /// ```
 pub fn detect(points: &[Point3], segments: &[(u32, u32)]) -> Result<Detection, String> {
+    detect_with_progress(points, segments, &|_, _| {})
+}
+
+/// Progress callback: `(vertices done, vertices in all)` during the per-vertex phase.
+pub type Progress<'a> = &'a (dyn Fn(u64, u64) + Sync);
+
+/// [`detect`], reporting progress through the per-vertex phase (called every few thousand
+/// vertices, from any thread).
+pub fn detect_with_progress(
+    points: &[Point3],
+    segments: &[(u32, u32)],
+    progress: Progress,
+) -> Result<Detection, String> {
     let n = points.len();
     if let Some(k) = segments
         .iter()
@@ -101,7 +114,7 @@ pub fn detect(points: &[Point3], segments: &[(u32, u32)]) -> Result<Detection, S
         .iter()
         .map(|s| [rank[s[0] as usize], rank[s[1] as usize]])
         .collect();
-    let Ok(mut d) = detect_ordered(&pts, &segs) else {
+    let Ok(mut d) = detect_ordered(&pts, &segs, progress) else {
         // Only a repeated segment gets here: name it in the caller's numbering.
         let orig: Vec<[u32; 2]> = segments.iter().map(|&(a, b)| [a, b]).collect();
         return Err(Graph::new(n, &orig)
@@ -153,7 +166,11 @@ fn spatial_order(points: &[Point3]) -> Vec<u32> {
     keyed.into_iter().map(|(_, i)| i).collect()
 }
 
-fn detect_ordered(points: &[Point3], segs: &[[u32; 2]]) -> Result<Detection, String> {
+fn detect_ordered(
+    points: &[Point3],
+    segs: &[[u32; 2]],
+    progress: Progress,
+) -> Result<Detection, String> {
     let mut phases = Phases::new();
     let g = Graph::new(points.len(), segs)?;
     phases.mark("graph");
@@ -191,7 +208,7 @@ fn detect_ordered(points: &[Point3], segs: &[[u32; 2]]) -> Result<Detection, Str
         return Ok(out);
     }
     out.hull_vertices = (0..points.len()).filter(|&i| hull.on_boundary(i)).count();
-    out.result = detect3(points, &g, &hull);
+    out.result = detect3(points, &g, &hull, progress);
     Ok(out)
 }
 
@@ -210,11 +227,17 @@ impl Phases {
     }
 }
 
-fn detect3(points: &[Point3], g: &Graph, hull: &Hull3) -> Result<Cells, Witness> {
+fn detect3(
+    points: &[Point3],
+    g: &Graph,
+    hull: &Hull3,
+    progress: Progress,
+) -> Result<Cells, Witness> {
     let mut phases = Phases::new();
     connectivity(g)?;
     rotation::check_chains(hull.polytope_edges(points), g)?;
     phases.mark("connectivity and hull edges");
+    let counter = std::sync::atomic::AtomicU64::new(0);
     let ctx = Ctx {
         pts: points,
         g,
@@ -223,7 +246,13 @@ fn detect3(points: &[Point3], g: &Graph, hull: &Hull3) -> Result<Cells, Witness>
     let n = points.len();
     let links: Vec<Result<Vec<[u32; 3]>, Witness>> = (0..n as u32)
         .into_par_iter()
-        .map(|v| link::link(&ctx, v))
+        .map(|v| {
+            let done = counter.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+            if done.is_multiple_of(8192) || done == n as u64 {
+                progress(done, n as u64);
+            }
+            link::link(&ctx, v)
+        })
         .collect();
     if let Some(w) = links
         .iter()
