@@ -259,11 +259,11 @@ fn detect3(
         .filter_map(|r| r.as_ref().err())
         .min_by_key(|w| w.rank())
     {
-        return Err(w.clone());
+        return Err(sharpen(points, g, w.clone()));
     }
     let mut links: Vec<Vec<[u32; 3]>> = links.into_iter().map(|r| r.unwrap_or_default()).collect();
     phases.mark("links");
-    let tets = confirm(&mut links)?;
+    let tets = confirm(&mut links).map_err(|w| sharpen(points, g, w))?;
     phases.mark("confirm");
     let report = mesh::verify(points, &tets, Some(hull));
     phases.mark("verify");
@@ -280,6 +280,22 @@ fn detect3(
     }
     edges_are_segments(&tets, g)?;
     Ok(Cells::Tetrahedra(tets))
+}
+
+/// Replaces a witness that rests on a failed check by two crossing segments or a vertex
+/// inside a segment near the vertices it names, when there are any: those a person can
+/// check directly.
+fn sharpen(points: &[Point3], g: &Graph, w: Witness) -> Witness {
+    if w.rank() == 0 {
+        return w;
+    }
+    match rotation::local_crossing(points, g, &w.vertices) {
+        Some(mut better) => {
+            better.detail = format!("{} (found where {}: {})", better.detail, w.kind, w.detail);
+            better
+        }
+        None => w,
+    }
 }
 
 /// `edges(T) = L`: every edge of a tetrahedron is a segment, and every segment is used.

@@ -9,9 +9,9 @@
 
 use super::Cells;
 use super::graph::Graph;
-use super::rotation::{check_chains, trace_faces};
+use super::rotation::{check_chains, local_crossing, trace_faces};
 use super::witness::{Witness, WitnessKind, ids};
-use crate::geom::{Hull2, Point2, Point3, drop_axis, orient2d, projection_axis, segments_meet};
+use crate::geom::{Hull2, Point2, Point3, drop_axis, orient2d, projection_axis};
 use crate::mesh::verify_triangulation;
 
 /// Points projected faithfully to 2D (orientation preserved for some fixed normal).
@@ -37,10 +37,10 @@ pub(super) fn detect(points: &[Point3], g: &Graph) -> (usize, Result<Cells, Witn
     };
     let hull = Hull2::new(&p);
     let hv = hull.on_boundary.iter().filter(|&&b| b).count();
-    (hv, detect2(&p, g, &hull))
+    (hv, detect2(points, &p, g, &hull))
 }
 
-fn detect2(p: &[Point2], g: &Graph, hull: &Hull2) -> Result<Cells, Witness> {
+fn detect2(points: &[Point3], p: &[Point2], g: &Graph, hull: &Hull2) -> Result<Cells, Witness> {
     super::connectivity(g)?;
     check_chains(hull_chains(p, hull), g)?;
     let n = p.len();
@@ -66,7 +66,7 @@ fn detect2(p: &[Point2], g: &Graph, hull: &Hull2) -> Result<Cells, Witness> {
             .or(outer.first())
             .cloned()
             .unwrap_or_default();
-        if let Some(w) = local_crossing(p, g, &face) {
+        if let Some(w) = local_crossing(points, g, &face) {
             return Err(w);
         }
         return Err(Witness::new(
@@ -83,7 +83,7 @@ fn detect2(p: &[Point2], g: &Graph, hull: &Hull2) -> Result<Cells, Witness> {
     let report = verify_triangulation(p, &tris);
     if let Some(pb) = report.problems.first() {
         let vs: Vec<u32> = pb.vertices.clone();
-        if let Some(w) = local_crossing(p, g, &vs) {
+        if let Some(w) = local_crossing(points, g, &vs) {
             return Err(w);
         }
         return Err(Witness::new(
@@ -158,33 +158,4 @@ fn sort_around(p: &[Point2], v: u32, nbrs: &[u32]) -> Result<Vec<u32>, Witness> 
         }
     }
     Ok(keyed.into_iter().map(|(_, b)| b).collect())
-}
-
-/// Looks for two crossing segments among those at the given vertices.
-fn local_crossing(p: &[Point2], g: &Graph, vs: &[u32]) -> Option<Witness> {
-    let lift = |i: u32| [p[i as usize][0], p[i as usize][1], 0.0];
-    let mut segs: Vec<(u32, u32)> = Vec::new();
-    for &v in vs {
-        for &w in g.nbrs(v) {
-            segs.push((v.min(w), v.max(w)));
-            for &x in g.nbrs(w) {
-                segs.push((w.min(x), w.max(x)));
-            }
-        }
-    }
-    segs.sort_unstable();
-    segs.dedup();
-    for (i, &(a, b)) in segs.iter().enumerate() {
-        for &(c, d) in &segs[i + 1..] {
-            if let Some(m) = segments_meet(&lift(a), &lift(b), &lift(c), &lift(d)) {
-                return Some(Witness::new(
-                    WitnessKind::CrossingSegments,
-                    vec![a, b, c, d],
-                    vec![[a, b], [c, d]],
-                    format!("segments (#{a}, #{b}) and (#{c}, #{d}) meet ({m:?})"),
-                ));
-            }
-        }
-    }
-    None
 }

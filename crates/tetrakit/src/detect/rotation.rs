@@ -1,8 +1,9 @@
-//! Combinatorial helpers shared by the 3D links and the planar case: faces of a rotation
-//! system, connectivity, and the hull-edge chain check.
+//! Helpers shared by the 3D links and the planar case: faces of a rotation system,
+//! connectivity, the hull-edge chain check, and the local search for a checkable witness.
 
 use super::graph::Graph;
 use super::witness::{Witness, WitnessKind};
+use crate::geom::{Point3, SegmentMeet, point_in_segment_interior, segments_meet};
 
 /// The faces of a rotation system: `rot[x]` lists the neighbours of `x` counter-clockwise
 /// (the adjacency must be symmetric). Each face is the cycle of vertices to the left of its
@@ -78,4 +79,69 @@ pub(super) fn check_chains(
         }
     }
     Ok(())
+}
+
+/// Looks for two segments that cross or overlap, or a vertex inside a segment, among the
+/// segments within two steps of the given vertices: a witness anyone can check, to report
+/// instead of a failed link. Gives up (`None`) when the neighbourhood is large.
+pub(super) fn local_crossing(points: &[Point3], g: &Graph, around: &[u32]) -> Option<Witness> {
+    const LIMIT: usize = 3000;
+    let mut segs: Vec<(u32, u32)> = Vec::new();
+    for &v in around {
+        for &w in g.nbrs(v) {
+            segs.push((v.min(w), v.max(w)));
+            for &x in g.nbrs(w) {
+                segs.push((w.min(x), w.max(x)));
+            }
+            if segs.len() > 4 * LIMIT {
+                return None;
+            }
+        }
+    }
+    segs.sort_unstable();
+    segs.dedup();
+    if segs.len() > LIMIT {
+        return None;
+    }
+    let p = |i: u32| &points[i as usize];
+    let mut verts: Vec<u32> = segs.iter().flat_map(|&(a, b)| [a, b]).collect();
+    verts.sort_unstable();
+    verts.dedup();
+    for &(a, b) in &segs {
+        if let Some(&x) = verts
+            .iter()
+            .find(|&&x| point_in_segment_interior(p(x), p(a), p(b)))
+        {
+            return Some(Witness::new(
+                WitnessKind::VertexOnSegment,
+                vec![x, a, b],
+                vec![[a, b]],
+                format!("vertex #{x} lies inside segment (#{a}, #{b})"),
+            ));
+        }
+    }
+    for (i, &(a, b)) in segs.iter().enumerate() {
+        for &(c, d) in &segs[i + 1..] {
+            match segments_meet(p(a), p(b), p(c), p(d)) {
+                Some(SegmentMeet::Cross) => {
+                    return Some(Witness::new(
+                        WitnessKind::CrossingSegments,
+                        vec![a, b, c, d],
+                        vec![[a, b], [c, d]],
+                        format!("segments (#{a}, #{b}) and (#{c}, #{d}) cross"),
+                    ));
+                }
+                Some(SegmentMeet::Overlap) => {
+                    return Some(Witness::new(
+                        WitnessKind::CrossingSegments,
+                        vec![a, b, c, d],
+                        vec![[a, b], [c, d]],
+                        format!("segments (#{a}, #{b}) and (#{c}, #{d}) overlap"),
+                    ));
+                }
+                _ => {}
+            }
+        }
+    }
+    None
 }
