@@ -10,32 +10,33 @@ fn verdict(name: &str, t: &Tetrahedralization, edges: &[(u32, u32)]) {
     let d = detect(&t.points, edges).expect("generated input is well-formed");
     let ms = start.elapsed().as_secs_f64() * 1e3;
     match &d.result {
-        Ok(Cells::Tetrahedra(tets)) => println!(
+        Ok(Cells::Tetrahedra(tets)) => out!(
             "  {name}: YES, {} segments on {} points form a tetrahedralization with {} tetrahedra (every one found from all four of its vertices and certified) [{ms:.1} ms]",
             edges.len(),
             t.points.len(),
             tets.len()
         ),
-        Ok(Cells::Triangles(tris)) => println!(
+        Ok(Cells::Triangles(tris)) => out!(
             "  {name}: YES, a planar triangulation with {} triangles [{ms:.1} ms]",
             tris.len()
         ),
-        Err(w) => println!(
+        Err(w) => out!(
             "  {name}: NO [{ms:.1} ms]\n      witness {}: {}",
-            w.kind, w.detail
+            w.kind,
+            w.detail
         ),
     }
 }
 
 pub fn run() -> u8 {
-    println!("tetrakit demo — is a set of segments exactly the edge set of a tetrahedralization?");
-    println!(
+    out!("tetrakit demo — is a set of segments exactly the edge set of a tetrahedralization?");
+    out!(
         "(thesis ch. 2, TETRAHEDRALIZATION-DETECTION, exact and without the general-position assumption)\n"
     );
 
     let grid = generate::kuhn(4);
     let e = grid.edges();
-    println!("1. A Kuhn grid of 4x4x4 cubes: full of coplanar and cospherical points.");
+    out!("1. A Kuhn grid of 4x4x4 cubes: full of coplanar and cospherical points.");
     verdict("valid grid", &grid, &e);
     let crossing = generate::corrupt_edges(&grid.points, &e, Corruption::AddCrossing, 3)
         .expect("grid has crossings");
@@ -46,30 +47,28 @@ pub fn run() -> u8 {
 
     let rand = generate::random_tetrahedralization(400, 800, 11, None);
     let e = rand.edges();
-    println!(
-        "\n2. A random non-Delaunay tetrahedralization of 400 points (insertion plus 800 flips)."
-    );
+    out!("\n2. A random non-Delaunay tetrahedralization of 400 points (insertion plus 800 flips).");
     verdict("valid", &rand, &e);
     let dropped =
         generate::corrupt_edges(&rand.points, &e, Corruption::DropEdge, 5).expect("non-empty");
     verdict("minus one segment", &rand, &dropped);
 
     let skew = generate::skew_lines(40);
-    println!(
+    out!(
         "\n3. Twenty points on each of two skew lines: Θ(n²) tetrahedra, the thesis's worst case."
     );
     verdict("valid", &skew, &skew.edges());
 
-    println!("\n4. Mesh validation (`tetrakit check --convex`): the random mesh with one extra");
-    println!(
+    out!("\n4. Mesh validation (`tetrakit check --convex`): the random mesh with one extra");
+    out!(
         "   tetrahedron laid over two others, the kind of error a check without embedding tests accepts."
     );
     let Some(bad) = generate::add_overlapping_tet(&rand, 1) else {
-        println!("  (no pair of neighbours admits an overlapping tetrahedron)");
+        out!("  (no pair of neighbours admits an overlapping tetrahedron)");
         return 0;
     };
     let report = bad.verify_convex();
-    println!(
+    out!(
         "  {} problem(s); first: {}",
         report.problem_count,
         report
@@ -78,8 +77,6 @@ pub fn run() -> u8 {
             .map(|p| p.detail.as_str())
             .unwrap_or("-")
     );
-    println!(
-        "\nTry: tetrakit generate kuhn --size 10 -o /tmp/k.ele && tetrakit detect /tmp/k.edge"
-    );
+    out!("\nTry: tetrakit generate kuhn --size 10 -o /tmp/k.ele && tetrakit detect /tmp/k.edge");
     0
 }

@@ -2,6 +2,14 @@
 //! library, and prints results. Exit codes: 0 yes, 1 no, 2 bad input or usage.
 #![forbid(unsafe_code)]
 
+/// `println!` that ignores write errors: output to a closed pipe (`| head`) must not panic.
+macro_rules! out {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stdout(), $($arg)*);
+    }};
+}
+
 mod demo;
 mod run;
 

@@ -82,7 +82,7 @@ pub fn detect(path: &Path, as_json: bool, output: Option<&Path>) -> u8 {
     }
     let base = input.index_base;
     if as_json {
-        println!("{}", detection_json(&d, base, seconds, parsed));
+        out!("{}", detection_json(&d, base, seconds, parsed));
     } else {
         print_detection(&d, base, from_tets, seconds);
     }
@@ -130,14 +130,14 @@ fn print_detection(d: &Detection, base: u32, from_tets: bool, seconds: f64) {
         ""
     };
     match &d.result {
-        Ok(Cells::Tetrahedra(t)) => println!(
+        Ok(Cells::Tetrahedra(t)) => out!(
             "YES: the {} segments{src} on {} points form a tetrahedralization with {} tetrahedra ({} points on the hull). [{seconds:.3} s]",
             d.segments,
             d.vertices,
             t.len(),
             d.hull_vertices
         ),
-        Ok(Cells::Triangles(t)) => println!(
+        Ok(Cells::Triangles(t)) => out!(
             "YES: the {} segments{src} on {} coplanar points form a triangulation with {} triangles ({} points on the hull). [{seconds:.3} s]",
             d.segments,
             d.vertices,
@@ -151,14 +151,15 @@ fn print_detection(d: &Detection, base: u32, from_tets: bool, seconds: f64) {
             } else {
                 "tetrahedralization"
             };
-            println!(
+            out!(
                 "NO: the {} segments{src} on {} points are not the edge set of a {what}.",
-                d.segments, d.vertices
+                d.segments,
+                d.vertices
             );
-            println!("  witness: {}: {}", w.kind, w.detail);
+            out!("  witness: {}: {}", w.kind, w.detail);
             if !w.vertices.is_empty() {
                 let v: Vec<String> = w.vertices.iter().map(|x| x.to_string()).collect();
-                println!("  vertices: {}", v.join(" "));
+                out!("  vertices: {}", v.join(" "));
             }
             if !w.segments.is_empty() {
                 let s: Vec<String> = w
@@ -166,9 +167,9 @@ fn print_detection(d: &Detection, base: u32, from_tets: bool, seconds: f64) {
                     .iter()
                     .map(|s| format!("{}-{}", s[0], s[1]))
                     .collect();
-                println!("  segments: {}", s.join(" "));
+                out!("  segments: {}", s.join(" "));
             }
-            println!("  [{seconds:.3} s]");
+            out!("  [{seconds:.3} s]");
         }
     }
 }
@@ -201,29 +202,29 @@ pub fn check(path: &Path, convex: bool, as_json: bool) -> u8 {
             "notes": report.notes,
             "seconds": seconds,
         });
-        println!("{v}");
+        out!("{v}");
     } else if report.is_valid() {
         let scope = if convex {
             "a tetrahedralization of the convex hull of its points"
         } else {
             "oriented, face-paired, no overlap near any vertex, boundary closed and embedded (add --convex to certify it tetrahedralizes the convex hull)"
         };
-        println!(
+        out!(
             "VALID: {} tetrahedra on {} points: {scope}. [{seconds:.3} s]",
             input.tets.len(),
             input.points.len()
         );
     } else {
-        println!(
+        out!(
             "INVALID: {} problem(s) in {} tetrahedra:",
             report.problem_count,
             input.tets.len()
         );
         for p in report.problems.iter().take(20) {
-            println!("  {}: {}", p.kind, p.detail);
+            out!("  {}: {}", p.kind, p.detail);
         }
         if report.problem_count > 20 {
-            println!(
+            out!(
                 "  ... ({} more; --json lists up to {})",
                 report.problem_count - 20,
                 mesh::Report::LIMIT
@@ -324,7 +325,7 @@ fn write_generated(name: &str, mut mesh: Tetrahedralization, c: &GenCommon) -> u
         .corrupt
         .map(|k| format!(", corrupted by {k:?}"))
         .unwrap_or_default();
-    println!(
+    out!(
         "wrote {name}: {} points, {} segments, {} tetrahedra{corrupted} to {}",
         mesh.points.len(),
         edges.len(),
