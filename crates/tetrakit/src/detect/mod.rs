@@ -133,14 +133,7 @@ pub fn detect_with_progress(
 /// Point indices sorted along a Morton (Z-order) curve of the bounding box (a heuristic
 /// for memory locality only; no decision depends on it).
 fn spatial_order(points: &[Point3]) -> Vec<u32> {
-    let mut lo = [f64::INFINITY; 3];
-    let mut hi = [f64::NEG_INFINITY; 3];
-    for p in points {
-        for k in 0..3 {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
-        }
-    }
+    let (lo, hi) = crate::geom::bounding_box(points);
     let spread = |k: usize| if hi[k] > lo[k] { hi[k] - lo[k] } else { 1.0 };
     let scale: [f64; 3] = std::array::from_fn(|k| ((1u64 << 21) - 1) as f64 / spread(k));
     fn spread_bits(x: u64) -> u64 {

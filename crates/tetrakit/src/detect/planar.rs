@@ -147,14 +147,7 @@ fn sort_around(p: &[Point2], v: u32, nbrs: &[u32]) -> Result<Vec<u32>, Witness> 
     for w in keyed.windows(2) {
         let (a, b) = (w[0].1, w[1].1);
         if w[0].0 == w[1].0 && orient2d(pv, &p[a as usize], &p[b as usize]) == 0 {
-            return Err(Witness::new(
-                WitnessKind::CrossingSegments,
-                vec![v, a, b],
-                vec![[v, a], [v, b]],
-                format!(
-                    "segments (#{v}, #{a}) and (#{v}, #{b}) overlap: #{a} and #{b} lie on one ray from #{v}"
-                ),
-            ));
+            return Err(Witness::overlap_on_ray(v, a, b));
         }
     }
     Ok(keyed.into_iter().map(|(_, b)| b).collect())

@@ -68,6 +68,18 @@ impl Witness {
         }
     }
 
+    /// Segments `va` and `vb` overlap because `a` and `b` lie on one ray from `v`.
+    pub(crate) fn overlap_on_ray(v: u32, a: u32, b: u32) -> Self {
+        Witness::new(
+            WitnessKind::CrossingSegments,
+            vec![v, a, b],
+            vec![[v, a], [v, b]],
+            format!(
+                "segments (#{v}, #{a}) and (#{v}, #{b}) overlap: #{a} and #{b} lie on one ray from #{v}"
+            ),
+        )
+    }
+
     /// Shifts every vertex number by `base` (0 or 1), in the fields and in the text, where
     /// vertex numbers are written `#12`, so the witness names vertices as the input file did.
     ///

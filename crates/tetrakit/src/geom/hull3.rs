@@ -238,14 +238,7 @@ struct FacetGrid {
 
 impl FacetGrid {
     fn new(pts: &[Point3], facets: &[[u32; 3]]) -> Self {
-        let mut lo = [f64::INFINITY; 3];
-        let mut hi = [f64::NEG_INFINITY; 3];
-        for p in pts {
-            for k in 0..3 {
-                lo[k] = lo[k].min(p[k]);
-                hi[k] = hi[k].max(p[k]);
-            }
-        }
+        let (lo, hi) = super::predicates::bounding_box(pts);
         // About one cell per 64 points, at most 64 per side.
         let res = ((pts.len() as f64 / 64.0).cbrt().ceil() as usize).clamp(1, 64);
         let size: Point3 =

@@ -17,7 +17,7 @@ pub use intersect::{
     segment_punctures_triangle, segments_meet, triangles_meet_improperly,
 };
 pub use predicates::{
-    ApexPlane, Dir, Frame, MAX_MAGNITUDE, MIN_MAGNITUDE, Plane, Point2, Point3, collinear3,
-    coordinate_in_range, drop_axis, incircle, insphere, lex_cmp, orient2d, orient2d_drop, orient3d,
-    projection_axis, strictly_between,
+    ApexPlane, Dir, Frame, MAX_MAGNITUDE, MIN_MAGNITUDE, Plane, Point2, Point3, bounding_box,
+    collinear3, coordinate_in_range, drop_axis, incircle, insphere, lex_cmp, orient2d,
+    orient2d_drop, orient3d, projection_axis, strictly_between,
 };

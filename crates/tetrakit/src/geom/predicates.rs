@@ -368,6 +368,19 @@ pub fn incircle(a: &Point2, b: &Point2, c: &Point2, d: &Point2) -> i8 {
     sign(robust::incircle(f(a), f(b), f(c), f(d)))
 }
 
+/// The axis-aligned bounding box `(lo, hi)` of a point set (infinite bounds when empty).
+pub fn bounding_box(points: &[Point3]) -> (Point3, Point3) {
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    for p in points {
+        for k in 0..3 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    (lo, hi)
+}
+
 /// Lexicographic comparison of points (exact).
 pub fn lex_cmp(a: &Point3, b: &Point3) -> std::cmp::Ordering {
     a[0].total_cmp(&b[0])
