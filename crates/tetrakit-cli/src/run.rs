@@ -248,9 +248,9 @@ pub fn generate(kind: GenKind) -> u8 {
             grid,
             common,
         } => {
-            if !(4..=20_000).contains(&points) {
+            if !(4..=10_000).contains(&points) {
                 return fail(
-                    "--points must be between 4 and 20000 (the generator locates points by brute force)",
+                    "--points must be between 4 and 10000 (the generator locates points by brute force; use TetGen for larger meshes)",
                 );
             }
             let t = generate::random_tetrahedralization(points, flips, common.seed, grid);
