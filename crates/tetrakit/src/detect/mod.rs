@@ -421,3 +421,62 @@ fn unconfirmed_witness(t: [u32; 4], found: &dyn Fn(u32, [u32; 3]) -> bool) -> Wi
         ),
     )
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Step 4 on synthetic links: a tetrahedron missing from one vertex's link is reported
+    /// with the vertices it was found from.
+    #[test]
+    fn confirmation_names_the_missing_vertex() {
+        // Positive tetrahedron (0,1,2,3): link triangles oriented so (v, face) is positive.
+        let full = vec![
+            vec![[1, 2, 3]],
+            vec![[0, 3, 2]],
+            vec![[0, 1, 3]],
+            vec![[0, 2, 1]],
+        ];
+        assert_eq!(confirm(&mut full.clone()).unwrap(), vec![[0, 1, 2, 3]]);
+        let mut missing = full.clone();
+        missing[3].clear();
+        let w = confirm(&mut missing).unwrap_err();
+        assert_eq!(w.kind, WitnessKind::UnconfirmedTetrahedron);
+        assert_eq!(w.vertices, vec![0, 1, 2, 3]);
+        assert!(w.detail.contains("3 of its vertices"), "{}", w.detail);
+        // Found from a vertex other than its smallest only.
+        let mut stray = vec![vec![], vec![[0, 3, 2]], vec![], vec![]];
+        let w = confirm(&mut stray).unwrap_err();
+        assert_eq!(w.kind, WitnessKind::UnconfirmedTetrahedron);
+        assert!(w.detail.contains("1 of its vertices"), "{}", w.detail);
+    }
+
+    #[test]
+    fn disconnected_and_isolated_points() {
+        let mut pts = vec![
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.0, 0.0, 1.0],
+        ];
+        let tet = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)];
+        pts.push([0.2, 0.2, 0.2]);
+        let w = detect(&pts, &tet).unwrap().result.unwrap_err();
+        assert_eq!(w.kind, WitnessKind::Disconnected);
+        assert!(w.detail.contains("#4 is on no segment"), "{}", w.detail);
+        // Two tetrahedra, far apart, not joined.
+        let mut two = pts[..4].to_vec();
+        two.extend(pts[..4].iter().map(|p| [p[0] + 5.0, p[1], p[2]]));
+        let mut e = tet.to_vec();
+        e.extend(tet.iter().map(|&(a, b)| (a + 4, b + 4)));
+        let w = detect(&two, &e).unwrap().result.unwrap_err();
+        assert_eq!(w.kind, WitnessKind::Disconnected);
+    }
+
+    #[test]
+    fn collinear_points_are_degenerate() {
+        let pts = [[0.0, 0.0, 0.0], [1.0, 1.0, 1.0], [2.0, 2.0, 2.0]];
+        let d = detect(&pts, &[(0, 1), (1, 2)]).unwrap();
+        assert_eq!(d.result.unwrap_err().kind, WitnessKind::Degenerate);
+    }
+}
