@@ -1,0 +1,78 @@
+//! Bad input never panics: arbitrary and mutated files given to every reader yield either
+//! an input or an `InputError` naming the file, and `detect` on whatever parses answers.
+
+use proptest::prelude::*;
+use tetrakit::io::read_input;
+
+const NODE: &str = "5 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 1 1\n";
+const EDGE: &str = "9 0\n1 1 2\n2 1 3\n3 1 4\n4 2 3\n5 2 4\n6 3 4\n7 2 5\n8 3 5\n9 4 5\n";
+
+fn write(name: &str, text: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("tetrakit-malformed-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+/// A valid file with one token replaced, one line dropped or duplicated, or text appended.
+fn mutate(base: &'static str) -> impl Strategy<Value = String> {
+    let tokens = prop_oneof![
+        Just("x".to_string()),
+        Just("nan".to_string()),
+        Just("-1".to_string()),
+        Just("0".to_string()),
+        Just("1e400".to_string()),
+        Just("99999999999999999999".to_string()),
+        Just("".to_string()),
+        "[ -~]{0,6}",
+    ];
+    (0usize..200, tokens, 0usize..4).prop_map(move |(pos, tok, how)| {
+        let mut lines: Vec<String> = base.lines().map(String::from).collect();
+        let l = pos % lines.len();
+        match how {
+            0 => {
+                let mut t: Vec<String> = lines[l].split_whitespace().map(String::from).collect();
+                if !t.is_empty() {
+                    let k = pos % t.len();
+                    t[k] = tok;
+                }
+                lines[l] = t.join(" ");
+            }
+            1 => {
+                lines.remove(l);
+            }
+            2 => {
+                let dup = lines[l].clone();
+                lines.insert(l, dup);
+            }
+            _ => lines.push(tok),
+        }
+        lines.join("\n") + "\n"
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 400, ..ProptestConfig::default() })]
+
+    #[test]
+    fn mutated_tetgen_files_never_panic(node in mutate(NODE), edge in mutate(EDGE)) {
+        write("m.node", &node);
+        let p = write("m.edge", &edge);
+        match read_input(&p) {
+            Ok(input) => {
+                let segs: Vec<(u32, u32)> = input.segments.iter().map(|s| (s[0], s[1])).collect();
+                // Whatever parses is well-formed, so detect answers without error.
+                prop_assert!(tetrakit::detect::detect(&input.points, &segs).is_ok());
+            }
+            Err(e) => prop_assert!(e.file.ends_with(".node") || e.file.ends_with(".edge")),
+        }
+    }
+
+    #[test]
+    fn arbitrary_text_never_panics(text in "[ -~\n]{0,200}", ext in prop::sample::select(vec!["node", "edge", "ele", "obj", "json", "xyz"])) {
+        write("a.node", NODE);
+        let p = write(&format!("a.{ext}"), &text);
+        let _ = read_input(&p);
+    }
+}
