@@ -257,6 +257,14 @@ pub fn coplanar_triangles_overlap(t: &[Point3; 3], u: &[Point3; 3]) -> bool {
 pub fn cones_overlap(v: &Point3, a: &[Point3; 3], b: &[Point3; 3]) -> bool {
     // Does the plane through v, x, y put a and b on opposite closed sides? Stops at the
     // first generator that rules it out.
+    // The plane's own generators lie on it: no need for the (slow) exact zero.
+    let side = |x: &Point3, y: &Point3, p: &Point3| {
+        if p == x || p == y {
+            0
+        } else {
+            orient3d(v, x, y, p)
+        }
+    };
     let separates = |x: &Point3, y: &Point3| {
         // A degenerate plane (v, x, y collinear, e.g. a generator shared by both cones)
         // separates nothing.
@@ -265,7 +273,7 @@ pub fn cones_overlap(v: &Point3, a: &[Point3; 3], b: &[Point3; 3]) -> bool {
         }
         let mut side_a = 0i8;
         for p in a {
-            match (side_a, orient3d(v, x, y, p)) {
+            match (side_a, side(x, y, p)) {
                 (_, 0) => {}
                 (0, s) => side_a = s,
                 (s, t) if s != t => return false,
@@ -273,11 +281,11 @@ pub fn cones_overlap(v: &Point3, a: &[Point3; 3], b: &[Point3; 3]) -> bool {
             }
         }
         b.iter().all(|p| {
-            let s = orient3d(v, x, y, p);
+            let s = side(x, y, p);
             s == 0 || side_a == 0 || s == -side_a
         }) && (side_a != 0 || {
             // a lies in the plane: b must lie on one closed side.
-            let sb: Vec<i8> = b.iter().map(|p| orient3d(v, x, y, p)).collect();
+            let sb: Vec<i8> = b.iter().map(|p| side(x, y, p)).collect();
             sb.iter().all(|&s| s >= 0) || sb.iter().all(|&s| s <= 0)
         })
     };

@@ -46,13 +46,14 @@ pub(super) fn vertex_overlaps(
         .filter_map(|v| {
             let around = &star[start[v]..start[v + 1]];
             let cone = |t: u32| {
-                let o: Vec<Point3> = tets[t as usize]
-                    .iter()
-                    .filter(|&&x| x as usize != v)
-                    .map(|&x| points[x as usize])
-                    .collect();
-                [o[0], o[1], o[2]]
+                let tet = tets[t as usize];
+                let k = tet.iter().position(|&x| x as usize == v).unwrap_or(0);
+                std::array::from_fn(|i| points[tet[(k + 1 + i) % 4] as usize])
             };
+            let caps: Vec<Cap> = around
+                .iter()
+                .map(|&t| Cap::new(&points[v], &cone(t)))
+                .collect();
             let firsts = if on_boundary[v] {
                 around.len()
             } else {
@@ -60,7 +61,10 @@ pub(super) fn vertex_overlaps(
             };
             for (i, &t) in around.iter().enumerate().take(firsts) {
                 let ct = cone(t);
-                for &u in &around[i + 1..] {
+                for (j, &u) in around.iter().enumerate().skip(i + 1) {
+                    if caps[i].apart(&caps[j]) {
+                        continue;
+                    }
                     if cones_overlap(&points[v], &ct, &cone(u)) {
                         return Some(Problem {
                             kind: ProblemKind::Overlap,
@@ -76,6 +80,62 @@ pub(super) fn vertex_overlaps(
             None
         })
         .collect()
+}
+
+/// A spherical cap containing a cone's directions: mean direction and angular radius. A
+/// float filter only: caps are padded by far more than their rounding, and a cap of 90°
+/// or more (not convex) never rules anything out.
+struct Cap {
+    axis: Point3,
+    /// Cosine and sine of the padded radius; `cos = -2` marks a cap that rules nothing out.
+    cos: f64,
+    sin: f64,
+}
+
+impl Cap {
+    fn new(v: &Point3, gens: &[Point3; 3]) -> Self {
+        let unit = |p: &Point3| {
+            let d = [p[0] - v[0], p[1] - v[1], p[2] - v[2]];
+            let l = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+            [d[0] / l, d[1] / l, d[2] / l]
+        };
+        let u = gens.map(|g| unit(&g));
+        let sum: Point3 = std::array::from_fn(|k| u[0][k] + u[1][k] + u[2][k]);
+        let l = (sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]).sqrt();
+        let axis = sum.map(|x| x / l);
+        let radius = u
+            .iter()
+            .map(|x| dot(&axis, x).clamp(-1.0, 1.0).acos())
+            .fold(0.0, f64::max)
+            + 1e-6;
+        if radius.is_finite() && radius < std::f64::consts::FRAC_PI_2 {
+            Cap {
+                axis,
+                cos: radius.cos(),
+                sin: radius.sin(),
+            }
+        } else {
+            Cap {
+                axis,
+                cos: -2.0,
+                sin: 0.0,
+            }
+        }
+    }
+
+    /// True when the caps are certainly disjoint (then so are the cones): the angle between
+    /// the axes exceeds the sum of the radii, compared through cosines with a margin.
+    fn apart(&self, other: &Cap) -> bool {
+        if self.cos < -1.0 || other.cos < -1.0 {
+            return false;
+        }
+        let cos_sum = self.cos * other.cos - self.sin * other.sin;
+        dot(&self.axis, &other.axis) < cos_sum - 1e-9
+    }
+}
+
+fn dot(a: &Point3, b: &Point3) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
 /// Pairs of boundary faces that meet other than in shared vertices and edges (sweep over
