@@ -10,6 +10,13 @@ pub struct Graph {
 impl Graph {
     /// Builds the graph of `segments` on `n` vertices; rejects out-of-range indices,
     /// self-loops and repeated segments with a sentence naming the segment.
+    ///
+    /// ```
+    /// use tetrakit::detect::Graph;
+    /// let g = Graph::new(3, &[[0, 1], [1, 2]]).unwrap();
+    /// assert!(g.has_edge(2, 1) && !g.has_edge(0, 2));
+    /// assert!(Graph::new(3, &[[0, 1], [1, 0]]).is_err());
+    /// ```
     pub fn new(n: usize, segments: &[[u32; 2]]) -> Result<Graph, String> {
         let mut deg = vec![0usize; n + 1];
         for (k, s) in segments.iter().enumerate() {

@@ -89,6 +89,17 @@ pub type Progress<'a> = &'a (dyn Fn(u64, u64) + Sync);
 
 /// [`detect`], reporting progress through the per-vertex phase (called every few thousand
 /// vertices, from any thread).
+///
+/// ```
+/// use std::sync::atomic::{AtomicU64, Ordering};
+/// let t = tetrakit::generate::kuhn(2);
+/// let last = AtomicU64::new(0);
+/// let d = tetrakit::detect::detect_with_progress(&t.points, &t.edges(), &|done, _| {
+///     last.fetch_max(done, Ordering::Relaxed);
+/// })
+/// .unwrap();
+/// assert!(d.is_yes() && last.load(Ordering::Relaxed) == 27);
+/// ```
 pub fn detect_with_progress(
     points: &[Point3],
     segments: &[(u32, u32)],

@@ -13,6 +13,12 @@ use crate::rng::Rng;
 use std::collections::HashMap;
 
 /// A tetrahedralization of `points` (which must not be all coplanar, and must be distinct).
+///
+/// ```
+/// let pts = tetrakit::generate::cospherical_points(9);
+/// let t = tetrakit::generate::tetrahedralize_points(pts, 7);
+/// assert!(t.verify_convex().is_valid());
+/// ```
 pub fn tetrahedralize_points(points: Vec<Point3>, seed: u64) -> Tetrahedralization {
     let hull = Hull3::new(&points);
     let mut t = Tetrahedralization {

@@ -62,6 +62,12 @@ pub fn kuhn(k: usize) -> Tetrahedralization {
 
 /// `n` random points in the unit cube with 53-bit coordinates, or, with `grid = Some(g)`,
 /// distinct integer points in `[0, g)^3` (many coplanar and collinear subsets).
+///
+/// ```
+/// let p = tetrakit::generate::random_points(10, 3, Some(4));
+/// assert_eq!(p.len(), 10);
+/// assert!(p.iter().flatten().all(|&x| x == x.floor() && (0.0..4.0).contains(&x)));
+/// ```
 pub fn random_points(n: usize, seed: u64, grid: Option<u32>) -> Vec<Point3> {
     let mut rng = Rng::new(seed);
     match grid {
@@ -85,6 +91,12 @@ pub fn random_points(n: usize, seed: u64, grid: Option<u32>) -> Vec<Point3> {
 }
 
 /// All integer points on the sphere `x² + y² + z² = r2` (cospherical, and many coplanar).
+///
+/// ```
+/// let p = tetrakit::generate::cospherical_points(25);
+/// assert!(p.iter().all(|q| q[0] * q[0] + q[1] * q[1] + q[2] * q[2] == 25.0));
+/// assert_eq!(p.len(), 30);
+/// ```
 pub fn cospherical_points(r2: i64) -> Vec<Point3> {
     let r = (r2 as f64).sqrt() as i64 + 1;
     let mut pts = Vec::new();
@@ -121,6 +133,12 @@ pub fn random_tetrahedralization(
 }
 
 /// Performs up to `flips` random exact 2-3 and 3-2 flips; returns how many were done.
+///
+/// ```
+/// let mut t = tetrakit::generate::tetrahedralize_points(tetrakit::generate::random_points(40, 1, None), 1);
+/// let done = tetrakit::generate::random_flips(&mut t, 50, 2);
+/// assert!(done > 0 && t.verify_convex().is_valid());
+/// ```
 pub fn random_flips(t: &mut Tetrahedralization, flips: usize, seed: u64) -> usize {
     let mut rng = Rng::new(seed);
     let mut done = 0;
@@ -258,6 +276,13 @@ pub enum Corruption {
 /// can cross another when the points are in general position). The result is never the edge
 /// set of a tetrahedralization: a dropped edge leaves a face or hull edge unjoined, and an
 /// added segment crosses, overlaps or passes through something.
+///
+/// ```
+/// use tetrakit::generate::{Corruption, corrupt_edges, kuhn};
+/// let t = kuhn(2);
+/// let e = corrupt_edges(&t.points, &t.edges(), Corruption::AddCrossing, 1).unwrap();
+/// assert!(!tetrakit::detect::detect(&t.points, &e).unwrap().is_yes());
+/// ```
 pub fn corrupt_edges(
     points: &[Point3],
     edges: &[(u32, u32)],
@@ -324,6 +349,12 @@ pub fn corrupt_edges(
 /// Adds a tetrahedron overlapping two neighbours (the union of two adjacent tetrahedra
 /// `abcd`, `abce` contains the new `abde` when `de` crosses `abc`); `None` when no pair of
 /// neighbours allows it.
+///
+/// ```
+/// let t = tetrakit::generate::random_tetrahedralization(50, 50, 1, None);
+/// let bad = tetrakit::generate::add_overlapping_tet(&t, 1).unwrap();
+/// assert!(!bad.verify_convex().is_valid());
+/// ```
 pub fn add_overlapping_tet(t: &Tetrahedralization, seed: u64) -> Option<Tetrahedralization> {
     let mut rng = Rng::new(seed);
     let mut faces: HashMap<[u32; 3], Vec<usize>> = HashMap::new();

@@ -79,6 +79,18 @@ pub struct Input {
 /// Reads `path`, choosing the format by extension: `.node` (with sibling `.edge`, `.ele`
 /// and `.face` when present), `.edge`/`.ele`/`.face` (with the sibling `.node`), `.obj`,
 /// `.json`, `.xyz`/`.txt`.
+///
+/// ```
+/// let dir = std::env::temp_dir().join("tetrakit-doc-read");
+/// std::fs::create_dir_all(&dir).unwrap();
+/// std::fs::write(dir.join("t.node"), "4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n").unwrap();
+/// std::fs::write(dir.join("t.edge"), "1 0\n1 1 2\n").unwrap();
+/// let input = tetrakit::io::read_input(&dir.join("t.edge")).unwrap();
+/// assert_eq!((input.points.len(), input.segments[0], input.index_base), (4, [0, 1], 1));
+/// std::fs::write(dir.join("bad.xyz"), "0 0 0\n1 x 0\n").unwrap();
+/// let err = tetrakit::io::read_input(&dir.join("bad.xyz")).unwrap_err();
+/// assert_eq!(err.line, 2);
+/// ```
 pub fn read_input(path: &Path) -> Result<Input, InputError> {
     let ext = path
         .extension()

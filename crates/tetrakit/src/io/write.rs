@@ -57,6 +57,13 @@ pub fn write_mesh(path: &Path, points: &[Point3], tets: &[[u32; 4]], base: u32) 
 }
 
 /// Writes a segment set: `.edge` (with `.node` beside it), `.obj` (`l` lines) or `.json`.
+///
+/// ```
+/// let pts = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+/// let path = std::env::temp_dir().join("tetrakit-doc-edges.obj");
+/// tetrakit::io::write_edges(&path, &pts, &[(0, 1), (1, 2)], 1).unwrap();
+/// assert!(std::fs::read_to_string(&path).unwrap().contains("l 2 3"));
+/// ```
 pub fn write_edges(
     path: &Path,
     points: &[Point3],
@@ -94,6 +101,13 @@ pub fn write_edges(
 }
 
 /// Writes a legacy ASCII VTK unstructured grid of tetrahedra (cell type 10).
+///
+/// ```
+/// let pts = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+/// let path = std::env::temp_dir().join("tetrakit-doc.vtk");
+/// tetrakit::io::write_vtk(&path, &pts, &[[0, 1, 2, 3]]).unwrap();
+/// assert!(std::fs::read_to_string(&path).unwrap().contains("CELL_TYPES 1"));
+/// ```
 pub fn write_vtk(path: &Path, points: &[Point3], tets: &[[u32; 4]]) -> io::Result<()> {
     let mut s = String::from(
         "# vtk DataFile Version 3.0\ntetrakit tetrahedralization\nASCII\nDATASET UNSTRUCTURED_GRID\n",
