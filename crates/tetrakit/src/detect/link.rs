@@ -65,6 +65,31 @@ pub(super) struct Ctx<'a> {
 /// The link triangles of `v` (each `(a, b, c)` with `(v, a, b, c)` positively oriented), or
 /// a witness that `L` is not the edge set of a tetrahedralization.
 pub(super) fn link(ctx: &Ctx, v: u32) -> Result<Vec<[u32; 3]>, Witness> {
+    BUFFERS.with(|b| link_with(ctx, v, &mut b.borrow_mut()))
+}
+
+/// Per-thread buffers reused from one vertex to the next (a vertex's work is small, so
+/// allocation would otherwise be a tenth of it).
+#[derive(Default)]
+struct Buffers {
+    dirs: Vec<Dir>,
+    unit: Vec<Point3>,
+    order: Vec<usize>,
+    edges: Vec<(u32, u32)>,
+    side: Vec<i8>,
+    keep: Vec<bool>,
+    masks: Vec<(u64, u64, u64)>,
+    deg: Vec<u32>,
+    fill: Vec<u32>,
+    adj: Vec<u32>,
+    faces: Vec<[u32; 3]>,
+}
+
+thread_local! {
+    static BUFFERS: std::cell::RefCell<Buffers> = std::cell::RefCell::new(Buffers::default());
+}
+
+fn link_with(ctx: &Ctx, v: u32, b: &mut Buffers) -> Result<Vec<[u32; 3]>, Witness> {
     let nb = ctx.g.nbrs(v);
     let k = nb.len();
     let pv = &ctx.pts[v as usize];
@@ -78,22 +103,24 @@ pub(super) fn link(ctx: &Ctx, v: u32) -> Result<Vec<[u32; 3]>, Witness> {
     }
     let frame = Frame::new(pv);
     let p: Vec<&Point3> = nb.iter().map(|&a| &ctx.pts[a as usize]).collect();
-    let d: Vec<Dir> = p.iter().map(|x| frame.dir(x)).collect();
-    same_direction(v, nb, pv, &p, &d)?;
-    let edges = local_edges(ctx.g, nb);
+    b.dirs.clear();
+    b.dirs.extend(p.iter().map(|x| frame.dir(x)));
+    same_direction(v, nb, pv, &p, &b.dirs, &mut b.unit, &mut b.order)?;
+    local_edges(ctx.g, nb, &mut b.edges);
     let lv = LocalView {
         v,
         pv,
         nb,
         p: &p,
-        d: &d,
+        d: &b.dirs,
         frame,
     };
-    let (keep, side) = puncture_free(&lv, &edges)?;
-    if let Some(f) = faces_from_signs(&lv, ctx.hull, &edges, &keep, &side) {
+    puncture_free(&lv, &b.edges, &mut b.side, &mut b.keep, &mut b.masks)?;
+    let csr = (&mut b.deg, &mut b.fill, &mut b.adj, &mut b.faces);
+    if let Some(f) = faces_from_signs(&lv, ctx.hull, &b.edges, &b.keep, &b.side, csr) {
         return Ok(f);
     }
-    faces_from_rotation(&lv, ctx.hull, &edges, &keep)
+    faces_from_rotation(&lv, ctx.hull, &b.edges, &b.keep)
 }
 
 /// The link triangles from the exact rotation system of the kept segments.
@@ -120,15 +147,25 @@ fn faces_from_rotation(
 /// seen from its three edges, the boundary lies on the hull, the Euler characteristic is
 /// right and the link is connected, these are the faces of the link; anything else returns
 /// `None` and the exact rotation system decides (and names the problem).
+/// Scratch for [`faces_from_signs`]: degree prefix sums, fill cursors, adjacency, faces.
+type CsrBuffers<'b> = (
+    &'b mut Vec<u32>,
+    &'b mut Vec<u32>,
+    &'b mut Vec<u32>,
+    &'b mut Vec<[u32; 3]>,
+);
+
 fn faces_from_signs(
     lv: &LocalView,
     hull: &Hull3,
     edges: &[(u32, u32)],
     keep: &[bool],
     side: &[i8],
+    (deg, fill, adj, faces): CsrBuffers,
 ) -> Option<Vec<[u32; 3]>> {
     let k = lv.nb.len();
-    let mut deg = vec![0u32; k + 1];
+    deg.clear();
+    deg.resize(k + 1, 0);
     for (e, &(a, b)) in edges.iter().enumerate() {
         if keep[e] {
             deg[a as usize + 1] += 1;
@@ -138,8 +175,10 @@ fn faces_from_signs(
     for i in 0..k {
         deg[i + 1] += deg[i];
     }
-    let mut fill = deg.clone();
-    let mut adj = vec![0u32; deg[k] as usize];
+    fill.clear();
+    fill.extend_from_slice(deg);
+    adj.clear();
+    adj.resize(deg[k] as usize, 0);
     for (e, &(a, b)) in edges.iter().enumerate() {
         if keep[e] {
             adj[fill[a as usize] as usize] = b;
@@ -153,7 +192,7 @@ fn faces_from_signs(
     }
     let nbr = |a: u32| &adj[deg[a as usize] as usize..deg[a as usize + 1] as usize];
     let on_hull = hull.on_boundary(lv.v as usize);
-    let mut faces: Vec<[u32; 3]> = Vec::with_capacity(2 * k);
+    faces.clear();
     let mut kept_edges = 0usize;
     for (e, &(a, b)) in edges.iter().enumerate() {
         if !keep[e] {
@@ -203,7 +242,7 @@ fn faces_from_signs(
         }
     }
     // Each face must have been seen from its three edges, in one rotation.
-    for f in &mut faces {
+    for f in faces.iter_mut() {
         *f = min_first(*f);
     }
     faces.sort_unstable();
@@ -265,16 +304,17 @@ fn same_direction(
     pv: &Point3,
     p: &[&Point3],
     d: &[Dir],
+    unit: &mut Vec<Point3>,
+    order: &mut Vec<usize>,
 ) -> Result<(), Witness> {
-    let unit: Vec<Point3> = d
-        .iter()
-        .map(|x| {
-            let x = &x.d;
-            let l = (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]).sqrt();
-            [x[0] / l, x[1] / l, x[2] / l]
-        })
-        .collect();
-    let mut order: Vec<usize> = (0..nb.len()).collect();
+    unit.clear();
+    unit.extend(d.iter().map(|x| {
+        let x = &x.d;
+        let l = (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]).sqrt();
+        [x[0] / l, x[1] / l, x[2] / l]
+    }));
+    order.clear();
+    order.extend(0..nb.len());
     order.sort_unstable_by(|&a, &b| unit[a][0].total_cmp(&unit[b][0]));
     // Exactly equal directions differ by a few ulps after rounding: 1e-9 is a safe window.
     const WINDOW: f64 = 1e-9;
@@ -295,8 +335,8 @@ fn same_direction(
 
 /// The segments among neighbours, as pairs of local indices (listed from the neighbours'
 /// sorted adjacency lists, never by scanning all segments).
-fn local_edges(g: &Graph, nb: &[u32]) -> Vec<(u32, u32)> {
-    let mut edges = Vec::with_capacity(4 * nb.len());
+fn local_edges(g: &Graph, nb: &[u32], edges: &mut Vec<(u32, u32)>) {
+    edges.clear();
     for (i, &a) in nb.iter().enumerate() {
         let rest = &nb[i + 1..];
         for &b in g.nbrs(a).iter().filter(|&&b| b > a) {
@@ -305,16 +345,23 @@ fn local_edges(g: &Graph, nb: &[u32]) -> Vec<(u32, u32)> {
             }
         }
     }
-    edges
 }
 
 /// Which segments of `L_v` survive the generalized puncture rule.
-fn puncture_free(lv: &LocalView, edges: &[(u32, u32)]) -> Result<(Vec<bool>, Vec<i8>), Witness> {
+fn puncture_free(
+    lv: &LocalView,
+    edges: &[(u32, u32)],
+    side: &mut Vec<i8>,
+    keep: &mut Vec<bool>,
+    masks: &mut Vec<(u64, u64, u64)>,
+) -> Result<(), Witness> {
     let k = lv.nb.len();
     let m = edges.len();
     // side[e * k + c] = orient3d(v, a, b, c) for edge e = (a, b).
-    let mut side = vec![0i8; m * k];
-    let mut keep = vec![true; m];
+    side.clear();
+    side.resize(m * k, 0);
+    keep.clear();
+    keep.resize(m, true);
     for (e, &(a, b)) in edges.iter().enumerate() {
         let (a, b) = (a as usize, b as usize);
         let row = &mut side[e * k..(e + 1) * k];
@@ -346,22 +393,20 @@ fn puncture_free(lv: &LocalView, edges: &[(u32, u32)]) -> Result<(Vec<bool>, Vec
     // and of each segment's endpoints (when there are at most 64 neighbours), turn the
     // straddle tests into bit operations: cd straddles the plane vab when each side of it
     // holds one endpoint (segments sharing an endpoint never do: it has sign 0).
-    let masks: Vec<(u64, u64, u64)> = if k <= 64 {
-        (0..m)
-            .map(|e| {
-                let row = &side[e * k..(e + 1) * k];
-                let (p, q) = row
-                    .iter()
-                    .enumerate()
-                    .fold((0u64, 0u64), |(p, q), (c, &x)| {
-                        (p | (u64::from(x > 0) << c), q | (u64::from(x < 0) << c))
-                    });
-                (p, q, (1u64 << edges[e].0) | (1u64 << edges[e].1))
-            })
-            .collect()
-    } else {
-        Vec::new()
-    };
+    masks.clear();
+    if k <= 64 {
+        masks.extend((0..m).map(|e| {
+            let row = &side[e * k..(e + 1) * k];
+            let (p, q) = row
+                .iter()
+                .enumerate()
+                .fold((0u64, 0u64), |(p, q), (c, &x)| {
+                    (p | (u64::from(x > 0) << c), q | (u64::from(x < 0) << c))
+                });
+            (p, q, (1u64 << edges[e].0) | (1u64 << edges[e].1))
+        }));
+    }
+    let (side, masks) = (&*side, &*masks);
     let straddles =
         |e: usize, c: u32, d: u32| side[e * k + c as usize] * side[e * k + d as usize] < 0;
     for e in 0..m {
@@ -399,7 +444,7 @@ fn puncture_free(lv: &LocalView, edges: &[(u32, u32)]) -> Result<(Vec<bool>, Vec
             }
         }
     }
-    Ok((keep, side))
+    Ok(())
 }
 
 /// For segments `ab`, `cd` of `L_v` that straddle each other's planes through `v`
@@ -640,8 +685,10 @@ mod tests {
                     d: &d,
                     frame,
                 };
-                let edges = local_edges(&g, nb);
-                let (keep, side) = puncture_free(&lv, &edges).unwrap();
+                let mut edges = Vec::new();
+                local_edges(&g, nb, &mut edges);
+                let (mut side, mut keep, mut masks) = (Vec::new(), Vec::new(), Vec::new());
+                puncture_free(&lv, &edges, &mut side, &mut keep, &mut masks).unwrap();
                 let mut slow = faces_from_rotation(&lv, &hull, &edges, &keep).unwrap();
                 let norm = |f: &mut Vec<[u32; 3]>| {
                     for x in f.iter_mut() {
@@ -651,7 +698,9 @@ mod tests {
                     f.sort_unstable();
                 };
                 norm(&mut slow);
-                if let Some(mut fast) = faces_from_signs(&lv, &hull, &edges, &keep, &side) {
+                let mut bufs = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+                let csr = (&mut bufs.0, &mut bufs.1, &mut bufs.2, &mut bufs.3);
+                if let Some(mut fast) = faces_from_signs(&lv, &hull, &edges, &keep, &side, csr) {
                     norm(&mut fast);
                     assert_eq!(fast, slow, "vertex {v}");
                     fast_hits += 1;
