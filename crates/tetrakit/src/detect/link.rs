@@ -72,6 +72,7 @@ pub(super) fn link(ctx: &Ctx, v: u32) -> Result<Vec<[u32; 3]>, Witness> {
 /// allocation would otherwise be a tenth of it).
 #[derive(Default)]
 struct Buffers {
+    pts: Vec<Point3>,
     dirs: Vec<Dir>,
     unit: Vec<Point3>,
     order: Vec<usize>,
@@ -102,16 +103,17 @@ fn link_with(ctx: &Ctx, v: u32, b: &mut Buffers) -> Result<Vec<[u32; 3]>, Witnes
         ));
     }
     let frame = Frame::new(pv);
-    let p: Vec<&Point3> = nb.iter().map(|&a| &ctx.pts[a as usize]).collect();
+    b.pts.clear();
+    b.pts.extend(nb.iter().map(|&a| ctx.pts[a as usize]));
     b.dirs.clear();
-    b.dirs.extend(p.iter().map(|x| frame.dir(x)));
-    same_direction(v, nb, pv, &p, &b.dirs, &mut b.unit, &mut b.order)?;
+    b.dirs.extend(b.pts.iter().map(|x| frame.dir(x)));
+    same_direction(v, nb, pv, &b.pts, &b.dirs, &mut b.unit, &mut b.order)?;
     local_edges(ctx.g, nb, &mut b.edges);
     let lv = LocalView {
         v,
         pv,
         nb,
-        p: &p,
+        p: &b.pts,
         d: &b.dirs,
         frame,
     };
@@ -279,7 +281,7 @@ struct LocalView<'a> {
     v: u32,
     pv: &'a Point3,
     nb: &'a [u32],
-    p: &'a [&'a Point3],
+    p: &'a [Point3],
     d: &'a [Dir],
     frame: Frame,
 }
@@ -289,7 +291,7 @@ impl LocalView<'_> {
     #[inline]
     fn orient(&self, a: usize, b: usize, c: usize) -> i8 {
         self.frame.sign(
-            self.p[a], self.p[b], self.p[c], &self.d[a], &self.d[b], &self.d[c],
+            &self.p[a], &self.p[b], &self.p[c], &self.d[a], &self.d[b], &self.d[c],
         )
     }
     fn g(&self, i: u32) -> u32 {
@@ -302,7 +304,7 @@ fn same_direction(
     v: u32,
     nb: &[u32],
     pv: &Point3,
-    p: &[&Point3],
+    p: &[Point3],
     d: &[Dir],
     unit: &mut Vec<Point3>,
     order: &mut Vec<usize>,
@@ -324,7 +326,9 @@ fn same_direction(
                 break;
             }
             let close = (1..3).all(|c| (unit[j][c] - unit[i][c]).abs() <= WINDOW);
-            if close && collinear3(pv, p[i], p[j]) && !crate::geom::strictly_between(p[i], pv, p[j])
+            if close
+                && collinear3(pv, &p[i], &p[j])
+                && !crate::geom::strictly_between(&p[i], pv, &p[j])
             {
                 return Err(Witness::overlap_on_ray(v, nb[i], nb[j]));
             }
@@ -369,13 +373,15 @@ fn puncture_free(
         let plane = lv.frame.plane(&lv.d[a], &lv.d[b]);
         for (c, slot) in row.iter_mut().enumerate() {
             if c != a && c != b {
-                *slot = lv.frame.side(&plane, lv.p[a], lv.p[b], lv.p[c], &lv.d[c]);
+                *slot = lv
+                    .frame
+                    .side(&plane, &lv.p[a], &lv.p[b], &lv.p[c], &lv.d[c]);
                 if *slot == 0 {
                     coplanar.push(c);
                 }
             }
         }
-        if coplanar.len() + 2 == k && collinear3(lv.pv, lv.p[a], lv.p[b]) {
+        if coplanar.len() + 2 == k && collinear3(lv.pv, &lv.p[a], &lv.p[b]) {
             // Not on one ray (checked before), so v lies inside segment ab.
             let (ga, gb) = (lv.g(a as u32), lv.g(b as u32));
             return Err(Witness::new(
@@ -463,7 +469,7 @@ fn crossing(
     sa: i8,
     sc: i8,
 ) -> Result<Option<bool>, Witness> {
-    let q = |i: u32| lv.p[i as usize];
+    let q = |i: u32| &lv.p[i as usize];
     let t = orient3d(q(a), q(b), q(c), q(d));
     if t == sa {
         return Ok(Some(true));
@@ -486,13 +492,13 @@ fn crossing(
 /// Does a neighbour `c`, coplanar with `v, a, b`, lie strictly inside the angle `avb`?
 /// Then the segment `vc` punctures the triangle `vab`.
 fn blocked(lv: &LocalView, a: usize, b: usize, coplanar: &[usize]) -> bool {
-    let Some(axis) = projection_axis(lv.pv, lv.p[a], lv.p[b]) else {
+    let Some(axis) = projection_axis(lv.pv, &lv.p[a], &lv.p[b]) else {
         return false;
     };
-    let s = orient2d_drop(lv.pv, lv.p[a], lv.p[b], axis);
+    let s = orient2d_drop(lv.pv, &lv.p[a], &lv.p[b], axis);
     coplanar.iter().any(|&c| {
-        orient2d_drop(lv.pv, lv.p[a], lv.p[c], axis) == s
-            && orient2d_drop(lv.pv, lv.p[c], lv.p[b], axis) == s
+        orient2d_drop(lv.pv, &lv.p[a], &lv.p[c], axis) == s
+            && orient2d_drop(lv.pv, &lv.p[c], &lv.p[b], axis) == s
     })
 }
 
@@ -525,8 +531,8 @@ fn rotation_system(lv: &LocalView, kept: &[(u32, u32)]) -> Result<Vec<Vec<u32>>,
 /// Sorts `list` by angle around the axis `v → a`, exactly.
 fn sort_around(lv: &LocalView, a: usize, list: &mut [u32]) -> Result<(), Witness> {
     let b0 = list[0] as usize;
-    let axis = projection_axis(lv.pv, lv.p[a], lv.p[b0]).expect("checked non-collinear");
-    let s0 = orient2d_drop(lv.pv, lv.p[a], lv.p[b0], axis);
+    let axis = projection_axis(lv.pv, &lv.p[a], &lv.p[b0]).expect("checked non-collinear");
+    let s0 = orient2d_drop(lv.pv, &lv.p[a], &lv.p[b0], axis);
     let half = |b: usize| -> u8 {
         if b == b0 {
             return 0;
@@ -534,7 +540,7 @@ fn sort_around(lv: &LocalView, a: usize, list: &mut [u32]) -> Result<(), Witness
         match lv.orient(a, b0, b) {
             1 => 1,
             -1 => 3,
-            _ if orient2d_drop(lv.pv, lv.p[a], lv.p[b], axis) == s0 => 0,
+            _ if orient2d_drop(lv.pv, &lv.p[a], &lv.p[b], axis) == s0 => 0,
             _ => 2,
         }
     };
@@ -675,7 +681,7 @@ mod tests {
             for v in 0..t.points.len() as u32 {
                 let nb = g.nbrs(v);
                 let frame = Frame::new(&t.points[v as usize]);
-                let p: Vec<&Point3> = nb.iter().map(|&a| &t.points[a as usize]).collect();
+                let p: Vec<Point3> = nb.iter().map(|&a| t.points[a as usize]).collect();
                 let d: Vec<Dir> = p.iter().map(|x| frame.dir(x)).collect();
                 let lv = LocalView {
                     v,
