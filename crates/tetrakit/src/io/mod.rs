@@ -174,13 +174,13 @@ pub(crate) fn vertex_ref(
 /// found per vertex (small sorts), not by sorting all segments.
 pub(crate) fn check_segments(
     segs: &[[u32; 2]],
-    lines: &[usize],
+    lines: &[u32],
     base: u32,
     path: &Path,
 ) -> Result<(), InputError> {
     let at = |k: usize| -> (usize, String) {
         if lines[k] > 0 {
-            (lines[k], format!("line {}", lines[k]))
+            (lines[k] as usize, format!("line {}", lines[k]))
         } else {
             (0, format!("segments[{k}]"))
         }

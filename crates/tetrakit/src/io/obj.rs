@@ -80,7 +80,7 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
     for (line, refs) in polylines {
         for w in refs.windows(2) {
             input.segments.push([w[0] as u32, w[1] as u32]);
-            seg_lines.push(line);
+            seg_lines.push(line as u32);
         }
     }
     for (line, refs) in face_lines {

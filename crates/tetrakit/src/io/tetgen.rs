@@ -2,8 +2,9 @@
 //! attributes and boundary markers), read strictly.
 
 use super::{
-    Input, InputError, check_segments, parse_coord, parse_int, read_text, token_lines, vertex_ref,
+    Input, InputError, Tokens, check_segments, parse_coord, parse_int, read_text, vertex_ref,
 };
+use rayon::prelude::*;
 use std::path::Path;
 
 /// Reads a TetGen file set starting from any of its members.
@@ -35,27 +36,138 @@ pub(super) fn read(path: &Path, ext: &str) -> Result<Input, InputError> {
     Ok(input)
 }
 
-fn header<'a>(
+/// The header line (its number and values) and the body after it (with its first line
+/// number).
+fn split_header<'a>(
     path: &Path,
-    lines: &mut impl Iterator<Item = (usize, super::Tokens<'a>)>,
-) -> Result<(usize, Vec<i64>), InputError> {
-    let Some((line, toks)) = lines.next() else {
-        return Err(InputError::new(path, 0, "empty file: no header line"));
-    };
-    let vals = toks
-        .iter()
-        .map(|t| parse_int(t, path, line, "header value"))
-        .collect::<Result<Vec<_>, _>>()?;
-    if vals.iter().any(|&v| v < 0) {
-        return Err(InputError::new(path, line, "negative number in the header"));
+    text: &'a str,
+) -> Result<(usize, Vec<i64>, &'a str, usize), InputError> {
+    let mut offset = 0;
+    for (i, raw) in text.split_inclusive('\n').enumerate() {
+        offset += raw.len();
+        let toks = Tokens::new(raw.split('#').next().unwrap_or(""));
+        if toks.is_empty() {
+            continue;
+        }
+        let line = i + 1;
+        let vals = toks
+            .iter()
+            .map(|t| parse_int(t, path, line, "header value"))
+            .collect::<Result<Vec<_>, _>>()?;
+        if vals.iter().any(|&v| v < 0) {
+            return Err(InputError::new(path, line, "negative number in the header"));
+        }
+        return Ok((line, vals, &text[offset..], line + 1));
     }
-    Ok((line, vals))
+    Err(InputError::new(path, 0, "empty file: no header line"))
+}
+
+/// The first meaningful row of `body`: (line number, first token).
+fn first_row(body: &str, first_line: usize) -> Option<(usize, &str)> {
+    body.split_inclusive('\n').enumerate().find_map(|(i, raw)| {
+        let t = raw
+            .split('#')
+            .next()
+            .unwrap_or("")
+            .split_whitespace()
+            .next()?;
+        Some((first_line + i, t))
+    })
+}
+
+/// Parses the rows of `body` in parallel: `parse(tokens, line, ordinal)` for every
+/// meaningful line, in file order. The body is cut at line boundaries; a first pass counts
+/// lines and rows per piece so that every row knows its line number and ordinal, so the
+/// first error in file order is the one reported.
+fn parse_body<T: Send>(
+    body: &str,
+    first_line: usize,
+    parse: impl Fn(&[&str], usize, usize) -> Result<T, InputError> + Sync,
+) -> Result<(Vec<T>, Vec<u32>), InputError> {
+    let target = (body.len() / 64).max(1 << 16);
+    let bytes = body.as_bytes();
+    let mut cuts = vec![0usize];
+    while *cuts.last().unwrap_or(&0) < body.len() {
+        let start = *cuts.last().unwrap_or(&0);
+        let mut end = (start + target).min(body.len());
+        while end < body.len() && bytes[end - 1] != b'\n' {
+            end += 1;
+        }
+        cuts.push(end);
+    }
+    let pieces: Vec<&str> = cuts.windows(2).map(|w| &body[w[0]..w[1]]).collect();
+    let meaningful = |raw: &str| {
+        raw.split('#')
+            .next()
+            .is_some_and(|c| c.split_whitespace().next().is_some())
+    };
+    let counts: Vec<(usize, usize)> = pieces
+        .par_iter()
+        .map(|p| {
+            (
+                p.bytes().filter(|&b| b == b'\n').count(),
+                p.split_inclusive('\n').filter(|r| meaningful(r)).count(),
+            )
+        })
+        .collect();
+    let mut starts = Vec::with_capacity(pieces.len());
+    let (mut line, mut ordinal) = (first_line, 0usize);
+    for &(lines, rows) in &counts {
+        starts.push((line, ordinal));
+        line += lines;
+        ordinal += rows;
+    }
+    let parsed: Vec<Result<(Vec<T>, Vec<u32>), InputError>> = pieces
+        .par_iter()
+        .zip(&starts)
+        .map(|(piece, &(line0, ord0))| {
+            let (mut rows, mut lines) = (Vec::new(), Vec::new());
+            for (i, raw) in piece.split_inclusive('\n').enumerate() {
+                let toks = Tokens::new(raw.split('#').next().unwrap_or(""));
+                if toks.is_empty() {
+                    continue;
+                }
+                let line = line0 + i;
+                rows.push(parse(&toks, line, ord0 + rows.len())?);
+                lines.push(line as u32);
+            }
+            Ok((rows, lines))
+        })
+        .collect();
+    let mut rows = Vec::with_capacity(ordinal);
+    let mut lines = Vec::with_capacity(ordinal);
+    for r in parsed {
+        let (r, l) = r?;
+        rows.extend(r);
+        lines.extend(l);
+    }
+    Ok((rows, lines))
+}
+
+/// The TetGen numbering base given by the first row's index (0 or 1).
+fn numbering_base(
+    path: &Path,
+    body: &str,
+    first_line: usize,
+    what: &str,
+) -> Result<i64, InputError> {
+    let Some((line, tok)) = first_row(body, first_line) else {
+        return Ok(1);
+    };
+    let idx = parse_int(tok, path, line, "index")?;
+    if idx != 0 && idx != 1 {
+        return Err(InputError::new(
+            path,
+            line,
+            format!("first {what} is numbered {idx}; TetGen numbering starts at 0 or 1"),
+        ));
+    }
+    Ok(idx)
 }
 
 fn read_node(path: &Path) -> Result<Input, InputError> {
     let text = read_text(path)?;
-    let mut lines = token_lines(&text);
-    let (hline, h) = header(path, &mut lines)?;
+    let (hline, h, body, first_line) = split_header(path, &text)?;
     let declared = h[0] as usize;
     let dim = h.get(1).copied().unwrap_or(3) as usize;
     if !(2..=3).contains(&dim) {
@@ -66,12 +178,8 @@ fn read_node(path: &Path) -> Result<Input, InputError> {
         ));
     }
     let extra = (h.get(2).copied().unwrap_or(0) + h.get(3).copied().unwrap_or(0)) as usize;
-    let mut input = Input {
-        dim,
-        point_file: path.to_path_buf(),
-        ..Default::default()
-    };
-    for (line, toks) in lines {
+    let base = numbering_base(path, body, first_line, "point")?;
+    let (points, lines) = parse_body(body, first_line, |toks, line, ordinal| {
         if toks.len() < 1 + dim || toks.len() > 1 + dim + extra {
             return Err(InputError::new(
                 path,
@@ -83,17 +191,7 @@ fn read_node(path: &Path) -> Result<Input, InputError> {
             ));
         }
         let idx = parse_int(toks[0], path, line, "point index")?;
-        if input.points.is_empty() {
-            if idx != 0 && idx != 1 {
-                return Err(InputError::new(
-                    path,
-                    line,
-                    format!("first point is numbered {idx}; TetGen numbering starts at 0 or 1"),
-                ));
-            }
-            input.index_base = idx as u32;
-        }
-        let expect = input.points.len() as i64 + input.index_base as i64;
+        let expect = base + ordinal as i64;
         if idx != expect {
             return Err(InputError::new(
                 path,
@@ -101,34 +199,40 @@ fn read_node(path: &Path) -> Result<Input, InputError> {
                 format!("point numbered {idx}, expected {expect}"),
             ));
         }
-        let mut p = [0.0; 3];
-        for k in 0..dim {
-            p[k] = parse_coord(toks[1 + k], path, line)?;
-        }
-        input.points.push(p);
-        input.point_lines.push(line);
-        if input.points.len() > declared {
+        if ordinal >= declared {
             return Err(InputError::new(
                 path,
                 line,
                 format!("more points than the {declared} the header declares"),
             ));
         }
-    }
-    if input.points.len() != declared {
+        let mut p = [0.0; 3];
+        for k in 0..dim {
+            p[k] = parse_coord(toks[1 + k], path, line)?;
+        }
+        Ok(p)
+    })?;
+    if points.len() != declared {
         return Err(InputError::new(
             path,
             0,
             format!(
                 "header declares {declared} points but the file has {} (truncated?)",
-                input.points.len()
+                points.len()
             ),
         ));
     }
     if declared == 0 {
         return Err(InputError::new(path, hline, "no points"));
     }
-    Ok(input)
+    Ok(Input {
+        dim,
+        points,
+        point_lines: lines.into_iter().map(|l| l as usize).collect(),
+        index_base: base as u32,
+        point_file: path.to_path_buf(),
+        ..Default::default()
+    })
 }
 
 /// Reads a TetGen element file whose rows are `index v1 .. vK [extras]`.
@@ -137,10 +241,9 @@ fn read_rows<const K: usize>(
     nodes: &Input,
     what: &str,
     min_per_row: usize,
-) -> Result<(Vec<[u32; K]>, Vec<usize>), InputError> {
+) -> Result<(Vec<[u32; K]>, Vec<u32>), InputError> {
     let text = read_text(path)?;
-    let mut lines = token_lines(&text);
-    let (hline, h) = header(path, &mut lines)?;
+    let (hline, h, body, first_line) = split_header(path, &text)?;
     let declared = h[0] as usize;
     let per_row = if K == 4 {
         h.get(1).copied().unwrap_or(4) as usize
@@ -159,10 +262,8 @@ fn read_rows<const K: usize>(
     } else {
         h.get(1).copied().unwrap_or(0) as usize
     };
-    let mut rows = Vec::new();
-    let mut row_lines = Vec::new();
-    let mut base = None;
-    for (line, toks) in lines {
+    let base = numbering_base(path, body, first_line, what)?;
+    let (rows, lines) = parse_body(body, first_line, |toks, line, ordinal| {
         if toks.len() < 1 + per_row.max(min_per_row) || toks.len() > 1 + per_row + extra {
             return Err(InputError::new(
                 path,
@@ -174,19 +275,19 @@ fn read_rows<const K: usize>(
             ));
         }
         let idx = parse_int(toks[0], path, line, "index")?;
-        let b = *base.get_or_insert(idx);
-        if (b != 0 && b != 1) || idx != b + rows.len() as i64 {
+        let expect = base + ordinal as i64;
+        if idx != expect {
             return Err(InputError::new(
                 path,
                 line,
-                format!(
-                    "{what} numbered {idx}, expected {}",
-                    if b == 0 || b == 1 {
-                        b + rows.len() as i64
-                    } else {
-                        1
-                    }
-                ),
+                format!("{what} numbered {idx}, expected {expect}"),
+            ));
+        }
+        if ordinal >= declared {
+            return Err(InputError::new(
+                path,
+                line,
+                format!("more rows than the {declared} the header declares"),
             ));
         }
         let mut r = [0u32; K];
@@ -194,16 +295,8 @@ fn read_rows<const K: usize>(
             let raw = parse_int(toks[1 + k], path, line, "vertex")?;
             r[k] = vertex_ref(raw, nodes.index_base, nodes.points.len(), path, line)?;
         }
-        rows.push(r);
-        row_lines.push(line);
-        if rows.len() > declared {
-            return Err(InputError::new(
-                path,
-                line,
-                format!("more rows than the {declared} the header declares"),
-            ));
-        }
-    }
+        Ok(r)
+    })?;
     if rows.len() != declared {
         return Err(InputError::new(
             path,
@@ -214,5 +307,5 @@ fn read_rows<const K: usize>(
             ),
         ));
     }
-    Ok((rows, row_lines))
+    Ok((rows, lines))
 }
