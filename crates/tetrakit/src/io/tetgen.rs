@@ -75,6 +75,9 @@ fn first_row(body: &str, first_line: usize) -> Option<(usize, &str)> {
     })
 }
 
+/// Parsed rows with their line numbers, or the first error.
+type Rows<T> = Result<(Vec<T>, Vec<u32>), InputError>;
+
 /// Parses the rows of `body` in parallel: `parse(tokens, line, ordinal)` for every
 /// meaningful line, in file order. The body is cut at line boundaries; a first pass counts
 /// lines and rows per piece so that every row knows its line number and ordinal, so the
@@ -83,7 +86,7 @@ fn parse_body<T: Send>(
     body: &str,
     first_line: usize,
     parse: impl Fn(&[&str], usize, usize) -> Result<T, InputError> + Sync,
-) -> Result<(Vec<T>, Vec<u32>), InputError> {
+) -> Rows<T> {
     let target = (body.len() / 64).max(1 << 16);
     let bytes = body.as_bytes();
     let mut cuts = vec![0usize];
@@ -117,7 +120,7 @@ fn parse_body<T: Send>(
         line += lines;
         ordinal += rows;
     }
-    let parsed: Vec<Result<(Vec<T>, Vec<u32>), InputError>> = pieces
+    let parsed: Vec<Rows<T>> = pieces
         .par_iter()
         .zip(&starts)
         .map(|(piece, &(line0, ord0))| {
