@@ -64,8 +64,9 @@ pub(super) struct Ctx<'a> {
 
 /// The link triangles of `v` (each `(a, b, c)` with `(v, a, b, c)` positively oriented), or
 /// a witness that `L` is not the edge set of a tetrahedralization.
-pub(super) fn link(ctx: &Ctx, v: u32) -> Result<Vec<[u32; 3]>, Witness> {
-    BUFFERS.with(|b| link_with(ctx, v, &mut b.borrow_mut()))
+/// Appends the link triangles of `v` to `out`.
+pub(super) fn link_into(ctx: &Ctx, v: u32, out: &mut Vec<[u32; 3]>) -> Result<(), Witness> {
+    BUFFERS.with(|b| link_with(ctx, v, &mut b.borrow_mut(), out))
 }
 
 /// Per-thread buffers reused from one vertex to the next (a vertex's work is small, so
@@ -90,7 +91,7 @@ thread_local! {
     static BUFFERS: std::cell::RefCell<Buffers> = std::cell::RefCell::new(Buffers::default());
 }
 
-fn link_with(ctx: &Ctx, v: u32, b: &mut Buffers) -> Result<Vec<[u32; 3]>, Witness> {
+fn link_with(ctx: &Ctx, v: u32, b: &mut Buffers, out: &mut Vec<[u32; 3]>) -> Result<(), Witness> {
     let nb = ctx.g.nbrs(v);
     let k = nb.len();
     let pv = &ctx.pts[v as usize];
@@ -119,10 +120,12 @@ fn link_with(ctx: &Ctx, v: u32, b: &mut Buffers) -> Result<Vec<[u32; 3]>, Witnes
     };
     puncture_free(&lv, &b.edges, &mut b.side, &mut b.keep, &mut b.masks)?;
     let csr = (&mut b.deg, &mut b.fill, &mut b.adj, &mut b.faces);
-    if let Some(f) = faces_from_signs(&lv, ctx.hull, &b.edges, &b.keep, &b.side, csr) {
-        return Ok(f);
+    if faces_from_signs(&lv, ctx.hull, &b.edges, &b.keep, &b.side, csr) {
+        out.extend(b.faces.iter().step_by(3).map(|f| f.map(|x| lv.g(x))));
+        return Ok(());
     }
-    faces_from_rotation(&lv, ctx.hull, &b.edges, &b.keep)
+    out.extend(faces_from_rotation(&lv, ctx.hull, &b.edges, &b.keep)?);
+    Ok(())
 }
 
 /// The link triangles from the exact rotation system of the kept segments.
@@ -148,7 +151,8 @@ fn faces_from_rotation(
 /// candidate only around separating triangles of the link). When every triangle is then
 /// seen from its three edges, the boundary lies on the hull, the Euler characteristic is
 /// right and the link is connected, these are the faces of the link; anything else returns
-/// `None` and the exact rotation system decides (and names the problem).
+/// `false` and the exact rotation system decides (and names the problem). On success the
+/// faces are in `faces`, each three times in a row, local indices.
 /// Scratch for [`faces_from_signs`]: degree prefix sums, fill cursors, adjacency, faces.
 type CsrBuffers<'b> = (
     &'b mut Vec<u32>,
@@ -164,7 +168,7 @@ fn faces_from_signs(
     keep: &[bool],
     side: &[i8],
     (deg, fill, adj, faces): CsrBuffers,
-) -> Option<Vec<[u32; 3]>> {
+) -> bool {
     let k = lv.nb.len();
     deg.clear();
     deg.resize(k + 1, 0);
@@ -224,7 +228,7 @@ fn faces_from_signs(
                         match lv.orient(a as usize, c as usize, *slot as usize) * nearer {
                             1 => {}
                             -1 => continue,
-                            _ => return None,
+                            _ => return false,
                         }
                     }
                     *slot = c;
@@ -239,7 +243,7 @@ fn faces_from_signs(
                     .common_facet(lv.v as usize, lv.g(a) as usize, lv.g(b) as usize)
                     .is_none()
             {
-                return None;
+                return false;
             }
         }
     }
@@ -249,16 +253,16 @@ fn faces_from_signs(
     }
     faces.sort_unstable();
     if !faces.len().is_multiple_of(3) || faces.chunks(3).any(|c| c[0] != c[1] || c[1] != c[2]) {
-        return None;
+        return false;
     }
     let f = faces.len() / 3;
     let euler = k as i64 - kept_edges as i64 + f as i64;
     if euler != if on_hull { 1 } else { 2 }
         || !connected(k, |x| &adj[deg[x] as usize..deg[x + 1] as usize])
     {
-        return None;
+        return false;
     }
-    Some(faces.chunks(3).map(|c| c[0].map(|x| lv.g(x))).collect())
+    true
 }
 
 /// The same oriented triangle, rotated to start at its smallest vertex.
@@ -706,7 +710,13 @@ mod tests {
                 norm(&mut slow);
                 let mut bufs = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
                 let csr = (&mut bufs.0, &mut bufs.1, &mut bufs.2, &mut bufs.3);
-                if let Some(mut fast) = faces_from_signs(&lv, &hull, &edges, &keep, &side, csr) {
+                if faces_from_signs(&lv, &hull, &edges, &keep, &side, csr) {
+                    let mut fast: Vec<[u32; 3]> = bufs
+                        .3
+                        .iter()
+                        .step_by(3)
+                        .map(|f| f.map(|x| lv.g(x)))
+                        .collect();
                     norm(&mut fast);
                     assert_eq!(fast, slow, "vertex {v}");
                     fast_hits += 1;

@@ -248,24 +248,57 @@ fn detect3(
         hull,
     };
     let n = points.len();
-    let links: Vec<Result<Vec<[u32; 3]>, Witness>> = (0..n as u32)
+    // Each rayon piece is a run of consecutive vertices whose link triangles go to one flat
+    // buffer (no allocation per vertex); the first best-ranked witness is kept.
+    let pieces: Vec<(LinkChunk, Option<(u32, Witness)>)> = (0..n as u32)
         .into_par_iter()
-        .map(|v| {
-            let done = counter.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
-            if done.is_multiple_of(8192) || done == n as u64 {
-                progress(done, n as u64);
-            }
-            link::link(&ctx, v)
-        })
+        .with_min_len(1024)
+        .fold(
+            || {
+                (
+                    LinkChunk {
+                        first: u32::MAX,
+                        start: vec![0],
+                        faces: Vec::new(),
+                    },
+                    None,
+                )
+            },
+            |(mut chunk, mut worst): (LinkChunk, Option<(u32, Witness)>), v| {
+                let done = counter.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+                if done.is_multiple_of(8192) || done == n as u64 {
+                    progress(done, n as u64);
+                }
+                if chunk.first == u32::MAX {
+                    chunk.first = v;
+                }
+                let before = chunk.faces.len();
+                if let Err(w) = link::link_into(&ctx, v, &mut chunk.faces) {
+                    chunk.faces.truncate(before);
+                    if worst.as_ref().is_none_or(|(_, b)| w.rank() < b.rank()) {
+                        worst = Some((v, w));
+                    }
+                }
+                chunk.start.push(chunk.faces.len() as u32);
+                (chunk, worst)
+            },
+        )
         .collect();
-    if let Some(w) = links
+    let witness = pieces
         .iter()
-        .filter_map(|r| r.as_ref().err())
-        .min_by_key(|w| w.rank())
-    {
-        return Err(sharpen(points, g, w.clone()));
+        .filter_map(|(_, w)| w.as_ref())
+        .min_by_key(|(v, w)| (w.rank(), *v))
+        .map(|(_, w)| w.clone());
+    if let Some(w) = witness {
+        return Err(sharpen(points, g, w));
     }
-    let mut links: Vec<Vec<[u32; 3]>> = links.into_iter().map(|r| r.unwrap_or_default()).collect();
+    let mut links = Links {
+        chunks: pieces
+            .into_iter()
+            .map(|(c, _)| c)
+            .filter(|c| c.first != u32::MAX)
+            .collect(),
+    };
     phases.mark("links");
     let tets = confirm(&mut links).map_err(|w| sharpen(points, g, w))?;
     phases.mark("confirm");
@@ -366,26 +399,62 @@ fn sorted3(mut f: [u32; 3]) -> [u32; 3] {
     f
 }
 
+/// The link triangles of consecutive runs of vertices, one flat buffer per run.
+struct LinkChunk {
+    first: u32,
+    start: Vec<u32>,
+    faces: Vec<[u32; 3]>,
+}
+
+/// The link triangles of every vertex, in runs.
+struct Links {
+    chunks: Vec<LinkChunk>,
+}
+
+impl Links {
+    fn of(&self, v: u32) -> &[[u32; 3]] {
+        let c = &self.chunks[self.chunks.partition_point(|c| c.first <= v) - 1];
+        let i = (v - c.first) as usize;
+        &c.faces[c.start[i] as usize..c.start[i + 1] as usize]
+    }
+
+    /// Every vertex with its link triangles.
+    fn iter(&self) -> impl Iterator<Item = (u32, &[[u32; 3]])> {
+        self.chunks.iter().flat_map(|c| {
+            c.start
+                .windows(2)
+                .enumerate()
+                .map(move |(i, w)| (c.first + i as u32, &c.faces[w[0] as usize..w[1] as usize]))
+        })
+    }
+}
+
 /// Step 4: keep each tetrahedron found from its smallest vertex and confirm it from the
 /// other three; every link triangle must be accounted for. Sorts each link in place.
-fn confirm(links: &mut [Vec<[u32; 3]>]) -> Result<Vec<[u32; 4]>, Witness> {
+fn confirm(links: &mut Links) -> Result<Vec<[u32; 4]>, Witness> {
     let tets: Vec<[u32; 4]> = links
+        .chunks
         .par_iter()
-        .enumerate()
-        .flat_map_iter(|(v, fs)| {
-            let v = v as u32;
-            fs.iter()
-                .filter(move |f| f.iter().all(|&x| x > v))
-                .map(move |f| [v, f[0], f[1], f[2]])
+        .flat_map_iter(|c| {
+            c.start.windows(2).enumerate().flat_map(move |(i, w)| {
+                let v = c.first + i as u32;
+                c.faces[w[0] as usize..w[1] as usize]
+                    .iter()
+                    .filter(move |f| f.iter().all(|&x| x > v))
+                    .map(move |f| [v, f[0], f[1], f[2]])
+            })
         })
         .collect();
-    let total: usize = links.iter().map(Vec::len).sum();
-    links.par_iter_mut().for_each(|fs| {
-        fs.iter_mut().for_each(|f| *f = sorted3(*f));
-        fs.sort_unstable();
+    let total: usize = links.chunks.iter().map(|c| c.faces.len()).sum();
+    links.chunks.par_iter_mut().for_each(|c| {
+        for w in c.start.windows(2) {
+            let fs = &mut c.faces[w[0] as usize..w[1] as usize];
+            fs.iter_mut().for_each(|f| *f = sorted3(*f));
+            fs.sort_unstable();
+        }
     });
-    let links: &[Vec<[u32; 3]>] = links;
-    let found = |u: u32, f: [u32; 3]| links[u as usize].binary_search(&sorted3(f)).is_ok();
+    let links: &Links = links;
+    let found = |u: u32, f: [u32; 3]| links.of(u).binary_search(&sorted3(f)).is_ok();
     let unconfirmed = tets.par_iter().find_any(|t| {
         (1..4).any(|i| {
             let o: Vec<u32> = (0..4).filter(|&j| j != i).map(|j| t[j]).collect();
@@ -397,11 +466,11 @@ fn confirm(links: &mut [Vec<[u32; 3]>]) -> Result<Vec<[u32; 4]>, Witness> {
     }
     if total != 4 * tets.len() {
         // Some link triangle's tetrahedron was not found from its smallest vertex.
-        for (u, fs) in links.iter().enumerate() {
+        for (u, fs) in links.iter() {
             for f in fs {
-                let mut t = [u as u32, f[0], f[1], f[2]];
+                let mut t = [u, f[0], f[1], f[2]];
                 t.sort_unstable();
-                if t[0] != u as u32 && !found(t[0], [t[1], t[2], t[3]]) {
+                if t[0] != u && !found(t[0], [t[1], t[2], t[3]]) {
                     return Err(unconfirmed_witness(t, &found));
                 }
             }
@@ -442,22 +511,40 @@ mod tests {
     #[test]
     fn confirmation_names_the_missing_vertex() {
         // Positive tetrahedron (0,1,2,3): link triangles oriented so (v, face) is positive.
+        let links = |per: Vec<Vec<[u32; 3]>>| {
+            let mut start = vec![0u32];
+            let mut faces = Vec::new();
+            for fs in per {
+                faces.extend(fs);
+                start.push(faces.len() as u32);
+            }
+            Links {
+                chunks: vec![LinkChunk {
+                    first: 0,
+                    start,
+                    faces,
+                }],
+            }
+        };
         let full = vec![
             vec![[1, 2, 3]],
             vec![[0, 3, 2]],
             vec![[0, 1, 3]],
             vec![[0, 2, 1]],
         ];
-        assert_eq!(confirm(&mut full.clone()).unwrap(), vec![[0, 1, 2, 3]]);
+        assert_eq!(
+            confirm(&mut links(full.clone())).unwrap(),
+            vec![[0, 1, 2, 3]]
+        );
         let mut missing = full.clone();
         missing[3].clear();
-        let w = confirm(&mut missing).unwrap_err();
+        let w = confirm(&mut links(missing)).unwrap_err();
         assert_eq!(w.kind, WitnessKind::UnconfirmedTetrahedron);
         assert_eq!(w.vertices, vec![0, 1, 2, 3]);
         assert!(w.detail.contains("3 of its vertices"), "{}", w.detail);
         // Found from a vertex other than its smallest only.
-        let mut stray = vec![vec![], vec![[0, 3, 2]], vec![], vec![]];
-        let w = confirm(&mut stray).unwrap_err();
+        let stray = vec![vec![], vec![[0, 3, 2]], vec![], vec![]];
+        let w = confirm(&mut links(stray)).unwrap_err();
         assert_eq!(w.kind, WitnessKind::UnconfirmedTetrahedron);
         assert!(w.detail.contains("1 of its vertices"), "{}", w.detail);
     }
