@@ -252,7 +252,7 @@ fn detect3(
     // buffer (no allocation per vertex); the first best-ranked witness is kept.
     let pieces: Vec<(LinkChunk, Option<(u32, Witness)>)> = (0..n as u32)
         .into_par_iter()
-        .with_min_len(1024)
+        .with_min_len(16)
         .fold(
             || {
                 (
