@@ -122,25 +122,17 @@ pub(super) fn local_crossing(points: &[Point3], g: &Graph, around: &[u32]) -> Op
     }
     for (i, &(a, b)) in segs.iter().enumerate() {
         for &(c, d) in &segs[i + 1..] {
-            match segments_meet(p(a), p(b), p(c), p(d)) {
-                Some(SegmentMeet::Cross) => {
-                    return Some(Witness::new(
-                        WitnessKind::CrossingSegments,
-                        vec![a, b, c, d],
-                        vec![[a, b], [c, d]],
-                        format!("segments (#{a}, #{b}) and (#{c}, #{d}) cross"),
-                    ));
-                }
-                Some(SegmentMeet::Overlap) => {
-                    return Some(Witness::new(
-                        WitnessKind::CrossingSegments,
-                        vec![a, b, c, d],
-                        vec![[a, b], [c, d]],
-                        format!("segments (#{a}, #{b}) and (#{c}, #{d}) overlap"),
-                    ));
-                }
-                _ => {}
-            }
+            let how = match segments_meet(p(a), p(b), p(c), p(d)) {
+                Some(SegmentMeet::Cross) => "cross",
+                Some(SegmentMeet::Overlap) => "overlap",
+                _ => continue,
+            };
+            return Some(Witness::new(
+                WitnessKind::CrossingSegments,
+                vec![a, b, c, d],
+                vec![[a, b], [c, d]],
+                format!("segments (#{a}, #{b}) and (#{c}, #{d}) {how}"),
+            ));
         }
     }
     None

@@ -168,6 +168,50 @@ fn numbering_base(
     Ok(idx)
 }
 
+/// Checks a row's index (`base + ordinal`) and that the header declared enough rows.
+fn check_row_index(
+    path: &Path,
+    toks: &[&str],
+    line: usize,
+    ordinal: usize,
+    (base, declared, what): (i64, usize, &str),
+) -> Result<(), InputError> {
+    let idx = parse_int(toks[0], path, line, "index")?;
+    let expect = base + ordinal as i64;
+    if idx != expect {
+        return Err(InputError::new(
+            path,
+            line,
+            format!("{what} numbered {idx}, expected {expect}"),
+        ));
+    }
+    if ordinal >= declared {
+        return Err(InputError::new(
+            path,
+            line,
+            format!("more {what}s than the {declared} the header declares"),
+        ));
+    }
+    Ok(())
+}
+
+/// The number of rows read must be the number the header declared.
+fn check_row_count(
+    path: &Path,
+    found: usize,
+    declared: usize,
+    what: &str,
+) -> Result<(), InputError> {
+    if found != declared {
+        return Err(InputError::new(
+            path,
+            0,
+            format!("header declares {declared} {what}s but the file has {found} (truncated?)"),
+        ));
+    }
+    Ok(())
+}
+
 fn read_node(path: &Path) -> Result<Input, InputError> {
     let text = read_text(path)?;
     let (hline, h, body, first_line) = split_header(path, &text)?;
@@ -193,38 +237,14 @@ fn read_node(path: &Path) -> Result<Input, InputError> {
                 ),
             ));
         }
-        let idx = parse_int(toks[0], path, line, "point index")?;
-        let expect = base + ordinal as i64;
-        if idx != expect {
-            return Err(InputError::new(
-                path,
-                line,
-                format!("point numbered {idx}, expected {expect}"),
-            ));
-        }
-        if ordinal >= declared {
-            return Err(InputError::new(
-                path,
-                line,
-                format!("more points than the {declared} the header declares"),
-            ));
-        }
+        check_row_index(path, toks, line, ordinal, (base, declared, "point"))?;
         let mut p = [0.0; 3];
         for k in 0..dim {
             p[k] = parse_coord(toks[1 + k], path, line)?;
         }
         Ok(p)
     })?;
-    if points.len() != declared {
-        return Err(InputError::new(
-            path,
-            0,
-            format!(
-                "header declares {declared} points but the file has {} (truncated?)",
-                points.len()
-            ),
-        ));
-    }
+    check_row_count(path, points.len(), declared, "point")?;
     if declared == 0 {
         return Err(InputError::new(path, hline, "no points"));
     }
@@ -277,22 +297,7 @@ fn read_rows<const K: usize>(
                 ),
             ));
         }
-        let idx = parse_int(toks[0], path, line, "index")?;
-        let expect = base + ordinal as i64;
-        if idx != expect {
-            return Err(InputError::new(
-                path,
-                line,
-                format!("{what} numbered {idx}, expected {expect}"),
-            ));
-        }
-        if ordinal >= declared {
-            return Err(InputError::new(
-                path,
-                line,
-                format!("more rows than the {declared} the header declares"),
-            ));
-        }
+        check_row_index(path, toks, line, ordinal, (base, declared, what))?;
         let mut r = [0u32; K];
         for k in 0..K {
             let raw = parse_int(toks[1 + k], path, line, "vertex")?;
@@ -300,15 +305,6 @@ fn read_rows<const K: usize>(
         }
         Ok(r)
     })?;
-    if rows.len() != declared {
-        return Err(InputError::new(
-            path,
-            0,
-            format!(
-                "header declares {declared} {what}s but the file has {} (truncated?)",
-                rows.len()
-            ),
-        ));
-    }
+    check_row_count(path, rows.len(), declared, what)?;
     Ok((rows, lines))
 }
