@@ -20,8 +20,10 @@
 #![warn(missing_docs)]
 
 pub mod detect;
+pub mod exact;
 pub mod generate;
 pub mod geom;
 pub mod io;
 pub mod mesh;
+pub mod polyhedra;
 pub mod rng;

@@ -2,6 +2,7 @@
 //! the orientation predicates of [`super::predicates`]. No general-position assumption:
 //! every collinear and coplanar case is classified.
 
+use super::expansion;
 use super::predicates::{
     Point3, collinear3, drop_axis, orient2d, orient3d, projection_axis, strictly_between,
 };
@@ -332,6 +333,79 @@ pub fn triangles_meet_improperly(
     // A vertex of one on the other that is not a shared vertex.
     (0..3).any(|i| !shared(ti[i]) && u.contains(&t[i]))
         || (0..3).any(|k| !ti.contains(&ui[k]) && t.contains(&u[k]))
+}
+
+/// True when the open interiors of two tetrahedra intersect (a degenerate tetrahedron has
+/// an empty interior).
+///
+/// Two convex polytopes have disjoint interiors exactly when a plane puts them on opposite
+/// closed sides; by the separating-axis theorem in 3D such a plane can be taken parallel to
+/// a face of either or to an edge of each. Face planes are [`orient3d`] tests; the
+/// edge-edge planes use the exact expansions of [`super::expansion`].
+///
+/// ```
+/// use tetrakit::geom::tetrahedra_overlap;
+/// let t = [[0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [0.0, 2.0, 0.0], [0.0, 0.0, 2.0]];
+/// let shifted = t.map(|p| [p[0] + 0.5, p[1] + 0.5, p[2] + 0.5]);
+/// let far = t.map(|p| [p[0] + 5.0, p[1], p[2]]);
+/// assert!(tetrahedra_overlap(&t, &shifted));
+/// assert!(!tetrahedra_overlap(&t, &far));
+/// ```
+pub fn tetrahedra_overlap(t: &[Point3; 4], u: &[Point3; 4]) -> bool {
+    if orient3d(&t[0], &t[1], &t[2], &t[3]) == 0 || orient3d(&u[0], &u[1], &u[2], &u[3]) == 0 {
+        return false;
+    }
+    let separates = |side: &dyn Fn(&Point3) -> i8| {
+        let st: Vec<i8> = t.iter().map(side).collect();
+        let su: Vec<i8> = u.iter().map(side).collect();
+        (st.iter().all(|&s| s <= 0) && su.iter().all(|&s| s >= 0))
+            || (st.iter().all(|&s| s >= 0) && su.iter().all(|&s| s <= 0))
+    };
+    let faces = [(0, 1, 2), (0, 1, 3), (0, 2, 3), (1, 2, 3)];
+    for w in [t, u] {
+        for &(i, j, k) in &faces {
+            if separates(&|x: &Point3| orient3d(&w[i], &w[j], &w[k], x)) {
+                return false;
+            }
+        }
+    }
+    let edges = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)];
+    for &(i, j) in &edges {
+        for &(k, l) in &edges {
+            if expansion::parallel(&t[i], &t[j], &u[k], &u[l]) {
+                continue;
+            }
+            let side = |x: &Point3| expansion::edge_edge_side(&t[i], &t[j], &u[k], &u[l], x);
+            if separates(&side) {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+/// True when triangle `tri` (vertex indices `ti`) meets the closed tetrahedron `t`
+/// (indices `tt`) anywhere other than in the simplex spanned by their shared vertices.
+pub fn triangle_meets_tet(tri: &[Point3; 3], ti: [u32; 3], t: &[Point3; 4], tt: &[u32; 4]) -> bool {
+    let s = orient3d(&t[0], &t[1], &t[2], &t[3]);
+    let faces = [(1, 2, 3), (0, 3, 2), (0, 1, 3), (0, 2, 1)];
+    // Quick exit: a face plane with every vertex of tri strictly outside or a corner of
+    // that face.
+    let separated = faces.iter().any(|&(i, j, k)| {
+        (0..3).all(|m| {
+            let v = ti[m];
+            v == tt[i] || v == tt[j] || v == tt[k] || s * orient3d(&t[i], &t[j], &t[k], &tri[m]) > 0
+        })
+    });
+    if separated {
+        return false;
+    }
+    for &(i, j, k) in &faces {
+        if triangles_meet_improperly(&[t[i], t[j], t[k]], [tt[i], tt[j], tt[k]], tri, ti) {
+            return true;
+        }
+    }
+    (0..3).any(|m| !tt.contains(&ti[m]) && point_in_closed_tetrahedron(&tri[m], t))
 }
 
 #[cfg(test)]

@@ -4,17 +4,20 @@
 //! made (DESIGN.md, non-negotiable 1). Nothing here uses a tolerance: floating-point
 //! arithmetic appears only as a filter whose error bound is proven, with an exact fallback.
 
+mod expansion;
 mod hull2;
 mod hull3;
 mod intersect;
 mod predicates;
 
+pub use expansion::{Expansion, det3, edge_edge_side, orient3d_value, parallel};
 pub use hull2::Hull2;
 pub use hull3::{Hull3, affine_dimension};
 pub use intersect::{
     SegmentMeet, cones_overlap, coplanar_triangles_overlap, point_in_closed_tetrahedron,
     point_in_segment_interior, segment_meets_open_tetrahedron, segment_meets_open_triangle,
-    segment_punctures_triangle, segments_meet, triangles_meet_improperly,
+    segment_punctures_triangle, segments_meet, tetrahedra_overlap, triangle_meets_tet,
+    triangles_meet_improperly,
 };
 pub use predicates::{
     ApexPlane, Dir, Frame, MAX_MAGNITUDE, MIN_MAGNITUDE, Plane, Point2, Point3, bounding_box,

@@ -5,9 +5,12 @@
 //! tetrahedra, only the exact predicates of [`crate::geom`].
 
 mod embed;
+pub(crate) mod grid;
+mod surface;
 mod verify;
 mod verify2;
 
+pub use surface::{Polyhedron, SurfaceError};
 pub use verify::{Problem, ProblemKind, Report, verify};
 pub use verify2::verify_triangulation;
 

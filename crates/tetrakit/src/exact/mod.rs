@@ -1,0 +1,399 @@
+//! Exact minimal tetrahedralization by SAT (thesis ch. 3; Below, De Loera and
+//! Richter-Gebert showed the problem NP-complete even for convex polyhedra).
+//!
+//! **Variables.** One per candidate tetrahedron: four vertices of the input spanning a
+//! non-degenerate tetrahedron with no other vertex in its closed set (for a polyhedron,
+//! also meeting no facet improperly and on the inner side of any facet it has). One per
+//! interior edge, implied by the candidates containing it.
+//!
+//! **Clauses.** For every triangle of a candidate, the candidates on each side of its plane:
+//! * at most one per side;
+//! * a triangle inside the domain is used on both sides or on neither;
+//! * a facet of the polyhedron is used exactly once, from inside; a triangle on the hull
+//!   of a point set (its plane supports the set) at most once.
+//!
+//! For a point set, one *anchor* point strictly inside some candidate and on no candidate
+//! triangle is covered by exactly one candidate.
+//!
+//! **Why this is exact.** Count, for a point `x`, the chosen tetrahedra containing it. The
+//! count is constant off the chosen triangles, and crossing a triangle changes it by (uses
+//! on one side) − (uses on the other), which the clauses make 0 inside the domain. So it is
+//! constant on the domain's interior (connected), and equals 1: next to a facet (used once
+//! from inside) for a polyhedron, at the anchor for a point set. Hence the chosen
+//! tetrahedra cover the domain exactly once, meet face to face (an interior face is
+//! matched by exactly one tetrahedron on the other side, and no candidate holds another
+//! vertex), and form a tetrahedralization. Conversely every tetrahedralization satisfies
+//! the clauses. The pairwise "interiors overlap" clauses of a direct encoding are
+//! implied, which keeps the formula near-linear in the number of candidates. Every answer
+//! is still certified afterwards by [`mesh::verify`](crate::mesh::verify).
+//!
+//! **Minimising.** By Euler's formula the number of tetrahedra is `e_i + c`, with `e_i`
+//! the interior edges used and `c = 2·n_b − n − 3` (`n_b` vertices on the boundary; for a
+//! polyhedron `n_b = n` and this is the thesis's `t = e_i + n − 3`). So the solver bounds
+//! a totalizer over the edge variables — far fewer than the tetrahedra — and searches
+//! downward from each solution found until the bound is unsatisfiable.
+
+mod encode;
+
+pub use encode::Domain;
+
+use encode::{Candidates, anchor, candidates};
+use rustsat::encodings::card::{BoundUpper, BoundUpperIncremental, Totalizer};
+use rustsat::instances::{BasicVarManager, ManageVars};
+use rustsat::solvers::{Solve, SolveIncremental, SolverResult};
+use rustsat::types::{Clause, Lit, TernaryVal};
+use std::time::{Duration, Instant};
+
+/// Options of [`minimal_tetrahedralization`].
+#[derive(Clone, Debug, Default)]
+pub struct Options {
+    /// Stop after this long (answer [`Outcome::Undecided`]).
+    pub time_limit: Option<Duration>,
+    /// Also decide whether the minimum is attained by only one tetrahedralization.
+    pub unique: bool,
+}
+
+/// The answer.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Outcome {
+    /// A minimum tetrahedralization (tetrahedra positively oriented).
+    Optimal {
+        /// The tetrahedra.
+        tets: Vec<[u32; 4]>,
+        /// With [`Options::unique`]: whether it is the only minimum one (`None` when the
+        /// time ran out first).
+        unique: Option<bool>,
+        /// When not unique: another minimum tetrahedralization, as the witness.
+        alternative: Option<Vec<[u32; 4]>>,
+    },
+    /// No tetrahedralization exists (the formula is unsatisfiable).
+    Infeasible,
+    /// The time limit was hit; the best bounds on the minimum number of tetrahedra.
+    Undecided {
+        /// The best tetrahedralization found, if any.
+        best: Option<Vec<[u32; 4]>>,
+        /// Proven lower bound.
+        lower: usize,
+    },
+}
+
+/// Size of the problem, reported alongside the outcome.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Stats {
+    /// Candidate tetrahedra.
+    pub candidates: usize,
+    /// Candidate triangles.
+    pub triangles: usize,
+    /// Interior edges (the objective's variables).
+    pub interior_edges: usize,
+    /// SAT calls.
+    pub calls: usize,
+}
+
+/// Why the solver could not run.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum ExactError {
+    /// All points on a plane (or fewer than four): nothing to tetrahedralize.
+    Flat,
+    /// More vertices than the candidate enumeration handles.
+    TooLarge(usize),
+    /// No anchor point could be placed (not expected; reported rather than guessed).
+    NoAnchor,
+}
+
+impl std::fmt::Display for ExactError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ExactError::Flat => write!(f, "the points span no volume"),
+            ExactError::TooLarge(n) => write!(
+                f,
+                "{n} vertices: the exact solver enumerates C(n,4) candidate tetrahedra and accepts at most {MAX_VERTICES}"
+            ),
+            ExactError::NoAnchor => {
+                write!(f, "could not place an anchor point in general position")
+            }
+        }
+    }
+}
+
+impl std::error::Error for ExactError {}
+
+/// The largest input the candidate enumeration accepts.
+pub const MAX_VERTICES: usize = 60;
+
+/// Deadline for the SAT solver's periodic stop check.
+#[derive(Default)]
+struct Deadline(Option<Instant>);
+
+impl batsat::Callbacks for Deadline {
+    fn stop(&self) -> bool {
+        self.0.is_some_and(|d| Instant::now() >= d)
+    }
+}
+
+type Solver = rustsat_batsat::Solver<Deadline>;
+
+/// The minimum number of tetrahedra over all tetrahedralizations of `domain` without
+/// Steiner points, with one that attains it, or a proof that none exists.
+///
+/// ```
+/// use tetrakit::exact::{Domain, Options, Outcome, minimal_tetrahedralization};
+/// use tetrakit::polyhedra::generate;
+/// // Schönhardt's polyhedron has no tetrahedralization.
+/// let s = generate::schonhardt();
+/// let (out, _) = minimal_tetrahedralization(Domain::Polyhedron(&s), &Options::default()).unwrap();
+/// assert_eq!(out, Outcome::Infeasible);
+/// // A cube's corners: 5 tetrahedra at least.
+/// let cube: Vec<[f64; 3]> = (0..8).map(|i| [(i & 1) as f64, ((i >> 1) & 1) as f64, (i >> 2) as f64]).collect();
+/// let (out, _) = minimal_tetrahedralization(Domain::Points(&cube), &Options::default()).unwrap();
+/// let Outcome::Optimal { tets, .. } = out else { panic!() };
+/// assert_eq!(tets.len(), 5);
+/// ```
+pub fn minimal_tetrahedralization(
+    domain: Domain,
+    options: &Options,
+) -> Result<(Outcome, Stats), ExactError> {
+    let start = Instant::now();
+    let pts = domain.points();
+    if pts.len() > MAX_VERTICES {
+        return Err(ExactError::TooLarge(pts.len()));
+    }
+    if crate::geom::affine_dimension(pts) < 3 {
+        return Err(ExactError::Flat);
+    }
+    let cand = candidates(domain);
+    if cand.tets.is_empty() {
+        return Ok((Outcome::Infeasible, Stats::default()));
+    }
+    let mut stats = Stats {
+        candidates: cand.tets.len(),
+        triangles: cand.triangles.len(),
+        interior_edges: cand.interior_edges.len(),
+        calls: 0,
+    };
+    let mut solver = Solver::default();
+    if let Some(limit) = options.time_limit {
+        solver.batsat_mut().cb_mut().0 = Some(start + limit);
+    }
+    let mut vars = BasicVarManager::default();
+    let tet_lits: Vec<Lit> = (0..cand.tets.len()).map(|_| vars.new_lit()).collect();
+    let anchor = match domain {
+        Domain::Points(p) => Some(anchor(p, &cand).ok_or(ExactError::NoAnchor)?),
+        Domain::Polyhedron(_) => None,
+    };
+    add_structure(
+        &mut solver,
+        &mut vars,
+        &cand,
+        &tet_lits,
+        domain,
+        anchor.as_deref(),
+    );
+    let edge_lits: Vec<Lit> = cand
+        .interior_edges
+        .iter()
+        .map(|(_, holders)| {
+            let y = vars.new_lit();
+            for &t in holders {
+                add(&mut solver, &[!tet_lits[t as usize], y]);
+            }
+            y
+        })
+        .collect();
+    let mut totalizer = Totalizer::from(edge_lits.clone());
+    let lower = (cand.offset.max(1)) as usize;
+    let mut best: Option<Vec<[u32; 4]>> = None;
+    let mut bound: Option<usize> = None; // edges allowed
+    loop {
+        let assumptions = match bound {
+            None => Vec::new(),
+            Some(b) => {
+                totalizer
+                    .encode_ub_change(b..=b, &mut solver, &mut vars)
+                    .expect("clause memory");
+                totalizer.enforce_ub(b).expect("encoded")
+            }
+        };
+        stats.calls += 1;
+        match solver.solve_assumps(&assumptions).expect("batsat") {
+            SolverResult::Sat => {
+                let tets = chosen(&solver, &cand, &tet_lits, pts);
+                let used = edge_count(&tets, &cand);
+                best = Some(tets);
+                if used == 0 {
+                    break;
+                }
+                bound = Some(used - 1);
+            }
+            SolverResult::Unsat => break,
+            SolverResult::Interrupted => {
+                return Ok((Outcome::Undecided { best, lower }, stats));
+            }
+        }
+    }
+    let Some(tets) = best else {
+        return Ok((Outcome::Infeasible, stats));
+    };
+    let mut alternative = None;
+    let unique = if options.unique {
+        let b = edge_count(&tets, &cand);
+        totalizer
+            .encode_ub_change(b..=b, &mut solver, &mut vars)
+            .expect("clause memory");
+        let mut assumptions = totalizer.enforce_ub(b).expect("encoded");
+        // Block this solution: some chosen tetrahedron must go.
+        let gate = vars.new_lit();
+        let mut block: Vec<Lit> = chosen_indices(&tets, &cand).map(|i| !tet_lits[i]).collect();
+        block.push(!gate);
+        add(&mut solver, &block);
+        assumptions.push(gate);
+        stats.calls += 1;
+        match solver.solve_assumps(&assumptions).expect("batsat") {
+            SolverResult::Sat => {
+                alternative = Some(chosen(&solver, &cand, &tet_lits, pts));
+                Some(false)
+            }
+            SolverResult::Unsat => Some(true),
+            SolverResult::Interrupted => None,
+        }
+    } else {
+        None
+    };
+    Ok((
+        Outcome::Optimal {
+            tets,
+            unique,
+            alternative,
+        },
+        stats,
+    ))
+}
+
+fn add(solver: &mut Solver, lits: &[Lit]) {
+    solver
+        .add_clause(lits.iter().copied().collect::<Clause>())
+        .expect("batsat accepts clauses");
+}
+
+/// At most one of `lits` (pairwise for few, sequential counter otherwise).
+fn at_most_one(solver: &mut Solver, vars: &mut BasicVarManager, lits: &[Lit]) {
+    if lits.len() <= 6 {
+        for i in 0..lits.len() {
+            for j in i + 1..lits.len() {
+                add(solver, &[!lits[i], !lits[j]]);
+            }
+        }
+        return;
+    }
+    let s: Vec<Lit> = (0..lits.len() - 1).map(|_| vars.new_lit()).collect();
+    for i in 0..lits.len() {
+        if i + 1 < lits.len() {
+            add(solver, &[!lits[i], s[i]]);
+        }
+        if i > 0 {
+            add(solver, &[!s[i - 1], !lits[i]]);
+            if i + 1 < lits.len() {
+                add(solver, &[!s[i - 1], s[i]]);
+            }
+        }
+    }
+}
+
+fn add_structure(
+    solver: &mut Solver,
+    vars: &mut BasicVarManager,
+    cand: &Candidates,
+    tet: &[Lit],
+    domain: Domain,
+    anchor: Option<&[u32]>,
+) {
+    let pts = domain.points();
+    let facets: std::collections::HashSet<[u32; 3]> = match domain {
+        Domain::Polyhedron(p) => p
+            .faces
+            .iter()
+            .map(|&f| {
+                let mut s = f;
+                s.sort_unstable();
+                s
+            })
+            .collect(),
+        Domain::Points(_) => Default::default(),
+    };
+    let lits = |ids: &[u32]| -> Vec<Lit> { ids.iter().map(|&i| tet[i as usize]).collect() };
+    let mut keys: Vec<&[u32; 3]> = cand.triangles.keys().collect();
+    keys.sort_unstable();
+    for key in keys {
+        let usage = &cand.triangles[key];
+        let (pos, neg) = (lits(&usage.pos), lits(&usage.neg));
+        at_most_one(solver, vars, &pos);
+        at_most_one(solver, vars, &neg);
+        if facets.contains(key) {
+            // Candidates on a facet were filtered to its inner side: all on one side.
+            let inner = if pos.is_empty() { &neg } else { &pos };
+            add(solver, inner);
+            continue;
+        }
+        if matches!(domain, Domain::Points(_)) && encode::supporting(pts, key) {
+            continue;
+        }
+        for (side, other) in [(&pos, &neg), (&neg, &pos)] {
+            for &t in side.iter() {
+                let mut c = vec![!t];
+                c.extend(other.iter().copied());
+                add(solver, &c);
+            }
+        }
+    }
+    if let Domain::Polyhedron(p) = domain {
+        // A facet no candidate has: no tetrahedralization.
+        for f in &p.faces {
+            let mut s = *f;
+            s.sort_unstable();
+            if !cand.triangles.contains_key(&s) {
+                add(solver, &[]);
+            }
+        }
+    }
+    if let Some(holders) = anchor {
+        let l = lits(holders);
+        add(solver, &l);
+        at_most_one(solver, vars, &l);
+    }
+}
+
+fn chosen(
+    solver: &Solver,
+    cand: &Candidates,
+    tet: &[Lit],
+    pts: &[crate::geom::Point3],
+) -> Vec<[u32; 4]> {
+    cand.tets
+        .iter()
+        .zip(tet)
+        .filter(|&(_, &l)| solver.lit_val(l).expect("sat") == TernaryVal::True)
+        .map(|(t, _)| {
+            let [a, b, c, d] = t.map(|v| &pts[v as usize]);
+            if crate::geom::orient3d(a, b, c, d) > 0 {
+                *t
+            } else {
+                [t[0], t[2], t[1], t[3]]
+            }
+        })
+        .collect()
+}
+
+fn chosen_indices<'a>(
+    tets: &'a [[u32; 4]],
+    cand: &'a Candidates,
+) -> impl Iterator<Item = usize> + 'a {
+    tets.iter().map(move |t| {
+        let mut s = *t;
+        s.sort_unstable();
+        cand.tets.binary_search(&s).expect("chosen from candidates")
+    })
+}
+
+fn edge_count(tets: &[[u32; 4]], cand: &Candidates) -> usize {
+    (tets.len() as i64 - cand.offset).max(0) as usize
+}

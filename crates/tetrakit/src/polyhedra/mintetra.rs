@@ -1,0 +1,323 @@
+//! Algorithm MINTETRA (thesis §3.4, Theorems 3.7–3.8), for augmented and multi-level
+//! BP-polyhedra.
+//!
+//! The polyhedron is trimmed until nothing is left:
+//! * a vertex `u` of degree 3 is a stacked tetrahedron `u u1 u2 u3` (Step 2.1);
+//! * two adjacent vertices `u, w` of degree 4 are the middle of a BP-net
+//!   `B(p u' u w u'' q)` (Theorem 3.4, Step 2.3(a)); the three tetrahedra
+//!   `pqu'u, pquw, pqwu''` are removed and the polar edge `pq` added. The rest of a longer
+//!   BP-net becomes stacked and goes by the first rule.
+//!
+//! Departures from the thesis, and why:
+//! * **Exact containment.** The thesis assumes the trimmed pieces lie in the polyhedron
+//!   (properness). Here every tetrahedron is checked exactly against the *current* surface
+//!   before it is removed: it must lie on the inner side of the facets it replaces and no
+//!   other facet may meet it except in shared vertices and edges (hash-grid filter, then
+//!   exact triangle tests). A piece that fails waits; it is retried after other trims,
+//!   because removing material elsewhere can unblock it. So a YES is a shelling: every
+//!   tetrahedron lay inside what was left, which is a tetrahedralization by induction, and
+//!   the caller still certifies it with [`mesh::verify`](crate::mesh::verify).
+//! * **Work queues instead of the vertex scan.** Degree-3 vertices go first, then
+//!   degree-4 ones; a trim re-queues only the vertices whose degree changed. Each trim
+//!   costs O(degree) plus the grid query, so the whole run is O(n) on inputs whose facets
+//!   are of comparable size (the thesis's bound is O(n²)).
+//! * **Levels.** A BP trim's level is one more than the highest level that touched its two
+//!   middle vertices (a trim touches the vertices whose rings it changes); stacked trims
+//!   pass levels on without adding. `levels` is the highest level, so 1 for a BP-polyhedron
+//!   (Theorem 3.5), 2 for a two-level one (Theorem 3.6), h for the conjecture's h-level
+//!   ones (§3.5).
+
+use super::{Polyhedron, SurfaceGraph};
+use crate::geom::{Point3, orient3d, tetrahedra_overlap, triangle_meets_tet};
+use crate::mesh::grid::{TriangleGrid, aabb};
+use std::collections::VecDeque;
+
+/// What MINTETRA found.
+#[derive(Clone, Debug)]
+pub struct Mintetra {
+    /// True when the whole polyhedron was trimmed away.
+    pub yes: bool,
+    /// The tetrahedra removed, positively oriented, in removal order.
+    pub tets: Vec<[u32; 4]>,
+    /// The polar edges added (the diagonals of the tetrahedralization).
+    pub polar_edges: Vec<[u32; 2]>,
+    /// The highest BP level (0: stacked polyhedron).
+    pub levels: u32,
+    /// For every level `h >= 1`, how many BP trims it had.
+    pub trims_per_level: Vec<usize>,
+    /// On NO: the facets of what is left.
+    pub remaining: Vec<[u32; 3]>,
+    /// On NO: why nothing more could be trimmed.
+    pub reason: String,
+}
+
+/// Runs MINTETRA on a validated polyhedron.
+///
+/// ```
+/// use tetrakit::polyhedra::{Polyhedron, mintetra};
+/// // A triangular bipyramid: poles 3 and 4, equator 0 1 2.
+/// let pts = vec![[1.0, 0.0, 0.0], [-0.5, 0.9, 0.0], [-0.5, -0.9, 0.0], [0.0, 0.0, 1.0], [0.0, 0.0, -1.0]];
+/// let faces = vec![[0, 1, 3], [1, 2, 3], [2, 0, 3], [1, 0, 4], [2, 1, 4], [0, 2, 4]];
+/// let p = Polyhedron::new(pts, faces).unwrap();
+/// let m = mintetra(&p);
+/// assert!(m.yes);
+/// assert_eq!(m.tets.len(), 2); // two stacked tetrahedra, n - 3
+/// ```
+pub fn mintetra(p: &Polyhedron) -> Mintetra {
+    let mut t = Trimmer::new(p);
+    t.run();
+    t.finish()
+}
+
+struct Trimmer<'a> {
+    points: &'a [Point3],
+    g: SurfaceGraph,
+    grid: TriangleGrid,
+    deg3: VecDeque<u32>,
+    deg4: VecDeque<u32>,
+    blocked: Vec<u32>,
+    level: Vec<u32>,
+    tets: Vec<[u32; 4]>,
+    polar: Vec<[u32; 2]>,
+    per_level: Vec<usize>,
+}
+
+impl<'a> Trimmer<'a> {
+    fn new(p: &'a Polyhedron) -> Self {
+        let mut grid = TriangleGrid::new(&p.points, p.faces.len());
+        for f in &p.faces {
+            grid.insert(&p.points, *f);
+        }
+        let g = SurfaceGraph::new(p);
+        let n = p.points.len();
+        let mut t = Trimmer {
+            points: &p.points,
+            g,
+            grid,
+            deg3: VecDeque::new(),
+            deg4: VecDeque::new(),
+            blocked: Vec::new(),
+            level: vec![0; n],
+            tets: Vec::with_capacity(n),
+            polar: Vec::new(),
+            per_level: Vec::new(),
+        };
+        (0..n as u32).for_each(|v| t.enqueue(v));
+        t
+    }
+
+    fn enqueue(&mut self, v: u32) {
+        match self.g.degree(v) {
+            3 => self.deg3.push_back(v),
+            4 => self.deg4.push_back(v),
+            _ => {}
+        }
+    }
+
+    fn run(&mut self) {
+        loop {
+            let progressed_before = self.tets.len();
+            while self.g.alive() > 0 {
+                let Some(u) = self.deg3.pop_front().or_else(|| self.deg4.pop_front()) else {
+                    break;
+                };
+                let trimmed = match self.g.degree(u) {
+                    3 => self.trim_stacked(u),
+                    4 => self.trim_bp(u),
+                    _ => continue,
+                };
+                if !trimmed && self.g.is_alive(u) {
+                    self.blocked.push(u);
+                }
+            }
+            if self.g.alive() == 0
+                || self.blocked.is_empty()
+                || self.tets.len() == progressed_before
+            {
+                return;
+            }
+            for u in std::mem::take(&mut self.blocked) {
+                self.enqueue(u);
+            }
+        }
+    }
+
+    fn p(&self, v: u32) -> &Point3 {
+        &self.points[v as usize]
+    }
+
+    /// Step 2.1: a degree-3 vertex.
+    fn trim_stacked(&mut self, u: u32) -> bool {
+        let r = self.g.ring(u).to_vec();
+        // Inner side of the facet (u, r0, r1) is negative.
+        if orient3d(self.p(u), self.p(r[0]), self.p(r[1]), self.p(r[2])) >= 0 {
+            return false;
+        }
+        let tet = [u, r[0], r[1], r[2]];
+        if self.g.alive() == 4 {
+            self.push_tet(tet);
+            self.g.clear();
+            return true;
+        }
+        let removed = [[u, r[0], r[1]], [u, r[1], r[2]], [u, r[2], r[0]]];
+        if !self.fits(&tet, &removed) {
+            return false;
+        }
+        self.push_tet(tet);
+        let lvl = self.level[u as usize];
+        self.g.kill(u);
+        for &x in &r {
+            self.g.unlink(x, u);
+            self.level[x as usize] = self.level[x as usize].max(lvl);
+        }
+        self.grid.insert(self.points, [r[0], r[1], r[2]]);
+        r.iter().for_each(|&x| self.enqueue(x));
+        true
+    }
+
+    /// Step 2.3(a): a degree-4 vertex with a degree-4 neighbour.
+    fn trim_bp(&mut self, u: u32) -> bool {
+        let ring = self.g.ring(u).to_vec();
+        for &w in &ring {
+            if self.g.degree(w) == 4 && self.try_bp(u, w) {
+                return true;
+            }
+        }
+        false
+    }
+
+    fn try_bp(&mut self, u: u32, w: u32) -> bool {
+        // ring(u) = [w, a, b, c]: facets (u,w,a), (u,a,b), (u,b,c), (u,c,w).
+        let ru = self.g.ring_from(u, w).expect("w adjacent to u");
+        let (a, b, c) = (ru[1], ru[2], ru[3]);
+        // ring(w) = [u, c, d, a]: facets (w,u,c), (w,c,d), (w,d,a), (w,a,u).
+        let Some(rw) = self.g.ring_from(w, u) else {
+            return false;
+        };
+        if rw[1] != c || rw[3] != a {
+            return false;
+        }
+        let d = rw[2];
+        let closed = b == d; // a bipyramid over the triangle u w b
+        if closed && self.g.alive() != 5 {
+            return false;
+        }
+        if !closed && self.g.adjacent(a, c) {
+            return false; // pq already an edge: trimming would pinch the surface
+        }
+        let pieces = [[a, c, b, u], [a, c, u, w], [a, c, w, d]];
+        // Each piece lies on the inner side of a facet it replaces.
+        let inner = [(u, a, b, c), (u, w, a, c), (w, c, d, a)];
+        if inner
+            .iter()
+            .any(|&(x, y, z, o)| orient3d(self.p(x), self.p(y), self.p(z), self.p(o)) >= 0)
+        {
+            return false;
+        }
+        let removed = [
+            [u, w, a],
+            [u, a, b],
+            [u, b, c],
+            [u, c, w],
+            [w, c, d],
+            [w, d, a],
+        ];
+        if !closed && !pieces.iter().all(|t| self.fits(t, &removed)) {
+            return false;
+        }
+        let geo = |t: &[u32; 4]| t.map(|v| *self.p(v));
+        for (i, j) in [(0, 1), (1, 2), (0, 2)] {
+            if tetrahedra_overlap(&geo(&pieces[i]), &geo(&pieces[j])) {
+                return false;
+            }
+        }
+        let lvl = self.level[u as usize].max(self.level[w as usize]) + 1;
+        if self.per_level.len() < lvl as usize {
+            self.per_level.resize(lvl as usize, 0);
+        }
+        self.per_level[lvl as usize - 1] += 1;
+        pieces.iter().for_each(|&t| self.push_tet(t));
+        if closed {
+            self.g.clear();
+            return true;
+        }
+        self.polar.push([a.min(c), a.max(c)]);
+        self.g.kill(u);
+        self.g.kill(w);
+        self.g.contract(a, u, w, c);
+        self.g.contract(c, w, u, a);
+        self.g.unlink(b, u);
+        self.g.unlink(d, w);
+        for x in [a, b, c, d] {
+            self.level[x as usize] = self.level[x as usize].max(lvl);
+        }
+        self.grid.insert(self.points, [a, b, c]);
+        self.grid.insert(self.points, [c, d, a]);
+        [a, b, c, d].iter().for_each(|&x| self.enqueue(x));
+        true
+    }
+
+    fn push_tet(&mut self, t: [u32; 4]) {
+        let [a, b, c, d] = t.map(|v| self.p(v));
+        self.tets.push(if orient3d(a, b, c, d) > 0 {
+            t
+        } else {
+            [t[0], t[2], t[1], t[3]]
+        });
+    }
+
+    /// True when the tetrahedron meets no current facet other than `removed` except in
+    /// shared vertices and edges.
+    fn fits(&self, tet: &[u32; 4], removed: &[[u32; 3]]) -> bool {
+        let geo = tet.map(|v| *self.p(v));
+        let b = aabb(&[&geo[0], &geo[1], &geo[2], &geo[3]]);
+        let norm = |f: &[u32; 3]| {
+            let mut s = *f;
+            s.sort_unstable();
+            s
+        };
+        let removed: Vec<[u32; 3]> = removed.iter().map(norm).collect();
+        let blocked = self.grid.visit(&b, |f| {
+            if !self.g.has_facet(f[0], f[1], f[2]) || removed.contains(&norm(f)) {
+                return false;
+            }
+            let tri = f.map(|v| *self.p(v));
+            let fb = aabb(&[&tri[0], &tri[1], &tri[2]]);
+            crate::mesh::grid::boxes_meet(&b, &fb) && triangle_meets_tet(&tri, *f, &geo, tet)
+        });
+        !blocked
+    }
+
+    fn finish(self) -> Mintetra {
+        let yes = self.g.alive() == 0;
+        let remaining = if yes { Vec::new() } else { self.g.facets() };
+        let reason = if yes {
+            String::new()
+        } else {
+            let low: Vec<u32> = (0..self.g.len() as u32)
+                .filter(|&v| self.g.is_alive(v) && self.g.degree(v) <= 4)
+                .collect();
+            if low.is_empty() {
+                format!(
+                    "{} vertices are left and every one has degree 5 or more: no stacked tetrahedron or BP-net remains",
+                    self.g.alive()
+                )
+            } else {
+                format!(
+                    "{} vertices are left; the {} of degree 3 or 4 start no stacked tetrahedron or BP-net that lies inside what is left",
+                    self.g.alive(),
+                    low.len()
+                )
+            }
+        };
+        Mintetra {
+            yes,
+            tets: self.tets,
+            polar_edges: self.polar,
+            levels: self.per_level.len() as u32,
+            trims_per_level: self.per_level,
+            remaining,
+            reason,
+        }
+    }
+}

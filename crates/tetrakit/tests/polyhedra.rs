@@ -1,0 +1,210 @@
+//! Chapter 3 differential tests: MINTETRA against the exact SAT solver on generated
+//! augmented BP-polyhedra (Theorem 3.5, Corollaries 3.6–3.7), the §3.5 non-members, and
+//! the thesis's counting lemma t = e_i + n − 3.
+
+use tetrakit::exact::{Domain, Options, Outcome, minimal_tetrahedralization};
+use tetrakit::polyhedra::generate::BpParams;
+use tetrakit::polyhedra::{
+    Polyhedron, SurfaceGraph, bp_nets, certify, generate, is_proper, mintetra, proper_nets_disjoint,
+};
+
+fn exact(p: &Polyhedron, unique: bool) -> Outcome {
+    minimal_tetrahedralization(
+        Domain::Polyhedron(p),
+        &Options {
+            unique,
+            ..Options::default()
+        },
+    )
+    .expect("small input")
+    .0
+}
+
+fn check_against_solver(p: &Polyhedron, polar: usize, what: &str) -> Option<bool> {
+    let m = mintetra(p);
+    assert!(m.yes, "{what}: MINTETRA said NO: {}", m.reason);
+    certify(p, &m.tets).unwrap_or_else(|e| panic!("{what}: {e}"));
+    let n = p.points.len();
+    assert_eq!(
+        m.tets.len(),
+        n - 3 + m.polar_edges.len(),
+        "{what}: t = e_i + n - 3"
+    );
+    assert_eq!(
+        m.polar_edges.len(),
+        polar,
+        "{what}: one polar edge per glued BP-net"
+    );
+    match exact(p, true) {
+        Outcome::Optimal {
+            tets,
+            unique,
+            alternative,
+        } => {
+            certify(p, &tets).unwrap_or_else(|e| panic!("{what}: solver output: {e}"));
+            if let Some(alt) = &alternative {
+                certify(p, alt).unwrap_or_else(|e| panic!("{what}: alternative: {e}"));
+                assert_eq!(alt.len(), tets.len());
+                eprintln!(
+                    "{what}: NOT UNIQUE n={} deg={:?}",
+                    p.points.len(),
+                    (0..p.points.len() as u32)
+                        .map(|v| SurfaceGraph::new(p).degree(v))
+                        .collect::<Vec<_>>()
+                );
+            }
+            assert_eq!(tets.len(), m.tets.len(), "{what}: MINTETRA is not minimal");
+            unique
+        }
+        other => panic!("{what}: solver said {other:?}"),
+    }
+}
+
+#[test]
+fn mintetra_is_minimal_and_unique_on_bp_polyhedra() {
+    let (mut cases, mut hypothesis) = (0, 0);
+    for seed in 0..300u64 {
+        let params = BpParams {
+            core: 4 + (seed % 4) as usize,
+            nets: 1 + (seed % 3) as usize,
+            levels: 1,
+            max_m: 3 + (seed % 3) as usize,
+            hide_all: false,
+            augment: (seed % 3) as usize,
+            seed,
+        };
+        let (p, polar) = generate::bp_polyhedron(params);
+        if p.points.len() > 16 {
+            continue;
+        }
+        let unique = check_against_solver(&p, polar, &format!("BP seed {seed}"));
+        if proper_nets_disjoint(&p) {
+            assert_eq!(
+                unique,
+                Some(true),
+                "seed {seed}: Theorem 3.5 / Corollary 3.6"
+            );
+            hypothesis += 1;
+        }
+        cases += 1;
+    }
+    assert!(cases >= 250, "only {cases} cases");
+    eprintln!("BP: {cases} cases, {hypothesis} with disjoint proper nets");
+}
+
+#[test]
+fn mintetra_is_minimal_and_unique_on_two_level_bp_polyhedra() {
+    let mut cases = 0;
+    for seed in 0..220u64 {
+        let params = BpParams {
+            core: 4 + (seed % 3) as usize,
+            nets: 1 + (seed % 2) as usize,
+            levels: 2,
+            max_m: 3 + (seed % 2) as usize,
+            hide_all: false,
+            augment: (seed % 2) as usize,
+            seed: 1000 + seed,
+        };
+        let (p, polar) = generate::bp_polyhedron(params);
+        if p.points.len() > 16 {
+            continue;
+        }
+        let m = mintetra(&p);
+        assert!(m.levels <= 2);
+        let unique = check_against_solver(&p, polar, &format!("two-level seed {seed}"));
+        let _ = unique;
+        cases += 1;
+    }
+    assert!(cases >= 150, "only {cases} cases");
+}
+
+#[test]
+fn schonhardt_is_not_tetrahedralizable() {
+    let s = generate::schonhardt();
+    let m = mintetra(&s);
+    assert!(!m.yes);
+    assert_eq!(m.remaining.len(), 8);
+    assert_eq!(exact(&s, false), Outcome::Infeasible);
+    // It is a BP-net (a bipyramid, Figure 3.20) that is not proper.
+    let g = SurfaceGraph::new(&s);
+    let nets = bp_nets(&g);
+    assert!(!nets.is_empty());
+    assert!(nets.iter().all(|b| !is_proper(&s, &g, b)));
+}
+
+#[test]
+fn schonhardt_with_three_bp_nets_is_convex_and_not_a_bp_polyhedron() {
+    let p = generate::schonhardt_bp();
+    assert_eq!(p.points.len(), 12);
+    let m = mintetra(&p);
+    assert!(!m.yes, "§3.5: trimming leaves Schönhardt's polyhedron");
+    match exact(&p, false) {
+        Outcome::Optimal { tets, .. } => {
+            certify(&p, &tets).unwrap();
+            assert!(tets.len() >= p.points.len() - 3);
+        }
+        other => panic!("a convex polyhedron is tetrahedralizable: {other:?}"),
+    }
+}
+
+#[test]
+fn stacked_polyhedra_need_no_diagonal() {
+    for seed in 0..50 {
+        let p = generate::stacked(4 + seed as usize % 12, seed);
+        let m = mintetra(&p);
+        assert!(m.yes && m.polar_edges.is_empty());
+        assert_eq!(m.tets.len(), p.points.len() - 3);
+        certify(&p, &m.tets).unwrap();
+    }
+}
+
+#[test]
+fn convex_points_minimum_obeys_euler() {
+    // Points in convex position: t = e_i + n - 3 for every tetrahedralization, and the
+    // minimum is at least n - 3.
+    for m in 4..8 {
+        let p = generate::bipyramid(m, m as u64);
+        let (out, stats) =
+            minimal_tetrahedralization(Domain::Points(&p.points), &Options::default()).unwrap();
+        let Outcome::Optimal { tets, .. } = out else {
+            panic!()
+        };
+        let n = p.points.len();
+        assert!(tets.len() >= n - 3);
+        let report = tetrakit::mesh::verify(&p.points, &tets, None);
+        assert!(report.is_valid(), "{:?}", report.problems);
+        assert!(stats.candidates > 0);
+        // A bipyramid over an m-gon: m tetrahedra around the axis, or (m - 2) * 2 via the
+        // equator's triangulation; the minimum is the smaller.
+        assert_eq!(tets.len(), m.min(2 * (m - 2)), "m = {m}");
+    }
+}
+
+#[test]
+fn h_level_conjecture_holds_on_small_instances() {
+    // §3.5's conjecture: for h >= 2 the polar edges of all levels give a minimum. A
+    // mismatch here would be a counterexample, to be kept as a test of its own.
+    let mut cases = 0;
+    for seed in 0..120u64 {
+        let params = BpParams {
+            core: 4,
+            nets: 1,
+            levels: 3,
+            max_m: 3,
+            augment: (seed % 2) as usize,
+            hide_all: true,
+            seed: 5000 + seed,
+        };
+        let (p, polar) = generate::bp_polyhedron(params);
+        if p.points.len() > 18 {
+            continue;
+        }
+        let m = mintetra(&p);
+        if m.levels < 3 {
+            continue;
+        }
+        check_against_solver(&p, polar, &format!("3-level seed {seed}"));
+        cases += 1;
+    }
+    assert!(cases >= 30, "only {cases} three-level cases");
+}
