@@ -63,20 +63,84 @@ pub fn run() -> u8 {
     out!(
         "   tetrahedron laid over two others, the kind of error a check without embedding tests accepts."
     );
-    let Some(bad) = generate::add_overlapping_tet(&rand, 1) else {
-        out!("  (no pair of neighbours admits an overlapping tetrahedron)");
-        return 0;
-    };
-    let report = bad.verify_convex();
-    out!(
-        "  {} problem(s); first: {}",
-        report.problem_count,
-        report
-            .problems
-            .first()
-            .map(|p| p.detail.as_str())
-            .unwrap_or("-")
-    );
+    match generate::add_overlapping_tet(&rand, 1) {
+        None => out!("  (no pair of neighbours admits an overlapping tetrahedron)"),
+        Some(bad) => {
+            let report = bad.verify_convex();
+            out!(
+                "  {} problem(s); first: {}",
+                report.problem_count,
+                report
+                    .problems
+                    .first()
+                    .map(|p| p.detail.as_str())
+                    .unwrap_or("-")
+            );
+        }
+    }
+    minimal_tetrahedralizations();
     out!("\nTry: tetrakit generate kuhn --size 10 -o /tmp/k.ele && tetrakit detect /tmp/k.edge");
+    out!(
+        "     tetrakit generate two-level -o /tmp/p.off && tetrakit mintetra /tmp/p.off --confirm"
+    );
     0
+}
+
+/// Chapter 3: MINTETRA against the lower bound and the exact solver.
+fn minimal_tetrahedralizations() {
+    use tetrakit::exact::{Domain, Options, Outcome, minimal_tetrahedralization};
+    use tetrakit::polyhedra::{
+        self,
+        generate::{self, BpParams},
+    };
+    out!("\n5. Minimal tetrahedralizations (thesis ch. 3): an augmented BP-polyhedron.");
+    let params = BpParams {
+        core: 10,
+        nets: 2,
+        levels: 1,
+        max_m: 4,
+        augment: 3,
+        hide_all: false,
+        seed: 7,
+    };
+    let (p, _) = generate::bp_polyhedron(params);
+    let start = Instant::now();
+    let m = polyhedra::mintetra(&p);
+    let ms = start.elapsed().as_secs_f64() * 1e3;
+    let certified = polyhedra::certify(&p, &m.tets).is_ok();
+    out!(
+        "  MINTETRA: {} tetrahedra for {} vertices (lower bound n - 3 = {}), polar edges {:?}, certified: {certified} [{ms:.1} ms]",
+        m.tets.len(),
+        p.points.len(),
+        p.points.len() - 3,
+        m.polar_edges
+    );
+    let start = Instant::now();
+    let opts = Options {
+        unique: true,
+        ..Options::default()
+    };
+    match minimal_tetrahedralization(Domain::Polyhedron(&p), &opts) {
+        Ok((Outcome::Optimal { tets, unique, .. }, stats)) => out!(
+            "  exact SAT solver: minimum {} over {} candidate tetrahedra, unique: {} [{:.1} ms]",
+            tets.len(),
+            stats.candidates,
+            unique.map_or("?".to_string(), |u| u.to_string()),
+            start.elapsed().as_secs_f64() * 1e3
+        ),
+        other => out!("  exact SAT solver: {other:?}"),
+    }
+    let s = generate::schonhardt();
+    let verdict = match minimal_tetrahedralization(Domain::Polyhedron(&s), &Options::default()) {
+        Ok((Outcome::Infeasible, _)) => "no tetrahedralization exists (proved)",
+        _ => "unexpected",
+    };
+    out!("  Schönhardt's twisted prism: {verdict}");
+    let sbp = generate::schonhardt_bp();
+    let m = polyhedra::mintetra(&sbp);
+    out!(
+        "  Schönhardt with three BP-nets (Figure 3.21, convex): MINTETRA says {} ({})",
+        if m.yes { "YES" } else { "NO" },
+        m.reason
+    );
 }

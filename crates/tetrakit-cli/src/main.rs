@@ -11,6 +11,7 @@ macro_rules! out {
 }
 
 mod demo;
+mod poly;
 mod run;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
@@ -36,6 +37,13 @@ enum Cmd {
     /// Validate a tetrahedral mesh (orientation, face pairing, closed boundary; with
     /// --convex, that it tetrahedralizes the convex hull of its vertices).
     Check(CheckArgs),
+    /// Minimal tetrahedralization of an augmented (multi-level) BP-polyhedron by
+    /// Algorithm MINTETRA (thesis §3.4), or NO with what is left.
+    Mintetra(MintetraArgs),
+    /// Tetrahedralize a polyhedron (faces given) or the convex hull of a point set
+    /// without Steiner points, by an exact SAT solver; with --minimal, with the fewest
+    /// tetrahedra. Exit 1 with a proof when impossible, 3 at the time limit.
+    Tetrahedralize(TetrahedralizeArgs),
     /// Write a generated instance.
     Generate(GenerateArgs),
     /// A short tour on built-in examples.
@@ -65,6 +73,43 @@ struct CheckArgs {
     /// Print one JSON object on stdout.
     #[arg(long)]
     json: bool,
+}
+
+#[derive(Args)]
+struct MintetraArgs {
+    /// A polyhedron: .off, .obj with `f` lines, .face (with .node) or .json with "faces".
+    input: PathBuf,
+    /// Print one JSON object on stdout.
+    #[arg(long)]
+    json: bool,
+    /// Write the tetrahedra: .ele (with .node), .vtk or .json.
+    #[arg(long)]
+    output: Option<PathBuf>,
+    /// Also run the exact solver (up to 60 vertices) to confirm minimality and uniqueness.
+    #[arg(long)]
+    confirm: bool,
+}
+
+#[derive(Args)]
+struct TetrahedralizeArgs {
+    /// A polyhedron (.off, .obj with faces, .face, .json with "faces") or a point set
+    /// (.node, .xyz, .obj/.json without faces; then its convex hull, every point used).
+    input: PathBuf,
+    /// Find a tetrahedralization with the fewest tetrahedra (otherwise any).
+    #[arg(long)]
+    minimal: bool,
+    /// With --minimal, also decide whether the minimum one is unique.
+    #[arg(long)]
+    unique: bool,
+    /// Give up after this many seconds (exit 3 with the best bounds).
+    #[arg(long)]
+    time_limit: Option<f64>,
+    /// Print one JSON object on stdout.
+    #[arg(long)]
+    json: bool,
+    /// Write the tetrahedra: .ele (with .node), .vtk or .json.
+    #[arg(long)]
+    output: Option<PathBuf>,
 }
 
 #[derive(Args)]
@@ -110,6 +155,44 @@ enum GenKind {
         #[command(flatten)]
         common: GenCommon,
     },
+    /// A stacked polyhedron (tetrahedra glued face to face; no diagonal needed).
+    Stacked {
+        /// Number of vertices.
+        #[arg(long)]
+        n: usize,
+        #[command(flatten)]
+        out: PolyOut,
+    },
+    /// A convex bipyramid over an m-gon.
+    Bipyramid {
+        /// Vertices of the middle polygon.
+        #[arg(long)]
+        m: usize,
+        #[command(flatten)]
+        out: PolyOut,
+    },
+    /// An augmented BP-polyhedron (thesis §3.3.2).
+    BpPolyhedron(BpArgs),
+    /// An augmented two-level BP-polyhedron of Theorem 3.6's kind.
+    TwoLevel(BpArgs),
+    /// An augmented h-level BP-polyhedron (§3.5's conjecture).
+    HLevel {
+        /// Levels h.
+        #[arg(long, default_value_t = 3)]
+        levels: usize,
+        #[command(flatten)]
+        bp: BpArgs,
+    },
+    /// Schönhardt's twisted prism: no tetrahedralization.
+    Schonhardt {
+        #[command(flatten)]
+        out: PolyOut,
+    },
+    /// Schönhardt's polyhedron with three BP-nets, convex (Figure 3.21).
+    SchonhardtBp {
+        #[command(flatten)]
+        out: PolyOut,
+    },
     /// Points on two skew lines: Θ(n²) tetrahedra, the thesis's worst case for m.
     SkewLines {
         /// Number of points (half on each line).
@@ -118,6 +201,34 @@ enum GenKind {
         #[command(flatten)]
         common: GenCommon,
     },
+}
+
+#[derive(Args, Clone)]
+struct PolyOut {
+    /// Output file: .off, .obj, .face (with .node) or .json.
+    #[arg(long, short)]
+    output: PathBuf,
+    /// Seed for random choices.
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+}
+
+#[derive(Args, Clone)]
+struct BpArgs {
+    /// Vertices of the stacked core.
+    #[arg(long, default_value_t = 6)]
+    core: usize,
+    /// BP-nets glued (on the first level).
+    #[arg(long, default_value_t = 2)]
+    nets: usize,
+    /// Path length m of each BP-net is drawn from 3..=MAX_M.
+    #[arg(long, default_value_t = 4)]
+    max_m: usize,
+    /// Tetrahedra stacked on the result (an augmented BP-polyhedron).
+    #[arg(long, default_value_t = 2)]
+    augment: usize,
+    #[command(flatten)]
+    out: PolyOut,
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug)]
@@ -136,8 +247,47 @@ fn main() -> ExitCode {
     let code = match cli.cmd {
         Cmd::Detect(a) => run::detect(&a.input, a.json, a.output.as_deref()),
         Cmd::Check(a) => run::check(&a.input, a.convex, a.json),
-        Cmd::Generate(a) => run::generate(a.kind),
+        Cmd::Mintetra(a) => poly::mintetra(&a.input, a.json, a.output.as_deref(), a.confirm),
+        Cmd::Tetrahedralize(a) => poly::tetrahedralize(poly::TetraArgs {
+            input: &a.input,
+            minimal: a.minimal,
+            unique: a.unique,
+            time_limit: a.time_limit,
+            as_json: a.json,
+            output: a.output.as_deref(),
+        }),
+        Cmd::Generate(a) => match polyhedron_kind(a.kind) {
+            Ok((kind, out)) => poly::generate(kind, out.seed, &out.output),
+            Err(kind) => run::generate(kind),
+        },
         Cmd::Demo => demo::run(),
     };
     ExitCode::from(code)
+}
+
+/// Splits the polyhedron generators from the mesh generators.
+fn polyhedron_kind(kind: GenKind) -> Result<(poly::PolyGen, PolyOut), GenKind> {
+    use tetrakit::polyhedra::generate::BpParams;
+    let bp = |a: BpArgs, levels: usize, hide_all: bool| {
+        let params = BpParams {
+            core: a.core,
+            nets: a.nets,
+            levels,
+            max_m: a.max_m,
+            augment: a.augment,
+            hide_all,
+            seed: a.out.seed,
+        };
+        (poly::PolyGen::Bp(params), a.out)
+    };
+    Ok(match kind {
+        GenKind::Stacked { n, out } => (poly::PolyGen::Stacked { n }, out),
+        GenKind::Bipyramid { m, out } => (poly::PolyGen::Bipyramid { m }, out),
+        GenKind::BpPolyhedron(a) => bp(a, 1, false),
+        GenKind::TwoLevel(a) => bp(a, 2, false),
+        GenKind::HLevel { levels, bp: a } => bp(a, levels, true),
+        GenKind::Schonhardt { out } => (poly::PolyGen::Schonhardt, out),
+        GenKind::SchonhardtBp { out } => (poly::PolyGen::SchonhardtBp, out),
+        other => return Err(other),
+    })
 }

@@ -273,6 +273,7 @@ pub fn generate(kind: GenKind) -> u8 {
                 common,
             )
         }
+        _ => return fail("internal error: a polyhedron generator reached the mesh writer"),
     };
     write_generated(&name, mesh, &common)
 }

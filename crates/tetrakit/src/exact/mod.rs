@@ -51,6 +51,9 @@ pub struct Options {
     pub time_limit: Option<Duration>,
     /// Also decide whether the minimum is attained by only one tetrahedralization.
     pub unique: bool,
+    /// Stop at the first tetrahedralization found (decides existence only; the answer
+    /// is then [`Outcome::Optimal`] only if it happens to meet the lower bound).
+    pub any: bool,
 }
 
 /// The answer.
@@ -65,6 +68,11 @@ pub enum Outcome {
         unique: Option<bool>,
         /// When not unique: another minimum tetrahedralization, as the witness.
         alternative: Option<Vec<[u32; 4]>>,
+    },
+    /// With [`Options::any`]: a tetrahedralization, not proven minimum.
+    Found {
+        /// The tetrahedra.
+        tets: Vec<[u32; 4]>,
     },
     /// No tetrahedralization exists (the formula is unsatisfiable).
     Infeasible,
@@ -220,6 +228,14 @@ pub fn minimal_tetrahedralization(
                 let tets = chosen(&solver, &cand, &tet_lits, pts);
                 let used = edge_count(&tets, &cand);
                 best = Some(tets);
+                if options.any && used > 0 {
+                    return Ok((
+                        Outcome::Found {
+                            tets: best.unwrap_or_default(),
+                        },
+                        stats,
+                    ));
+                }
                 if used == 0 {
                     break;
                 }

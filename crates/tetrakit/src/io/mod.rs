@@ -10,10 +10,11 @@
 
 mod json;
 mod obj;
+mod off;
 mod tetgen;
 mod write;
 
-pub use write::{write_edges, write_mesh, write_vtk};
+pub use write::{write_edges, write_mesh, write_surface, write_vtk};
 
 use crate::geom::{Point3, coordinate_in_range, lex_cmp};
 use std::fmt;
@@ -100,6 +101,7 @@ pub fn read_input(path: &Path) -> Result<Input, InputError> {
     let input = match ext.as_str() {
         "node" | "edge" | "ele" | "face" => tetgen::read(path, &ext)?,
         "obj" => obj::read(path)?,
+        "off" => off::read(path)?,
         "json" => json::read(path)?,
         "xyz" | "txt" => read_xyz(path)?,
         _ => {
@@ -107,13 +109,47 @@ pub fn read_input(path: &Path) -> Result<Input, InputError> {
                 path,
                 0,
                 format!(
-                    "unknown input format '.{ext}' (expected .node, .edge, .ele, .face, .obj, .json, .xyz or .txt)"
+                    "unknown input format '.{ext}' (expected .node, .edge, .ele, .face, .obj, .off, .json, .xyz or .txt)"
                 ),
             ));
         }
     };
     check_distinct_points(&input)?;
     Ok(input)
+}
+
+/// Reads a polyhedron (`.off`, `.obj` with `f` lines, `.face` with its `.node`, or
+/// `.json` with `"faces"`) and checks that it is a simple polyhedron; the error names the
+/// faces and vertices in the file's numbering.
+///
+/// ```
+/// let dir = std::env::temp_dir().join("tetrakit-doc-poly");
+/// std::fs::create_dir_all(&dir).unwrap();
+/// let off = "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+/// std::fs::write(dir.join("t.off"), off).unwrap();
+/// let (_, p) = tetrakit::io::read_polyhedron(&dir.join("t.off")).unwrap();
+/// assert_eq!(p.faces.len(), 4);
+/// std::fs::write(dir.join("open.off"), "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n").unwrap();
+/// assert!(tetrakit::io::read_polyhedron(&dir.join("open.off")).is_err());
+/// ```
+pub fn read_polyhedron(path: &Path) -> Result<(Input, crate::mesh::Polyhedron), InputError> {
+    let input = read_input(path)?;
+    if input.faces.is_empty() {
+        return Err(InputError::new(
+            path,
+            0,
+            "no faces: a polyhedron needs triangles (.off, .obj 'f' lines, .face, or JSON \"faces\")",
+        ));
+    }
+    let poly =
+        crate::mesh::Polyhedron::new(input.points.clone(), input.faces.clone()).map_err(|e| {
+            InputError::new(
+                path,
+                0,
+                format!("not a simple polyhedron: {}", e.describe(input.index_base)),
+            )
+        })?;
+    Ok((input, poly))
 }
 
 pub(crate) fn read_text(path: &Path) -> Result<String, InputError> {

@@ -140,3 +140,57 @@ fn unsupported(ext: &str, expected: &str) -> io::Error {
         format!("cannot write '.{ext}' files here (expected {expected})"),
     )
 }
+
+/// Writes a triangulated surface: `.off`, `.obj`, `.face` (with `.node`) or `.json`
+/// (`points` and `faces`). TetGen and OBJ indices start at `base` (OBJ always at 1).
+pub fn write_surface(
+    path: &Path,
+    points: &[Point3],
+    faces: &[[u32; 3]],
+    base: u32,
+) -> io::Result<()> {
+    match ext(path).as_str() {
+        "off" => {
+            let mut s = format!("OFF\n{} {} 0\n", points.len(), faces.len());
+            for p in points {
+                let _ = writeln!(s, "{} {} {}", p[0], p[1], p[2]);
+            }
+            for f in faces {
+                let _ = writeln!(s, "3 {} {} {}", f[0], f[1], f[2]);
+            }
+            save(path, s)
+        }
+        "obj" => {
+            let mut s = String::new();
+            for p in points {
+                let _ = writeln!(s, "v {} {} {}", p[0], p[1], p[2]);
+            }
+            for f in faces {
+                let _ = writeln!(s, "f {} {} {}", f[0] + 1, f[1] + 1, f[2] + 1);
+            }
+            save(path, s)
+        }
+        "face" => {
+            save(&path.with_extension("node"), node_text(points, base))?;
+            let mut s = format!("{} 0\n", faces.len());
+            for (i, f) in faces.iter().enumerate() {
+                let _ = writeln!(
+                    s,
+                    "{} {} {} {}",
+                    i as u32 + base,
+                    f[0] + base,
+                    f[1] + base,
+                    f[2] + base
+                );
+            }
+            save(path, s)
+        }
+        "json" => save(
+            path,
+            serde_json::json!({ "points": points, "faces": faces }).to_string(),
+        ),
+        other => Err(io::Error::other(format!(
+            "cannot write a surface as '.{other}' (use .off, .obj, .face or .json)"
+        ))),
+    }
+}

@@ -12,15 +12,20 @@
 //!   `s v1 … v(m-1) t` around `pq`'s midpoint, in the exterior wedge, every `v_j` joined
 //!   to `p` and `q`. Trimming it restores `pq`, which becomes the polar edge.
 
-use super::Polyhedron;
-use crate::geom::{Point3, orient3d};
+use super::{Polyhedron, SurfaceGraph};
+use crate::geom::{Point3, orient3d, triangle_meets_tet};
+use crate::mesh::grid::{TriangleGrid, aabb};
 use crate::rng::Rng;
+use std::collections::{HashMap, HashSet, VecDeque};
 
-/// A polyhedron under construction; faces always outward.
-#[derive(Clone)]
+/// A polyhedron under construction: faces (always outward) as a directed-edge map, a
+/// grid over them for the local exact checks, and the faces in creation order so that
+/// stacking subdivides evenly.
 struct Builder {
     points: Vec<Point3>,
-    faces: Vec<[u32; 3]>,
+    next: HashMap<(u32, u32), u32>,
+    grid: TriangleGrid,
+    order: VecDeque<[u32; 3]>,
 }
 
 fn sub(a: &Point3, b: &Point3) -> [f64; 3] {
@@ -45,7 +50,19 @@ fn axpy(p: &Point3, s: f64, d: &[f64; 3]) -> Point3 {
 }
 
 impl Builder {
-    fn tetrahedron(rng: &mut Rng) -> Builder {
+    /// A builder from a valid polyhedron, sized for about `expected` vertices.
+    fn from_polyhedron(p: &Polyhedron, expected: usize) -> Builder {
+        let mut b = Builder {
+            points: p.points.clone(),
+            next: HashMap::new(),
+            grid: TriangleGrid::new(&p.points, 2 * expected),
+            order: VecDeque::new(),
+        };
+        p.faces.iter().for_each(|&f| b.add_face(f));
+        b
+    }
+
+    fn tetrahedron(rng: &mut Rng, expected: usize) -> Builder {
         let mut j = || rng.unit() * 0.1;
         let points = vec![
             [1.0 + j(), 1.0 + j(), 1.0 + j()],
@@ -54,68 +71,99 @@ impl Builder {
             [-1.0 + j(), -1.0 + j(), 1.0 + j()],
         ];
         let faces = vec![[0, 1, 2], [0, 2, 3], [0, 3, 1], [1, 3, 2]];
-        Builder::checked(points, faces).expect("a tetrahedron")
+        let p = Polyhedron::new(points, faces).expect("a tetrahedron");
+        Builder::from_polyhedron(&p, expected)
     }
 
-    fn checked(points: Vec<Point3>, faces: Vec<[u32; 3]>) -> Option<Builder> {
-        Polyhedron::new(points, faces).ok().map(|p| Builder {
-            points: p.points,
-            faces: p.faces,
-        })
+    fn faces(&self) -> Vec<[u32; 3]> {
+        let mut f: Vec<[u32; 3]> = self
+            .next
+            .iter()
+            .filter(|&(&(a, b), &c)| a < b && a < c)
+            .map(|(&(a, b), &c)| [a, b, c])
+            .collect();
+        f.sort_unstable();
+        f
+    }
+
+    fn has_face(&self, f: &[u32; 3]) -> bool {
+        self.next.get(&(f[0], f[1])) == Some(&f[2])
+    }
+
+    fn add_face(&mut self, f: [u32; 3]) {
+        for r in 0..3 {
+            self.next.insert((f[r], f[(r + 1) % 3]), f[(r + 2) % 3]);
+        }
+        self.grid.insert(&self.points, f);
+        self.order.push_back(f);
+    }
+
+    fn remove_face(&mut self, f: [u32; 3]) {
+        for r in 0..3 {
+            self.next.remove(&(f[r], f[(r + 1) % 3]));
+        }
     }
 
     fn finish(self) -> Polyhedron {
-        Polyhedron::new(self.points, self.faces).expect("generators keep polyhedra simple")
+        let faces = self.faces();
+        Polyhedron::new(self.points, faces).expect("generators keep polyhedra simple")
     }
 
-    /// Stacks a tetrahedron on facet `f`; `None` when no height tried keeps it simple.
-    fn stack(&self, f: usize, rng: &mut Rng) -> Option<Builder> {
-        let [a, b, c] = self.faces[f];
-        let [pa, pb, pc] = [a, b, c].map(|v| self.points[v as usize]);
+    /// True when the tetrahedron meets no current face but `replaced` except in shared
+    /// vertices and edges (exact).
+    fn free(&self, tet: [u32; 4], replaced: &[[u32; 3]]) -> bool {
+        let geo = tet.map(|v| self.points[v as usize]);
+        let b = aabb(&[&geo[0], &geo[1], &geo[2], &geo[3]]);
+        let same = |f: &[u32; 3], g: &[u32; 3]| {
+            (0..3).any(|r| [g[r], g[(r + 1) % 3], g[(r + 2) % 3]] == *f)
+        };
+        !self.grid.visit(&b, |f| {
+            if !self.has_face(f) || replaced.iter().any(|g| same(f, g)) {
+                return false;
+            }
+            let tri = f.map(|v| self.points[v as usize]);
+            triangle_meets_tet(&tri, *f, &geo, &tet)
+        })
+    }
+
+    /// Stacks a tetrahedron on face `f`; false when no height tried fits.
+    fn stack(&mut self, f: [u32; 3], rng: &mut Rng) -> bool {
+        let [a, b, c] = f;
+        let [pa, pb, pc] = f.map(|v| self.points[v as usize]);
         let n = cross(&sub(&pb, &pa), &sub(&pc, &pa));
         let size = dot(&n, &n).sqrt().sqrt();
         let n = unit(n);
-        let (wa, wb) = (0.2 + 0.6 * rng.unit(), rng.unit());
-        let (wa, wb, wc) = (wa / 2.0 + 0.15, (1.0 - wa) * wb / 2.0 + 0.15, 0.0);
-        let wc = 1.0 - wa - wb + wc;
+        let wa = 0.25 + 0.5 * rng.unit();
+        let wb = (1.0 - wa) * (0.25 + 0.5 * rng.unit());
+        let wc = 1.0 - wa - wb;
         let centre = [0, 1, 2].map(|i| wa * pa[i] + wb * pb[i] + wc * pc[i]);
-        let mut h = size * (0.3 + 0.4 * rng.unit());
-        for _ in 0..12 {
-            let x = self.points.len() as u32;
-            let mut next = self.clone();
-            next.points.push(axpy(&centre, h, &n));
-            next.faces[f] = [a, b, x];
-            next.faces.extend([[b, c, x], [c, a, x]]);
-            if let Some(ok) = Builder::checked(next.points, next.faces) {
-                return Some(ok);
+        let mut h = size * (0.2 + 0.3 * rng.unit());
+        let x = self.points.len() as u32;
+        for _ in 0..10 {
+            self.points.push(axpy(&centre, h, &n));
+            let outside = orient3d(&pa, &pb, &pc, &self.points[x as usize]) > 0;
+            if outside && self.free([a, b, c, x], &[f]) {
+                self.remove_face(f);
+                for g in [[a, b, x], [b, c, x], [c, a, x]] {
+                    self.add_face(g);
+                }
+                return true;
             }
+            self.points.pop();
             h *= 0.5;
         }
-        None
+        false
     }
 
-    /// The two facets on edge `pq`: `(p, q, s)` and `(q, p, t)`, as face indices and apexes.
-    fn wings(&self, p: u32, q: u32) -> Option<(usize, u32, usize, u32)> {
-        let mut first = None;
-        let mut second = None;
-        for (i, f) in self.faces.iter().enumerate() {
-            for r in 0..3 {
-                let (x, y, z) = (f[r], f[(r + 1) % 3], f[(r + 2) % 3]);
-                if x == p && y == q {
-                    first = Some((i, z));
-                }
-                if x == q && y == p {
-                    second = Some((i, z));
-                }
-            }
-        }
-        let ((i, s), (j, t)) = (first?, second?);
-        Some((i, s, j, t))
+    /// The apexes `s`, `t` of the faces `(p, q, s)` and `(q, p, t)`.
+    fn wings(&self, p: u32, q: u32) -> Option<(u32, u32)> {
+        Some((*self.next.get(&(p, q))?, *self.next.get(&(q, p))?))
     }
 
-    /// Glues a BP-net with path length `m` (m - 1 new vertices) on edge `pq`.
-    fn glue(&self, p: u32, q: u32, m: usize, rng: &mut Rng) -> Option<(Builder, Vec<u32>)> {
-        let (fi, s, fj, t) = self.wings(p, q)?;
+    /// Glues a BP-net with path length `m` (m - 1 new vertices) on edge `pq`; returns the
+    /// new vertices.
+    fn glue(&mut self, p: u32, q: u32, m: usize, rng: &mut Rng) -> Option<Vec<u32>> {
+        let (s, t) = self.wings(p, q)?;
         let pt = |v: u32| self.points[v as usize];
         let (pp, pq) = (pt(p), pt(q));
         let len = dot(&sub(&pq, &pp), &sub(&pq, &pp)).sqrt();
@@ -135,7 +183,7 @@ impl Builder {
                 a
             }
         };
-        // Outward normals of the two facets point into the exterior wedge.
+        // Outward normals of the two faces point into the exterior wedge.
         let n1 = unit(cross(&sub(&pq, &pp), &sub(&pt(s), &pp)));
         let n2 = unit(cross(&sub(&pp, &pq), &sub(&pt(t), &pq)));
         let out = [n1[0] + n2[0], n1[1] + n2[1], n1[2] + n2[2]];
@@ -145,33 +193,44 @@ impl Builder {
         } else {
             phi_t - std::f64::consts::TAU
         };
-        let mut r = len * (0.12 + 0.08 * rng.unit());
-        for _ in 0..12 {
-            let mut next = self.clone();
+        let mut r = len * (0.1 + 0.08 * rng.unit());
+        let first = self.points.len() as u32;
+        let replaced = [[p, q, s], [q, p, t]];
+        for _ in 0..10 {
             let mut path = vec![s];
             for j in 1..m {
                 let a = sweep * (j as f64 + 0.3 * (rng.unit() - 0.5)) / m as f64;
                 let along = 0.5 + 0.2 * (rng.unit() - 0.5);
                 let base = axpy(&pp, along * len, &e);
                 let dir = [0, 1, 2].map(|i| a.cos() * ds[i] + a.sin() * e2[i]);
-                next.points.push(axpy(&base, r, &dir));
-                path.push(next.points.len() as u32 - 1);
+                self.points.push(axpy(&base, r, &dir));
+                path.push(self.points.len() as u32 - 1);
             }
             path.push(t);
-            let mut faces: Vec<[u32; 3]> = next
-                .faces
-                .iter()
-                .enumerate()
-                .filter(|&(i, _)| i != fi && i != fj)
-                .map(|(_, f)| *f)
-                .collect();
-            for w in path.windows(2) {
-                faces.push([p, w[1], w[0]]);
-                faces.push([q, w[0], w[1]]);
+            let pts = &self.points;
+            let sign = |w: &[u32]| {
+                orient3d(
+                    &pts[p as usize],
+                    &pts[q as usize],
+                    &pts[w[0] as usize],
+                    &pts[w[1] as usize],
+                )
+            };
+            let s0 = sign(&path[0..2]);
+            let ok = s0 != 0
+                && path.windows(2).all(|w| sign(w) == s0)
+                && path
+                    .windows(2)
+                    .all(|w| self.free([p, q, w[0], w[1]], &replaced));
+            if ok {
+                replaced.iter().for_each(|&f| self.remove_face(f));
+                for w in path.windows(2) {
+                    self.add_face([p, w[1], w[0]]);
+                    self.add_face([q, w[0], w[1]]);
+                }
+                return Some((first..first + m as u32 - 1).collect());
             }
-            if let Some(ok) = Builder::checked(next.points, faces) {
-                return Some((ok, path[1..m].to_vec()));
-            }
+            self.points.truncate(first as usize);
             r *= 0.5;
         }
         None
@@ -179,13 +238,36 @@ impl Builder {
 
     fn edges(&self) -> Vec<[u32; 2]> {
         let mut e: Vec<[u32; 2]> = self
-            .faces
-            .iter()
-            .flat_map(|f| [[f[0], f[1]], [f[1], f[2]], [f[2], f[0]]])
-            .filter(|e| e[0] < e[1])
+            .next
+            .keys()
+            .filter(|(a, b)| a < b)
+            .map(|&(a, b)| [a, b])
             .collect();
         e.sort_unstable();
         e
+    }
+
+    /// Stacks `k` tetrahedra, on the oldest faces first.
+    fn stack_more(&mut self, k: usize, rng: &mut Rng) {
+        let mut added = 0;
+        let mut misses = 0;
+        while added < k {
+            let Some(f) = self.order.pop_front() else {
+                break;
+            };
+            if !self.has_face(&f) {
+                continue;
+            }
+            if self.stack(f, rng) {
+                added += 1;
+            } else {
+                self.order.push_back(f);
+                misses += 1;
+                if misses > 10 * (k + 10) {
+                    break;
+                }
+            }
+        }
     }
 }
 
@@ -198,20 +280,9 @@ impl Builder {
 /// ```
 pub fn stacked(n: usize, seed: u64) -> Polyhedron {
     let mut rng = Rng::new(seed);
-    let mut b = Builder::tetrahedron(&mut rng);
-    stack_more(&mut b, n.max(4) - 4, &mut rng);
+    let mut b = Builder::tetrahedron(&mut rng, n);
+    b.stack_more(n.max(4) - 4, &mut rng);
     b.finish()
-}
-
-fn stack_more(b: &mut Builder, k: usize, rng: &mut Rng) {
-    let mut added = 0;
-    while added < k {
-        let f = rng.below(b.faces.len());
-        if let Some(next) = b.stack(f, rng) {
-            *b = next;
-            added += 1;
-        }
-    }
 }
 
 /// A bipyramid `B(p v0 … v(m-1) v0 q)` over a convex `m`-gon, `m >= 3`.
@@ -286,45 +357,39 @@ impl Default for BpParams {
 /// ```
 pub fn bp_polyhedron(params: BpParams) -> (Polyhedron, usize) {
     let mut rng = Rng::new(params.seed);
-    let mut b = Builder::tetrahedron(&mut rng);
-    stack_more(&mut b, params.core.max(4) - 4, &mut rng);
+    let core = params.core.max(4);
+    let expected =
+        core + params.nets * params.max_m * (1 << params.levels.min(20)) + params.augment;
+    let mut b = Builder::tetrahedron(&mut rng, expected);
+    b.stack_more(core - 4, &mut rng);
     let mut polar = 0;
-    // Edges eligible for the next round: any edge for the first, then edges between a
-    // pole and an inner vertex of the previous round's nets.
-    let mut eligible: Vec<Vec<[u32; 2]>> = vec![b.edges()];
+    // Edges eligible for the next round, in groups of which at most one is used: any
+    // edge for the first round, then edges between a pole and an inner vertex of the
+    // previous round's nets.
+    let mut groups: Vec<Vec<[u32; 2]>> = {
+        let mut all = b.edges();
+        rng.shuffle(&mut all);
+        all.into_iter().map(|e| vec![e]).collect()
+    };
     for level in 0..params.levels.max(1) {
-        let mut next_eligible = Vec::new();
-        let mut used = std::collections::HashSet::new();
-        let groups = if level == 0 {
-            let mut all = eligible[0].clone();
-            rng.shuffle(&mut all);
-            all.into_iter()
-                .take(params.nets * 4)
-                .map(|e| vec![e])
-                .collect()
-        } else {
-            std::mem::take(&mut eligible)
-        };
+        let mut next_groups = Vec::new();
+        let mut used = HashSet::new();
         let mut glued = 0;
-        for group in groups {
-            if glued == params.nets && level == 0 {
+        for mut group in std::mem::take(&mut groups) {
+            if level == 0 && glued == params.nets {
                 break;
             }
-            let mut group = group;
             rng.shuffle(&mut group);
             for [p, q] in group {
-                let Some((_, s, _, t)) = b.wings(p, q) else {
+                let Some((s, t)) = b.wings(p, q) else {
                     continue;
                 };
-                if used.contains(&p)
-                    || used.contains(&q)
-                    || (!params.hide_all && (used.contains(&s) || used.contains(&t)))
-                {
+                let busy = |x: &u32| used.contains(x);
+                if busy(&p) || busy(&q) || (!params.hide_all && (busy(&s) || busy(&t))) {
                     continue;
                 }
                 let m = 3 + rng.below(params.max_m.max(3) - 2);
-                if let Some((nb, inner)) = b.glue(p, q, m, &mut rng) {
-                    b = nb;
+                if let Some(inner) = b.glue(p, q, m, &mut rng) {
                     used.extend([p, q]);
                     if !params.hide_all {
                         used.extend([s, t]);
@@ -332,9 +397,9 @@ pub fn bp_polyhedron(params: BpParams) -> (Polyhedron, usize) {
                     used.extend(inner.iter().copied());
                     let around = |v: u32| vec![[p.min(v), p.max(v)], [q.min(v), q.max(v)]];
                     if params.hide_all {
-                        next_eligible.extend(inner.iter().map(|&v| around(v)));
+                        next_groups.extend(inner.iter().map(|&v| around(v)));
                     } else {
-                        next_eligible.push(inner.iter().flat_map(|&v| around(v)).collect());
+                        next_groups.push(inner.iter().flat_map(|&v| around(v)).collect());
                     }
                     polar += 1;
                     glued += 1;
@@ -342,20 +407,15 @@ pub fn bp_polyhedron(params: BpParams) -> (Polyhedron, usize) {
                 }
             }
         }
-        eligible = next_eligible;
+        groups = next_groups;
     }
-    stack_more(&mut b, params.augment, &mut rng);
+    b.stack_more(params.augment, &mut rng);
     (b.finish(), polar)
 }
 
 /// Schönhardt's twisted prism (§2.6, Figure 2.11(a)): six vertices, three reflex edges,
 /// no tetrahedralization.
 pub fn schonhardt() -> Polyhedron {
-    let b = schonhardt_builder();
-    b.finish()
-}
-
-fn schonhardt_builder() -> Builder {
     let tri = |z: f64, twist: f64| -> Vec<Point3> {
         (0..3)
             .map(|i| {
@@ -368,8 +428,8 @@ fn schonhardt_builder() -> Builder {
             })
             .collect()
     };
-    let mut points = tri(0.0, 0.0); // q1 q2 q3 (bottom)
-    points.extend(tri(2.0, 0.5)); // p1 p2 p3 (top), twisted
+    let mut points = tri(0.0, 0.0); // bottom
+    points.extend(tri(2.0, 0.5)); // top, twisted
     for diag in [true, false] {
         let mut faces = vec![[0, 2, 1], [3, 4, 5]];
         for i in 0..3u32 {
@@ -381,24 +441,25 @@ fn schonhardt_builder() -> Builder {
                 faces.extend([[qi, qj, pj], [qi, pj, pi]]);
             }
         }
-        if let Some(b) = Builder::checked(points.clone(), faces)
-            && reflex_edges(&b).len() == 3
+        if let Ok(p) = Polyhedron::new(points.clone(), faces)
+            && reflex_edges(&p).len() == 3
         {
-            return b;
+            return p;
         }
     }
     unreachable!("one diagonal choice gives Schönhardt's polyhedron")
 }
 
-/// Edges whose dihedral angle exceeds π: `(p, q)` with facets `pqs`, `qpt` and `t`
-/// strictly outside facet `pqs`.
-fn reflex_edges(b: &Builder) -> Vec<[u32; 2]> {
-    b.edges()
+/// Edges whose dihedral angle exceeds π: `pq` with faces `pqs`, `qpt` and `t` strictly
+/// outside face `pqs`.
+pub fn reflex_edges(p: &Polyhedron) -> Vec<[u32; 2]> {
+    let g = SurfaceGraph::new(p);
+    let pt = |v: u32| &p.points[v as usize];
+    p.edges()
         .into_iter()
-        .filter(|&[p, q]| {
-            let (_, s, _, t) = b.wings(p, q).expect("closed surface");
-            let pt = |v: u32| &b.points[v as usize];
-            orient3d(pt(p), pt(q), pt(s), pt(t)) > 0
+        .filter(|&[a, b]| {
+            let [s, t] = g.tri(a, b).expect("closed surface");
+            orient3d(pt(a), pt(b), pt(s), pt(t)) > 0
         })
         .collect()
 }
@@ -407,53 +468,62 @@ fn reflex_edges(b: &Builder) -> Vec<[u32; 2]> {
 /// each reflex edge so that the result is convex. Trimming the three BP-nets gives back
 /// Schönhardt's polyhedron, which is not stacked, so MINTETRA answers NO although the
 /// polyhedron (being convex) has tetrahedralizations.
+///
+/// ```
+/// use tetrakit::polyhedra::generate::{reflex_edges, schonhardt_bp};
+/// let p = schonhardt_bp();
+/// assert_eq!(p.points.len(), 12);
+/// assert!(reflex_edges(&p).is_empty());
+/// ```
 pub fn schonhardt_bp() -> Polyhedron {
-    let base = schonhardt_builder();
-    let mut b = base.clone();
-    for [p, q] in reflex_edges(&base) {
-        let (fi, s, fj, t) = b.wings(p, q).expect("reflex edge present");
-        let pt = |v: u32| b.points[v as usize];
-        // Place the path s a1 a2 t on the far side of the quad s p t q, pushed outward
-        // until every edge is convex.
-        let (ps, pp, pt_, pq) = (pt(s), pt(p), pt(t), pt(q));
-        let n = unit(cross(&sub(&pt_, &ps), &sub(&pq, &pp)));
-        let centre = [0, 1, 2].map(|i| (ps[i] + pp[i] + pt_[i] + pq[i]) / 4.0);
+    let mut cur = schonhardt();
+    for [p, q] in reflex_edges(&cur) {
+        let g = SurfaceGraph::new(&cur);
+        // tri(pq) = [s, t] with faces (p, q, s) and (q, p, t).
+        let [s, t] = g.tri(p, q).expect("reflex edge present");
+        let pt = |v: u32| cur.points[v as usize];
+        let (ps, pp, ptt, pq) = (pt(s), pt(p), pt(t), pt(q));
+        let n = unit(cross(&sub(&ptt, &ps), &sub(&pq, &pp)));
+        let centre = [0, 1, 2].map(|i| (ps[i] + pp[i] + ptt[i] + pq[i]) / 4.0);
+        let before = reflex_edges(&cur).len();
         let mut found = None;
-        for k in 1..40 {
-            let h = 0.05 * k as f64;
-            let a1 = axpy(&[0, 1, 2].map(|i| (2.0 * ps[i] + centre[i]) / 3.0), h, &n);
-            let a2 = axpy(&[0, 1, 2].map(|i| (2.0 * pt_[i] + centre[i]) / 3.0), h, &n);
-            let mut next = b.clone();
-            let mut add = |x: Point3| {
-                next.points.push(x.map(|c| (c * 1024.0).round() / 1024.0));
-                next.points.len() as u32 - 1
-            };
-            let (i1, i2) = (add(a1), add(a2));
-            let path = [s, i1, i2, t];
-            let mut faces: Vec<[u32; 3]> = next
-                .faces
-                .iter()
-                .enumerate()
-                .filter(|&(i, _)| i != fi && i != fj)
-                .map(|(_, f)| *f)
-                .collect();
-            for w in path.windows(2) {
-                faces.push([p, w[1], w[0]]);
-                faces.push([q, w[0], w[1]]);
-            }
-            if let Some(ok) = Builder::checked(next.points, faces) {
-                let reflex = reflex_edges(&ok);
-                if reflex.len() < reflex_edges(&b).len()
-                    && reflex.iter().all(|e| !e.contains(&i1) && !e.contains(&i2))
-                {
-                    found = Some(ok);
+        for k in 1..80 {
+            for sign in [1.0, -1.0] {
+                let h = sign * 0.05 * k as f64;
+                let mid =
+                    |a: &Point3| axpy(&[0, 1, 2].map(|i| (2.0 * a[i] + centre[i]) / 3.0), h, &n);
+                let mut points = cur.points.clone();
+                let i1 = points.len() as u32;
+                points.push(mid(&ps).map(|c| (c * 1024.0).round() / 1024.0));
+                points.push(mid(&ptt).map(|c| (c * 1024.0).round() / 1024.0));
+                let path = [s, i1, i1 + 1, t];
+                let mut faces: Vec<[u32; 3]> = cur
+                    .faces
+                    .iter()
+                    .filter(|f| !(f.contains(&p) && f.contains(&q)))
+                    .copied()
+                    .collect();
+                for w in path.windows(2) {
+                    faces.push([p, w[1], w[0]]);
+                    faces.push([q, w[0], w[1]]);
+                }
+                if let Ok(next) = Polyhedron::new(points, faces) {
+                    let reflex = reflex_edges(&next);
+                    if reflex.len() < before
+                        && reflex
+                            .iter()
+                            .all(|e| !e.contains(&i1) && !e.contains(&(i1 + 1)))
+                    {
+                        found = Some(next);
+                        break;
+                    }
                 }
             }
             if found.is_some() {
                 break;
             }
         }
-        b = found.expect("a convexifying placement exists");
+        cur = found.expect("a convexifying placement exists");
     }
-    b.finish()
+    cur
 }

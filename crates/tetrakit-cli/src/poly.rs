@@ -1,0 +1,354 @@
+//! Chapter 3 commands: `mintetra`, `tetrahedralize`, and the polyhedron generators.
+
+use crate::run::fail;
+use serde_json::{Value, json};
+use std::path::Path;
+use std::time::{Duration, Instant};
+use tetrakit::exact::{self, Domain, Options, Outcome};
+use tetrakit::geom::Hull3;
+use tetrakit::io::{self, Input};
+use tetrakit::mesh::{self, Polyhedron};
+use tetrakit::polyhedra::{self, Mintetra, generate};
+
+fn shift<const N: usize>(v: &[[u32; N]], base: u32) -> Vec<[u32; N]> {
+    v.iter().map(|x| x.map(|i| i + base)).collect()
+}
+
+/// What MINTETRA's answer proves about minimality.
+fn minimality(p: &Polyhedron, m: &Mintetra) -> &'static str {
+    if m.levels <= 1 && polyhedra::proper_nets_disjoint(p) {
+        "proven"
+    } else {
+        "conjectured"
+    }
+}
+
+pub fn mintetra(path: &Path, as_json: bool, output: Option<&Path>, confirm: bool) -> u8 {
+    let start = Instant::now();
+    let (input, poly) = match io::read_polyhedron(path) {
+        Ok(x) => x,
+        Err(e) => return fail(e),
+    };
+    let parsed = start.elapsed().as_secs_f64();
+    let t0 = Instant::now();
+    let m = polyhedra::mintetra(&poly);
+    let algorithm = t0.elapsed().as_secs_f64();
+    let base = input.index_base;
+    let n = poly.points.len();
+    let mut v = json!({
+        "verdict": if m.yes { "yes" } else { "no" },
+        "vertices": n,
+        "faces": poly.faces.len(),
+        "lower_bound": n.saturating_sub(3),
+        "levels": m.levels,
+        "trims_per_level": m.trims_per_level,
+        "polar_edges": shift(&m.polar_edges, base),
+        "mintetra_seconds": algorithm,
+        "parse_seconds": parsed,
+    });
+    if m.yes {
+        let t1 = Instant::now();
+        if let Err(e) = polyhedra::certify(&poly, &m.tets) {
+            return fail(format!(
+                "internal error, please report: MINTETRA's tetrahedra fail the certificate: {e}"
+            ));
+        }
+        v["verify_seconds"] = json!(t1.elapsed().as_secs_f64());
+        v["certified"] = json!(true);
+        v["tetrahedra"] = json!(m.tets.len());
+        v["tets"] = json!(shift(&m.tets, base));
+        let mut status = minimality(&poly, &m);
+        if confirm {
+            match confirm_with_solver(&poly, m.tets.len()) {
+                Ok(Some((true, unique))) => {
+                    status = "confirmed";
+                    v["unique"] = json!(unique);
+                }
+                Ok(Some((false, _))) => status = "refuted",
+                Ok(None) => v["confirm"] = json!("time limit"),
+                Err(e) => v["confirm"] = json!(e),
+            }
+        }
+        v["minimality"] = json!(status);
+        v["conjectured_minimal"] = json!(status == "conjectured");
+        if let Some(out) = output
+            && let Err(e) = io::write_mesh(out, &poly.points, &m.tets, base)
+        {
+            return fail(format!("{}: {e}", out.display()));
+        }
+    } else {
+        v["reason"] = json!(m.reason);
+        v["remaining_faces"] = json!(shift(&m.remaining, base));
+        let mut left: Vec<u32> = m.remaining.iter().flatten().copied().collect();
+        left.sort_unstable();
+        left.dedup();
+        v["remaining_vertices"] = json!(left.len());
+    }
+    v["seconds"] = json!(start.elapsed().as_secs_f64());
+    if as_json {
+        out!("{v}");
+    } else {
+        print_mintetra(&v, m.yes);
+    }
+    if m.yes { 0 } else { 1 }
+}
+
+/// Runs the exact solver: `(mintetra count is minimum, unique)`, `None` on time-out.
+fn confirm_with_solver(
+    poly: &Polyhedron,
+    count: usize,
+) -> Result<Option<(bool, Option<bool>)>, String> {
+    let opts = Options {
+        unique: true,
+        time_limit: Some(Duration::from_secs(60)),
+        any: false,
+    };
+    match exact::minimal_tetrahedralization(Domain::Polyhedron(poly), &opts) {
+        Ok((Outcome::Optimal { tets, unique, .. }, _)) => Ok(Some((tets.len() == count, unique))),
+        Ok((Outcome::Undecided { .. }, _)) => Ok(None),
+        Ok((other, _)) => Err(format!("solver answered {other:?}")),
+        Err(e) => Err(e.to_string()),
+    }
+}
+
+fn print_mintetra(v: &Value, yes: bool) {
+    if yes {
+        out!(
+            "MINTETRA: YES: an augmented BP-polyhedron with {} level(s)",
+            v["levels"]
+        );
+        out!(
+            "  {} vertices, {} tetrahedra (lower bound n - 3 = {}), {} polar edge(s): {}",
+            v["vertices"],
+            v["tetrahedra"],
+            v["lower_bound"],
+            v["polar_edges"].as_array().map_or(0, |a| a.len()),
+            v["polar_edges"]
+        );
+        let why = match v["minimality"].as_str() {
+            Some("proven") => {
+                "proven (Theorem 3.5 / Corollary 3.6: its proper BP-nets are disjoint)"
+            }
+            Some("confirmed") => "confirmed by the exact solver",
+            Some("refuted") => "REFUTED by the exact solver (please report this polyhedron)",
+            _ => "conjectured (§3.5; run with --confirm to check with the exact solver)",
+        };
+        out!("  minimality: {why}");
+        out!("  certified: orientation, face pairing, no overlap, boundary = the facets");
+    } else {
+        out!("MINTETRA: NO: not an augmented BP-polyhedron");
+        out!("  {}", v["reason"].as_str().unwrap_or(""));
+        out!(
+            "  left: {} vertices, {} facets (see --json for them)",
+            v["remaining_vertices"],
+            v["remaining_faces"].as_array().map_or(0, |a| a.len())
+        );
+    }
+    out!("  time: {:.3} s", v["seconds"].as_f64().unwrap_or(0.0));
+}
+
+pub struct TetraArgs<'a> {
+    pub input: &'a Path,
+    pub minimal: bool,
+    pub unique: bool,
+    pub time_limit: Option<f64>,
+    pub as_json: bool,
+    pub output: Option<&'a Path>,
+}
+
+pub fn tetrahedralize(a: TetraArgs) -> u8 {
+    let start = Instant::now();
+    let input = match io::read_input(a.input) {
+        Ok(i) => i,
+        Err(e) => return fail(e),
+    };
+    let poly;
+    let domain = if input.faces.is_empty() {
+        Domain::Points(&input.points)
+    } else {
+        poly = match Polyhedron::new(input.points.clone(), input.faces.clone()) {
+            Ok(p) => p,
+            Err(e) => {
+                return fail(format!(
+                    "{}: not a simple polyhedron: {}",
+                    a.input.display(),
+                    e.describe(input.index_base)
+                ));
+            }
+        };
+        Domain::Polyhedron(&poly)
+    };
+    let opts = Options {
+        unique: a.unique,
+        any: !a.minimal,
+        time_limit: a.time_limit.map(Duration::from_secs_f64),
+    };
+    let (outcome, stats) = match exact::minimal_tetrahedralization(domain, &opts) {
+        Ok(x) => x,
+        Err(e) => return fail(format!("{}: {e}", a.input.display())),
+    };
+    let n = input.points.len();
+    let mut v = json!({
+        "vertices": n,
+        "domain": if input.faces.is_empty() { "convex hull" } else { "polyhedron" },
+        "candidates": stats.candidates,
+        "sat_calls": stats.calls,
+    });
+    let base = input.index_base;
+    let (code, tets) = match &outcome {
+        Outcome::Optimal {
+            tets,
+            unique,
+            alternative,
+        } => {
+            v["verdict"] = json!("yes");
+            v["minimum"] = json!(tets.len());
+            if let Some(u) = unique {
+                v["unique"] = json!(u);
+            }
+            if let Some(alt) = alternative {
+                v["alternative"] = json!(shift(alt, base));
+            }
+            (0, Some(tets))
+        }
+        Outcome::Found { tets } => {
+            v["verdict"] = json!("yes");
+            (0, Some(tets))
+        }
+        Outcome::Infeasible => {
+            v["verdict"] = json!("no");
+            v["witness"] = json!({
+                "kind": "unsatisfiable",
+                "detail": "no set of candidate tetrahedra (no other vertex inside, on the inner side of the boundary) satisfies the face-pairing clauses: no tetrahedralization without Steiner points exists",
+            });
+            (1, None)
+        }
+        Outcome::Undecided { best, lower } => {
+            v["verdict"] = json!("undecided");
+            v["lower_bound"] = json!(lower);
+            if let Some(b) = best {
+                v["upper_bound"] = json!(b.len());
+            }
+            (3, best.as_ref())
+        }
+    };
+    if let Some(tets) = tets {
+        if let Err(e) = certify(&domain, &input, tets) {
+            return fail(format!(
+                "internal error, please report: the solver's tetrahedra fail the certificate: {e}"
+            ));
+        }
+        v["tetrahedra"] = json!(tets.len());
+        v["tets"] = json!(shift(tets, base));
+        v["certified"] = json!(true);
+        if let Some(out) = a.output
+            && let Err(e) = io::write_mesh(out, &input.points, tets, base)
+        {
+            return fail(format!("{}: {e}", out.display()));
+        }
+    }
+    v["seconds"] = json!(start.elapsed().as_secs_f64());
+    if a.as_json {
+        out!("{v}");
+    } else {
+        print_tetrahedralize(&v);
+    }
+    code
+}
+
+fn certify(domain: &Domain, input: &Input, tets: &[[u32; 4]]) -> Result<(), String> {
+    match domain {
+        Domain::Polyhedron(p) => polyhedra::certify(p, tets),
+        Domain::Points(pts) => {
+            let hull = Hull3::new(pts);
+            let r = mesh::verify(pts, tets, Some(&hull));
+            match r.problems.first() {
+                None if used_all(input, tets) => Ok(()),
+                None => Err("a point is not a vertex of any tetrahedron".into()),
+                Some(p) => Err(format!("{:?}: {}", p.kind, p.detail)),
+            }
+        }
+    }
+}
+
+fn used_all(input: &Input, tets: &[[u32; 4]]) -> bool {
+    let mut used = vec![false; input.points.len()];
+    tets.iter().flatten().for_each(|&v| used[v as usize] = true);
+    used.iter().all(|&u| u)
+}
+
+fn print_tetrahedralize(v: &Value) {
+    match v["verdict"].as_str() {
+        Some("yes") => {
+            if v.get("minimum").is_some() {
+                out!(
+                    "minimum: {} tetrahedra for {} vertices ({}){}",
+                    v["minimum"],
+                    v["vertices"],
+                    v["domain"].as_str().unwrap_or(""),
+                    match v["unique"].as_bool() {
+                        Some(true) => ", unique",
+                        Some(false) => ", not unique (see --json for another)",
+                        None => "",
+                    }
+                );
+            } else {
+                out!("tetrahedralizable: {} tetrahedra found", v["tetrahedra"]);
+            }
+            out!("  certified: orientation, face pairing, no overlap, boundary");
+        }
+        Some("no") => {
+            out!(
+                "NO: {} cannot be tetrahedralized without Steiner points",
+                v["domain"].as_str().unwrap_or("")
+            );
+            out!(
+                "  proof: the SAT formula is unsatisfiable ({} candidate tetrahedra)",
+                v["candidates"]
+            );
+        }
+        _ => out!(
+            "undecided within the time limit: minimum between {} and {}",
+            v["lower_bound"],
+            v["upper_bound"]
+        ),
+    }
+    out!(
+        "  {} candidate tetrahedra, {} SAT calls, {:.3} s",
+        v["candidates"],
+        v["sat_calls"],
+        v["seconds"].as_f64().unwrap_or(0.0)
+    );
+}
+
+/// The polyhedron generators.
+pub enum PolyGen {
+    Stacked { n: usize },
+    Bipyramid { m: usize },
+    Bp(generate::BpParams),
+    Schonhardt,
+    SchonhardtBp,
+}
+
+pub fn generate(kind: PolyGen, seed: u64, output: &Path) -> u8 {
+    let (p, note) = match kind {
+        PolyGen::Stacked { n } => (generate::stacked(n, seed), String::new()),
+        PolyGen::Bipyramid { m } => (generate::bipyramid(m, seed), String::new()),
+        PolyGen::Bp(params) => {
+            let (p, polar) = generate::bp_polyhedron(params);
+            (p, format!(", {polar} BP-net(s) glued"))
+        }
+        PolyGen::Schonhardt => (generate::schonhardt(), String::new()),
+        PolyGen::SchonhardtBp => (generate::schonhardt_bp(), String::new()),
+    };
+    if let Err(e) = io::write_surface(output, &p.points, &p.faces, 1) {
+        return fail(format!("{}: {e}", output.display()));
+    }
+    out!(
+        "wrote {}: {} vertices, {} faces{note}",
+        output.display(),
+        p.points.len(),
+        p.faces.len()
+    );
+    0
+}
