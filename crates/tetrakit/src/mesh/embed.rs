@@ -13,7 +13,7 @@
 
 use super::verify::{Problem, ProblemKind};
 use crate::detect::ids;
-use crate::geom::{Point3, cones_overlap, triangles_meet_improperly};
+use crate::geom::{Point3, cones_overlap};
 use rayon::prelude::*;
 
 /// Overlaps near vertices. `tets` are positively oriented (degenerate ones are skipped by
@@ -144,47 +144,25 @@ pub(super) fn boundary_self_intersections(
     points: &[Point3],
     faces: &[([u32; 3], u32)],
 ) -> Vec<Problem> {
-    let tri = |f: &[u32; 3]| f.map(|i| points[i as usize]);
-    let bbox = |f: &[u32; 3]| {
-        let t = tri(f);
-        let lo: [f64; 3] =
-            std::array::from_fn(|k| t.iter().map(|p| p[k]).fold(f64::INFINITY, f64::min));
-        let hi: [f64; 3] =
-            std::array::from_fn(|k| t.iter().map(|p| p[k]).fold(f64::NEG_INFINITY, f64::max));
-        (lo, hi)
-    };
-    let boxes: Vec<([f64; 3], [f64; 3])> = faces.iter().map(|(f, _)| bbox(f)).collect();
-    let mut order: Vec<usize> = (0..faces.len()).collect();
-    order.sort_by(|&a, &b| boxes[a].0[0].total_cmp(&boxes[b].0[0]));
-    let mut problems = Vec::new();
-    for (x, &i) in order.iter().enumerate() {
-        for &j in &order[x + 1..] {
-            if boxes[j].0[0] > boxes[i].1[0] {
-                break;
-            }
-            let overlap =
-                (1..3).all(|k| boxes[j].0[k] <= boxes[i].1[k] && boxes[i].0[k] <= boxes[j].1[k]);
+    let plain: Vec<[u32; 3]> = faces.iter().map(|f| f.0).collect();
+    super::grid::improper_pairs(points, &plain, 100)
+        .into_iter()
+        .map(|(i, j)| {
             let (fi, fj) = (&faces[i], &faces[j]);
-            if overlap && triangles_meet_improperly(&tri(&fi.0), fi.0, &tri(&fj.0), fj.0) {
-                problems.push(Problem {
-                    kind: ProblemKind::BoundarySelfIntersection,
-                    tets: vec![fi.1, fj.1],
-                    vertices: fi.0.iter().chain(&fj.0).copied().collect(),
-                    detail: format!(
-                        "boundary faces {} (of tetrahedron #{}) and {} (of tetrahedron #{}) intersect",
-                        ids(&fi.0),
-                        fi.1,
-                        ids(&fj.0),
-                        fj.1
-                    ),
-                });
-                if problems.len() >= 100 {
-                    return problems;
-                }
+            Problem {
+                kind: ProblemKind::BoundarySelfIntersection,
+                tets: vec![fi.1, fj.1],
+                vertices: fi.0.iter().chain(&fj.0).copied().collect(),
+                detail: format!(
+                    "boundary faces {} (of tetrahedron #{}) and {} (of tetrahedron #{}) intersect",
+                    ids(&fi.0),
+                    fi.1,
+                    ids(&fj.0),
+                    fj.1
+                ),
             }
-        }
-    }
-    problems
+        })
+        .collect()
 }
 
 /// Number of connected components of the boundary surface (faces joined across edges).

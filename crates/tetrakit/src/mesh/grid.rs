@@ -51,29 +51,27 @@ pub(crate) struct TriangleGrid {
     origin: Point3,
     inv: f64,
     cells: HashMap<u64, Vec<[u32; 3]>, BuildHasherDefault<CellHasher>>,
+    /// Triangles whose boxes cover more than [`MAX_CELLS`] cells: checked by every query.
+    big: Vec<[u32; 3]>,
 }
 
-impl TriangleGrid {
-    /// A grid over `points` with about one cell per expected triangle.
-    pub(crate) fn new(points: &[Point3], expected: usize) -> Self {
-        let (lo, hi) = crate::geom::bounding_box(points);
-        let ext = (0..3).map(|i| hi[i] - lo[i]).fold(0.0f64, f64::max);
-        let per_axis = (expected.max(1) as f64).cbrt().ceil().max(1.0);
-        let cell = if ext > 0.0 { ext / per_axis } else { 1.0 };
-        TriangleGrid {
-            origin: lo,
-            inv: 1.0 / cell,
-            cells: HashMap::default(),
-        }
-    }
+/// Beyond this many cells a triangle goes to the `big` list and a query scans all cells.
+const MAX_CELLS: i64 = 512;
 
+impl TriangleGrid {
     fn coord(&self, x: f64, i: usize) -> i64 {
         (((x - self.origin[i]) * self.inv).floor() as i64).clamp(-(1 << 20), 1 << 20)
     }
 
-    fn cells_of(&self, b: &Aabb) -> impl Iterator<Item = u64> + use<> {
+    fn span(&self, b: &Aabb) -> ([i64; 3], [i64; 3], i64) {
         let lo = [0, 1, 2].map(|i| self.coord(b.0[i], i));
         let hi = [0, 1, 2].map(|i| self.coord(b.1[i], i));
+        let count = (0..3).map(|i| hi[i] - lo[i] + 1).product();
+        (lo, hi, count)
+    }
+
+    fn cells_of(&self, b: &Aabb) -> impl Iterator<Item = u64> + use<> {
+        let (lo, hi, _) = self.span(b);
         (lo[0]..=hi[0]).flat_map(move |x| {
             (lo[1]..=hi[1]).flat_map(move |y| {
                 (lo[2]..=hi[2]).map(move |z| {
@@ -84,6 +82,48 @@ impl TriangleGrid {
         })
     }
 
+    /// A grid whose cells are about the size of the larger faces (90th percentile), so that a cell
+    /// holds O(1) faces of a surface whatever its overall shape (a bounding-box based
+    /// size puts a long or crumpled surface into few cells).
+    pub(crate) fn for_faces(points: &[Point3], faces: &[[u32; 3]]) -> Self {
+        let step = (faces.len() / 4096).max(1);
+        let mut sizes: Vec<f64> = faces
+            .iter()
+            .step_by(step)
+            .map(|f| {
+                let b = aabb(&[
+                    &points[f[0] as usize],
+                    &points[f[1] as usize],
+                    &points[f[2] as usize],
+                ]);
+                (0..3).map(|i| b.1[i] - b.0[i]).fold(0.0f64, f64::max)
+            })
+            .collect();
+        let at = sizes.len() * 9 / 10;
+        let large = if sizes.is_empty() {
+            1.0
+        } else {
+            *sizes.select_nth_unstable_by(at, f64::total_cmp).1
+        };
+        Self::with_cell(points, 1.5 * large)
+    }
+
+    /// A grid with cells of side `cell` (a non-positive or non-finite size means 1).
+    pub(crate) fn with_cell(points: &[Point3], cell: f64) -> Self {
+        let (lo, _) = crate::geom::bounding_box(points);
+        let cell = if cell > 0.0 && cell.is_finite() {
+            cell
+        } else {
+            1.0
+        };
+        TriangleGrid {
+            origin: lo,
+            inv: 1.0 / cell,
+            cells: HashMap::default(),
+            big: Vec::new(),
+        }
+    }
+
     /// Adds a triangle.
     pub(crate) fn insert(&mut self, points: &[Point3], t: [u32; 3]) {
         let b = aabb(&[
@@ -91,6 +131,10 @@ impl TriangleGrid {
             &points[t[1] as usize],
             &points[t[2] as usize],
         ]);
+        if self.span(&b).2 > MAX_CELLS {
+            self.big.push(t);
+            return;
+        }
         for key in self.cells_of(&b) {
             self.cells.entry(key).or_default().push(t);
         }
@@ -99,6 +143,12 @@ impl TriangleGrid {
     /// Calls `f` on every stored triangle whose cells meet the box (a triangle may be
     /// visited more than once).
     pub(crate) fn visit(&self, b: &Aabb, mut f: impl FnMut(&[u32; 3]) -> bool) -> bool {
+        if self.big.iter().any(&mut f) {
+            return true;
+        }
+        if self.span(b).2 > MAX_CELLS.max(self.cells.len() as i64) {
+            return self.cells.values().flatten().any(f);
+        }
         for key in self.cells_of(b) {
             if let Some(list) = self.cells.get(&key) {
                 for t in list {
@@ -110,4 +160,53 @@ impl TriangleGrid {
         }
         false
     }
+}
+
+/// Pairs `(i, j)`, `i < j`, of triangles that meet other than in shared vertices and the
+/// edge between them (exact), at most `limit` of them, smallest first. Hash-grid
+/// candidates, tested in parallel: about linear for a surface whose triangles are of
+/// comparable size, whatever its overall shape.
+pub(crate) fn improper_pairs(
+    points: &[Point3],
+    faces: &[[u32; 3]],
+    limit: usize,
+) -> Vec<(usize, usize)> {
+    use rayon::prelude::*;
+    let mut grid = TriangleGrid::for_faces(points, faces);
+    let mut index = HashMap::with_capacity(faces.len());
+    for (i, f) in faces.iter().enumerate() {
+        grid.insert(points, *f);
+        index.insert(sorted(*f), i);
+    }
+    let tri = |f: &[u32; 3]| f.map(|v| points[v as usize]);
+    let mut pairs: Vec<(usize, usize)> = (0..faces.len())
+        .into_par_iter()
+        .flat_map_iter(|i| {
+            let f = faces[i];
+            let t = tri(&f);
+            let b = aabb(&[&t[0], &t[1], &t[2]]);
+            let mut found = Vec::new();
+            grid.visit(&b, |g| {
+                let j = index[&sorted(*g)];
+                if j > i && !found.contains(&j) {
+                    let u = tri(g);
+                    if boxes_meet(&b, &aabb(&[&u[0], &u[1], &u[2]]))
+                        && crate::geom::triangles_meet_improperly(&t, f, &u, *g)
+                    {
+                        found.push(j);
+                    }
+                }
+                false
+            });
+            found.into_iter().map(move |j| (i, j))
+        })
+        .collect();
+    pairs.sort_unstable();
+    pairs.truncate(limit);
+    pairs
+}
+
+fn sorted(mut f: [u32; 3]) -> [u32; 3] {
+    f.sort_unstable();
+    f
 }

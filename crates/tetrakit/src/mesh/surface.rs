@@ -1,9 +1,7 @@
 //! Simple polyhedra: a closed triangulated surface, checked exactly (thesis §3.2.1: "Let
 //! P be a simple polyhedron"). The thesis assumes general position; nothing here does.
 
-use super::grid::{TriangleGrid, aabb, boxes_meet};
-use crate::geom::{Expansion, Point3, collinear3, orient3d_value, triangles_meet_improperly};
-use rayon::prelude::*;
+use crate::geom::{Expansion, Point3, collinear3, orient3d_value};
 use std::fmt;
 
 /// A simple polyhedron: its vertices and its triangular facets, each oriented
@@ -336,56 +334,14 @@ fn check_vertex_disks(faces: &[[u32; 3]], n: usize) -> Result<(), SurfaceError> 
 
 /// No two faces meet except in shared vertices and edges (exact, behind a grid filter).
 fn check_self_intersection(points: &[Point3], faces: &[[u32; 3]]) -> Result<(), SurfaceError> {
-    let mut grid = TriangleGrid::new(points, faces.len());
-    let mut index = std::collections::HashMap::with_capacity(faces.len());
-    for (i, f) in faces.iter().enumerate() {
-        grid.insert(points, *f);
-        let mut s = *f;
-        s.sort_unstable();
-        index.insert(s, i);
-    }
-    let tri = |f: &[u32; 3]| f.map(|v| points[v as usize]);
-    let hit = (0..faces.len()).into_par_iter().find_first(|&i| {
-        let f = faces[i];
-        let t = tri(&f);
-        let b = aabb(&[&t[0], &t[1], &t[2]]);
-        grid.visit(&b, |g| {
-            let mut s = *g;
-            s.sort_unstable();
-            let j = index[&s];
-            if j <= i {
-                return false;
-            }
-            let u = tri(g);
-            boxes_meet(&b, &aabb(&[&u[0], &u[1], &u[2]]))
-                && triangles_meet_improperly(&t, f, &u, *g)
-        })
-    });
-    if let Some(i) = hit {
-        let f = faces[i];
-        let t = tri(&f);
-        let b = aabb(&[&t[0], &t[1], &t[2]]);
-        let mut other = None;
-        grid.visit(&b, |g| {
-            let j = index[&{
-                let mut s = *g;
-                s.sort_unstable();
-                s
-            }];
-            let u = tri(g);
-            if j > i && triangles_meet_improperly(&t, f, &u, *g) {
-                other = Some(j);
-                return true;
-            }
-            false
-        });
-        return Err(SurfaceError::new(
-            vec![i, other.unwrap_or(i)],
+    match super::grid::improper_pairs(points, faces, 1).first() {
+        Some(&(i, j)) => Err(SurfaceError::new(
+            vec![i, j],
             vec![],
             "intersect other than in a shared vertex or edge: the surface is not simple",
-        ));
+        )),
+        None => Ok(()),
     }
-    Ok(())
 }
 
 /// The sign of the enclosed volume (positive for outward-oriented faces): a filtered sum

@@ -3,7 +3,7 @@
 
 use super::{Polyhedron, SurfaceGraph};
 use crate::geom::{Point3, orient3d, tetrahedra_overlap, triangle_meets_tet};
-use crate::mesh::grid::{TriangleGrid, aabb, boxes_meet};
+use crate::mesh::grid::{Aabb, TriangleGrid, aabb, boxes_meet};
 
 /// A BP-net `B(p v0 v1 … vm q)`: poles `p`, `q` and a path `v0 … vm` (m ≥ 3) whose every
 /// vertex is adjacent to both poles and whose inner vertices have degree 4. A bipyramid
@@ -118,12 +118,20 @@ fn other_neighbours(g: &SurfaceGraph, x: u32, p: u32, q: u32) -> [u32; 2] {
 /// lies on the inner side of its two surface facets, and meets no facet except in shared
 /// vertices and edges; then `pq`, an edge of all of them, lies inside too.
 pub fn is_proper(poly: &Polyhedron, g: &SurfaceGraph, net: &BpNet) -> bool {
-    let pt = |v: u32| &poly.points[v as usize];
+    proper_on(poly, g, &surface_grid(poly, g), net)
+}
+
+fn surface_grid(poly: &Polyhedron, g: &SurfaceGraph) -> TriangleGrid {
     let facets = g.facets();
-    let mut grid = TriangleGrid::new(&poly.points, facets.len());
+    let mut grid = TriangleGrid::for_faces(&poly.points, &facets);
     for f in &facets {
         grid.insert(&poly.points, *f);
     }
+    grid
+}
+
+fn proper_on(poly: &Polyhedron, g: &SurfaceGraph, grid: &TriangleGrid, net: &BpNet) -> bool {
+    let pt = |v: u32| &poly.points[v as usize];
     let own: Vec<[u32; 3]> = net
         .path
         .windows(2)
@@ -197,10 +205,37 @@ pub fn strip_stacked(poly: &Polyhedron) -> SurfaceGraph {
 /// tetrahedralizations.)
 pub fn proper_nets_disjoint(poly: &Polyhedron) -> bool {
     let g = strip_stacked(poly);
+    let grid = surface_grid(poly, &g);
     let proper: Vec<BpNet> = bp_nets(&g)
         .into_iter()
-        .filter(|b| is_proper(poly, &g, b))
+        .filter(|b| proper_on(poly, &g, &grid, b))
         .collect();
-    (0..proper.len())
-        .all(|i| (i + 1..proper.len()).all(|j| are_disjoint(&poly.points, &proper[i], &proper[j])))
+    // Only nets whose bounding boxes meet can overlap: sweep along the longest axis.
+    let boxes: Vec<Aabb> = proper
+        .iter()
+        .map(|b| {
+            let pts: Vec<&Point3> = b
+                .path
+                .iter()
+                .chain([&b.p, &b.q])
+                .map(|&v| &poly.points[v as usize])
+                .collect();
+            aabb(&pts)
+        })
+        .collect();
+    let (lo, hi) = crate::geom::bounding_box(&poly.points);
+    let axis = (0..3)
+        .max_by(|&i, &j| (hi[i] - lo[i]).total_cmp(&(hi[j] - lo[j])))
+        .unwrap_or(0);
+    let mut order: Vec<usize> = (0..proper.len()).collect();
+    order.sort_by(|&i, &j| boxes[i].0[axis].total_cmp(&boxes[j].0[axis]));
+    order.iter().enumerate().all(|(k, &i)| {
+        order[k + 1..]
+            .iter()
+            .take_while(|&&j| boxes[j].0[axis] <= boxes[i].1[axis])
+            .all(|&j| {
+                !boxes_meet(&boxes[i], &boxes[j])
+                    || are_disjoint(&poly.points, &proper[i], &proper[j])
+            })
+    })
 }

@@ -14,9 +14,9 @@
 
 use super::{Polyhedron, SurfaceGraph};
 use crate::geom::{Point3, orient3d, triangle_meets_tet};
-use crate::mesh::grid::{TriangleGrid, aabb};
+use crate::mesh::grid::{TriangleGrid, aabb, boxes_meet};
 use crate::rng::Rng;
-use std::collections::{HashMap, HashSet, VecDeque};
+use std::collections::{HashMap, HashSet};
 
 /// A polyhedron under construction: faces (always outward) as a directed-edge map, a
 /// grid over them for the local exact checks, and the faces in creation order so that
@@ -25,7 +25,16 @@ struct Builder {
     points: Vec<Point3>,
     next: HashMap<(u32, u32), u32>,
     grid: TriangleGrid,
-    order: VecDeque<[u32; 3]>,
+    /// Faces ever added (dead ones are dropped when drawn).
+    pool: Vec<[u32; 3]>,
+    /// For a face, the fourth vertex of the tetrahedron it bounds, when known.
+    opposite: HashMap<[u32; 3], u32>,
+}
+
+/// A face's rotation starting at its smallest vertex.
+fn key(f: [u32; 3]) -> [u32; 3] {
+    let i = (0..3).min_by_key(|&i| f[i]).unwrap_or(0);
+    [f[i], f[(i + 1) % 3], f[(i + 2) % 3]]
 }
 
 fn sub(a: &Point3, b: &Point3) -> [f64; 3] {
@@ -50,19 +59,20 @@ fn axpy(p: &Point3, s: f64, d: &[f64; 3]) -> Point3 {
 }
 
 impl Builder {
-    /// A builder from a valid polyhedron, sized for about `expected` vertices.
-    fn from_polyhedron(p: &Polyhedron, expected: usize) -> Builder {
+    /// A builder from a valid polyhedron, with grid cells of side `cell`.
+    fn from_polyhedron(p: &Polyhedron, cell: f64) -> Builder {
         let mut b = Builder {
             points: p.points.clone(),
             next: HashMap::new(),
-            grid: TriangleGrid::new(&p.points, 2 * expected),
-            order: VecDeque::new(),
+            grid: TriangleGrid::with_cell(&p.points, cell),
+            pool: Vec::new(),
+            opposite: HashMap::new(),
         };
-        p.faces.iter().for_each(|&f| b.add_face(f));
+        p.faces.iter().for_each(|&f| b.add_face(f, None));
         b
     }
 
-    fn tetrahedron(rng: &mut Rng, expected: usize) -> Builder {
+    fn tetrahedron(rng: &mut Rng) -> Builder {
         let mut j = || rng.unit() * 0.1;
         let points = vec![
             [1.0 + j(), 1.0 + j(), 1.0 + j()],
@@ -72,7 +82,55 @@ impl Builder {
         ];
         let faces = vec![[0, 1, 2], [0, 2, 3], [0, 3, 1], [1, 3, 2]];
         let p = Polyhedron::new(points, faces).expect("a tetrahedron");
-        Builder::from_polyhedron(&p, expected)
+        let mut b = Builder::from_polyhedron(&p, 3.0);
+        for f in &p.faces {
+            let o = (0..4).find(|v| !f.contains(v)).expect("four vertices");
+            b.opposite.insert(key(*f), o);
+        }
+        b
+    }
+
+    /// A Boerdijk–Coxeter helix of `n >= 4` vertices: tetrahedra `v_i … v_(i+3)` glued
+    /// face to face along a helix, a stacked polyhedron with fat tetrahedra and vertex
+    /// degree at most 6, so it grows to any size without crowding (a random tree of
+    /// tetrahedra packs its surface ever more densely).
+    fn helix(n: usize, rng: &mut Rng) -> Builder {
+        let theta = (-2.0f64 / 3.0).acos();
+        let (r, h) = (3.0 * 3f64.sqrt() / 10.0, 1.0 / 10f64.sqrt());
+        let mut j = || (rng.unit() - 0.5) * 0.02;
+        let points: Vec<Point3> = (0..n)
+            .map(|i| {
+                let a = theta * i as f64;
+                [r * a.cos() + j(), r * a.sin() + j(), h * i as f64 + j()]
+            })
+            .collect();
+        let n = n as u32;
+        let mut faces = vec![[0, 1, 2], [n - 3, n - 2, n - 1]];
+        for i in 0..n - 3 {
+            faces.push([i, i + 1, i + 3]);
+            faces.push([i, i + 2, i + 3]);
+        }
+        let p = Polyhedron::new(points, faces).expect("a tetrahelix is a simple polyhedron");
+        let mut b = Builder::from_polyhedron(&p, 1.5);
+        for f in &p.faces {
+            let (lo, hi) = (
+                f.iter().min().copied().unwrap_or(0),
+                f.iter().max().copied().unwrap_or(0),
+            );
+            // The tetrahedron behind a face spans four consecutive indices.
+            let first = if hi - lo == 3 {
+                lo
+            } else if lo == 0 {
+                0
+            } else {
+                hi - 3
+            };
+            let o = (first..first + 4)
+                .find(|v| !f.contains(v))
+                .expect("four consecutive");
+            b.opposite.insert(key(*f), o);
+        }
+        b
     }
 
     fn faces(&self) -> Vec<[u32; 3]> {
@@ -90,12 +148,15 @@ impl Builder {
         self.next.get(&(f[0], f[1])) == Some(&f[2])
     }
 
-    fn add_face(&mut self, f: [u32; 3]) {
+    fn add_face(&mut self, f: [u32; 3], opposite: Option<u32>) {
         for r in 0..3 {
             self.next.insert((f[r], f[(r + 1) % 3]), f[(r + 2) % 3]);
         }
         self.grid.insert(&self.points, f);
-        self.order.push_back(f);
+        self.pool.push(f);
+        if let Some(o) = opposite {
+            self.opposite.insert(key(f), o);
+        }
     }
 
     fn remove_face(&mut self, f: [u32; 3]) {
@@ -122,35 +183,49 @@ impl Builder {
                 return false;
             }
             let tri = f.map(|v| self.points[v as usize]);
-            triangle_meets_tet(&tri, *f, &geo, &tet)
+            boxes_meet(&b, &aabb(&[&tri[0], &tri[1], &tri[2]]))
+                && triangle_meets_tet(&tri, *f, &geo, &tet)
         })
     }
 
-    /// Stacks a tetrahedron on face `f`; false when no height tried fits.
+    /// Stacks a tetrahedron on face `f`: the mirror image of the tetrahedron behind `f`
+    /// when there is room (keeps shapes fat), else a lower apex over a random interior
+    /// point; false when nothing tried fits.
     fn stack(&mut self, f: [u32; 3], rng: &mut Rng) -> bool {
         let [a, b, c] = f;
         let [pa, pb, pc] = f.map(|v| self.points[v as usize]);
         let n = cross(&sub(&pb, &pa), &sub(&pc, &pa));
         let size = dot(&n, &n).sqrt().sqrt();
         let n = unit(n);
+        let mut tries: Vec<Point3> = Vec::new();
+        if let Some(&o) = self.opposite.get(&key(f)) {
+            let po = self.points[o as usize];
+            let d = dot(&sub(&po, &pa), &n);
+            let mut j = || (rng.unit() - 0.5) * 0.1 * size;
+            let m = axpy(&po, -2.0 * d, &n);
+            tries.push([m[0] + j(), m[1] + j(), m[2] + j()]);
+        }
         let wa = 0.25 + 0.5 * rng.unit();
         let wb = (1.0 - wa) * (0.25 + 0.5 * rng.unit());
         let wc = 1.0 - wa - wb;
         let centre = [0, 1, 2].map(|i| wa * pa[i] + wb * pb[i] + wc * pc[i]);
         let mut h = size * (0.2 + 0.3 * rng.unit());
+        for _ in 0..6 {
+            tries.push(axpy(&centre, h, &n));
+            h *= 0.5;
+        }
         let x = self.points.len() as u32;
-        for _ in 0..10 {
-            self.points.push(axpy(&centre, h, &n));
-            let outside = orient3d(&pa, &pb, &pc, &self.points[x as usize]) > 0;
+        for apex in tries {
+            self.points.push(apex);
+            let outside = orient3d(&pa, &pb, &pc, &apex) > 0;
             if outside && self.free([a, b, c, x], &[f]) {
                 self.remove_face(f);
-                for g in [[a, b, x], [b, c, x], [c, a, x]] {
-                    self.add_face(g);
-                }
+                self.add_face([a, b, x], Some(c));
+                self.add_face([b, c, x], Some(a));
+                self.add_face([c, a, x], Some(b));
                 return true;
             }
             self.points.pop();
-            h *= 0.5;
         }
         false
     }
@@ -225,8 +300,8 @@ impl Builder {
             if ok {
                 replaced.iter().for_each(|&f| self.remove_face(f));
                 for w in path.windows(2) {
-                    self.add_face([p, w[1], w[0]]);
-                    self.add_face([q, w[0], w[1]]);
+                    self.add_face([p, w[1], w[0]], Some(q));
+                    self.add_face([q, w[0], w[1]], Some(p));
                 }
                 return Some((first..first + m as u32 - 1).collect());
             }
@@ -247,25 +322,21 @@ impl Builder {
         e
     }
 
-    /// Stacks `k` tetrahedra, on the oldest faces first.
+    /// Stacks `k` tetrahedra on faces drawn at random (fewer if the surface is too
+    /// crowded to take them).
     fn stack_more(&mut self, k: usize, rng: &mut Rng) {
-        let mut added = 0;
-        let mut misses = 0;
-        while added < k {
-            let Some(f) = self.order.pop_front() else {
-                break;
-            };
+        let (mut added, mut misses) = (0, 0);
+        while added < k && !self.pool.is_empty() && misses < 20 * (k + 10) {
+            let i = rng.below(self.pool.len());
+            let f = self.pool[i];
             if !self.has_face(&f) {
+                self.pool.swap_remove(i);
                 continue;
             }
             if self.stack(f, rng) {
                 added += 1;
             } else {
-                self.order.push_back(f);
                 misses += 1;
-                if misses > 10 * (k + 10) {
-                    break;
-                }
             }
         }
     }
@@ -280,7 +351,7 @@ impl Builder {
 /// ```
 pub fn stacked(n: usize, seed: u64) -> Polyhedron {
     let mut rng = Rng::new(seed);
-    let mut b = Builder::tetrahedron(&mut rng, n);
+    let mut b = Builder::tetrahedron(&mut rng);
     b.stack_more(n.max(4) - 4, &mut rng);
     b.finish()
 }
@@ -310,7 +381,7 @@ pub fn bipyramid(m: usize, seed: u64) -> Polyhedron {
 /// Parameters of the BP-polyhedron generators.
 #[derive(Clone, Copy, Debug)]
 pub struct BpParams {
-    /// Vertices of the stacked core (at least 4).
+    /// Vertices of the stacked core, a Boerdijk–Coxeter helix (at least 4).
     pub core: usize,
     /// BP-nets glued per level.
     pub nets: usize,
@@ -358,10 +429,7 @@ impl Default for BpParams {
 pub fn bp_polyhedron(params: BpParams) -> (Polyhedron, usize) {
     let mut rng = Rng::new(params.seed);
     let core = params.core.max(4);
-    let expected =
-        core + params.nets * params.max_m * (1 << params.levels.min(20)) + params.augment;
-    let mut b = Builder::tetrahedron(&mut rng, expected);
-    b.stack_more(core - 4, &mut rng);
+    let mut b = Builder::helix(core, &mut rng);
     let mut polar = 0;
     // Edges eligible for the next round, in groups of which at most one is used: any
     // edge for the first round, then edges between a pole and an inner vertex of the

@@ -21,16 +21,17 @@
 //!   degree-4 ones; a trim re-queues only the vertices whose degree changed. Each trim
 //!   costs O(degree) plus the grid query, so the whole run is O(n) on inputs whose facets
 //!   are of comparable size (the thesis's bound is O(n²)).
-//! * **Levels.** A BP trim's level is one more than the highest level that touched its two
-//!   middle vertices (a trim touches the vertices whose rings it changes); stacked trims
-//!   pass levels on without adding. `levels` is the highest level, so 1 for a BP-polyhedron
-//!   (Theorem 3.5), 2 for a two-level one (Theorem 3.6), h for the conjecture's h-level
-//!   ones (§3.5).
+//! * **Levels.** A BP-net of the internal polyhedron P_(h-1) shows only once an outer
+//!   net has been trimmed, through one of its edges being that net's polar edge (§3.3.3).
+//!   So a BP trim's level is one more than the highest level among the polar edges that
+//!   are edges of the trimmed piece (0 for an edge of the input). `levels` is the highest
+//!   level: 1 for a BP-polyhedron (Theorem 3.5), 2 for a two-level one (Theorem 3.6), h
+//!   for the conjecture's h-level ones (§3.5).
 
 use super::{Polyhedron, SurfaceGraph};
 use crate::geom::{Point3, orient3d, tetrahedra_overlap, triangle_meets_tet};
 use crate::mesh::grid::{TriangleGrid, aabb};
-use std::collections::VecDeque;
+use std::collections::{HashMap, VecDeque};
 
 /// What MINTETRA found.
 #[derive(Clone, Debug)]
@@ -76,7 +77,7 @@ struct Trimmer<'a> {
     deg3: VecDeque<u32>,
     deg4: VecDeque<u32>,
     blocked: Vec<u32>,
-    level: Vec<u32>,
+    polar_level: HashMap<[u32; 2], u32>,
     tets: Vec<[u32; 4]>,
     polar: Vec<[u32; 2]>,
     per_level: Vec<usize>,
@@ -84,7 +85,7 @@ struct Trimmer<'a> {
 
 impl<'a> Trimmer<'a> {
     fn new(p: &'a Polyhedron) -> Self {
-        let mut grid = TriangleGrid::new(&p.points, p.faces.len());
+        let mut grid = TriangleGrid::for_faces(&p.points, &p.faces);
         for f in &p.faces {
             grid.insert(&p.points, *f);
         }
@@ -97,7 +98,7 @@ impl<'a> Trimmer<'a> {
             deg3: VecDeque::new(),
             deg4: VecDeque::new(),
             blocked: Vec::new(),
-            level: vec![0; n],
+            polar_level: HashMap::new(),
             tets: Vec::with_capacity(n),
             polar: Vec::new(),
             per_level: Vec::new(),
@@ -164,11 +165,9 @@ impl<'a> Trimmer<'a> {
             return false;
         }
         self.push_tet(tet);
-        let lvl = self.level[u as usize];
         self.g.kill(u);
         for &x in &r {
             self.g.unlink(x, u);
-            self.level[x as usize] = self.level[x as usize].max(lvl);
         }
         self.grid.insert(self.points, [r[0], r[1], r[2]]);
         r.iter().for_each(|&x| self.enqueue(x));
@@ -231,7 +230,13 @@ impl<'a> Trimmer<'a> {
                 return false;
             }
         }
-        let lvl = self.level[u as usize].max(self.level[w as usize]) + 1;
+        let edge = |x: u32, y: u32| [x.min(y), x.max(y)];
+        let piece = [(u, w), (u, a), (u, b), (u, c), (w, c), (w, d), (w, a)];
+        let lvl = 1 + piece
+            .iter()
+            .map(|&(x, y)| self.polar_level.get(&edge(x, y)).copied().unwrap_or(0))
+            .max()
+            .unwrap_or(0);
         if self.per_level.len() < lvl as usize {
             self.per_level.resize(lvl as usize, 0);
         }
@@ -241,16 +246,14 @@ impl<'a> Trimmer<'a> {
             self.g.clear();
             return true;
         }
-        self.polar.push([a.min(c), a.max(c)]);
+        self.polar.push(edge(a, c));
+        self.polar_level.insert(edge(a, c), lvl);
         self.g.kill(u);
         self.g.kill(w);
         self.g.contract(a, u, w, c);
         self.g.contract(c, w, u, a);
         self.g.unlink(b, u);
         self.g.unlink(d, w);
-        for x in [a, b, c, d] {
-            self.level[x as usize] = self.level[x as usize].max(lvl);
-        }
         self.grid.insert(self.points, [a, b, c]);
         self.grid.insert(self.points, [c, d, a]);
         [a, b, c, d].iter().for_each(|&x| self.enqueue(x));
