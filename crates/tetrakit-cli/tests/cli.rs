@@ -324,3 +324,39 @@ fn bad_polyhedra_exit_2_naming_line_or_faces() {
         "{err}"
     );
 }
+
+#[test]
+fn time_limit_gives_exit_3_with_bounds() {
+    let d = dir("timelimit");
+    let p = d.join("pts.xyz");
+    // Sixteen points near a sphere: about a second of search, far beyond a zero limit.
+    let mut text = String::new();
+    for i in 0..16 {
+        let (a, z) = (i as f64 * 2.399_963, 1.0 - (2 * i + 1) as f64 / 16.0);
+        let r = (1.0 - z * z).sqrt();
+        text += &format!(
+            "{} {} {}\n",
+            (r * a.cos() * 1000.0).round(),
+            (r * a.sin() * 1000.0).round(),
+            (z * 1000.0).round()
+        );
+    }
+    std::fs::write(&p, text).unwrap();
+    let o = run(&[
+        "tetrahedralize",
+        s(&p),
+        "--minimal",
+        "--time-limit",
+        "0",
+        "--json",
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(3),
+        "{}",
+        String::from_utf8_lossy(&o.stdout)
+    );
+    let v = json(&o);
+    assert_eq!(v["verdict"], "undecided");
+    assert!(v["lower_bound"].as_u64().unwrap() >= 13);
+}

@@ -208,3 +208,116 @@ fn h_level_conjecture_holds_on_small_instances() {
     }
     assert!(cases >= 30, "only {cases} three-level cases");
 }
+
+/// Theorems 3.1–3.3 and 3.4 are statements about the graph of every simple polyhedron;
+/// pin them on generated ones of all kinds.
+#[test]
+fn graph_theorems_hold_on_generated_polyhedra() {
+    let mut polys: Vec<Polyhedron> = (0..40)
+        .map(|s| generate::stacked(5 + s as usize % 20, s))
+        .collect();
+    polys.extend((3..12).map(|m| generate::bipyramid(m, m as u64)));
+    for seed in 0..60u64 {
+        let params = BpParams {
+            core: 5 + (seed % 6) as usize,
+            nets: 2,
+            levels: 1 + (seed % 3) as usize,
+            max_m: 5,
+            augment: (seed % 4) as usize,
+            hide_all: seed % 2 == 0,
+            seed,
+        };
+        polys.push(generate::bp_polyhedron(params).0);
+    }
+    polys.push(generate::schonhardt_bp());
+    for p in &polys {
+        let g = SurfaceGraph::new(p);
+        let n = p.points.len();
+        let deg = |v: u32| g.degree(v);
+        for v in 0..n as u32 {
+            let adj = g.ring(v);
+            if deg(v) == 3 && n > 4 {
+                // Theorem 3.1: two degree-3 vertices are not adjacent.
+                assert!(adj.iter().all(|&w| deg(w) != 3), "Theorem 3.1");
+                // Theorem 3.2: at most one neighbour of degree < 5.
+                if n > 5 {
+                    assert!(
+                        adj.iter().filter(|&&w| deg(w) < 5).count() <= 1,
+                        "Theorem 3.2"
+                    );
+                }
+            }
+            if deg(v) == 4 && n > 6 {
+                // Theorem 3.3, the part that holds: at most two neighbours of degree < 5
+                // (that they are never adjacent is false: see the next test).
+                let low = adj.iter().filter(|&&w| deg(w) < 5).count();
+                assert!(low <= 2, "Theorem 3.3");
+            }
+        }
+        // Theorem 3.4: every edge between two degree-4 vertices lies on a BP-net found.
+        let nets = bp_nets(&g);
+        for v in 0..n as u32 {
+            for &w in g.ring(v) {
+                if deg(v) == 4 && deg(w) == 4 {
+                    assert!(
+                        nets.iter().any(|b| b
+                            .path
+                            .windows(2)
+                            .any(|e| (e[0] == v && e[1] == w) || (e[0] == w && e[1] == v))),
+                        "Theorem 3.4: edge {v}-{w} on no BP-net"
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// A counterexample to Theorem 3.3 as stated ("at most two *nonadjacent* vertices of
+/// degree < 5 around a degree-4 vertex when n > 6"): an octahedron with a tetrahedron
+/// stacked on one face has n = 7, and the vertex opposite that face has degree 4 with two
+/// adjacent neighbours of degree 4. The proof's Case 2 concludes "P = a a1 a2 a3 a4 b"
+/// from the local degrees, overlooking that a2 a3 b may be a separating triangle.
+#[test]
+fn theorem_3_3_fails_on_a_stacked_octahedron() {
+    let mut pts: Vec<[f64; 3]> = vec![
+        [1.0, 0.0, 0.0],
+        [-1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [0.0, -1.0, 0.0],
+        [0.0, 0.0, 1.0],
+        [0.0, 0.0, -1.0],
+    ];
+    pts.push([0.625, 0.625, 0.625]);
+    let faces = vec![
+        [0, 2, 6],
+        [2, 4, 6],
+        [4, 0, 6], // the stacked tetrahedron replaces face (0, 2, 4)
+        [2, 1, 4],
+        [1, 3, 4],
+        [3, 0, 4],
+        [2, 0, 5],
+        [1, 2, 5],
+        [3, 1, 5],
+        [0, 3, 5],
+    ];
+    let p = Polyhedron::new(pts, faces).expect("a convex polyhedron");
+    let g = SurfaceGraph::new(&p);
+    assert_eq!(p.points.len(), 7);
+    assert_eq!(g.degree(5), 4);
+    let low: Vec<u32> = g
+        .ring(5)
+        .iter()
+        .copied()
+        .filter(|&w| g.degree(w) < 5)
+        .collect();
+    assert_eq!(low.len(), 2);
+    assert!(
+        g.adjacent(low[0], low[1]),
+        "the two low-degree neighbours are adjacent"
+    );
+    // MINTETRA is unaffected: it relies on Theorem 3.4, which holds here.
+    let m = mintetra(&p);
+    assert!(m.yes);
+    certify(&p, &m.tets).unwrap();
+    assert_eq!(m.tets.len(), p.points.len() - 3 + m.polar_edges.len());
+}

@@ -308,6 +308,25 @@ pub fn triangles_meet_improperly(
     u: &[Point3; 3],
     ui: [u32; 3],
 ) -> bool {
+    // Quick exit: the vertices of one triangle not shared with the other all strictly on
+    // one side of the other's plane, so the two meet at most in their shared vertices.
+    let off_plane = |a: &[Point3; 3], b: &[Point3; 3], bi: [u32; 3], ai: [u32; 3]| {
+        let mut side = 0i8;
+        for k in 0..3 {
+            if ai.contains(&bi[k]) {
+                continue;
+            }
+            let s = orient3d(&a[0], &a[1], &a[2], &b[k]);
+            if s == 0 || (side != 0 && s != side) {
+                return false;
+            }
+            side = s;
+        }
+        true
+    };
+    if off_plane(t, u, ui, ti) || off_plane(u, t, ti, ui) {
+        return false;
+    }
     let edges = [(0, 1), (1, 2), (2, 0)];
     let shared = |x: u32| ui.contains(&x);
     for (i, j) in edges {
@@ -540,5 +559,43 @@ mod tests {
             &t,
             &[[2.0, 0.0, 0.0], [0.0, 2.0, 0.0], [2.0, 2.0, 0.0]]
         ));
+    }
+}
+
+#[cfg(test)]
+mod shared_vertex_tests {
+    use super::*;
+
+    #[test]
+    fn triangles_sharing_vertices_meet_properly_or_not() {
+        let (a, b) = ([0.0, 0.0, 0.0], [2.0, 0.0, 0.0]);
+        let t = [a, b, [1.0, 2.0, 0.0]];
+        // A hinge: shared edge, other vertex off the plane.
+        assert!(!triangles_meet_improperly(
+            &t,
+            [0, 1, 2],
+            &[a, b, [1.0, 1.0, 1.0]],
+            [0, 1, 3]
+        ));
+        // Folded flat onto t: shared edge, overlapping interiors.
+        assert!(triangles_meet_improperly(
+            &t,
+            [0, 1, 2],
+            &[a, b, [1.0, 1.0, 0.0]],
+            [0, 1, 3]
+        ));
+        // Flat, on the other side of the shared edge: proper.
+        assert!(!triangles_meet_improperly(
+            &t,
+            [0, 1, 2],
+            &[a, b, [1.0, -1.0, 0.0]],
+            [0, 1, 3]
+        ));
+        // Shared vertex a, the other triangle pierces t.
+        let u = [a, [1.0, 0.5, -1.0], [1.0, 0.5, 1.0]];
+        assert!(triangles_meet_improperly(&t, [0, 1, 2], &u, [0, 4, 5]));
+        // Shared vertex a, u entirely above t's plane except at a: proper.
+        let w = [a, [1.0, 0.5, 1.0], [0.0, 1.0, 1.0]];
+        assert!(!triangles_meet_improperly(&t, [0, 1, 2], &w, [0, 4, 5]));
     }
 }
