@@ -131,6 +131,12 @@ impl TriangleGrid {
             &points[t[1] as usize],
             &points[t[2] as usize],
         ]);
+        self.insert_item(&b, t);
+    }
+
+    /// Adds an item (a triangle, or any three words a caller keys by) under box `b`.
+    pub(crate) fn insert_item(&mut self, b: &Aabb, t: [u32; 3]) {
+        let b = *b;
         if self.span(&b).2 > MAX_CELLS {
             self.big.push(t);
             return;
@@ -172,27 +178,30 @@ pub(crate) fn improper_pairs(
     limit: usize,
 ) -> Vec<(usize, usize)> {
     use rayon::prelude::*;
-    let mut grid = TriangleGrid::for_faces(points, faces);
-    let mut index = HashMap::with_capacity(faces.len());
-    for (i, f) in faces.iter().enumerate() {
-        grid.insert(points, *f);
-        index.insert(sorted(*f), i);
-    }
     let tri = |f: &[u32; 3]| f.map(|v| points[v as usize]);
+    let boxes: Vec<Aabb> = faces
+        .iter()
+        .map(|f| {
+            let t = tri(f);
+            aabb(&[&t[0], &t[1], &t[2]])
+        })
+        .collect();
+    // Items are face indices: [i, 0, 0].
+    let mut grid = TriangleGrid::for_faces(points, faces);
+    for (i, b) in boxes.iter().enumerate() {
+        grid.insert_item(b, [i as u32, 0, 0]);
+    }
     let mut pairs: Vec<(usize, usize)> = (0..faces.len())
         .into_par_iter()
         .flat_map_iter(|i| {
             let f = faces[i];
             let t = tri(&f);
-            let b = aabb(&[&t[0], &t[1], &t[2]]);
             let mut found = Vec::new();
-            grid.visit(&b, |g| {
-                let j = index[&sorted(*g)];
-                if j > i && !found.contains(&j) {
-                    let u = tri(g);
-                    if boxes_meet(&b, &aabb(&[&u[0], &u[1], &u[2]]))
-                        && crate::geom::triangles_meet_improperly(&t, f, &u, *g)
-                    {
+            grid.visit(&boxes[i], |item| {
+                let j = item[0] as usize;
+                if j > i && boxes_meet(&boxes[i], &boxes[j]) && !found.contains(&j) {
+                    let g = faces[j];
+                    if crate::geom::triangles_meet_improperly(&t, f, &tri(&g), g) {
                         found.push(j);
                     }
                 }
@@ -204,9 +213,4 @@ pub(crate) fn improper_pairs(
     pairs.sort_unstable();
     pairs.truncate(limit);
     pairs
-}
-
-fn sorted(mut f: [u32; 3]) -> [u32; 3] {
-    f.sort_unstable();
-    f
 }

@@ -274,19 +274,17 @@ impl<'a> Trimmer<'a> {
     fn fits(&self, tet: &[u32; 4], removed: &[[u32; 3]]) -> bool {
         let geo = tet.map(|v| *self.p(v));
         let b = aabb(&[&geo[0], &geo[1], &geo[2], &geo[3]]);
-        let norm = |f: &[u32; 3]| {
-            let mut s = *f;
-            s.sort_unstable();
-            s
+        let same = |f: &[u32; 3], g: &[u32; 3]| {
+            (0..3).any(|r| [g[r], g[(r + 1) % 3], g[(r + 2) % 3]] == *f)
         };
-        let removed: Vec<[u32; 3]> = removed.iter().map(norm).collect();
+        // Dead faces stay in the grid: the ring look-up drops them before any geometry.
         let blocked = self.grid.visit(&b, |f| {
-            if !self.g.has_facet(f[0], f[1], f[2]) || removed.contains(&norm(f)) {
+            if !self.g.has_facet(f[0], f[1], f[2]) || removed.iter().any(|g| same(f, g)) {
                 return false;
             }
             let tri = f.map(|v| *self.p(v));
-            let fb = aabb(&[&tri[0], &tri[1], &tri[2]]);
-            crate::mesh::grid::boxes_meet(&b, &fb) && triangle_meets_tet(&tri, *f, &geo, tet)
+            crate::mesh::grid::boxes_meet(&b, &aabb(&[&tri[0], &tri[1], &tri[2]]))
+                && triangle_meets_tet(&tri, *f, &geo, tet)
         });
         !blocked
     }
