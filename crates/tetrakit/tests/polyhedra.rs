@@ -5,7 +5,8 @@
 use tetrakit::exact::{Domain, Options, Outcome, minimal_tetrahedralization};
 use tetrakit::polyhedra::generate::BpParams;
 use tetrakit::polyhedra::{
-    Polyhedron, SurfaceGraph, bp_nets, certify, generate, is_proper, mintetra, proper_nets_disjoint,
+    Checks, Polyhedron, SurfaceGraph, bp_nets, certify, generate, is_proper, mintetra,
+    mintetra_with, proper_nets_disjoint,
 };
 
 fn exact(p: &Polyhedron, unique: bool) -> Outcome {
@@ -35,6 +36,15 @@ fn check_against_solver(p: &Polyhedron, polar: usize, what: &str) -> Option<bool
         polar,
         "{what}: one polar edge per glued BP-net"
     );
+    // The CLI's fast mode (orientation checks only, then the certificate) must agree.
+    let fast = mintetra_with(p, Checks::OrientationOnly);
+    if fast.yes && certify(p, &fast.tets).is_ok() {
+        assert_eq!(
+            fast.tets.len(),
+            m.tets.len(),
+            "{what}: fast and shelling MINTETRA differ"
+        );
+    }
     match exact(p, true) {
         Outcome::Optimal {
             tets,

@@ -65,13 +65,32 @@ pub struct Mintetra {
 /// assert_eq!(m.tets.len(), 2); // two stacked tetrahedra, n - 3
 /// ```
 pub fn mintetra(p: &Polyhedron) -> Mintetra {
-    let mut t = Trimmer::new(p);
+    mintetra_with(p, Checks::Shelling)
+}
+
+/// How much geometry MINTETRA checks while trimming.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Checks {
+    /// Every removed tetrahedron is checked exactly against the current surface: a YES is
+    /// a shelling, and a NO means that no trim order the algorithm tries works.
+    Shelling,
+    /// Orientation checks only; the grid is not even built. Much faster, but a YES must
+    /// be certified ([`certify`](super::certify)): if it fails, or on NO, run
+    /// [`Checks::Shelling`]. The CLI does exactly this; the certificate is run on every
+    /// answer anyway, so the per-trim checks are redundant whenever it passes.
+    OrientationOnly,
+}
+
+/// MINTETRA with the given [`Checks`].
+pub fn mintetra_with(p: &Polyhedron, checks: Checks) -> Mintetra {
+    let mut t = Trimmer::new(p, checks == Checks::Shelling);
     t.run();
     t.finish()
 }
 
 struct Trimmer<'a> {
     points: &'a [Point3],
+    careful: bool,
     g: SurfaceGraph,
     grid: TriangleGrid,
     deg3: VecDeque<u32>,
@@ -84,15 +103,18 @@ struct Trimmer<'a> {
 }
 
 impl<'a> Trimmer<'a> {
-    fn new(p: &'a Polyhedron) -> Self {
+    fn new(p: &'a Polyhedron, careful: bool) -> Self {
         let mut grid = TriangleGrid::for_faces(&p.points, &p.faces);
-        for f in &p.faces {
-            grid.insert(&p.points, *f);
+        if careful {
+            for f in &p.faces {
+                grid.insert(&p.points, *f);
+            }
         }
         let g = SurfaceGraph::new(p);
         let n = p.points.len();
         let mut t = Trimmer {
             points: &p.points,
+            careful,
             g,
             grid,
             deg3: VecDeque::new(),
@@ -169,7 +191,7 @@ impl<'a> Trimmer<'a> {
         for &x in &r {
             self.g.unlink(x, u);
         }
-        self.grid.insert(self.points, [r[0], r[1], r[2]]);
+        self.index([r[0], r[1], r[2]]);
         r.iter().for_each(|&x| self.enqueue(x));
         true
     }
@@ -254,10 +276,17 @@ impl<'a> Trimmer<'a> {
         self.g.contract(c, w, u, a);
         self.g.unlink(b, u);
         self.g.unlink(d, w);
-        self.grid.insert(self.points, [a, b, c]);
-        self.grid.insert(self.points, [c, d, a]);
+        self.index([a, b, c]);
+        self.index([c, d, a]);
         [a, b, c, d].iter().for_each(|&x| self.enqueue(x));
         true
+    }
+
+    /// Adds a new surface face to the grid (only the careful mode queries it).
+    fn index(&mut self, f: [u32; 3]) {
+        if self.careful {
+            self.grid.insert(self.points, f);
+        }
     }
 
     fn push_tet(&mut self, t: [u32; 4]) {
@@ -272,6 +301,9 @@ impl<'a> Trimmer<'a> {
     /// True when the tetrahedron meets no current facet other than `removed` except in
     /// shared vertices and edges.
     fn fits(&self, tet: &[u32; 4], removed: &[[u32; 3]]) -> bool {
+        if !self.careful {
+            return true;
+        }
         let geo = tet.map(|v| *self.p(v));
         let b = aabb(&[&geo[0], &geo[1], &geo[2], &geo[3]]);
         let same = |f: &[u32; 3], g: &[u32; 3]| {

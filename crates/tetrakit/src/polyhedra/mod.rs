@@ -16,7 +16,7 @@ mod mintetra;
 pub use crate::mesh::{Polyhedron, SurfaceError};
 pub use bpnet::{BpNet, are_disjoint, bp_nets, is_proper, proper_nets_disjoint, strip_stacked};
 pub use graph::SurfaceGraph;
-pub use mintetra::{Mintetra, mintetra};
+pub use mintetra::{Checks, Mintetra, mintetra, mintetra_with};
 
 use crate::mesh::verify;
 
