@@ -2,10 +2,13 @@
 //!
 //! Exact algorithms for tetrahedralization problems, after the thesis *Studies of several
 //! tetrahedralization problems* (B. Yang): deciding whether a set of segments is exactly
-//! the edge set of a tetrahedralization (ch. 2), validating tetrahedral meshes, and
+//! the edge set of a tetrahedralization (ch. 2), validating tetrahedral meshes, minimal
+//! tetrahedralizations of polyhedra (ch. 3: [`polyhedra`] for MINTETRA on BP-polyhedra,
+//! [`exact`] for an exact SAT-based minimum of any polyhedron or point set), and
 //! generating test instances.
 //!
-//! Data flows one way: [`io`] → [`geom`] / [`mesh`] → algorithm ([`detect`]) →
+//! Data flows one way: [`io`] → [`geom`] / [`mesh`] → algorithm ([`detect`],
+//! [`polyhedra`], [`exact`]) →
 //! [`mesh::verify`] → [`io`]. Every geometric decision is exact ([`geom`]); every
 //! tetrahedralization returned has passed [`mesh::verify`].
 //!

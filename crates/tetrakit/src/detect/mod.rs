@@ -394,11 +394,6 @@ fn connectivity(g: &Graph) -> Result<(), Witness> {
     ))
 }
 
-fn sorted3(mut f: [u32; 3]) -> [u32; 3] {
-    f.sort_unstable();
-    f
-}
-
 /// The link triangles of consecutive runs of vertices, one flat buffer per run.
 struct LinkChunk {
     first: u32,
@@ -449,12 +444,18 @@ fn confirm(links: &mut Links) -> Result<Vec<[u32; 4]>, Witness> {
     links.chunks.par_iter_mut().for_each(|c| {
         for w in c.start.windows(2) {
             let fs = &mut c.faces[w[0] as usize..w[1] as usize];
-            fs.iter_mut().for_each(|f| *f = sorted3(*f));
+            fs.iter_mut()
+                .for_each(|f| *f = crate::mesh::sorted_face(*f));
             fs.sort_unstable();
         }
     });
     let links: &Links = links;
-    let found = |u: u32, f: [u32; 3]| links.of(u).binary_search(&sorted3(f)).is_ok();
+    let found = |u: u32, f: [u32; 3]| {
+        links
+            .of(u)
+            .binary_search(&crate::mesh::sorted_face(f))
+            .is_ok()
+    };
     let unconfirmed = tets.par_iter().find_any(|t| {
         (1..4).any(|i| {
             let o: Vec<u32> = (0..4).filter(|&j| j != i).map(|j| t[j]).collect();

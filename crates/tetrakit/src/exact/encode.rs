@@ -48,11 +48,6 @@ pub(crate) struct Candidates {
     pub(crate) offset: i64,
 }
 
-fn sorted3(mut f: [u32; 3]) -> [u32; 3] {
-    f.sort_unstable();
-    f
-}
-
 /// Enumerates candidates: every 4-subset of vertices that spans a tetrahedron whose
 /// closed set holds no other vertex; for a polyhedron, also no facet meeting it other
 /// than in shared vertices and edges, and the inner side of any facet it has.
@@ -64,7 +59,10 @@ pub(crate) fn candidates(domain: Domain) -> Candidates {
         Domain::Polyhedron(p) => p.faces.clone(),
         Domain::Points(_) => Vec::new(),
     };
-    let facet_set: HashMap<[u32; 3], [u32; 3]> = facets.iter().map(|&f| (sorted3(f), f)).collect();
+    let facet_set: HashMap<[u32; 3], [u32; 3]> = facets
+        .iter()
+        .map(|&f| (crate::mesh::sorted_face(f), f))
+        .collect();
     for a in 0..n {
         for b in a + 1..n {
             for c in b + 1..n {

@@ -73,3 +73,15 @@ pub fn edges_of(tets: &[[u32; 4]]) -> Vec<(u32, u32)> {
     e.dedup();
     e
 }
+
+/// A triangle's vertices in increasing order (its key regardless of orientation).
+pub(crate) fn sorted_face(mut f: [u32; 3]) -> [u32; 3] {
+    f.sort_unstable();
+    f
+}
+
+/// A triangle's rotation starting at its smallest vertex (its key with orientation).
+pub(crate) fn rotated_face(f: [u32; 3]) -> [u32; 3] {
+    let i = (0..3).min_by_key(|&i| f[i]).unwrap_or(0);
+    [f[i], f[(i + 1) % 3], f[(i + 2) % 3]]
+}

@@ -135,7 +135,12 @@ fn proper_on(poly: &Polyhedron, g: &SurfaceGraph, grid: &TriangleGrid, net: &BpN
     let own: Vec<[u32; 3]> = net
         .path
         .windows(2)
-        .flat_map(|w| [sorted([net.p, w[0], w[1]]), sorted([net.q, w[0], w[1]])])
+        .flat_map(|w| {
+            [
+                crate::mesh::sorted_face([net.p, w[0], w[1]]),
+                crate::mesh::sorted_face([net.q, w[0], w[1]]),
+            ]
+        })
         .collect();
     net.path.windows(2).all(|w| {
         let (x, y) = (w[0], w[1]);
@@ -152,7 +157,7 @@ fn proper_on(poly: &Polyhedron, g: &SurfaceGraph, grid: &TriangleGrid, net: &BpN
         let geo = tet.map(|v| *pt(v));
         let b = aabb(&[&geo[0], &geo[1], &geo[2], &geo[3]]);
         !grid.visit(&b, |f| {
-            if own.contains(&sorted(*f)) {
+            if own.contains(&crate::mesh::sorted_face(*f)) {
                 return false;
             }
             let tri = f.map(|v| *pt(v));
@@ -160,11 +165,6 @@ fn proper_on(poly: &Polyhedron, g: &SurfaceGraph, grid: &TriangleGrid, net: &BpN
                 && triangle_meets_tet(&tri, *f, &geo, &tet)
         })
     })
-}
-
-fn sorted(mut f: [u32; 3]) -> [u32; 3] {
-    f.sort_unstable();
-    f
 }
 
 /// Disjointness (§3.3.1): the interiors of the two tetrahedralized BP-nets do not meet.

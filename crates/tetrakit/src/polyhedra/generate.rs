@@ -31,12 +31,6 @@ struct Builder {
     opposite: HashMap<[u32; 3], u32>,
 }
 
-/// A face's rotation starting at its smallest vertex.
-fn key(f: [u32; 3]) -> [u32; 3] {
-    let i = (0..3).min_by_key(|&i| f[i]).unwrap_or(0);
-    [f[i], f[(i + 1) % 3], f[(i + 2) % 3]]
-}
-
 fn sub(a: &Point3, b: &Point3) -> [f64; 3] {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
@@ -85,7 +79,7 @@ impl Builder {
         let mut b = Builder::from_polyhedron(&p, 3.0);
         for f in &p.faces {
             let o = (0..4).find(|v| !f.contains(v)).expect("four vertices");
-            b.opposite.insert(key(*f), o);
+            b.opposite.insert(crate::mesh::rotated_face(*f), o);
         }
         b
     }
@@ -128,7 +122,7 @@ impl Builder {
             let o = (first..first + 4)
                 .find(|v| !f.contains(v))
                 .expect("four consecutive");
-            b.opposite.insert(key(*f), o);
+            b.opposite.insert(crate::mesh::rotated_face(*f), o);
         }
         b
     }
@@ -155,7 +149,7 @@ impl Builder {
         self.grid.insert(&self.points, f);
         self.pool.push(f);
         if let Some(o) = opposite {
-            self.opposite.insert(key(f), o);
+            self.opposite.insert(crate::mesh::rotated_face(f), o);
         }
     }
 
@@ -198,7 +192,7 @@ impl Builder {
         let size = dot(&n, &n).sqrt().sqrt();
         let n = unit(n);
         let mut tries: Vec<Point3> = Vec::new();
-        if let Some(&o) = self.opposite.get(&key(f)) {
+        if let Some(&o) = self.opposite.get(&crate::mesh::rotated_face(f)) {
             let po = self.points[o as usize];
             let d = dot(&sub(&po, &pa), &n);
             let mut j = || (rng.unit() - 0.5) * 0.1 * size;

@@ -41,7 +41,7 @@ pub fn certify(poly: &Polyhedron, tets: &[[u32; 4]]) -> Result<(), String> {
     let mut faces: Vec<([u32; 3], [u32; 3])> = tets
         .iter()
         .flat_map(|&[a, b, c, d]| [[a, c, b], [a, b, d], [a, d, c], [b, c, d]])
-        .map(|f| (sorted(f), canonical(f)))
+        .map(|f| (crate::mesh::sorted_face(f), crate::mesh::rotated_face(f)))
         .collect();
     faces.sort_unstable();
     let mut boundary = Vec::new();
@@ -56,7 +56,11 @@ pub fn certify(poly: &Polyhedron, tets: &[[u32; 4]]) -> Result<(), String> {
         }
         i = j;
     }
-    let mut want: Vec<[u32; 3]> = poly.faces.iter().map(|&f| canonical(f)).collect();
+    let mut want: Vec<[u32; 3]> = poly
+        .faces
+        .iter()
+        .map(|&f| crate::mesh::rotated_face(f))
+        .collect();
     boundary.sort_unstable();
     want.sort_unstable();
     if boundary != want {
@@ -67,15 +71,4 @@ pub fn certify(poly: &Polyhedron, tets: &[[u32; 4]]) -> Result<(), String> {
         ));
     }
     Ok(())
-}
-
-fn sorted(mut f: [u32; 3]) -> [u32; 3] {
-    f.sort_unstable();
-    f
-}
-
-/// The rotation of `f` starting at its smallest vertex (keeps orientation).
-fn canonical(f: [u32; 3]) -> [u32; 3] {
-    let i = (0..3).min_by_key(|&i| f[i]).unwrap_or(0);
-    [f[i], f[(i + 1) % 3], f[(i + 2) % 3]]
 }
