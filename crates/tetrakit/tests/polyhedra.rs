@@ -244,26 +244,7 @@ fn graph_theorems_hold_on_generated_polyhedra() {
         let g = SurfaceGraph::new(p);
         let n = p.points.len();
         let deg = |v: u32| g.degree(v);
-        for v in 0..n as u32 {
-            let adj = g.ring(v);
-            if deg(v) == 3 && n > 4 {
-                // Theorem 3.1: two degree-3 vertices are not adjacent.
-                assert!(adj.iter().all(|&w| deg(w) != 3), "Theorem 3.1");
-                // Theorem 3.2: at most one neighbour of degree < 5.
-                if n > 5 {
-                    assert!(
-                        adj.iter().filter(|&&w| deg(w) < 5).count() <= 1,
-                        "Theorem 3.2"
-                    );
-                }
-            }
-            if deg(v) == 4 && n > 6 {
-                // Theorem 3.3, the part that holds: at most two neighbours of degree < 5
-                // (that they are never adjacent is false: see the next test).
-                let low = adj.iter().filter(|&&w| deg(w) < 5).count();
-                assert!(low <= 2, "Theorem 3.3");
-            }
-        }
+        assert_eq!(g.degree_theorem_violations(), vec![], "Theorems 3.1-3.3");
         // Theorem 3.4: every edge between two degree-4 vertices lies on a BP-net found.
         let nets = bp_nets(&g);
         for v in 0..n as u32 {

@@ -124,6 +124,45 @@ impl SurfaceGraph {
         out
     }
 
+    /// Checks the degree theorems of §3.2 on this graph and returns what fails, each
+    /// with the vertices involved (empty for the graph of any simple polyhedron):
+    /// Theorem 3.1 (no two adjacent degree-3 vertices when n > 4), Theorem 3.2 (a
+    /// degree-3 vertex has at most one neighbour of degree < 5 when n > 5) and the count
+    /// part of Theorem 3.3 (a degree-4 vertex has at most two neighbours of degree < 5
+    /// when n > 6). Theorem 3.3 also claims those two are never adjacent; that is false
+    /// (an octahedron with a tetrahedron stacked on a face), so it is not checked.
+    ///
+    /// ```
+    /// use tetrakit::polyhedra::{generate, SurfaceGraph};
+    /// let g = SurfaceGraph::new(&generate::stacked(12, 5));
+    /// assert!(g.degree_theorem_violations().is_empty());
+    /// ```
+    pub fn degree_theorem_violations(&self) -> Vec<(&'static str, Vec<u32>)> {
+        let n = self.alive;
+        let mut out = Vec::new();
+        for v in 0..self.len() as u32 {
+            let adj = self.ring(v);
+            let low: Vec<u32> = adj
+                .iter()
+                .copied()
+                .filter(|&w| self.degree(w) < 5)
+                .collect();
+            match self.degree(v) {
+                3 if n > 4 => {
+                    if let Some(&w) = adj.iter().find(|&&w| self.degree(w) == 3) {
+                        out.push(("Theorem 3.1", vec![v, w]));
+                    }
+                    if n > 5 && low.len() > 1 {
+                        out.push(("Theorem 3.2", [vec![v], low].concat()));
+                    }
+                }
+                4 if n > 6 && low.len() > 2 => out.push(("Theorem 3.3", [vec![v], low].concat())),
+                _ => {}
+            }
+        }
+        out
+    }
+
     /// The ring of `v` rotated to start at `first`.
     pub(crate) fn ring_from(&self, v: u32, first: u32) -> Option<Vec<u32>> {
         let r = &self.rings[v as usize];
