@@ -105,7 +105,7 @@ fn mintetra_is_minimal_and_unique_on_bp_polyhedra() {
 #[test]
 fn mintetra_is_minimal_and_unique_on_two_level_bp_polyhedra() {
     let mut cases = 0;
-    for seed in 0..220u64 {
+    for seed in 0..260u64 {
         let params = BpParams {
             core: 4 + (seed % 3) as usize,
             nets: 1 + (seed % 2) as usize,
@@ -125,7 +125,7 @@ fn mintetra_is_minimal_and_unique_on_two_level_bp_polyhedra() {
         let _ = unique;
         cases += 1;
     }
-    assert!(cases >= 150, "only {cases} cases");
+    assert!(cases >= 200, "only {cases} cases"); // with the 300 one-level cases: 500+
 }
 
 #[test]
