@@ -130,10 +130,11 @@ fn confirm_with_solver(
 
 fn print_mintetra(v: &Value, yes: bool) {
     if yes {
-        out!(
-            "MINTETRA: YES: an augmented BP-polyhedron with {} level(s)",
-            v["levels"]
-        );
+        match v["levels"].as_u64() {
+            Some(0) => out!("MINTETRA: YES: a stacked polyhedron (no diagonal needed)"),
+            Some(h) => out!("MINTETRA: YES: an augmented BP-polyhedron with {h} level(s)"),
+            None => {}
+        }
         out!(
             "  {} vertices, {} tetrahedra (lower bound n - 3 = {}), {} polar edge(s): {}",
             v["vertices"],
@@ -348,6 +349,14 @@ pub enum PolyGen {
 }
 
 pub fn generate(kind: PolyGen, seed: u64, output: &Path) -> u8 {
+    if let PolyGen::Bp(params) = &kind {
+        if !(1..=12).contains(&params.levels) {
+            return fail("--levels must be between 1 and 12 (each level can double the nets)");
+        }
+        if params.core > 50_000_000 || params.nets > params.core.max(4) {
+            return fail("--core must be at most 5e7 and --nets at most --core");
+        }
+    }
     let (p, note) = match kind {
         PolyGen::Stacked { n } => (generate::stacked(n, seed), String::new()),
         PolyGen::Bipyramid { m } => (generate::bipyramid(m, seed), String::new()),
