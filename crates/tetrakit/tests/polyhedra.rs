@@ -312,3 +312,93 @@ fn theorem_3_3_fails_on_a_stacked_octahedron() {
     certify(&p, &m.tets).unwrap();
     assert_eq!(m.tets.len(), p.points.len() - 3 + m.polar_edges.len());
 }
+
+/// The exact solver against brute force on tiny point sets (interior, coplanar and
+/// cospherical points included): the smallest k such that some k empty tetrahedra pass
+/// `mesh::verify` against the hull and use every point.
+#[test]
+fn exact_minimum_matches_brute_force_on_tiny_point_sets() {
+    use tetrakit::geom::{Hull3, orient3d, point_in_closed_tetrahedron};
+    use tetrakit::rng::Rng;
+    let mut rng = Rng::new(77);
+    let mut checked = 0;
+    for round in 0..160 {
+        let n = 5 + round % 2 + usize::from(round % 20 == 0);
+        let pts: Vec<[f64; 3]> = (0..n)
+            .map(|_| {
+                if round % 3 == 0 {
+                    [0, 1, 2].map(|_| rng.below(3) as f64) // a small grid: degenerate
+                } else {
+                    [0, 1, 2].map(|_| rng.unit())
+                }
+            })
+            .collect();
+        let mut dedup = pts.clone();
+        dedup.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        dedup.dedup();
+        if dedup.len() < n || tetrakit::geom::affine_dimension(&pts) < 3 {
+            continue;
+        }
+        let (out, _) =
+            minimal_tetrahedralization(Domain::Points(&pts), &Options::default()).unwrap();
+        let Outcome::Optimal { tets, .. } = out else {
+            panic!("points always triangulate")
+        };
+        let hull = Hull3::new(&pts);
+        let n32 = n as u32;
+        let mut cands = Vec::new();
+        for a in 0..n32 {
+            for b in a + 1..n32 {
+                for c in b + 1..n32 {
+                    for d in c + 1..n32 {
+                        let g = [a, b, c, d].map(|v| pts[v as usize]);
+                        let empty = (0..n32).all(|x| {
+                            [a, b, c, d].contains(&x)
+                                || !point_in_closed_tetrahedron(&pts[x as usize], &g)
+                        });
+                        if orient3d(&g[0], &g[1], &g[2], &g[3]) != 0 && empty {
+                            let t = if orient3d(&g[0], &g[1], &g[2], &g[3]) > 0 {
+                                [a, b, c, d]
+                            } else {
+                                [a, c, b, d]
+                            };
+                            cands.push(t);
+                        }
+                    }
+                }
+            }
+        }
+        let valid = |set: &[[u32; 4]]| {
+            let mut used = vec![false; n];
+            set.iter().flatten().for_each(|&v| used[v as usize] = true);
+            used.iter().all(|&u| u) && tetrakit::mesh::verify(&pts, set, Some(&hull)).is_valid()
+        };
+        // Smallest k with a valid k-subset.
+        let mut brute = None;
+        'k: for k in 1..=cands.len() {
+            let mut idx: Vec<usize> = (0..k).collect();
+            loop {
+                let set: Vec<[u32; 4]> = idx.iter().map(|&i| cands[i]).collect();
+                if valid(&set) {
+                    brute = Some(k);
+                    break 'k;
+                }
+                // next combination
+                let mut i = k;
+                while i > 0 && idx[i - 1] == cands.len() - k + i - 1 {
+                    i -= 1;
+                }
+                if i == 0 {
+                    break;
+                }
+                idx[i - 1] += 1;
+                for j in i..k {
+                    idx[j] = idx[j - 1] + 1;
+                }
+            }
+        }
+        assert_eq!(Some(tets.len()), brute, "round {round}: {pts:?}");
+        checked += 1;
+    }
+    assert!(checked >= 80, "only {checked} instances");
+}
