@@ -54,11 +54,13 @@ pub fn bp_nets(g: &SurfaceGraph) -> Vec<BpNet> {
             let inner = |x: u32| {
                 g.degree(x) == 4 && {
                     let rx = g.ring(x);
-                    rx.contains(&p) && rx.contains(&q) && g.tri(p, x).is_some()
+                    rx.contains(&p) && rx.contains(&q)
                 }
             };
-            // Walk both ways from v along neighbours that are not the poles.
+            // Walk both ways from v along neighbours that are not the poles; the second
+            // walk collects its half backwards.
             let mut path = vec![v];
+            let mut left = Vec::new();
             let mut closed = false;
             for dir in 0..2 {
                 let mut prev = v;
@@ -71,7 +73,7 @@ pub fn bp_nets(g: &SurfaceGraph) -> Vec<BpNet> {
                     if dir == 0 {
                         path.push(cur);
                     } else {
-                        path.insert(0, cur);
+                        left.push(cur);
                     }
                     if !inner(cur) {
                         break;
@@ -86,6 +88,9 @@ pub fn bp_nets(g: &SurfaceGraph) -> Vec<BpNet> {
                     break;
                 }
             }
+            left.reverse();
+            left.extend(path);
+            let path = left;
             let interior = path.len().saturating_sub(2);
             for &x in &path[1..path.len() - 1] {
                 seen.insert((x, p.min(q), p.max(q)));
