@@ -34,6 +34,8 @@ pub(crate) struct TriangleUse {
     pub(crate) pos: Vec<u32>,
     /// ... on the negative side.
     pub(crate) neg: Vec<u32>,
+    /// For a point set: the triangle lies in a supporting plane (on the hull's boundary).
+    pub(crate) on_hull: bool,
 }
 
 /// Candidates and the structure the clauses need.
@@ -115,9 +117,13 @@ pub(crate) fn candidates(domain: Domain) -> Candidates {
     let (boundary_edges, boundary_vertices) = match domain {
         Domain::Polyhedron(p) => (p.edges().into_iter().collect(), p.points.len()),
         Domain::Points(_) => {
+            for (f, usage) in triangles.iter_mut() {
+                usage.on_hull = supporting(pts, f);
+            }
             let on_hull: std::collections::HashSet<[u32; 2]> = triangles
-                .keys()
-                .filter(|f| supporting(pts, f))
+                .iter()
+                .filter(|(_, usage)| usage.on_hull)
+                .map(|(f, _)| f)
                 .flat_map(|f| [[f[0], f[1]], [f[0], f[2]], [f[1], f[2]]])
                 .collect();
             let hull = crate::geom::Hull3::new(pts);
@@ -139,7 +145,7 @@ pub(crate) fn candidates(domain: Domain) -> Candidates {
 }
 
 /// True when the plane of `f` supports the point set (all points on one closed side).
-pub(crate) fn supporting(pts: &[Point3], f: &[u32; 3]) -> bool {
+fn supporting(pts: &[Point3], f: &[u32; 3]) -> bool {
     let [a, b, c] = f.map(|v| &pts[v as usize]);
     let mut seen = 0i8;
     for p in pts {

@@ -323,16 +323,11 @@ fn add_structure(
     domain: Domain,
     anchor: Option<&[u32]>,
 ) {
-    let pts = domain.points();
     let facets: std::collections::HashSet<[u32; 3]> = match domain {
         Domain::Polyhedron(p) => p
             .faces
             .iter()
-            .map(|&f| {
-                let mut s = f;
-                s.sort_unstable();
-                s
-            })
+            .map(|&f| crate::mesh::sorted_face(f))
             .collect(),
         Domain::Points(_) => Default::default(),
     };
@@ -350,7 +345,7 @@ fn add_structure(
             add(solver, inner);
             continue;
         }
-        if matches!(domain, Domain::Points(_)) && encode::supporting(pts, key) {
+        if usage.on_hull {
             continue;
         }
         for (side, other) in [(&pos, &neg), (&neg, &pos)] {
@@ -361,15 +356,9 @@ fn add_structure(
             }
         }
     }
-    if let Domain::Polyhedron(p) = domain {
-        // A facet no candidate has: no tetrahedralization.
-        for f in &p.faces {
-            let mut s = *f;
-            s.sort_unstable();
-            if !cand.triangles.contains_key(&s) {
-                add(solver, &[]);
-            }
-        }
+    // A facet no candidate has: no tetrahedralization.
+    if facets.iter().any(|f| !cand.triangles.contains_key(f)) {
+        add(solver, &[]);
     }
     if let Some(holders) = anchor {
         let l = lits(holders);

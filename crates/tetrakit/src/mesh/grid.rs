@@ -85,7 +85,7 @@ impl TriangleGrid {
     /// A grid whose cells are about the size of the larger faces (90th percentile), so that a cell
     /// holds O(1) faces of a surface whatever its overall shape (a bounding-box based
     /// size puts a long or crumpled surface into few cells).
-    pub(crate) fn for_faces(points: &[Point3], faces: &[[u32; 3]]) -> Self {
+    pub(crate) fn sized_for(points: &[Point3], faces: &[[u32; 3]]) -> Self {
         let step = (faces.len() / 4096).max(1);
         let mut sizes: Vec<f64> = faces
             .iter()
@@ -106,6 +106,37 @@ impl TriangleGrid {
             *sizes.select_nth_unstable_by(at, f64::total_cmp).1
         };
         Self::with_cell(points, 1.5 * large)
+    }
+
+    /// A grid sized for `faces` (see [`TriangleGrid::sized_for`]) holding all of them.
+    pub(crate) fn of_faces(points: &[Point3], faces: &[[u32; 3]]) -> Self {
+        let mut grid = Self::sized_for(points, faces);
+        for f in faces {
+            grid.insert(points, *f);
+        }
+        grid
+    }
+
+    /// True when a stored triangle for which `live` holds meets the closed tetrahedron
+    /// `tet` anywhere other than in the vertices and edges they share (exact). `live` is
+    /// asked first, so it should be the cheap test (e.g. "still on the surface and not
+    /// one of the faces being replaced").
+    pub(crate) fn blocks_tet(
+        &self,
+        points: &[Point3],
+        tet: &[u32; 4],
+        live: impl Fn(&[u32; 3]) -> bool,
+    ) -> bool {
+        let geo = tet.map(|v| points[v as usize]);
+        let b = aabb(&[&geo[0], &geo[1], &geo[2], &geo[3]]);
+        self.visit(&b, |f| {
+            if !live(f) {
+                return false;
+            }
+            let tri = f.map(|v| points[v as usize]);
+            boxes_meet(&b, &aabb(&[&tri[0], &tri[1], &tri[2]]))
+                && crate::geom::triangle_meets_tet(&tri, *f, &geo, tet)
+        })
     }
 
     /// A grid with cells of side `cell` (a non-positive or non-finite size means 1).
@@ -187,7 +218,7 @@ pub(crate) fn improper_pairs(
         })
         .collect();
     // Items are face indices: [i, 0, 0].
-    let mut grid = TriangleGrid::for_faces(points, faces);
+    let mut grid = TriangleGrid::sized_for(points, faces);
     for (i, b) in boxes.iter().enumerate() {
         grid.insert_item(b, [i as u32, 0, 0]);
     }

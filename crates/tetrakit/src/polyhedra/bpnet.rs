@@ -2,8 +2,9 @@
 //! whether they are proper and pairwise disjoint.
 
 use super::{Polyhedron, SurfaceGraph};
-use crate::geom::{Point3, orient3d, tetrahedra_overlap, triangle_meets_tet};
+use crate::geom::{Point3, orient3d, tetrahedra_overlap};
 use crate::mesh::grid::{Aabb, TriangleGrid, aabb, boxes_meet};
+use crate::mesh::sorted_face;
 
 /// A BP-net `B(p v0 v1 … vm q)`: poles `p`, `q` and a path `v0 … vm` (m ≥ 3) whose every
 /// vertex is adjacent to both poles and whose inner vertices have degree 4. A bipyramid
@@ -127,26 +128,11 @@ pub fn is_proper(poly: &Polyhedron, g: &SurfaceGraph, net: &BpNet) -> bool {
 }
 
 fn surface_grid(poly: &Polyhedron, g: &SurfaceGraph) -> TriangleGrid {
-    let facets = g.facets();
-    let mut grid = TriangleGrid::for_faces(&poly.points, &facets);
-    for f in &facets {
-        grid.insert(&poly.points, *f);
-    }
-    grid
+    TriangleGrid::of_faces(&poly.points, &g.facets())
 }
 
 fn proper_on(poly: &Polyhedron, g: &SurfaceGraph, grid: &TriangleGrid, net: &BpNet) -> bool {
     let pt = |v: u32| &poly.points[v as usize];
-    let own: Vec<[u32; 3]> = net
-        .path
-        .windows(2)
-        .flat_map(|w| {
-            [
-                crate::mesh::sorted_face([net.p, w[0], w[1]]),
-                crate::mesh::sorted_face([net.q, w[0], w[1]]),
-            ]
-        })
-        .collect();
     net.path.windows(2).all(|w| {
         let (x, y) = (w[0], w[1]);
         // The facet (p, x, y) or (p, y, x) is on the surface; its inner side holds q.
@@ -158,16 +144,11 @@ fn proper_on(poly: &Polyhedron, g: &SurfaceGraph, grid: &TriangleGrid, net: &BpN
         if orient3d(pt(facet.0), pt(facet.1), pt(facet.2), pt(net.q)) >= 0 {
             return false;
         }
-        let tet = [net.p, net.q, x, y];
-        let geo = tet.map(|v| *pt(v));
-        let b = aabb(&[&geo[0], &geo[1], &geo[2], &geo[3]]);
-        !grid.visit(&b, |f| {
-            if own.contains(&crate::mesh::sorted_face(*f)) {
-                return false;
-            }
-            let tri = f.map(|v| *pt(v));
-            boxes_meet(&b, &aabb(&[&tri[0], &tri[1], &tri[2]]))
-                && triangle_meets_tet(&tri, *f, &geo, &tet)
+        // Only this tetrahedron's own two facets are exempt: the net's other facets must
+        // not cut into it either (a folded net is not proper).
+        let own = [[net.p, x, y], [net.q, x, y]].map(sorted_face);
+        !grid.blocks_tet(&poly.points, &[net.p, net.q, x, y], |f| {
+            !own.contains(&sorted_face(*f))
         })
     })
 }

@@ -13,8 +13,9 @@
 //!   to `p` and `q`. Trimming it restores `pq`, which becomes the polar edge.
 
 use super::{Polyhedron, SurfaceGraph};
-use crate::geom::{Point3, orient3d, triangle_meets_tet};
-use crate::mesh::grid::{TriangleGrid, aabb, boxes_meet};
+use crate::geom::{Point3, orient3d};
+use crate::mesh::grid::TriangleGrid;
+use crate::mesh::rotated_face;
 use crate::rng::Rng;
 use std::collections::{HashMap, HashSet};
 
@@ -79,7 +80,7 @@ impl Builder {
         let mut b = Builder::from_polyhedron(&p, 3.0);
         for f in &p.faces {
             let o = (0..4).find(|v| !f.contains(v)).expect("four vertices");
-            b.opposite.insert(crate::mesh::rotated_face(*f), o);
+            b.opposite.insert(rotated_face(*f), o);
         }
         b
     }
@@ -122,7 +123,7 @@ impl Builder {
             let o = (first..first + 4)
                 .find(|v| !f.contains(v))
                 .expect("four consecutive");
-            b.opposite.insert(crate::mesh::rotated_face(*f), o);
+            b.opposite.insert(rotated_face(*f), o);
         }
         b
     }
@@ -149,7 +150,7 @@ impl Builder {
         self.grid.insert(&self.points, f);
         self.pool.push(f);
         if let Some(o) = opposite {
-            self.opposite.insert(crate::mesh::rotated_face(f), o);
+            self.opposite.insert(rotated_face(f), o);
         }
     }
 
@@ -167,18 +168,9 @@ impl Builder {
     /// True when the tetrahedron meets no current face but `replaced` except in shared
     /// vertices and edges (exact).
     fn free(&self, tet: [u32; 4], replaced: &[[u32; 3]]) -> bool {
-        let geo = tet.map(|v| self.points[v as usize]);
-        let b = aabb(&[&geo[0], &geo[1], &geo[2], &geo[3]]);
-        let same = |f: &[u32; 3], g: &[u32; 3]| {
-            (0..3).any(|r| [g[r], g[(r + 1) % 3], g[(r + 2) % 3]] == *f)
-        };
-        !self.grid.visit(&b, |f| {
-            if !self.has_face(f) || replaced.iter().any(|g| same(f, g)) {
-                return false;
-            }
-            let tri = f.map(|v| self.points[v as usize]);
-            boxes_meet(&b, &aabb(&[&tri[0], &tri[1], &tri[2]]))
-                && triangle_meets_tet(&tri, *f, &geo, &tet)
+        let replaced: Vec<[u32; 3]> = replaced.iter().map(|&g| rotated_face(g)).collect();
+        !self.grid.blocks_tet(&self.points, &tet, |f| {
+            self.has_face(f) && !replaced.contains(&rotated_face(*f))
         })
     }
 
@@ -192,7 +184,7 @@ impl Builder {
         let size = dot(&n, &n).sqrt().sqrt();
         let n = unit(n);
         let mut tries: Vec<Point3> = Vec::new();
-        if let Some(&o) = self.opposite.get(&crate::mesh::rotated_face(f)) {
+        if let Some(&o) = self.opposite.get(&rotated_face(f)) {
             let po = self.points[o as usize];
             let d = dot(&sub(&po, &pa), &n);
             let mut j = || (rng.unit() - 0.5) * 0.1 * size;

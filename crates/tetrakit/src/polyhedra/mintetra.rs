@@ -29,8 +29,9 @@
 //!   for the conjecture's h-level ones (§3.5).
 
 use super::{Polyhedron, SurfaceGraph};
-use crate::geom::{Point3, orient3d, tetrahedra_overlap, triangle_meets_tet};
-use crate::mesh::grid::{TriangleGrid, aabb};
+use crate::geom::{Point3, orient3d, tetrahedra_overlap};
+use crate::mesh::grid::TriangleGrid;
+use crate::mesh::rotated_face;
 use std::collections::{HashMap, VecDeque};
 
 /// What MINTETRA found.
@@ -90,9 +91,8 @@ pub fn mintetra_with(p: &Polyhedron, checks: Checks) -> Mintetra {
 
 struct Trimmer<'a> {
     points: &'a [Point3],
-    careful: bool,
     g: SurfaceGraph,
-    grid: TriangleGrid,
+    grid: Option<TriangleGrid>,
     deg3: VecDeque<u32>,
     deg4: VecDeque<u32>,
     blocked: Vec<u32>,
@@ -104,17 +104,12 @@ struct Trimmer<'a> {
 
 impl<'a> Trimmer<'a> {
     fn new(p: &'a Polyhedron, careful: bool) -> Self {
-        let mut grid = TriangleGrid::for_faces(&p.points, &p.faces);
-        if careful {
-            for f in &p.faces {
-                grid.insert(&p.points, *f);
-            }
-        }
+        // Only the careful mode queries the grid.
+        let grid = careful.then(|| TriangleGrid::of_faces(&p.points, &p.faces));
         let g = SurfaceGraph::new(p);
         let n = p.points.len();
         let mut t = Trimmer {
             points: &p.points,
-            careful,
             g,
             grid,
             deg3: VecDeque::new(),
@@ -284,8 +279,8 @@ impl<'a> Trimmer<'a> {
 
     /// Adds a new surface face to the grid (only the careful mode queries it).
     fn index(&mut self, f: [u32; 3]) {
-        if self.careful {
-            self.grid.insert(self.points, f);
+        if let Some(grid) = &mut self.grid {
+            grid.insert(self.points, f);
         }
     }
 
@@ -300,25 +295,15 @@ impl<'a> Trimmer<'a> {
 
     /// True when the tetrahedron meets no current facet other than `removed` except in
     /// shared vertices and edges.
-    fn fits(&self, tet: &[u32; 4], removed: &[[u32; 3]]) -> bool {
-        if !self.careful {
+    fn fits<const N: usize>(&self, tet: &[u32; 4], removed: &[[u32; 3]; N]) -> bool {
+        let Some(grid) = &self.grid else {
             return true;
-        }
-        let geo = tet.map(|v| *self.p(v));
-        let b = aabb(&[&geo[0], &geo[1], &geo[2], &geo[3]]);
-        let same = |f: &[u32; 3], g: &[u32; 3]| {
-            (0..3).any(|r| [g[r], g[(r + 1) % 3], g[(r + 2) % 3]] == *f)
         };
         // Dead faces stay in the grid: the ring look-up drops them before any geometry.
-        let blocked = self.grid.visit(&b, |f| {
-            if !self.g.has_facet(f[0], f[1], f[2]) || removed.iter().any(|g| same(f, g)) {
-                return false;
-            }
-            let tri = f.map(|v| *self.p(v));
-            crate::mesh::grid::boxes_meet(&b, &aabb(&[&tri[0], &tri[1], &tri[2]]))
-                && triangle_meets_tet(&tri, *f, &geo, tet)
-        });
-        !blocked
+        let removed = removed.map(rotated_face);
+        !grid.blocks_tet(self.points, tet, |f| {
+            self.g.has_facet(f[0], f[1], f[2]) && !removed.contains(&rotated_face(*f))
+        })
     }
 
     fn finish(self) -> Mintetra {
