@@ -1,7 +1,9 @@
 //! A uniform hash grid over triangle bounding boxes: the spatial filter in front of the
 //! exact triangle tests (self-intersection of a surface, tetrahedra against the current
 //! surface in MINTETRA). A filter only: it may return triangles that do not meet the query
-//! box, never miss one that does.
+//! box, never miss one that does. Cell indices are computed in floating point, but the
+//! map x ↦ clamp(floor((x − origin)·inv)) is monotone, so two boxes that meet exactly get
+//! cell ranges that meet; the only geometric decisions are the exact tests behind it.
 
 use crate::geom::Point3;
 use std::collections::HashMap;

@@ -6,7 +6,7 @@
 
 mod embed;
 pub(crate) mod grid;
-mod surface;
+pub(crate) mod surface;
 mod verify;
 mod verify2;
 

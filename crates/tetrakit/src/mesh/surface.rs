@@ -293,7 +293,9 @@ fn traverses(f: &[u32; 3], a: u32, b: u32) -> bool {
 }
 
 /// Every vertex's faces form one disk (otherwise two cones touch at the vertex).
-fn check_vertex_disks(faces: &[[u32; 3]], n: usize) -> Result<(), SurfaceError> {
+/// The star of every vertex, flat: the faces `(v, a, b)` of vertex `v` are the pairs
+/// `(a, b)` in `link[start[v]..start[v + 1]]`.
+pub(crate) fn vertex_stars(faces: &[[u32; 3]], n: usize) -> (Vec<usize>, Vec<(u32, u32)>) {
     let mut start = vec![0usize; n + 1];
     for f in faces {
         f.iter().for_each(|&v| start[v as usize + 1] += 1);
@@ -310,6 +312,11 @@ fn check_vertex_disks(faces: &[[u32; 3]], n: usize) -> Result<(), SurfaceError> 
             fill[v] += 1;
         }
     }
+    (start, link)
+}
+
+fn check_vertex_disks(faces: &[[u32; 3]], n: usize) -> Result<(), SurfaceError> {
+    let (start, link) = vertex_stars(faces, n);
     for v in 0..n {
         let star = &link[start[v]..start[v + 1]];
         let mut cur = star[0].1;

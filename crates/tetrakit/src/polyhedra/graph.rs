@@ -27,22 +27,7 @@ impl SurfaceGraph {
     /// The graph of a (validated) polyhedron.
     pub fn new(p: &Polyhedron) -> Self {
         let n = p.points.len();
-        let mut start = vec![0usize; n + 1];
-        for f in &p.faces {
-            f.iter().for_each(|&v| start[v as usize + 1] += 1);
-        }
-        for i in 0..n {
-            start[i + 1] += start[i];
-        }
-        let mut fill = start.clone();
-        let mut star = vec![(0u32, 0u32); start[n]];
-        for f in &p.faces {
-            for r in 0..3 {
-                let v = f[r] as usize;
-                star[fill[v]] = (f[(r + 1) % 3], f[(r + 2) % 3]);
-                fill[v] += 1;
-            }
-        }
+        let (start, star) = crate::mesh::surface::vertex_stars(&p.faces, n);
         let rings = (0..n)
             .map(|v| {
                 let s = &star[start[v]..start[v + 1]];
