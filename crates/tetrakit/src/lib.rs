@@ -28,5 +28,6 @@ pub mod generate;
 pub mod geom;
 pub mod io;
 pub mod mesh;
+pub mod planar;
 pub mod polyhedra;
 pub mod rng;

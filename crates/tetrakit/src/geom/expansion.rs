@@ -113,6 +113,11 @@ impl Expansion {
         }
     }
 
+    /// The non-overlapping components, in increasing magnitude.
+    pub fn components(&self) -> &[f64] {
+        &self.0
+    }
+
     /// The nearest `f64` to the sum, up to the rounding of the final additions.
     pub fn estimate(&self) -> f64 {
         self.0.iter().sum()

@@ -9,6 +9,8 @@ mod hull2;
 mod hull3;
 mod intersect;
 mod predicates;
+mod proximity;
+mod radical;
 
 pub use expansion::{Expansion, det3, edge_edge_side, orient3d_value, parallel};
 pub use hull2::Hull2;
@@ -24,3 +26,8 @@ pub use predicates::{
     collinear3, coordinate_in_range, drop_axis, incircle, insphere, lex_cmp, orient2d,
     orient2d_drop, orient3d, projection_axis, strictly_between,
 };
+pub use proximity::{
+    DiamondHit, Ratio, cmp_length, corner_dot_sign, diamond_hit, in_beta_region, in_lune,
+    squared_length,
+};
+pub use radical::{Interval, compare_root_sums};

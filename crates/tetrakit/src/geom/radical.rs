@@ -1,0 +1,267 @@
+//! Certified weights: intervals of sums of lengths, and the exact comparison of two sums
+//! of square roots.
+//!
+//! Lengths are square roots of squared lengths, which are exact dyadic rationals
+//! ([`Expansion`]s). Most comparisons of triangulation weights are decided by
+//! [`Interval`]s with outward rounding. When two intervals overlap, [`compare_root_sums`]
+//! decides exactly:
+//!
+//! 1. every term `√(N·2^e)` becomes `2^⌊e/2⌋·√R` with an integer radicand `R` (`N` or
+//!    `2N`); equal radicands are merged;
+//! 2. two radicands whose product is a perfect square are *equivalent* (`√R_j` is a
+//!    rational multiple of `√R_i`) and are merged with a rational factor;
+//! 3. square roots of pairwise inequivalent positive integers are linearly independent
+//!    over ℚ (Besicovitch, 1940), so the difference is zero exactly when every merged
+//!    coefficient is zero (this is how ties on grids and regular polygons are certified);
+//! 4. otherwise the difference is non-zero, and it is bracketed with integer square roots
+//!    at 64, 128, 256, … bits until the bracket excludes zero, which must happen.
+
+use super::Expansion;
+use num_bigint::{BigInt, BigUint, Sign};
+use std::cmp::Ordering;
+
+/// A closed interval `[lo, hi]` of reals with `f64` ends, for certified weights.
+///
+/// ```
+/// use tetrakit::geom::Interval;
+/// let w = Interval::length(&[0.0, 0.0], &[3.0, 4.0]).add(Interval::length(&[0.0, 0.0], &[1.0, 0.0]));
+/// assert!(w.lo <= 6.0 && 6.0 <= w.hi && w.hi - w.lo < 1e-13);
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Interval {
+    /// Lower end.
+    pub lo: f64,
+    /// Upper end.
+    pub hi: f64,
+}
+
+/// Relative error bound of a length computed in `f64` (`3ε` plus margin; module docs).
+const LENGTH_ERROR: f64 = 8.881784197001252e-16; // 2^-50
+
+impl Interval {
+    /// The interval `[0, 0]`.
+    pub const ZERO: Interval = Interval { lo: 0.0, hi: 0.0 };
+
+    /// An interval containing the Euclidean length `|ab|`. The length computed in `f64`
+    /// has relative error below `3ε` (two rounded differences, squares and sum, square
+    /// root), so widening by `2^-50` relative and one ulp is safe.
+    pub fn length(a: &[f64; 2], b: &[f64; 2]) -> Interval {
+        let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+        let l = (dx * dx + dy * dy).sqrt();
+        Interval {
+            lo: (l * (1.0 - LENGTH_ERROR)).next_down().max(0.0),
+            hi: (l * (1.0 + LENGTH_ERROR)).next_up(),
+        }
+    }
+
+    /// The interval sum, rounded outward.
+    pub fn add(self, other: Interval) -> Interval {
+        Interval {
+            lo: (self.lo + other.lo).next_down(),
+            hi: (self.hi + other.hi).next_up(),
+        }
+    }
+
+    /// The midpoint, a best estimate.
+    pub fn mid(self) -> f64 {
+        0.5 * (self.lo + self.hi)
+    }
+
+    /// `Some(ordering)` when the intervals decide it (disjoint), `None` when they overlap.
+    pub fn certain_cmp(self, other: Interval) -> Option<Ordering> {
+        if self.hi < other.lo {
+            Some(Ordering::Less)
+        } else if self.lo > other.hi {
+            Some(Ordering::Greater)
+        } else {
+            None
+        }
+    }
+}
+
+/// `x = m·2^e` with an integer `m` (exact for every finite `f64`).
+fn decompose(x: f64) -> (i64, i32) {
+    let bits = x.to_bits();
+    let exp = ((bits >> 52) & 0x7ff) as i32;
+    let frac = (bits & ((1u64 << 52) - 1)) as i64;
+    let (m, e) = if exp == 0 {
+        (frac, -1074)
+    } else {
+        (frac | (1i64 << 52), exp - 1075)
+    };
+    (if x < 0.0 { -m } else { m }, e)
+}
+
+/// A non-negative dyadic rational `value = n·2^e` as an integer `n` and exponent `e`.
+fn to_dyadic(x: &Expansion) -> (BigUint, i32) {
+    let parts: Vec<(i64, i32)> = x.components().iter().map(|&c| decompose(c)).collect();
+    let Some(e0) = parts.iter().map(|p| p.1).min() else {
+        return (BigUint::default(), 0);
+    };
+    let n: BigInt = parts
+        .iter()
+        .map(|&(m, e)| BigInt::from(m) << ((e - e0) as usize))
+        .sum();
+    (
+        n.to_biguint().expect("squared lengths are non-negative"),
+        e0,
+    )
+}
+
+/// A term `coef·√radicand` with a rational coefficient `num/den`.
+#[derive(Clone, Debug)]
+struct Term {
+    num: BigInt,
+    den: BigUint,
+    radicand: BigUint,
+}
+
+fn term(x: &Expansion, sign: Sign) -> Option<Term> {
+    let (n, e) = to_dyadic(x);
+    if n == BigUint::default() {
+        return None;
+    }
+    // √(n·2^e) = 2^⌊e/2⌋ √(n·2^(e mod 2)).
+    let half = e.div_euclid(2);
+    let radicand = if e.rem_euclid(2) == 1 { n << 1usize } else { n };
+    let (num, den) = if half >= 0 {
+        (BigUint::from(1u8) << (half as usize), BigUint::from(1u8))
+    } else {
+        (BigUint::from(1u8), BigUint::from(1u8) << ((-half) as usize))
+    };
+    Some(Term {
+        num: BigInt::from_biguint(sign, num),
+        den,
+        radicand,
+    })
+}
+
+fn add_to(t: &mut Term, num: BigInt, den: &BigUint) {
+    // t.num/t.den + num/den
+    t.num = &t.num * BigInt::from(den.clone()) + num * BigInt::from(t.den.clone());
+    t.den = &t.den * den;
+}
+
+/// The exact sign of `Σ √a_i − Σ √b_j` for non-negative exact values (squared lengths).
+///
+/// ```
+/// use tetrakit::geom::{Expansion, compare_root_sums};
+/// use std::cmp::Ordering;
+/// let e = |x: f64| Expansion::from(x);
+/// // √8 = 2√2 exactly, and √2 + √8 = √18.
+/// assert_eq!(compare_root_sums(&[e(2.0), e(8.0)], &[e(18.0)]), Ordering::Equal);
+/// assert_eq!(compare_root_sums(&[e(2.0), e(3.0)], &[e(10.0)]), Ordering::Less);
+/// ```
+pub fn compare_root_sums(a: &[Expansion], b: &[Expansion]) -> Ordering {
+    let mut terms: Vec<Term> = Vec::new();
+    let items = a.iter().map(|x| (x, Sign::Plus));
+    for (x, sign) in items.chain(b.iter().map(|x| (x, Sign::Minus))) {
+        let Some(t) = term(x, sign) else { continue };
+        match terms.iter_mut().find(|u| u.radicand == t.radicand) {
+            Some(u) => add_to(u, t.num, &t.den),
+            None => terms.push(t),
+        }
+    }
+    merge_equivalent(&mut terms);
+    terms.retain(|t| t.num.sign() != Sign::NoSign);
+    if terms.is_empty() {
+        return Ordering::Equal;
+    }
+    bracket_sign(&terms)
+}
+
+/// Merges terms whose radicands differ by a rational square: `√R_j = (s/R_i)·√R_i`
+/// when `R_i·R_j = s²`.
+fn merge_equivalent(terms: &mut Vec<Term>) {
+    let mut i = 0;
+    while i < terms.len() {
+        let mut j = i + 1;
+        while j < terms.len() {
+            let prod = &terms[i].radicand * &terms[j].radicand;
+            let s = prod.sqrt();
+            if &s * &s == prod {
+                let t = terms.swap_remove(j);
+                // (t.num/t.den)·(s/R_i)·√R_i
+                let den = t.den * &terms[i].radicand;
+                add_to(&mut terms[i], t.num * BigInt::from(s), &den);
+            } else {
+                j += 1;
+            }
+        }
+        i += 1;
+    }
+}
+
+/// The sign of a non-zero `Σ c_i √R_i`, by integer square roots of increasing precision.
+fn bracket_sign(terms: &[Term]) -> Ordering {
+    // Scale to integer coefficients m_i = c_i · Π den.
+    let common: BigUint = terms.iter().fold(BigUint::from(1u8), |acc, t| acc * &t.den);
+    let coefs: Vec<BigInt> = terms
+        .iter()
+        .map(|t| &t.num * BigInt::from(&common / &t.den))
+        .collect();
+    let mut bits = 64usize;
+    loop {
+        let (mut lo, mut hi) = (BigInt::default(), BigInt::default());
+        for (t, m) in terms.iter().zip(&coefs) {
+            let s = BigInt::from((&t.radicand << (2 * bits)).sqrt());
+            let s1 = &s + 1;
+            if m.sign() == Sign::Plus {
+                lo += m * &s;
+                hi += m * &s1;
+            } else {
+                lo += m * &s1;
+                hi += m * &s;
+            }
+        }
+        if lo.sign() == Sign::Plus {
+            return Ordering::Greater;
+        }
+        if hi.sign() == Sign::Minus {
+            return Ordering::Less;
+        }
+        bits *= 2;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geom::squared_length;
+
+    #[test]
+    fn decompose_is_exact() {
+        for x in [1.0, -3.5, 0.1, 1e-300, 5e-324, 1e300] {
+            let (m, e) = decompose(x);
+            assert_eq!(m as f64 * 2f64.powi(e), x);
+        }
+    }
+
+    #[test]
+    fn ties_on_grids_are_exact() {
+        // Two triangulations of a unit square: diagonals of equal length.
+        let d1 = squared_length(&[0.0, 0.0], &[1.0, 1.0]);
+        let d2 = squared_length(&[1.0, 0.0], &[0.0, 1.0]);
+        assert_eq!(compare_root_sums(&[d1.clone()], &[d2]), Ordering::Equal);
+        // 3√2 versus √2 + √8 (both 3√2), with fractional coordinates.
+        let e = |a: [f64; 2], b: [f64; 2]| squared_length(&a, &b);
+        let lhs = [e([0.0, 0.0], [0.3, 0.3])];
+        let rhs = [e([0.0, 0.0], [0.1, 0.1]), e([0.1, 0.1], [0.3, 0.3])];
+        // 0.1, 0.3 are not exact in binary, so these differ; the answer must match
+        // high-precision arithmetic on the actual doubles.
+        let approx = |v: &[Expansion]| -> f64 { v.iter().map(|x| x.estimate().sqrt()).sum() };
+        let expected = approx(&lhs).partial_cmp(&approx(&rhs)).unwrap();
+        let got = compare_root_sums(&lhs, &rhs);
+        assert!(got == expected || (approx(&lhs) - approx(&rhs)).abs() < 1e-15);
+    }
+
+    #[test]
+    fn near_ties_are_separated() {
+        // √(10^6 + 1) + √(10^6 - 1) < 2·10^3, by about 2.5e-10.
+        let e = |x: f64| Expansion::from(x);
+        assert_eq!(
+            compare_root_sums(&[e(1e6 + 1.0), e(1e6 - 1.0)], &[e(1e6), e(1e6)]),
+            Ordering::Less
+        );
+    }
+}

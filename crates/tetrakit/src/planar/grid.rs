@@ -1,0 +1,109 @@
+//! A uniform bucket grid over planar points for box queries whose boxes are computed
+//! in floating point: the cell range is widened by one cell on each side, so a box that
+//! is off by less than a cell still reaches every point it should (the exact predicates
+//! decide membership).
+
+use crate::geom::Point2;
+
+/// Points bucketed by cell, in compressed rows.
+pub(crate) struct PointGrid {
+    origin: Point2,
+    cell: f64,
+    nx: usize,
+    ny: usize,
+    start: Vec<u32>,
+    items: Vec<u32>,
+}
+
+impl PointGrid {
+    /// A grid of about `per_cell` points per cell over the bounding box of `points`.
+    pub fn new(points: &[Point2], per_cell: f64) -> PointGrid {
+        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for p in points {
+            for k in 0..2 {
+                lo[k] = lo[k].min(p[k]);
+                hi[k] = hi[k].max(p[k]);
+            }
+        }
+        let (w, h) = ((hi[0] - lo[0]).max(0.0), (hi[1] - lo[1]).max(0.0));
+        let cells = (points.len() as f64 / per_cell).clamp(1.0, 4e7);
+        let mut cell = ((w * h) / cells).sqrt();
+        if !(cell > 0.0) || !cell.is_finite() {
+            cell = (w.max(h) / cells).max(f64::MIN_POSITIVE);
+        }
+        let nx = ((w / cell) as usize + 1).min(1 << 14);
+        let ny = ((h / cell) as usize + 1).min(1 << 14);
+        let cell = cell.max(w / nx as f64).max(h / ny as f64);
+        let mut g = PointGrid {
+            origin: lo,
+            cell,
+            nx,
+            ny,
+            start: vec![0; nx * ny + 1],
+            items: vec![0; points.len()],
+        };
+        let keys: Vec<usize> = points.iter().map(|p| g.key(p)).collect();
+        for &k in &keys {
+            g.start[k + 1] += 1;
+        }
+        for i in 0..nx * ny {
+            g.start[i + 1] += g.start[i];
+        }
+        let mut fill = g.start.clone();
+        for (i, &k) in keys.iter().enumerate() {
+            g.items[fill[k] as usize] = i as u32;
+            fill[k] += 1;
+        }
+        g
+    }
+
+    fn coord(&self, x: f64, k: usize, n: usize) -> usize {
+        let c = ((x - self.origin[k]) / self.cell).floor();
+        if c <= 0.0 { 0 } else { (c as usize).min(n - 1) }
+    }
+
+    fn key(&self, p: &Point2) -> usize {
+        self.coord(p[1], 1, self.ny) * self.nx + self.coord(p[0], 0, self.nx)
+    }
+
+    /// Side length of a cell.
+    pub fn cell(&self) -> f64 {
+        self.cell
+    }
+
+    /// The cell `(x, y)` holding `p`.
+    pub fn cell_of(&self, p: &Point2) -> (usize, usize) {
+        (self.coord(p[0], 0, self.nx), self.coord(p[1], 1, self.ny))
+    }
+
+    /// Grid dimensions in cells.
+    pub fn dims(&self) -> (usize, usize) {
+        (self.nx, self.ny)
+    }
+
+    /// The points in cells `x0..=x1` of row `y` (caller keeps indices in range).
+    pub fn row(&self, y: usize, x0: usize, x1: usize) -> &[u32] {
+        let row = y * self.nx;
+        &self.items[self.start[row + x0] as usize..self.start[row + x1 + 1] as usize]
+    }
+
+    /// Calls `f` on every point in cells meeting the box `[lo, hi]` widened by one cell;
+    /// stops early when `f` returns true, and returns whether it did.
+    pub fn any_in_box(&self, lo: Point2, hi: Point2, mut f: impl FnMut(u32) -> bool) -> bool {
+        let x0 = self.coord(lo[0], 0, self.nx).saturating_sub(1);
+        let y0 = self.coord(lo[1], 1, self.ny).saturating_sub(1);
+        let x1 = (self.coord(hi[0], 0, self.nx) + 1).min(self.nx - 1);
+        let y1 = (self.coord(hi[1], 1, self.ny) + 1).min(self.ny - 1);
+        for y in y0..=y1 {
+            let row = y * self.nx;
+            let (a, b) = (
+                self.start[row + x0] as usize,
+                self.start[row + x1 + 1] as usize,
+            );
+            if self.items[a..b].iter().any(|&i| f(i)) {
+                return true;
+            }
+        }
+        false
+    }
+}

@@ -1,0 +1,38 @@
+//! Planar proximity structures of thesis ch. 5: β-skeletons ([`beta_skeleton`]), exact
+//! minimum weight triangulations ([`mwt`]), and the counterexample to Keil's conjecture
+//! of §5.2–5.3 ([`keil`]).
+//!
+//! Every decision is exact: β is a rational ([`Ratio`](crate::geom::Ratio)), regions are
+//! tested by polynomial signs ([`crate::geom::in_beta_region`]), and weights are compared
+//! with certified intervals and an exact fallback for sums of square roots
+//! ([`crate::geom::compare_root_sums`]).
+
+mod delaunay;
+mod grid;
+mod mwt;
+mod skeleton;
+
+pub use delaunay::{Delaunay, DelaunayEdge, delaunay};
+pub use mwt::{
+    Mwt, MwtOptions, MwtStats, candidate_edges, cmp_edge_sets, mwt, mwt_with, weight_of,
+};
+pub use skeleton::{Region, Skeleton, beta_skeleton};
+
+/// An error of a planar computation (bad parameters or an internal inconsistency).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct PlanarError(pub String);
+
+impl PlanarError {
+    /// An error with a message.
+    pub fn new(message: impl Into<String>) -> Self {
+        PlanarError(message.into())
+    }
+}
+
+impl std::fmt::Display for PlanarError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for PlanarError {}

@@ -1,0 +1,271 @@
+//! The LMT-skeleton (Dickerson and Montague; Belleville et al.), in the form of
+//! Beirouti and Snoeyink with certain edges found by crossings.
+//!
+//! Each candidate edge is *alive*, *certain* (in every MWT) or *impossible* (in none).
+//! Soundness rests on two facts about every MWT `M` (all of whose edges are candidates):
+//! 1. `M` is locally minimal: an interior edge `pq` of `M` bounds triangles `pqr`, `pqs`
+//!    of `M` whose edges are in `M`, hence alive, and if `prqs` is strictly convex then
+//!    `|pq| ≤ |rs|`. An alive edge without such a pair of alive triangles is impossible.
+//! 2. `M` is a maximal plane graph: an alive edge crossed by no alive edge crosses no
+//!    edge of `M`, so it is in `M`, and is certain. Hull edges are certain.
+//!
+//! Statuses only ever move from alive to impossible or certain, so the per-edge tests
+//! run in parallel rounds: a stale "alive" read only makes a test more lenient.
+
+use crate::geom::{Hull2, Point2, cmp_length, orient2d};
+use rayon::prelude::*;
+use std::sync::atomic::{AtomicBool, AtomicU8, Ordering::Relaxed};
+
+/// Edge status codes.
+pub const ALIVE: u8 = 0;
+/// In every MWT.
+pub const CERTAIN: u8 = 1;
+/// In no MWT.
+pub const IMPOSSIBLE: u8 = 2;
+
+/// The candidate graph with edge statuses.
+pub struct Skeleton {
+    /// Candidate edges `[p, q]`, `p < q`.
+    pub edges: Vec<[u32; 2]>,
+    /// Status of each edge.
+    pub status: Vec<u8>,
+    /// Adjacency in compressed rows: `(neighbour, edge)` sorted by neighbour.
+    pub start: Vec<u32>,
+    /// See `start`.
+    pub adj: Vec<(u32, u32)>,
+}
+
+impl Skeleton {
+    /// Neighbours of `v` with edge ids.
+    pub fn around(&self, v: u32) -> &[(u32, u32)] {
+        &self.adj[self.start[v as usize] as usize..self.start[v as usize + 1] as usize]
+    }
+}
+
+fn adjacency(n: usize, edges: &[[u32; 2]]) -> (Vec<u32>, Vec<(u32, u32)>) {
+    let mut start = vec![0u32; n + 1];
+    for e in edges {
+        start[e[0] as usize + 1] += 1;
+        start[e[1] as usize + 1] += 1;
+    }
+    for i in 0..n {
+        start[i + 1] += start[i];
+    }
+    let mut fill = start.clone();
+    let mut adj = vec![(0u32, 0u32); start[n] as usize];
+    for (id, e) in edges.iter().enumerate() {
+        for (a, b) in [(e[0], e[1]), (e[1], e[0])] {
+            adj[fill[a as usize] as usize] = (b, id as u32);
+            fill[a as usize] += 1;
+        }
+    }
+    for v in 0..n {
+        adj[start[v] as usize..start[v + 1] as usize].sort_unstable();
+    }
+    (start, adj)
+}
+
+/// Hull edges (consecutive boundary sites, collinear ones included), as `[p, q]`, `p < q`.
+pub fn hull_edges(points: &[Point2]) -> Vec<[u32; 2]> {
+    let hull = Hull2::new(points);
+    let h = hull.vertices.len();
+    let mut out = Vec::new();
+    let extra: Vec<u32> = (0..points.len() as u32)
+        .filter(|&i| hull.on_boundary[i as usize] && !hull.vertices.contains(&i))
+        .collect();
+    for k in 0..h {
+        let (a, b) = (hull.vertices[k], hull.vertices[(k + 1) % h]);
+        let (pa, pb) = (&points[a as usize], &points[b as usize]);
+        let mut chain: Vec<u32> = extra
+            .iter()
+            .copied()
+            .filter(|&c| {
+                let pc = &points[c as usize];
+                orient2d(pa, pb, pc) == 0 && crate::geom::corner_dot_sign(pa, pb, pc) < 0
+            })
+            .collect();
+        let dist = |c: u32| {
+            let pc = &points[c as usize];
+            (pc[0] - pa[0]).abs() + (pc[1] - pa[1]).abs()
+        };
+        chain.sort_by(|&x, &y| dist(x).total_cmp(&dist(y)));
+        chain.insert(0, a);
+        chain.push(b);
+        for w in chain.windows(2) {
+            out.push([w[0].min(w[1]), w[0].max(w[1])]);
+        }
+    }
+    out
+}
+
+/// Common alive neighbours `r` of `p` and `q`: `(r, edge pr, edge qr)`.
+fn common(sk: &Skeleton, status: &[AtomicU8], p: u32, q: u32, out: &mut Vec<(u32, u32, u32)>) {
+    out.clear();
+    let (a, b) = (sk.around(p), sk.around(q));
+    let (mut i, mut j) = (0, 0);
+    while i < a.len() && j < b.len() {
+        match a[i].0.cmp(&b[j].0) {
+            std::cmp::Ordering::Less => i += 1,
+            std::cmp::Ordering::Greater => j += 1,
+            std::cmp::Ordering::Equal => {
+                let (epr, eqr) = (a[i].1, b[j].1);
+                if status[epr as usize].load(Relaxed) != IMPOSSIBLE
+                    && status[eqr as usize].load(Relaxed) != IMPOSSIBLE
+                {
+                    out.push((a[i].0, epr, eqr));
+                }
+                i += 1;
+                j += 1;
+            }
+        }
+    }
+}
+
+/// True when the edge has a locally minimal pair of alive triangles.
+fn locally_minimal(
+    points: &[Point2],
+    sk: &Skeleton,
+    status: &[AtomicU8],
+    e: u32,
+    buf: &mut Vec<(u32, u32, u32)>,
+) -> bool {
+    let [p, q] = sk.edges[e as usize];
+    common(sk, status, p, q, buf);
+    let pt = |i: u32| &points[i as usize];
+    let (pp, pq) = (pt(p), pt(q));
+    let side: Vec<(u32, i8)> = buf
+        .iter()
+        .map(|&(r, _, _)| (r, orient2d(pp, pq, pt(r))))
+        .collect();
+    for &(r, sr) in &side {
+        if sr <= 0 {
+            continue;
+        }
+        for &(s, ss) in &side {
+            if ss >= 0 {
+                continue;
+            }
+            let (a, b) = (orient2d(pt(r), pt(s), pp), orient2d(pt(r), pt(s), pq));
+            let convex = a * b < 0;
+            if !convex || cmp_length(pp, pq, pt(r), pt(s)) != std::cmp::Ordering::Greater {
+                return true;
+            }
+        }
+    }
+    false
+}
+
+/// Runs the LMT rounds from `queue` to a fixpoint; returns the edges made impossible.
+fn eliminate(
+    points: &[Point2],
+    sk: &Skeleton,
+    status: &[AtomicU8],
+    mut queue: Vec<u32>,
+) -> Vec<u32> {
+    let queued: Vec<AtomicBool> = (0..sk.edges.len())
+        .map(|_| AtomicBool::new(false))
+        .collect();
+    let mut all = Vec::new();
+    while !queue.is_empty() {
+        let dead: Vec<u32> = queue
+            .par_iter()
+            .map_init(Vec::new, |buf, &e| {
+                queued[e as usize].store(false, Relaxed);
+                let ok = status[e as usize].load(Relaxed) != ALIVE
+                    || locally_minimal(points, sk, status, e, buf);
+                if !ok {
+                    status[e as usize].store(IMPOSSIBLE, Relaxed);
+                }
+                (!ok).then_some(e)
+            })
+            .flatten_iter()
+            .collect();
+        queue = dead
+            .par_iter()
+            .map_init(Vec::new, |buf, &e| {
+                let [p, q] = sk.edges[e as usize];
+                common(sk, status, p, q, buf);
+                buf.iter()
+                    .flat_map(|&(_, a, b)| [a, b])
+                    .filter(|&f| {
+                        status[f as usize].load(Relaxed) == ALIVE
+                            && !queued[f as usize].swap(true, Relaxed)
+                    })
+                    .collect::<Vec<u32>>()
+            })
+            .flatten_iter()
+            .collect();
+        all.extend(dead);
+    }
+    all
+}
+
+/// Alive edges crossed by no other alive (or certain) edge.
+fn crossed_by_none(points: &[Point2], sk: &Skeleton) -> Vec<usize> {
+    let kept: Vec<u32> = (0..sk.edges.len() as u32)
+        .filter(|&e| sk.status[e as usize] != IMPOSSIBLE)
+        .collect();
+    let grid = super::edge_grid::EdgeGrid::new(points, &sk.edges, &kept);
+    kept.par_iter()
+        .filter(|&&e| sk.status[e as usize] == ALIVE && !grid.crossed(points, &sk.edges, e))
+        .map(|&e| e as usize)
+        .collect()
+}
+
+/// Statistics of an LMT run.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct LmtStats {
+    /// Certain edges at the end.
+    pub certain: usize,
+    /// Edges still undecided.
+    pub undecided: usize,
+}
+
+/// Computes the LMT-skeleton of `candidates` (sorted `[p, q]`, `p < q`, containing every
+/// MWT edge), with `forced` edges taken as certain (their crossers impossible).
+pub fn lmt_skeleton(
+    points: &[Point2],
+    candidates: Vec<[u32; 2]>,
+    forced: &[[u32; 2]],
+) -> (Skeleton, LmtStats) {
+    let n = points.len();
+    let (start, adj) = adjacency(n, &candidates);
+    let mut sk = Skeleton {
+        status: vec![ALIVE; candidates.len()],
+        edges: candidates,
+        start,
+        adj,
+    };
+    let find = |sk: &Skeleton, e: &[u32; 2]| sk.edges.binary_search(e).ok();
+    for e in hull_edges(points).iter().chain(forced) {
+        if let Some(id) = find(&sk, e) {
+            sk.status[id] = CERTAIN;
+        }
+    }
+    if !forced.is_empty() {
+        for (id, e) in sk.edges.iter().enumerate() {
+            let pt = |i: u32| &points[i as usize];
+            for f in forced {
+                if e != f && super::cross(pt(e[0]), pt(e[1]), pt(f[0]), pt(f[1])) {
+                    sk.status[id] = IMPOSSIBLE;
+                }
+            }
+        }
+    }
+    let status: Vec<AtomicU8> = sk.status.iter().map(|&s| AtomicU8::new(s)).collect();
+    let queue: Vec<u32> = (0..sk.edges.len() as u32)
+        .filter(|&e| sk.status[e as usize] == ALIVE)
+        .collect();
+    eliminate(points, &sk, &status, queue);
+    sk.status = status.into_iter().map(|s| s.into_inner()).collect();
+    // An alive edge that no alive edge crosses is in every MWT (fact 2). Promotion
+    // changes no LMT test, so one pass suffices.
+    let promote: Vec<usize> = crossed_by_none(points, &sk);
+    for e in promote {
+        sk.status[e] = CERTAIN;
+    }
+    let certain = sk.status.iter().filter(|&&s| s == CERTAIN).count();
+    let undecided = sk.status.iter().filter(|&&s| s == ALIVE).count();
+    let stats = LmtStats { certain, undecided };
+    (sk, stats)
+}

@@ -1,0 +1,318 @@
+//! Exact minimum weight triangulations (thesis §5.1; the pipeline of Beirouti–Snoeyink
+//! and Haas): the diamond test ([`candidates`]), the LMT-skeleton ([`lmt`]), and an
+//! exact stage on the faces the skeleton leaves ([`faces`]): dynamic programming on
+//! simple faces, branching over connecting edges for faces with holes. The result is
+//! verified as a triangulation and its weight is a certified interval; every weight
+//! comparison is exact.
+
+mod candidates;
+mod edge_grid;
+mod faces;
+mod lmt;
+mod walks;
+
+pub use candidates::candidate_edges;
+pub use faces::cmp_edge_sets;
+
+use super::PlanarError;
+use crate::geom::{Hull2, Interval, Point2, orient2d};
+use crate::mesh::verify_triangulation;
+use faces::{Face, Solution};
+use lmt::{ALIVE, CERTAIN};
+use rayon::prelude::*;
+use std::collections::{HashMap, HashSet};
+use std::time::Instant;
+use walks::{Rotation, walk_area_sign};
+
+/// True when the open segments `ab` and `cd` cross at one interior point (exact).
+pub(crate) fn cross(a: &Point2, b: &Point2, c: &Point2, d: &Point2) -> bool {
+    orient2d(a, b, c) * orient2d(a, b, d) < 0 && orient2d(c, d, a) * orient2d(c, d, b) < 0
+}
+
+/// Options of [`mwt_with`].
+#[derive(Clone, Debug, Default)]
+pub struct MwtOptions {
+    /// Edges every triangulation considered must contain (a constrained optimum). The
+    /// diamond test does not apply to constrained optima, so all segments are candidates
+    /// when this is non-empty (meant for small inputs).
+    pub forced: Vec<[u32; 2]>,
+    /// Edges no triangulation considered may contain.
+    pub forbidden: Vec<[u32; 2]>,
+}
+
+/// Statistics of an MWT computation.
+#[derive(Clone, Debug, Default)]
+pub struct MwtStats {
+    /// Candidate edges after the diamond test.
+    pub candidates: usize,
+    /// Edges fixed by the LMT-skeleton (hull edges included).
+    pub skeleton_edges: usize,
+    /// Candidate edges still undecided after the LMT-skeleton.
+    pub undecided_edges: usize,
+    /// Faces left to the exact stage.
+    pub faces_left: usize,
+    /// Of those, faces with holes.
+    pub faces_with_holes: usize,
+    /// Largest face (walk length) left to the exact stage.
+    pub largest_face: usize,
+    /// Seconds in the candidate filter, the LMT-skeleton and the exact stage.
+    pub seconds: [f64; 3],
+}
+
+/// A minimum weight triangulation.
+#[derive(Clone, Debug, Default)]
+pub struct Mwt {
+    /// Edges `[p, q]`, `p < q`, sorted.
+    pub edges: Vec<[u32; 2]>,
+    /// Counter-clockwise triangles (empty when the sites are collinear).
+    pub triangles: Vec<[u32; 3]>,
+    /// The total length, certified.
+    pub weight: Interval,
+    /// Edges fixed by the LMT-skeleton (in every MWT), sorted.
+    pub skeleton: Vec<[u32; 2]>,
+    /// How the answer was found.
+    pub stats: MwtStats,
+}
+
+/// The exact minimum weight triangulation of distinct sites.
+///
+/// ```
+/// use tetrakit::planar::mwt;
+/// let pts = [[0.0, 0.0], [4.0, 0.0], [4.0, 3.0], [0.0, 3.0], [1.0, 1.5]];
+/// let t = mwt(&pts).unwrap();
+/// assert_eq!((t.edges.len(), t.triangles.len()), (8, 4));
+/// assert!(t.weight.lo <= t.weight.hi);
+/// ```
+pub fn mwt(points: &[Point2]) -> Result<Mwt, PlanarError> {
+    mwt_with(points, &MwtOptions::default())
+}
+
+/// The total length of `edges`, certified.
+pub fn weight_of(points: &[Point2], edges: &[[u32; 2]]) -> Interval {
+    edges
+        .par_iter()
+        .map(|e| Interval::length(&points[e[0] as usize], &points[e[1] as usize]))
+        .reduce(|| Interval::ZERO, Interval::add)
+}
+
+/// [`mwt`] with constraints.
+pub fn mwt_with(points: &[Point2], opts: &MwtOptions) -> Result<Mwt, PlanarError> {
+    let hull = Hull2::new(points);
+    if hull.vertices.len() < 3 {
+        return Ok(collinear(points));
+    }
+    let mut stats = MwtStats::default();
+    let t0 = Instant::now();
+    let constrained = !opts.forced.is_empty() || !opts.forbidden.is_empty();
+    let mut cands = if constrained {
+        all_segments(points)
+    } else {
+        candidate_edges(points)
+    };
+    if constrained {
+        let forbidden: HashSet<[u32; 2]> = opts
+            .forbidden
+            .iter()
+            .map(|e| [e[0].min(e[1]), e[0].max(e[1])])
+            .collect();
+        cands.retain(|e| !forbidden.contains(e));
+    }
+    let forced: Vec<[u32; 2]> = opts
+        .forced
+        .iter()
+        .map(|e| [e[0].min(e[1]), e[0].max(e[1])])
+        .collect();
+    for f in &forced {
+        if cands.binary_search(f).is_err() {
+            return Err(PlanarError::new(format!(
+                "forced edge {}-{} passes through a site or is forbidden",
+                f[0], f[1]
+            )));
+        }
+    }
+    stats.candidates = cands.len();
+    stats.seconds[0] = t0.elapsed().as_secs_f64();
+    let t1 = Instant::now();
+    let (sk, lstats) = lmt::lmt_skeleton(points, cands, &forced);
+    stats.skeleton_edges = lstats.certain;
+    stats.undecided_edges = lstats.undecided;
+    stats.seconds[1] = t1.elapsed().as_secs_f64();
+    let t2 = Instant::now();
+    let certain: Vec<[u32; 2]> = sk
+        .edges
+        .iter()
+        .zip(&sk.status)
+        .filter(|(_, s)| **s == CERTAIN)
+        .map(|(e, _)| *e)
+        .collect();
+    let alive: Vec<[u32; 2]> = sk
+        .edges
+        .iter()
+        .zip(&sk.status)
+        .filter(|(_, s)| **s == ALIVE)
+        .map(|(e, _)| *e)
+        .collect();
+    let mut edges = certain.clone();
+    if !alive.is_empty() {
+        let problems = undecided_faces(points, &certain, &alive)?;
+        stats.faces_left = problems.len();
+        stats.faces_with_holes = problems.iter().filter(|(f, _)| !f.holes.is_empty()).count();
+        stats.largest_face = problems
+            .iter()
+            .map(|(f, _)| f.outer.len())
+            .max()
+            .unwrap_or(0);
+        let solved: Vec<Option<Solution>> = problems
+            .par_iter()
+            .map(|(face, chords)| {
+                let mut budget = faces::BRANCH_LIMIT;
+                faces::solve(points, face, chords, &mut budget)
+            })
+            .collect();
+        for s in solved {
+            let s = s.ok_or_else(|| {
+                PlanarError::new(
+                    "the exact stage gave up on a face with too many holes (branch limit)",
+                )
+            })?;
+            edges.extend(s.edges);
+        }
+    }
+    stats.seconds[2] = t2.elapsed().as_secs_f64();
+    edges.par_sort_unstable();
+    edges.dedup();
+    let triangles = triangles_of(points, &edges);
+    let report = verify_triangulation(points, &triangles);
+    if !report.is_valid() || edges.len() != 3 * points.len() - 3 - hull_size(&hull) {
+        return Err(PlanarError::new(format!(
+            "internal: the MWT edges do not form a triangulation ({} edges, {} triangles)",
+            edges.len(),
+            triangles.len()
+        )));
+    }
+    let weight = weight_of(points, &edges);
+    Ok(Mwt {
+        edges,
+        triangles,
+        weight,
+        skeleton: certain,
+        stats,
+    })
+}
+
+fn hull_size(hull: &Hull2) -> usize {
+    hull.on_boundary.iter().filter(|&&b| b).count()
+}
+
+fn collinear(points: &[Point2]) -> Mwt {
+    let mut order: Vec<u32> = (0..points.len() as u32).collect();
+    order.sort_by(|&a, &b| {
+        points[a as usize]
+            .partial_cmp(&points[b as usize])
+            .expect("finite")
+    });
+    let mut edges: Vec<[u32; 2]> = order
+        .windows(2)
+        .map(|w| [w[0].min(w[1]), w[0].max(w[1])])
+        .collect();
+    edges.sort_unstable();
+    let weight = weight_of(points, &edges);
+    Mwt {
+        skeleton: edges.clone(),
+        edges,
+        triangles: Vec::new(),
+        weight,
+        stats: MwtStats::default(),
+    }
+}
+
+/// Every segment without a site on its open interior (`O(n³)`; small inputs).
+fn all_segments(points: &[Point2]) -> Vec<[u32; 2]> {
+    let n = points.len() as u32;
+    (0..n)
+        .flat_map(|a| (a + 1..n).map(move |b| [a, b]))
+        .filter(|&[a, b]| {
+            let (pa, pb) = (&points[a as usize], &points[b as usize]);
+            !(0..n).any(|r| {
+                r != a && r != b && crate::geom::diamond_hit(pa, pb, &points[r as usize]).on_segment
+            })
+        })
+        .collect()
+}
+
+/// Counter-clockwise triangles of a plane graph whose bounded faces are triangles.
+fn triangles_of(points: &[Point2], edges: &[[u32; 2]]) -> Vec<[u32; 3]> {
+    let rot = Rotation::new(points, edges);
+    let (walks, _) = rot.walks();
+    walks
+        .into_iter()
+        .filter(|w| {
+            w.len() == 3
+                && orient2d(
+                    &points[w[0] as usize],
+                    &points[w[1] as usize],
+                    &points[w[2] as usize],
+                ) > 0
+        })
+        .map(|w| [w[0], w[1], w[2]])
+        .collect()
+}
+
+fn find(parent: &mut [u32], mut x: u32) -> u32 {
+    while parent[x as usize] != x {
+        parent[x as usize] = parent[parent[x as usize] as usize];
+        x = parent[x as usize];
+    }
+    x
+}
+
+/// Groups the alive edges by the face of the certain edges they lie in.
+fn undecided_faces(
+    points: &[Point2],
+    certain: &[[u32; 2]],
+    alive: &[[u32; 2]],
+) -> Result<Vec<(Face, HashSet<[u32; 2]>)>, PlanarError> {
+    let rot = Rotation::new(points, certain);
+    let (walks, walk_of) = rot.walks();
+    let w = walks.len() as u32;
+    let mut parent: Vec<u32> = (0..w + points.len() as u32).collect();
+    let elem = |v: u32, d: u32| rot.face_toward(points, &walk_of, v, d).unwrap_or(w + v);
+    let mut first = Vec::with_capacity(alive.len());
+    for e in alive {
+        let (a, b) = (elem(e[0], e[1]), elem(e[1], e[0]));
+        let (ra, rb) = (find(&mut parent, a), find(&mut parent, b));
+        parent[ra as usize] = rb;
+        first.push(a);
+    }
+    let mut groups: HashMap<u32, (Vec<u32>, HashSet<[u32; 2]>)> = HashMap::new();
+    for (e, &a) in alive.iter().zip(&first) {
+        let root = find(&mut parent, a);
+        groups.entry(root).or_default().1.insert(*e);
+    }
+    for x in 0..w + points.len() as u32 {
+        let root = find(&mut parent, x);
+        if let Some(g) = groups.get_mut(&root) {
+            g.0.push(x);
+        }
+    }
+    let mut out = Vec::new();
+    for (_, (members, chords)) in groups {
+        let mut outer = None;
+        let mut holes = Vec::new();
+        for x in members {
+            if x >= w {
+                holes.push(vec![x - w]);
+            } else if walk_area_sign(points, &walks[x as usize]) > 0 {
+                if outer.replace(walks[x as usize].clone()).is_some() {
+                    return Err(PlanarError::new("internal: a face with two outer walks"));
+                }
+            } else {
+                holes.push(walks[x as usize].clone());
+            }
+        }
+        let outer = outer
+            .ok_or_else(|| PlanarError::new("internal: undecided edges outside every face"))?;
+        out.push((Face { outer, holes }, chords));
+    }
+    Ok(out)
+}

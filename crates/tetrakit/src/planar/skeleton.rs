@@ -1,0 +1,268 @@
+//! β-skeletons (thesis §5.1–5.2; Kirkpatrick and Radke), exact for every rational β.
+//!
+//! `pq` is an edge of the β-skeleton when no other site lies strictly inside the
+//! β-region of `pq` ([`in_beta_region`] for the circle-based skeleton, the thesis's
+//! definition; [`in_lune`] for the lune-based one).
+//!
+//! **β ≥ 1 via Delaunay, and why it is complete.** For β > 1 the region contains the
+//! closed diametral disk of `pq` minus `p` and `q` (every point `r` there has
+//! `∠prq ≥ π/2 > arcsin(1/β)`, and the lune contains the diametral disk). So a skeleton
+//! edge has a circle through `p` and `q` with no site inside or on it, and `pq` is an
+//! edge of the Delaunay subdivision, hence of *every* Delaunay triangulation, whatever
+//! the cocircularities. For β = 1 (the Gabriel graph) the open diametral disk is empty
+//! but sites may lie on its circle; that circle is then the circumcircle of a Delaunay
+//! cell, and `pq` is a chord of it. A chord that is not a side has cell vertices on
+//! both arcs; those on the shorter arc see it at more than π/2, so it is an edge only
+//! when both arcs are equal: `p` and `q` are antipodal on the cell's circle. Those
+//! diameters are added when the cell has four or more vertices.
+//!
+//! **The local test.** For a Delaunay edge `pq` with apices `r` (left) and `s`, the
+//! circle-based region left of `pq` is `{t : ∠ptq > α}`. If `∠prq ≤ α` it lies inside
+//! the open circumdisk of `pqr`, which is empty; so the left side holds a site in the
+//! region iff `r` itself is in it. On the hull side there is no site at all. Hence one
+//! exact test per apex decides the edge: `O(n)` tests after the `O(n log n)`
+//! triangulation. The lune is not covered by the circumdisks in this way, so for the
+//! lune-based skeleton (β > 1) each Delaunay edge that survives its apices is checked
+//! against the sites in a bounding box of its lune (a grid query).
+//!
+//! **β < 1.** The region shrinks to a lens inside the diametral disk and the skeleton
+//! is no longer planar (it tends to the complete graph); every pair is checked against
+//! the sites in the lens's bounding box: `O(n²)` pairs, expected `O(1)` sites each.
+
+use super::PlanarError;
+use super::delaunay::{Delaunay, delaunay};
+use super::grid::PointGrid;
+use crate::geom::{Point2, Ratio, corner_dot_sign, in_beta_region, in_lune, orient2d};
+use rayon::prelude::*;
+use std::cmp::Ordering;
+use std::collections::HashSet;
+
+/// Which β-region defines the skeleton.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Region {
+    /// Union (β ≥ 1) or intersection (β < 1) of the two disks through `p` and `q`: the
+    /// thesis's definition.
+    Circle,
+    /// Intersection of the two disks centred on the line `pq` (β ≥ 1).
+    Lune,
+}
+
+/// A β-skeleton and how it was found.
+#[derive(Clone, Debug, Default)]
+pub struct Skeleton {
+    /// Edges `[p, q]` with `p < q`, sorted.
+    pub edges: Vec<[u32; 2]>,
+    /// Number of candidate pairs tested.
+    pub candidates: usize,
+    /// Diameters of cocircular Delaunay cells added for β = 1.
+    pub cell_diameters: usize,
+}
+
+/// The β-skeleton of distinct points (exact).
+///
+/// ```
+/// use tetrakit::planar::{Region, beta_skeleton};
+/// // A unit square: for β = 1 both diagonals are Gabriel edges (cocircular).
+/// let pts = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+/// let one = "1".parse().unwrap();
+/// assert_eq!(beta_skeleton(&pts, one, Region::Circle).unwrap().edges.len(), 6);
+/// let b = "1.1".parse().unwrap();
+/// assert_eq!(beta_skeleton(&pts, b, Region::Circle).unwrap().edges.len(), 4);
+/// ```
+pub fn beta_skeleton(
+    points: &[Point2],
+    beta: Ratio,
+    region: Region,
+) -> Result<Skeleton, PlanarError> {
+    if points.len() < 2 {
+        return Ok(Skeleton::default());
+    }
+    if beta.cmp_one() == Ordering::Less {
+        return Ok(small_beta(points, beta));
+    }
+    let dt = delaunay(points)?;
+    let lune = region == Region::Lune && beta.cmp_one() == Ordering::Greater;
+    let grid = lune.then(|| PointGrid::new(points, 2.0));
+    let p = |i: u32| &points[i as usize];
+    let mut edges: Vec<[u32; 2]> = dt
+        .edges
+        .par_iter()
+        .filter(|e| {
+            let apex_in = |a: Option<u32>| {
+                a.is_some_and(|r| {
+                    if lune {
+                        in_lune(p(e.p), p(e.q), p(r), beta)
+                    } else {
+                        in_beta_region(p(e.p), p(e.q), p(r), beta)
+                    }
+                })
+            };
+            !apex_in(e.left)
+                && !apex_in(e.right)
+                && grid
+                    .as_ref()
+                    .is_none_or(|g| !lune_occupied(points, g, e.p, e.q, beta))
+        })
+        .map(|e| [e.p.min(e.q), e.p.max(e.q)])
+        .collect();
+    let mut cell_diameters = 0;
+    if beta.cmp_one() == Ordering::Equal {
+        let extra = cocircular_diameters(points, &dt);
+        cell_diameters = extra.len();
+        edges.extend(extra);
+    }
+    edges.par_sort_unstable();
+    edges.dedup();
+    Ok(Skeleton {
+        edges,
+        candidates: dt.edges.len() + cell_diameters,
+        cell_diameters,
+    })
+}
+
+/// Bounding box of the disk around the midpoint of `pq` of radius `factor·|pq|`,
+/// widened by a relative margin far above the rounding error.
+fn disk_box(a: &Point2, b: &Point2, factor: f64) -> (Point2, Point2) {
+    let m = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
+    let len = (b[0] - a[0]).hypot(b[1] - a[1]);
+    let r = factor * len * (1.0 + 1e-9) + 1e-9 * (m[0].abs() + m[1].abs());
+    ([m[0] - r, m[1] - r], [m[0] + r, m[1] + r])
+}
+
+/// True when some site other than `a`, `b` lies strictly inside the lune of `ab`
+/// (β > 1). The lune lies in the disk around the midpoint of radius `√(2β−1)/2·|ab|`
+/// (its farthest points from the midpoint are its two tips).
+fn lune_occupied(points: &[Point2], grid: &PointGrid, a: u32, b: u32, beta: Ratio) -> bool {
+    let (pa, pb) = (&points[a as usize], &points[b as usize]);
+    let (lo, hi) = disk_box(pa, pb, (2.0 * beta.to_f64() - 1.0).sqrt() * 0.5);
+    grid.any_in_box(lo, hi, |r| {
+        r != a && r != b && in_lune(pa, pb, &points[r as usize], beta)
+    })
+}
+
+/// β < 1: every pair against the sites in the bounding box of its lens (which lies in
+/// the diametral disk).
+fn small_beta(points: &[Point2], beta: Ratio) -> Skeleton {
+    let grid = PointGrid::new(points, 2.0);
+    let n = points.len() as u32;
+    let edges: Vec<[u32; 2]> = (0..n)
+        .into_par_iter()
+        .flat_map_iter(|a| {
+            let grid = &grid;
+            (a + 1..n).filter_map(move |b| {
+                let (pa, pb) = (&points[a as usize], &points[b as usize]);
+                let (lo, hi) = disk_box(pa, pb, 0.5);
+                let hit = grid.any_in_box(lo, hi, |r| {
+                    r != a && r != b && in_beta_region(pa, pb, &points[r as usize], beta)
+                });
+                (!hit).then_some([a, b])
+            })
+        })
+        .collect();
+    Skeleton {
+        edges,
+        candidates: (n as usize) * (n as usize - 1) / 2,
+        cell_diameters: 0,
+    }
+}
+
+fn find(parent: &mut [u32], mut x: u32) -> u32 {
+    while parent[x as usize] != x {
+        parent[x as usize] = parent[parent[x as usize] as usize];
+        x = parent[x as usize];
+    }
+    x
+}
+
+/// Antipodal vertex pairs of the cocircular Delaunay cells with four or more vertices
+/// (the extra Gabriel edges of β = 1), excluding pairs that are already Delaunay edges.
+fn cocircular_diameters(points: &[Point2], dt: &Delaunay) -> Vec<[u32; 2]> {
+    let p = |i: u32| &points[i as usize];
+    let mut parent: Vec<u32> = (0..dt.triangles.len() as u32).collect();
+    let mut merged = false;
+    for e in &dt.edges {
+        if let (Some(l), Some(r), Some(fl), Some(fr)) = (e.left, e.right, e.left_face, e.right_face)
+            && crate::geom::incircle(p(e.p), p(e.q), p(l), p(r)) == 0
+        {
+            let (a, b) = (find(&mut parent, fl), find(&mut parent, fr));
+            parent[a as usize] = b;
+            merged = true;
+        }
+    }
+    if !merged {
+        return Vec::new();
+    }
+    let mut cells: std::collections::HashMap<u32, Vec<u32>> = Default::default();
+    for (t, tri) in dt.triangles.iter().enumerate() {
+        let root = find(&mut parent, t as u32);
+        cells.entry(root).or_default().extend_from_slice(tri);
+    }
+    let existing: HashSet<[u32; 2]> = dt
+        .edges
+        .iter()
+        .map(|e| [e.p.min(e.q), e.p.max(e.q)])
+        .collect();
+    let mut out = Vec::new();
+    for mut cell in cells.into_values() {
+        cell.sort_unstable();
+        cell.dedup();
+        if cell.len() < 4 {
+            continue;
+        }
+        for pair in antipodal_pairs(points, cell) {
+            if !existing.contains(&pair) {
+                out.push(pair);
+            }
+        }
+    }
+    out
+}
+
+/// Antipodal pairs among cocircular points in convex position: `O(k log k)`.
+fn antipodal_pairs(points: &[Point2], mut cell: Vec<u32>) -> Vec<[u32; 2]> {
+    let p = |i: u32| &points[i as usize];
+    let v0 = *cell
+        .iter()
+        .min_by(|a, b| p(**a).partial_cmp(p(**b)).unwrap())
+        .unwrap();
+    cell.retain(|&v| v != v0);
+    // Convex position: the others sorted counter-clockwise as seen from v0.
+    cell.sort_by(|&a, &b| match orient2d(p(v0), p(a), p(b)) {
+        1 => Ordering::Less,
+        -1 => Ordering::Greater,
+        _ => Ordering::Equal,
+    });
+    cell.insert(0, v0);
+    let k = cell.len();
+    let dot_sign = |a: u32, b: u32, c: u32| corner_dot_sign(p(a), p(b), p(c));
+    // sign of (arc from i to j, counter-clockwise) − π.
+    let arc = |i: usize, j: usize| -> i8 {
+        let next = (j + 1) % k;
+        if next != i {
+            -dot_sign(cell[i], cell[j], cell[next])
+        } else {
+            dot_sign(cell[i], cell[j], cell[(i + 1) % k])
+        }
+    };
+    let mut out = Vec::new();
+    for i in 0..k {
+        // arc(i, i + t) increases with t; find the first t with sign ≥ 0.
+        let (mut lo, mut hi) = (1usize, k - 1);
+        while lo < hi {
+            let mid = (lo + hi) / 2;
+            if arc(i, (i + mid) % k) >= 0 {
+                hi = mid;
+            } else {
+                lo = mid + 1;
+            }
+        }
+        let j = (i + lo) % k;
+        if arc(i, j) == 0 {
+            let (a, b) = (cell[i], cell[j]);
+            if a < b {
+                out.push([a, b]);
+            }
+        }
+    }
+    out
+}
