@@ -11,6 +11,7 @@ macro_rules! out {
 }
 
 mod demo;
+mod planar;
 mod poly;
 mod run;
 
@@ -44,6 +45,11 @@ enum Cmd {
     /// without Steiner points, by an exact SAT solver; with --minimal, with the fewest
     /// tetrahedra. Exit 1 with a proof when impossible, 3 at the time limit.
     Tetrahedralize(TetrahedralizeArgs),
+    /// β-skeleton of planar points, exact for any rational β (circle-based by default,
+    /// thesis ch. 5; --lune for the lune-based one).
+    Skeleton(SkeletonArgs),
+    /// Exact minimum weight triangulation of planar points, weight certified.
+    Mwt(MwtArgs),
     /// Write a generated instance.
     Generate(GenerateArgs),
     /// A short tour on built-in examples.
@@ -108,6 +114,36 @@ struct TetrahedralizeArgs {
     #[arg(long)]
     json: bool,
     /// Write the tetrahedra: .ele (with .node), .vtk or .json.
+    #[arg(long)]
+    output: Option<PathBuf>,
+}
+
+#[derive(Args)]
+struct SkeletonArgs {
+    /// Planar points: .xyz/.txt (x y per line), .node, .json or .obj (z = 0).
+    input: PathBuf,
+    /// β as a decimal (at most 15 significant digits) or a fraction a/b.
+    #[arg(long)]
+    beta: String,
+    /// Use the lune-based region (intersection of two disks centred on the line pq).
+    #[arg(long)]
+    lune: bool,
+    /// Print one JSON object on stdout.
+    #[arg(long)]
+    json: bool,
+    /// Write the edges: .json, .edge (with .node) or .svg.
+    #[arg(long)]
+    output: Option<PathBuf>,
+}
+
+#[derive(Args)]
+struct MwtArgs {
+    /// Planar points: .xyz/.txt (x y per line), .node, .json or .obj (z = 0).
+    input: PathBuf,
+    /// Print one JSON object on stdout.
+    #[arg(long)]
+    json: bool,
+    /// Write the triangulation's edges: .json, .edge (with .node) or .svg.
     #[arg(long)]
     output: Option<PathBuf>,
 }
@@ -193,6 +229,21 @@ enum GenKind {
         #[command(flatten)]
         out: PolyOut,
     },
+    /// Planar points for `skeleton` and `mwt`.
+    Points2d {
+        /// The distribution.
+        #[arg(long, value_enum, default_value_t = DistArg::Uniform)]
+        dist: DistArg,
+        /// Number of points.
+        #[arg(long)]
+        n: usize,
+        /// Seed.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// Output file: .xyz, .txt, .node or .json.
+        #[arg(long, short)]
+        output: PathBuf,
+    },
     /// Points on two skew lines: Θ(n²) tetrahedra, the thesis's worst case for m.
     SkewLines {
         /// Number of points (half on each line).
@@ -232,6 +283,36 @@ struct BpArgs {
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug)]
+enum DistArg {
+    /// Uniform in the unit square.
+    Uniform,
+    /// Standard normal.
+    Gaussian,
+    /// About √n Gaussian clusters.
+    Clustered,
+    /// Strictly convex position.
+    Convex,
+    /// A regular polygon (near-ties).
+    Regular,
+    /// An integer grid (exact ties).
+    Grid,
+}
+
+impl From<DistArg> for tetrakit::planar::Distribution {
+    fn from(d: DistArg) -> Self {
+        use tetrakit::planar::Distribution as D;
+        match d {
+            DistArg::Uniform => D::Uniform,
+            DistArg::Gaussian => D::Gaussian,
+            DistArg::Clustered => D::Clustered,
+            DistArg::Convex => D::Convex,
+            DistArg::Regular => D::Regular,
+            DistArg::Grid => D::Grid,
+        }
+    }
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
 enum CorruptKind {
     /// Remove one segment.
     DropEdge,
@@ -256,6 +337,19 @@ fn main() -> ExitCode {
             as_json: a.json,
             output: a.output.as_deref(),
         }),
+        Cmd::Skeleton(a) => {
+            planar::skeleton(&a.input, &a.beta, a.lune, a.json, a.output.as_deref())
+        }
+        Cmd::Mwt(a) => planar::mwt(&a.input, a.json, a.output.as_deref()),
+        Cmd::Generate(GenerateArgs {
+            kind:
+                GenKind::Points2d {
+                    dist,
+                    n,
+                    seed,
+                    output,
+                },
+        }) => planar::generate_points(dist.into(), n, seed, &output),
         Cmd::Generate(a) => match polyhedron_kind(a.kind) {
             Ok((kind, out)) => poly::generate(kind, out.seed, &out.output),
             Err(kind) => run::generate(kind),

@@ -11,9 +11,11 @@
 mod json;
 mod obj;
 mod off;
+mod planar;
 mod tetgen;
 mod write;
 
+pub use planar::{Svg, write_planar_edges, write_points2d};
 pub use write::{write_edges, write_mesh, write_surface, write_vtk};
 
 use crate::geom::{Point3, coordinate_in_range, lex_cmp};

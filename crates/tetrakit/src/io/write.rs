@@ -7,7 +7,7 @@ use std::fmt::Write as _;
 use std::io;
 use std::path::Path;
 
-fn save(path: &Path, text: String) -> io::Result<()> {
+pub(super) fn save(path: &Path, text: String) -> io::Result<()> {
     std::fs::write(path, text)
 }
 
@@ -127,14 +127,14 @@ pub fn write_vtk(path: &Path, points: &[Point3], tets: &[[u32; 4]]) -> io::Resul
     save(path, s)
 }
 
-fn ext(path: &Path) -> String {
+pub(super) fn ext(path: &Path) -> String {
     path.extension()
         .and_then(|e| e.to_str())
         .unwrap_or("")
         .to_ascii_lowercase()
 }
 
-fn unsupported(ext: &str, expected: &str) -> io::Error {
+pub(super) fn unsupported(ext: &str, expected: &str) -> io::Error {
     io::Error::new(
         io::ErrorKind::InvalidInput,
         format!("cannot write '.{ext}' files here (expected {expected})"),

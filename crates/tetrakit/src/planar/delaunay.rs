@@ -69,34 +69,38 @@ pub fn delaunay(points: &[Point2]) -> Result<Delaunay, PlanarError> {
     if dt.num_vertices() != points.len() {
         return Err(PlanarError::new("duplicate points"));
     }
-    let mut face_id = vec![u32::MAX; dt.num_all_faces()];
-    let mut triangles = Vec::with_capacity(dt.num_inner_faces());
-    for f in dt.inner_faces() {
-        let v = f.vertices().map(|v| v.data().index);
-        face_id[f.fix().index()] = triangles.len() as u32;
-        let p = |i: usize| &points[v[i] as usize];
-        triangles.push(if orient2d(p(0), p(1), p(2)) > 0 {
-            v
-        } else {
-            [v[0], v[2], v[1]]
-        });
-    }
-    let edges: Vec<DelaunayEdge> = dt
-        .undirected_edges()
-        .map(|e| {
-            let d = e.as_directed();
-            let face = |h: spade::handles::DirectedEdgeHandle<'_, Site, (), (), ()>| {
-                h.opposite_vertex()
-                    .map(|v| (v.data().index, face_id[h.face().fix().index()]))
+    // Triangles are indexed by spade's face index minus one (face 0 is the outer face).
+    let faces: Vec<_> = dt.fixed_inner_faces().collect();
+    debug_assert!(faces.iter().enumerate().all(|(k, f)| f.index() == k + 1));
+    let triangles: Vec<[u32; 3]> = faces
+        .par_iter()
+        .map(|&f| {
+            let face = dt.face(f);
+            let v = face.vertices().map(|v| v.data().index);
+            let p = |i: usize| &points[v[i] as usize];
+            if orient2d(p(0), p(1), p(2)) > 0 {
+                v
+            } else {
+                [v[0], v[2], v[1]]
+            }
+        })
+        .collect();
+    let face_of = |f: usize| (f as u32).checked_sub(1);
+    let handles: Vec<_> = dt.fixed_undirected_edges().collect();
+    let edges: Vec<DelaunayEdge> = handles
+        .par_iter()
+        .map(|&h| {
+            let d = dt.undirected_edge(h).as_directed();
+            let apex = |e: spade::handles::DirectedEdgeHandle<'_, Site, (), (), ()>| {
+                e.opposite_vertex().map(|v| v.data().index)
             };
-            let (l, r) = (face(d), face(d.rev()));
             DelaunayEdge {
                 p: d.from().data().index,
                 q: d.to().data().index,
-                left: l.map(|x| x.0),
-                right: r.map(|x| x.0),
-                left_face: l.map(|x| x.1),
-                right_face: r.map(|x| x.1),
+                left: apex(d),
+                right: apex(d.rev()),
+                left_face: apex(d).and(face_of(d.face().fix().index())),
+                right_face: apex(d.rev()).and(face_of(d.rev().face().fix().index())),
             }
         })
         .collect();

@@ -7,6 +7,8 @@ use crate::geom::Point2;
 
 /// Points bucketed by cell, in compressed rows.
 pub(crate) struct PointGrid {
+    lo: Point2,
+    hi: Point2,
     origin: Point2,
     cell: f64,
     nx: usize,
@@ -35,6 +37,8 @@ impl PointGrid {
         let ny = ((h / cell) as usize + 1).min(1 << 14);
         let cell = cell.max(w / nx as f64).max(h / ny as f64);
         let mut g = PointGrid {
+            lo,
+            hi,
             origin: lo,
             cell,
             nx,
@@ -66,6 +70,11 @@ impl PointGrid {
         self.coord(p[1], 1, self.ny) * self.nx + self.coord(p[0], 0, self.nx)
     }
 
+    /// The bounding box `(lo, hi)` of the points.
+    pub fn bounds(&self) -> (Point2, Point2) {
+        (self.lo, self.hi)
+    }
+
     /// Side length of a cell.
     pub fn cell(&self) -> f64 {
         self.cell
@@ -74,6 +83,19 @@ impl PointGrid {
     /// The cell `(x, y)` holding `p`.
     pub fn cell_of(&self, p: &Point2) -> (usize, usize) {
         (self.coord(p[0], 0, self.nx), self.coord(p[1], 1, self.ny))
+    }
+
+    /// The box of cell `(x, y)`, widened by a millionth of a cell against rounding.
+    pub fn cell_box(&self, x: usize, y: usize) -> (Point2, Point2) {
+        let e = 1e-6 * self.cell;
+        let lo = [
+            self.origin[0] + x as f64 * self.cell,
+            self.origin[1] + y as f64 * self.cell,
+        ];
+        (
+            [lo[0] - e, lo[1] - e],
+            [lo[0] + self.cell + e, lo[1] + self.cell + e],
+        )
     }
 
     /// Grid dimensions in cells.
@@ -87,13 +109,33 @@ impl PointGrid {
         &self.items[self.start[row + x0] as usize..self.start[row + x1 + 1] as usize]
     }
 
-    /// Calls `f` on every point in cells meeting the box `[lo, hi]` widened by one cell;
-    /// stops early when `f` returns true, and returns whether it did.
-    pub fn any_in_box(&self, lo: Point2, hi: Point2, mut f: impl FnMut(u32) -> bool) -> bool {
+    /// Calls `f` on every point in cells meeting the box `[lo, hi]` widened by one cell
+    /// (for boxes computed approximately); stops early when `f` returns true, and
+    /// returns whether it did.
+    pub fn any_in_box(&self, lo: Point2, hi: Point2, f: impl FnMut(u32) -> bool) -> bool {
         let x0 = self.coord(lo[0], 0, self.nx).saturating_sub(1);
         let y0 = self.coord(lo[1], 1, self.ny).saturating_sub(1);
         let x1 = (self.coord(hi[0], 0, self.nx) + 1).min(self.nx - 1);
         let y1 = (self.coord(hi[1], 1, self.ny) + 1).min(self.ny - 1);
+        self.any_in_cells(x0, x1, y0, y1, f)
+    }
+
+    /// [`Self::any_in_box`] for an exact box: the cell index is monotone in the
+    /// coordinate, so the cells of `lo` and `hi` bound every point in the box.
+    pub fn any_in_exact_box(&self, lo: Point2, hi: Point2, f: impl FnMut(u32) -> bool) -> bool {
+        let (x0, y0) = self.cell_of(&lo);
+        let (x1, y1) = self.cell_of(&hi);
+        self.any_in_cells(x0, x1, y0, y1, f)
+    }
+
+    fn any_in_cells(
+        &self,
+        x0: usize,
+        x1: usize,
+        y0: usize,
+        y1: usize,
+        mut f: impl FnMut(u32) -> bool,
+    ) -> bool {
         for y in y0..=y1 {
             let row = y * self.nx;
             let (a, b) = (

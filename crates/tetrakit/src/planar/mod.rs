@@ -8,11 +8,13 @@
 //! ([`crate::geom::compare_root_sums`]).
 
 mod delaunay;
+mod generate;
 mod grid;
 mod mwt;
 mod skeleton;
 
 pub use delaunay::{Delaunay, DelaunayEdge, delaunay};
+pub use generate::{Distribution, points2d};
 pub use mwt::{
     Mwt, MwtOptions, MwtStats, candidate_edges, cmp_edge_sets, mwt, mwt_with, weight_of,
 };

@@ -46,6 +46,8 @@ fn pseudo_angle(dx: f64, dy: f64) -> f64 {
 
 struct Sectors {
     bounds: [f64; SECTORS],
+    /// Unit vectors of the sector boundaries `0..=SECTORS`.
+    rays: [(f64, f64); SECTORS + 1],
     /// `kill[i]`: the distance factor for a site `i` sectors away (i = 2..=5).
     kill: [f64; 6],
 }
@@ -66,11 +68,18 @@ impl Sectors {
             let psi = (i + 1) as f64 * WIDTH;
             *f = (psi.cos() + psi.sin() * 16.0 / 13.0) * 1.001;
         }
-        Sectors { bounds, kill }
+        let rays = std::array::from_fn(|k| {
+            let a = k as f64 * WIDTH;
+            (a.cos(), a.sin())
+        });
+        Sectors { bounds, rays, kill }
     }
 
     fn of(&self, dx: f64, dy: f64) -> usize {
-        let a = pseudo_angle(dx, dy);
+        self.of_pseudo(pseudo_angle(dx, dy))
+    }
+
+    fn of_pseudo(&self, a: f64) -> usize {
         self.bounds.partition_point(|&b| b <= a).saturating_sub(1)
     }
 }
@@ -129,8 +138,10 @@ fn candidates_of(
     let (cx, cy) = grid.cell_of(&pp);
     let (nx, ny) = grid.dims();
     let mut ring = 0usize;
+    let mut dead = [f64::INFINITY; SECTORS];
     loop {
-        gather_ring(grid, points, p, cx, cy, ring, &mut s.pending);
+        let live = |x: usize, y: usize| ring < 2 || cell_live(grid, sec, &pp, &dead, x, y);
+        gather_ring(grid, points, p, cx, cy, ring, live, &mut s.pending);
         let exhausted = ring >= cx && ring >= cy && cx + ring >= nx - 1 && cy + ring >= ny - 1;
         let complete = if exhausted {
             f64::INFINITY
@@ -156,17 +167,97 @@ fn candidates_of(
         if exhausted {
             return;
         }
-        let dead = (0..SECTORS)
-            .map(|k| dead_radius(s, sec, k))
-            .fold(0.0, f64::max);
-        if dead < complete {
+        let reach = sector_reach(&pp, grid.bounds(), sec);
+        for (k, d) in dead.iter_mut().enumerate() {
+            *d = dead_radius(s, sec, k).min(reach[k]);
+        }
+        if dead.iter().fold(0.0f64, |a, &b| a.max(b)) < complete {
             return;
         }
         ring += 1;
     }
 }
 
-/// Pushes `(squared distance, index)` of the sites in ring `r` around cell `(cx, cy)`.
+/// For each sector, a distance beyond which its cone holds no site: the farthest vertex
+/// of (bounding box ∩ cone), i.e. the exits of its two rays and the box corners in it
+/// (corners of the neighbouring sectors too, against rounding), with a 1% margin.
+fn sector_reach(p: &Point2, (lo, hi): (Point2, Point2), sec: &Sectors) -> [f64; SECTORS] {
+    let exit = |(c, s): (f64, f64)| {
+        let t = |d: f64, l: f64, h: f64, x: f64| {
+            if d > 1e-12 {
+                (h - x) / d
+            } else if d < -1e-12 {
+                (l - x) / d
+            } else {
+                f64::INFINITY
+            }
+        };
+        t(c, lo[0], hi[0], p[0])
+            .min(t(s, lo[1], hi[1], p[1]))
+            .max(0.0)
+    };
+    let rays: Vec<f64> = sec.rays.iter().map(|&r| exit(r)).collect();
+    let mut reach = [0.0; SECTORS];
+    for k in 0..SECTORS {
+        reach[k] = rays[k].max(rays[k + 1]);
+    }
+    for c in [
+        [lo[0], lo[1]],
+        [lo[0], hi[1]],
+        [hi[0], lo[1]],
+        [hi[0], hi[1]],
+    ] {
+        let (dx, dy) = (c[0] - p[0], c[1] - p[1]);
+        let k = sec.of(dx, dy);
+        let d = dx.hypot(dy);
+        for j in [k + SECTORS - 1, k, k + 1] {
+            let r = &mut reach[j % SECTORS];
+            *r = r.max(d);
+        }
+    }
+    reach.map(|r| r * 1.01 + 1e-300)
+}
+
+/// False when every site of cell `(x, y)` is provably dead: farther from `p` than the
+/// dead radius of every sector the cell spans (one sector of slack on each side).
+fn cell_live(
+    grid: &PointGrid,
+    sec: &Sectors,
+    p: &Point2,
+    dead: &[f64; SECTORS],
+    x: usize,
+    y: usize,
+) -> bool {
+    let (lo, hi) = grid.cell_box(x, y);
+    let dx = (lo[0] - p[0]).max(p[0] - hi[0]).max(0.0);
+    let dy = (lo[1] - p[1]).max(p[1] - hi[1]).max(0.0);
+    let near = dx.hypot(dy) * (1.0 - 1e-9);
+    if near == 0.0 {
+        return true;
+    }
+    let mut a: [f64; 4] = [
+        [lo[0], lo[1]],
+        [lo[0], hi[1]],
+        [hi[0], lo[1]],
+        [hi[0], hi[1]],
+    ]
+    .map(|c| pseudo_angle(c[0] - p[0], c[1] - p[1]));
+    a.sort_by(f64::total_cmp);
+    // The corners span less than half a turn: the range is the complement of the
+    // largest cyclic gap.
+    let gaps = [a[1] - a[0], a[2] - a[1], a[3] - a[2], a[0] + 4.0 - a[3]];
+    let g = (0..4)
+        .max_by(|&i, &j| gaps[i].total_cmp(&gaps[j]))
+        .expect("four gaps");
+    let (from, to) = (a[(g + 1) % 4], a[g]);
+    let (k0, k1) = (sec.of_pseudo(from), sec.of_pseudo(to));
+    let span = (k1 + SECTORS - k0) % SECTORS;
+    (0..=span + 2).any(|i| dead[(k0 + SECTORS - 1 + i) % SECTORS] >= near)
+}
+
+/// Pushes `(squared distance, index)` of the sites in the live cells of ring `r`
+/// around cell `(cx, cy)`.
+#[allow(clippy::too_many_arguments)]
 fn gather_ring(
     grid: &PointGrid,
     points: &[Point2],
@@ -174,6 +265,7 @@ fn gather_ring(
     cx: usize,
     cy: usize,
     r: usize,
+    live: impl Fn(usize, usize) -> bool,
     pending: &mut Vec<(f64, u32)>,
 ) {
     let (nx, ny) = grid.dims();
@@ -189,15 +281,20 @@ fn gather_ring(
     };
     let x0 = cx.saturating_sub(r);
     let x1 = (cx + r).min(nx - 1);
+    let mut cell = |x: usize, y: usize| {
+        if live(x, y) {
+            push(grid.row(y, x, x));
+        }
+    };
     for y in cy.saturating_sub(r)..=(cy + r).min(ny - 1) {
         if y + r == cy || y == cy + r {
-            push(grid.row(y, x0, x1));
+            (x0..=x1).for_each(|x| cell(x, y));
         } else {
             if cx >= r {
-                push(grid.row(y, cx - r, cx - r));
+                cell(cx - r, y);
             }
             if cx + r < nx && r > 0 {
-                push(grid.row(y, cx + r, cx + r));
+                cell(cx + r, y);
             }
         }
     }
@@ -208,7 +305,13 @@ fn gather_ring(
 fn diamonds_open(p: u32, q: u32, points: &[Point2], s: &Scratch, k: usize) -> bool {
     let (a, b) = (&points[p as usize], &points[q as usize]);
     let (mut left, mut right) = (false, false);
-    for off in 0..=2 * REACH {
+    // Nearest directions first: sites close to the line pq are the likeliest blockers.
+    for t in 0..=2 * REACH {
+        let off = if t % 2 == 0 {
+            REACH + t / 2
+        } else {
+            REACH - t.div_ceil(2)
+        };
         let j = (k + SECTORS + off - REACH) % SECTORS;
         for &r in &s.by_sector[j] {
             let h = diamond_hit(a, b, &points[r as usize]);

@@ -1,6 +1,7 @@
 //! A uniform grid of segments (each stored in every cell its bounding box meets) for
-//! crossing queries. Cells are found in floating point and widened by one cell; the
-//! crossing itself is decided exactly.
+//! crossing queries. Two crossing segments share a point of both bounding boxes, and the
+//! float cell index is monotone in the coordinate, so they share a cell; the crossing
+//! itself is decided exactly.
 
 use crate::geom::Point2;
 
@@ -78,10 +79,10 @@ impl EdgeGrid {
 
     fn range(&self, points: &[Point2], e: &[u32; 2]) -> (usize, usize, usize, usize) {
         let (a, b) = (points[e[0] as usize], points[e[1] as usize]);
-        let x0 = self.coord(a[0].min(b[0]), 0, self.nx).saturating_sub(1);
-        let x1 = (self.coord(a[0].max(b[0]), 0, self.nx) + 1).min(self.nx - 1);
-        let y0 = self.coord(a[1].min(b[1]), 1, self.ny).saturating_sub(1);
-        let y1 = (self.coord(a[1].max(b[1]), 1, self.ny) + 1).min(self.ny - 1);
+        let x0 = self.coord(a[0].min(b[0]), 0, self.nx);
+        let x1 = self.coord(a[0].max(b[0]), 0, self.nx);
+        let y0 = self.coord(a[1].min(b[1]), 1, self.ny);
+        let y1 = self.coord(a[1].max(b[1]), 1, self.ny);
         (x0, x1, y0, y1)
     }
 

@@ -33,9 +33,19 @@ pub struct Skeleton {
     pub start: Vec<u32>,
     /// See `start`.
     pub adj: Vec<(u32, u32)>,
+    /// Empty candidate triangles per edge, compressed rows: `(apex, edge p–apex,
+    /// edge q–apex)` for edge `[p, q]`.
+    pub tri_start: Vec<u32>,
+    /// See `tri_start`.
+    pub tris: Vec<(u32, u32, u32)>,
 }
 
 impl Skeleton {
+    /// Empty candidate triangles on edge `e`.
+    pub fn triangles(&self, e: u32) -> &[(u32, u32, u32)] {
+        &self.tris[self.tri_start[e as usize] as usize..self.tri_start[e as usize + 1] as usize]
+    }
+
     /// Neighbours of `v` with edge ids.
     pub fn around(&self, v: u32) -> &[(u32, u32)] {
         &self.adj[self.start[v as usize] as usize..self.start[v as usize + 1] as usize]
@@ -98,27 +108,95 @@ pub fn hull_edges(points: &[Point2]) -> Vec<[u32; 2]> {
     out
 }
 
-/// Common alive neighbours `r` of `p` and `q`: `(r, edge pr, edge qr)`.
-fn common(sk: &Skeleton, status: &[AtomicU8], p: u32, q: u32, out: &mut Vec<(u32, u32, u32)>) {
-    out.clear();
-    let (a, b) = (sk.around(p), sk.around(q));
-    let (mut i, mut j) = (0, 0);
-    while i < a.len() && j < b.len() {
-        match a[i].0.cmp(&b[j].0) {
-            std::cmp::Ordering::Less => i += 1,
-            std::cmp::Ordering::Greater => j += 1,
-            std::cmp::Ordering::Equal => {
-                let (epr, eqr) = (a[i].1, b[j].1);
-                if status[epr as usize].load(Relaxed) != IMPOSSIBLE
-                    && status[eqr as usize].load(Relaxed) != IMPOSSIBLE
-                {
-                    out.push((a[i].0, epr, eqr));
+/// Every empty triangle whose three edges are candidates, listed on each of its edges.
+/// A face of a triangulation is empty, so only these can witness local minimality;
+/// emptiness is static and computed once (a grid query per triangle).
+fn empty_triangles(points: &[Point2], sk: &Skeleton) -> (Vec<u32>, Vec<(u32, u32, u32)>) {
+    let grid = crate::planar::grid::PointGrid::new(points, 2.0);
+    let pt = |i: u32| &points[i as usize];
+    let mut inc: Vec<(u32, (u32, u32, u32))> = (0..sk.edges.len() as u32)
+        .into_par_iter()
+        .flat_map_iter(|e| {
+            let [p, q] = sk.edges[e as usize];
+            let (a, b) = (sk.around(p), sk.around(q));
+            let mut out = Vec::new();
+            let (mut i, mut j) = (0, 0);
+            while i < a.len() && j < b.len() {
+                match a[i].0.cmp(&b[j].0) {
+                    std::cmp::Ordering::Less => i += 1,
+                    std::cmp::Ordering::Greater => j += 1,
+                    std::cmp::Ordering::Equal => {
+                        let (r, epr, eqr) = (a[i].0, a[i].1, b[j].1);
+                        i += 1;
+                        j += 1;
+                        if r < q {
+                            continue; // each triangle once, from its two smallest vertices
+                        }
+                        let o = orient2d(pt(p), pt(q), pt(r));
+                        if o == 0 || !triangle_empty(points, &grid, p, q, r, o) {
+                            continue;
+                        }
+                        out.push((e, (r, epr, eqr)));
+                        out.push((epr, (q, e, eqr)));
+                        out.push((eqr, (p, e, epr)));
+                    }
                 }
-                i += 1;
-                j += 1;
             }
-        }
+            out
+        })
+        .collect();
+    inc.par_sort_unstable_by_key(|x| x.0);
+    let mut start = vec![0u32; sk.edges.len() + 1];
+    for x in &inc {
+        start[x.0 as usize + 1] += 1;
     }
+    for i in 0..sk.edges.len() {
+        start[i + 1] += start[i];
+    }
+    (start, inc.into_iter().map(|x| x.1).collect())
+}
+
+/// True when no site lies strictly inside triangle `pqr` (orientation `o`); candidate
+/// edges carry no site on their interiors, so the boundary needs no test.
+fn triangle_empty(
+    points: &[Point2],
+    grid: &crate::planar::grid::PointGrid,
+    p: u32,
+    q: u32,
+    r: u32,
+    o: i8,
+) -> bool {
+    let pt = |i: u32| &points[i as usize];
+    let (a, b, c) = if o > 0 { (p, q, r) } else { (p, r, q) };
+    let lo = [
+        pt(a)[0].min(pt(b)[0]).min(pt(c)[0]),
+        pt(a)[1].min(pt(b)[1]).min(pt(c)[1]),
+    ];
+    let hi = [
+        pt(a)[0].max(pt(b)[0]).max(pt(c)[0]),
+        pt(a)[1].max(pt(b)[1]).max(pt(c)[1]),
+    ];
+    !grid.any_in_exact_box(lo, hi, |t| {
+        t != a && t != b && t != c && {
+            let x = pt(t);
+            x[0] >= lo[0]
+                && x[0] <= hi[0]
+                && x[1] >= lo[1]
+                && x[1] <= hi[1]
+                && orient2d(pt(a), pt(b), x) > 0
+                && orient2d(pt(b), pt(c), x) > 0
+                && orient2d(pt(c), pt(a), x) > 0
+        }
+    })
+}
+
+/// The alive empty triangles on edge `e`: `(apex, edge p–apex, edge q–apex)`.
+fn alive_triangles(sk: &Skeleton, status: &[AtomicU8], e: u32, out: &mut Vec<(u32, u32, u32)>) {
+    out.clear();
+    out.extend(sk.triangles(e).iter().copied().filter(|&(_, a, b)| {
+        status[a as usize].load(Relaxed) != IMPOSSIBLE
+            && status[b as usize].load(Relaxed) != IMPOSSIBLE
+    }));
 }
 
 /// True when the edge has a locally minimal pair of alive triangles.
@@ -130,7 +208,7 @@ fn locally_minimal(
     buf: &mut Vec<(u32, u32, u32)>,
 ) -> bool {
     let [p, q] = sk.edges[e as usize];
-    common(sk, status, p, q, buf);
+    alive_triangles(sk, status, e, buf);
     let pt = |i: u32| &points[i as usize];
     let (pp, pq) = (pt(p), pt(q));
     let side: Vec<(u32, i8)> = buf
@@ -182,10 +260,11 @@ fn eliminate(
             .collect();
         queue = dead
             .par_iter()
-            .map_init(Vec::new, |buf, &e| {
-                let [p, q] = sk.edges[e as usize];
-                common(sk, status, p, q, buf);
-                buf.iter()
+            .map(|&e| {
+                // Every triangle on e, dead or alive: when two edges of a triangle die
+                // in one round, the third must still be rechecked.
+                sk.triangles(e)
+                    .iter()
                     .flat_map(|&(_, a, b)| [a, b])
                     .filter(|&f| {
                         status[f as usize].load(Relaxed) == ALIVE
@@ -235,7 +314,10 @@ pub fn lmt_skeleton(
         edges: candidates,
         start,
         adj,
+        tri_start: Vec::new(),
+        tris: Vec::new(),
     };
+    (sk.tri_start, sk.tris) = empty_triangles(points, &sk);
     let find = |sk: &Skeleton, e: &[u32; 2]| sk.edges.binary_search(e).ok();
     for e in hull_edges(points).iter().chain(forced) {
         if let Some(id) = find(&sk, e) {

@@ -1,0 +1,84 @@
+//! Planar point sets for tests and benchmarks (`tetrakit generate points2d`).
+
+use crate::geom::{Hull2, Point2};
+use crate::rng::Rng;
+use std::collections::HashSet;
+
+/// A distribution of planar points.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Distribution {
+    /// Uniform in the unit square.
+    Uniform,
+    /// Standard normal in each coordinate.
+    Gaussian,
+    /// Gaussian clusters (about √n clusters of spread 0.01) in the unit square.
+    Clustered,
+    /// In strictly convex position (random angles on a circle, kept if extreme).
+    Convex,
+    /// The vertices of a regular n-gon (cocircular up to rounding: near-ties).
+    Regular,
+    /// An integer grid, row by row (exact ties everywhere).
+    Grid,
+}
+
+fn normal(rng: &mut Rng) -> f64 {
+    // Box–Muller; 1 - unit() is in (0, 1].
+    let (u, v) = (1.0 - rng.unit(), rng.unit());
+    (-2.0 * u.ln()).sqrt() * (std::f64::consts::TAU * v).cos()
+}
+
+/// `n` distinct points of the distribution (fewer only for `Convex` when `n` is huge).
+///
+/// ```
+/// use tetrakit::planar::{Distribution, points2d};
+/// let pts = points2d(Distribution::Grid, 10, 1);
+/// assert_eq!(pts.len(), 10);
+/// assert_eq!(pts[4], [1.0, 1.0]); // a 4-wide grid
+/// ```
+pub fn points2d(dist: Distribution, n: usize, seed: u64) -> Vec<Point2> {
+    let mut rng = Rng::new(seed);
+    let mut seen = HashSet::new();
+    let mut out = Vec::with_capacity(n);
+    let side = (n as f64).sqrt().ceil() as usize;
+    let centers: Vec<Point2> = (0..side.max(1)).map(|_| [rng.unit(), rng.unit()]).collect();
+    let mut i = 0usize;
+    while out.len() < n {
+        let p = match dist {
+            Distribution::Uniform => [rng.unit(), rng.unit()],
+            Distribution::Gaussian => [normal(&mut rng), normal(&mut rng)],
+            Distribution::Clustered => {
+                let c = centers[rng.below(centers.len())];
+                [
+                    c[0] + 0.01 * normal(&mut rng),
+                    c[1] + 0.01 * normal(&mut rng),
+                ]
+            }
+            Distribution::Convex => {
+                let a = std::f64::consts::TAU * rng.unit();
+                [a.cos(), a.sin()]
+            }
+            Distribution::Regular => {
+                let a = std::f64::consts::TAU * i as f64 / n as f64;
+                [a.cos(), a.sin()]
+            }
+            Distribution::Grid => [(i % side) as f64, (i / side) as f64],
+        };
+        i += 1;
+        if seen.insert((p[0].to_bits(), p[1].to_bits())) {
+            out.push(p);
+        }
+        if dist == Distribution::Convex && out.len() == n {
+            let hull = Hull2::new(&out);
+            let keep: HashSet<u32> = hull.vertices.iter().copied().collect();
+            let mut k = 0;
+            out.retain(|_| {
+                k += 1;
+                keep.contains(&(k - 1))
+            });
+            if i > 20 * n {
+                break;
+            }
+        }
+    }
+    out
+}
