@@ -79,6 +79,7 @@ pub fn run() -> u8 {
         }
     }
     minimal_tetrahedralizations();
+    planar_section();
     out!("\nTry: tetrakit generate kuhn --size 10 -o /tmp/k.ele && tetrakit detect /tmp/k.edge");
     out!(
         "     tetrakit generate two-level -o /tmp/p.off && tetrakit mintetra /tmp/p.off --confirm"
@@ -143,4 +144,49 @@ fn minimal_tetrahedralizations() {
         if m.yes { "YES" } else { "NO" },
         m.reason
     );
+}
+
+/// Chapter 5: β-skeleton, exact MWT with ties, and the Keil construction.
+fn planar_section() {
+    use tetrakit::planar::{self, Distribution, Region};
+    out!(
+        "\n6. Planar proximity (thesis ch. 5): β-skeleton and exact minimum weight triangulation."
+    );
+    let pts = planar::points2d(Distribution::Uniform, 2000, 7);
+    let start = Instant::now();
+    let beta = "1.16".parse().expect("a ratio");
+    let sk = planar::beta_skeleton(&pts, beta, Region::Circle).expect("valid points");
+    let m = planar::mwt(&pts).expect("valid points");
+    let inside = sk
+        .edges
+        .iter()
+        .filter(|e| m.edges.binary_search(e).is_ok())
+        .count();
+    out!(
+        "  2000 uniform points: 1.16-skeleton {} edges, MWT {} edges of weight {:.9} (certified to ±{:.1e}); {} of the skeleton's edges are in the MWT [{:.0} ms]",
+        sk.edges.len(),
+        m.edges.len(),
+        m.weight.mid(),
+        0.5 * (m.weight.hi - m.weight.lo),
+        inside,
+        start.elapsed().as_secs_f64() * 1e3
+    );
+    let grid = planar::points2d(Distribution::Grid, 36, 1);
+    let g = planar::mwt(&grid).expect("valid points");
+    out!(
+        "  a 6x6 integer grid (every square a tie): MWT weight {:.9}, {} faces left to the exact stage, ties decided exactly",
+        g.weight.mid(),
+        g.stats.faces_left
+    );
+    match planar::keil(beta, Some(8)) {
+        Ok(k) => out!(
+            "  Keil construction at β = 1.16, n = 8: xy in skeleton {}, in MWT {}; with xy {:.9}, without {:.9} (Lemma 5.8 asks n > {:.0}; `tetrakit keil --beta 1.16 --svg keil.svg`)",
+            k.xy_in_skeleton,
+            k.xy_in_mwt,
+            k.with_xy.0.mid(),
+            k.without_xy.0.mid(),
+            k.lemma_bound
+        ),
+        Err(e) => out!("  Keil construction: {e}"),
+    }
 }

@@ -50,6 +50,10 @@ enum Cmd {
     Skeleton(SkeletonArgs),
     /// Exact minimum weight triangulation of planar points, weight certified.
     Mwt(MwtArgs),
+    /// The point set of thesis §5.2 against Keil's conjecture: is xy in the β-skeleton
+    /// and in the MWT (both exact)? With --check-random K, β-skeleton ⊆ MWT on K random
+    /// sets (β above the Cheng–Xu bound).
+    Keil(KeilCliArgs),
     /// Write a generated instance.
     Generate(GenerateArgs),
     /// A short tour on built-in examples.
@@ -146,6 +150,27 @@ struct MwtArgs {
     /// Write the triangulation's edges: .json, .edge (with .node) or .svg.
     #[arg(long)]
     output: Option<PathBuf>,
+}
+
+#[derive(Args)]
+struct KeilCliArgs {
+    /// β in [2/√3, √(2√3+45)/6) as a decimal or fraction (any β above √(2√3+9)/3 with
+    /// --check-random).
+    #[arg(long)]
+    beta: String,
+    /// Sites on each arc (default: the smallest that separates xy, up to 32); with
+    /// --check-random, points per random set (default 200).
+    #[arg(long)]
+    n: Option<usize>,
+    /// Print one JSON object on stdout.
+    #[arg(long)]
+    json: bool,
+    /// Draw the sites, the β-disks of xy, the MWT and xy.
+    #[arg(long)]
+    svg: Option<PathBuf>,
+    /// Check β-skeleton ⊆ MWT on this many random point sets instead.
+    #[arg(long)]
+    check_random: Option<usize>,
 }
 
 #[derive(Args)]
@@ -341,6 +366,13 @@ fn main() -> ExitCode {
             planar::skeleton(&a.input, &a.beta, a.lune, a.json, a.output.as_deref())
         }
         Cmd::Mwt(a) => planar::mwt(&a.input, a.json, a.output.as_deref()),
+        Cmd::Keil(a) => planar::keil(planar::KeilArgs {
+            beta: &a.beta,
+            n: a.n,
+            as_json: a.json,
+            svg: a.svg.as_deref(),
+            check_random: a.check_random,
+        }),
         Cmd::Generate(GenerateArgs {
             kind:
                 GenKind::Points2d {

@@ -158,3 +158,145 @@ pub fn generate_points(dist: Distribution, n: usize, seed: u64, output: &Path) -
     );
     0
 }
+
+pub struct KeilArgs<'a> {
+    pub beta: &'a str,
+    pub n: Option<usize>,
+    pub as_json: bool,
+    pub svg: Option<&'a Path>,
+    pub check_random: Option<usize>,
+}
+
+pub fn keil(a: KeilArgs) -> u8 {
+    let start = Instant::now();
+    let beta = match parse_beta(a.beta) {
+        Ok(b) => b,
+        Err(c) => return c,
+    };
+    if let Some(sets) = a.check_random {
+        return check_random(beta, sets, a.n.unwrap_or(200), a.as_json, start);
+    }
+    let k = match planar::keil(beta, a.n) {
+        Ok(k) => k,
+        Err(e) => return fail(e),
+    };
+    if let Some(path) = a.svg
+        && let Err(e) = std::fs::write(path, keil_svg(&k))
+    {
+        return fail(format!("{}: {e}", path.display()));
+    }
+    let iv = |w: &tetrakit::geom::Interval| [w.lo, w.hi];
+    let refuted = k.xy_in_skeleton && !k.xy_in_mwt;
+    if a.as_json {
+        out!(
+            "{}",
+            json!({
+                "beta": beta.to_string(),
+                "n": k.n,
+                "sites": k.sites.len(),
+                "lemma_5_8_bound": k.lemma_bound,
+                "xy_in_skeleton": k.xy_in_skeleton,
+                "xy_in_mwt": k.xy_in_mwt,
+                "refutes_keil": refuted,
+                "weight_with_xy": k.with_xy.0.mid(),
+                "weight_with_xy_interval": iv(&k.with_xy.0),
+                "weight_without_xy": k.without_xy.0.mid(),
+                "weight_without_xy_interval": iv(&k.without_xy.0),
+                "with_minus_without_sign": k.with_vs_without as i8,
+                "svg": a.svg.map(|p| p.display().to_string()),
+                "seconds": start.elapsed().as_secs_f64(),
+            })
+        );
+    } else {
+        out!(
+            "Keil construction (thesis §5.2), β = {beta}, n = {} ({} sites; Lemma 5.8 asks n > {:.1}):",
+            k.n,
+            k.sites.len(),
+            k.lemma_bound
+        );
+        out!("  xy in the β-skeleton: {} (exact)", k.xy_in_skeleton);
+        out!(
+            "  xy in the minimum weight triangulation: {} (exact)",
+            k.xy_in_mwt
+        );
+        out!("  best triangulation with xy:    {:.15}", k.with_xy.0.mid());
+        out!(
+            "  best triangulation without xy: {:.15}",
+            k.without_xy.0.mid()
+        );
+        out!(
+            "  verdict: {}",
+            if refuted {
+                "xy is a β-skeleton edge in no MWT: Keil's conjecture fails here".to_string()
+            } else {
+                format!(
+                    "this realization does not separate xy yet at n = {}; try a larger --n",
+                    k.n
+                )
+            }
+        );
+        if let Some(p) = a.svg {
+            out!("  picture: {}", p.display());
+        }
+    }
+    0
+}
+
+fn check_random(beta: Ratio, sets: usize, n: usize, as_json: bool, start: Instant) -> u8 {
+    if !planar::above_cheng_xu(beta) {
+        return fail(format!(
+            "--check-random needs β above the Cheng–Xu bound √(2√3+9)/3 ≈ 1.176823 (got {beta})"
+        ));
+    }
+    let (checked, bad) = match planar::check_random(beta, sets, n, 1) {
+        Ok(x) => x,
+        Err(e) => return fail(e),
+    };
+    if as_json {
+        let v: Vec<_> = bad
+            .iter()
+            .map(|(k, s, e)| json!({"set": k, "seed": s, "edge": e}))
+            .collect();
+        out!(
+            "{}",
+            json!({"beta": beta.to_string(), "sets": sets, "points": n, "skeleton_edges_checked": checked, "violations": v, "seconds": start.elapsed().as_secs_f64()})
+        );
+    } else {
+        out!(
+            "β = {beta}: {checked} skeleton edges of {sets} random sets of {n} points checked against the exact MWT; {} violations",
+            bad.len()
+        );
+        for (k, s, e) in &bad {
+            out!("  violation: set {k} (seed {s}), edge {}-{}", e[0], e[1]);
+        }
+    }
+    if bad.is_empty() { 0 } else { 1 }
+}
+
+/// The picture: sites, the β-disks through x and y, the MWT, and xy.
+fn keil_svg(k: &planar::KeilResult) -> String {
+    let (x, y) = (k.sites[k.xy[0] as usize], k.sites[k.xy[1] as usize]);
+    let mut view = k.sites.clone();
+    let b = k.beta.to_f64();
+    let h = (b * b - 1.0).sqrt();
+    view.extend([[-b, h + b], [b, -h - b]]);
+    let mut svg = io::Svg::new(&view);
+    for c in [[0.0, h], [0.0, -h]] {
+        svg.circle(&c, b, "disk");
+    }
+    for e in &k.mwt {
+        svg.line(&k.sites[e[0] as usize], &k.sites[e[1] as usize], "mwt");
+    }
+    svg.line(&x, &y, "xy");
+    for p in &k.sites {
+        svg.site(p);
+    }
+    svg.label(&x, "x");
+    svg.label(&y, "y");
+    svg.finish(&format!(
+        "β = {}: xy (dashed red) {} the β-skeleton, {} the MWT (blue); disks: the β-region of xy",
+        k.beta,
+        if k.xy_in_skeleton { "in" } else { "not in" },
+        if k.xy_in_mwt { "in" } else { "not in" }
+    ))
+}

@@ -360,3 +360,124 @@ fn time_limit_gives_exit_3_with_bounds() {
     assert_eq!(v["verdict"], "undecided");
     assert!(v["lower_bound"].as_u64().unwrap() >= 13);
 }
+
+#[test]
+fn planar_commands_json_fields_outputs_and_bad_input() {
+    let d = dir("planar");
+    let pts = d.join("p.xyz");
+    let o = run(&[
+        "generate",
+        "points2d",
+        "--dist",
+        "gaussian",
+        "--n",
+        "300",
+        "-o",
+        s(&pts),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = run(&["mwt", s(&pts), "--json", "--output", s(&d.join("t.svg"))]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let v = json(&o);
+    for k in [
+        "vertices",
+        "edges",
+        "weight",
+        "weight_interval",
+        "skeleton_edges",
+        "faces_left",
+        "seconds",
+    ] {
+        assert!(v.get(k).is_some(), "missing {k}");
+    }
+    let w = v["weight_interval"].as_array().unwrap();
+    assert!(w[0].as_f64().unwrap() <= w[1].as_f64().unwrap());
+    assert!(
+        std::fs::read_to_string(d.join("t.svg"))
+            .unwrap()
+            .contains("<line")
+    );
+    let o = run(&[
+        "skeleton",
+        s(&pts),
+        "--beta",
+        "1.2",
+        "--lune",
+        "--json",
+        "--output",
+        s(&d.join("e.edge")),
+    ]);
+    assert!(o.status.success());
+    assert!(json(&o)["edges"].as_u64().unwrap() > 0);
+    assert!(d.join("e.node").exists());
+    // Bad input: exit 2 and one line naming the problem.
+    for (args, needle) in [
+        (vec!["skeleton", s(&pts), "--beta", "abc"], "--beta"),
+        (vec!["keil", "--beta", "1.3"], "does not apply"),
+        (
+            vec!["keil", "--beta", "1.16", "--check-random", "2"],
+            "Cheng",
+        ),
+    ] {
+        let o = run(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(err.contains(needle) && err.lines().count() == 1, "{err}");
+    }
+    let bad = d.join("z.xyz");
+    std::fs::write(&bad, "0 0 0\n1 0 0\n0 1 5\n").unwrap();
+    let o = run(&["mwt", s(&bad)]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("z.xyz:3"));
+    let dup = d.join("d.xyz");
+    std::fs::write(&dup, "0 0\n1 0\n0 0\n").unwrap();
+    assert_eq!(
+        run(&["skeleton", s(&dup), "--beta", "1"]).status.code(),
+        Some(2)
+    );
+}
+
+#[test]
+fn keil_reports_exact_verdicts_and_checks_random_sets() {
+    let d = dir("keil");
+    let svg = d.join("k.svg");
+    let o = run(&[
+        "keil",
+        "--beta",
+        "1.16",
+        "--n",
+        "6",
+        "--json",
+        "--svg",
+        s(&svg),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let v = json(&o);
+    assert_eq!(v["xy_in_skeleton"], true);
+    for k in [
+        "beta",
+        "sites",
+        "xy_in_mwt",
+        "weight_with_xy",
+        "weight_without_xy",
+    ] {
+        assert!(v.get(k).is_some(), "missing {k}");
+    }
+    assert!(
+        std::fs::read_to_string(&svg)
+            .unwrap()
+            .contains("class=\"xy\"")
+    );
+    let o = run(&[
+        "keil",
+        "--beta",
+        "1.18",
+        "--check-random",
+        "3",
+        "--n",
+        "60",
+        "--json",
+    ]);
+    assert!(o.status.success());
+    assert_eq!(json(&o)["violations"].as_array().unwrap().len(), 0);
+}

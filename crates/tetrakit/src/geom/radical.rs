@@ -24,7 +24,7 @@ use std::cmp::Ordering;
 ///
 /// ```
 /// use tetrakit::geom::Interval;
-/// let w = Interval::length(&[0.0, 0.0], &[3.0, 4.0]).add(Interval::length(&[0.0, 0.0], &[1.0, 0.0]));
+/// let w = Interval::length(&[0.0, 0.0], &[3.0, 4.0]).plus(Interval::length(&[0.0, 0.0], &[1.0, 0.0]));
 /// assert!(w.lo <= 6.0 && 6.0 <= w.hi && w.hi - w.lo < 1e-13);
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -55,7 +55,7 @@ impl Interval {
     }
 
     /// The interval sum, rounded outward.
-    pub fn add(self, other: Interval) -> Interval {
+    pub fn plus(self, other: Interval) -> Interval {
         Interval {
             lo: (self.lo + other.lo).next_down(),
             hi: (self.hi + other.hi).next_up(),
@@ -242,7 +242,7 @@ mod tests {
         // Two triangulations of a unit square: diagonals of equal length.
         let d1 = squared_length(&[0.0, 0.0], &[1.0, 1.0]);
         let d2 = squared_length(&[1.0, 0.0], &[0.0, 1.0]);
-        assert_eq!(compare_root_sums(&[d1.clone()], &[d2]), Ordering::Equal);
+        assert_eq!(compare_root_sums(&[d1], &[d2]), Ordering::Equal);
         // 3√2 versus √2 + √8 (both 3√2), with fractional coordinates.
         let e = |a: [f64; 2], b: [f64; 2]| squared_length(&a, &b);
         let lhs = [e([0.0, 0.0], [0.3, 0.3])];

@@ -33,7 +33,7 @@ fn normal(rng: &mut Rng) -> f64 {
 /// use tetrakit::planar::{Distribution, points2d};
 /// let pts = points2d(Distribution::Grid, 10, 1);
 /// assert_eq!(pts.len(), 10);
-/// assert_eq!(pts[4], [1.0, 1.0]); // a 4-wide grid
+/// assert_eq!(pts[5], [1.0, 1.0]); // a 4-wide grid
 /// ```
 pub fn points2d(dist: Distribution, n: usize, seed: u64) -> Vec<Point2> {
     let mut rng = Rng::new(seed);

@@ -10,11 +10,13 @@
 mod delaunay;
 mod generate;
 mod grid;
+mod keil;
 mod mwt;
 mod skeleton;
 
 pub use delaunay::{Delaunay, DelaunayEdge, delaunay};
 pub use generate::{Distribution, points2d};
+pub use keil::{KeilResult, above_cheng_xu, check_random, in_keil_interval, keil, keil_sites};
 pub use mwt::{
     Mwt, MwtOptions, MwtStats, candidate_edges, cmp_edge_sets, mwt, mwt_with, weight_of,
 };

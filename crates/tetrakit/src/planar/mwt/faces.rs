@@ -144,7 +144,7 @@ fn solve_cut(
             continue;
         };
         sol.edges.push(e);
-        sol.weight = sol.weight.add(Interval::length(
+        sol.weight = sol.weight.plus(Interval::length(
             &points[e[0] as usize],
             &points[e[1] as usize],
         ));
@@ -266,7 +266,7 @@ fn polygon_dp(
                 if !ok(i, k) || !ok(k, j) || orient2d(p(i), p(k), p(j)) <= 0 {
                     continue;
                 }
-                let w = a.add(b).add(len(i, k)).add(len(k, j));
+                let w = a.plus(b).plus(len(i, k)).plus(len(k, j));
                 cur = Some(match cur {
                     None => (w, k),
                     Some((cw, ck)) => match w.certain_cmp(cw) {

@@ -38,6 +38,9 @@ pub struct Skeleton {
     pub tri_start: Vec<u32>,
     /// See `tri_start`.
     pub tris: Vec<(u32, u32, u32)>,
+    /// Edges no triangulation considered may use: a flip to one of them is not
+    /// available, so it does not refute local minimality.
+    pub forbidden: std::collections::HashSet<[u32; 2]>,
 }
 
 impl Skeleton {
@@ -225,7 +228,10 @@ fn locally_minimal(
             }
             let (a, b) = (orient2d(pt(r), pt(s), pp), orient2d(pt(r), pt(s), pq));
             let convex = a * b < 0;
-            if !convex || cmp_length(pp, pq, pt(r), pt(s)) != std::cmp::Ordering::Greater {
+            if !convex
+                || cmp_length(pp, pq, pt(r), pt(s)) != std::cmp::Ordering::Greater
+                || sk.forbidden.contains(&[r.min(s), r.max(s)])
+            {
                 return true;
             }
         }
@@ -306,6 +312,7 @@ pub fn lmt_skeleton(
     points: &[Point2],
     candidates: Vec<[u32; 2]>,
     forced: &[[u32; 2]],
+    forbidden: &[[u32; 2]],
 ) -> (Skeleton, LmtStats) {
     let n = points.len();
     let (start, adj) = adjacency(n, &candidates);
@@ -316,6 +323,7 @@ pub fn lmt_skeleton(
         adj,
         tri_start: Vec::new(),
         tris: Vec::new(),
+        forbidden: forbidden.iter().copied().collect(),
     };
     (sk.tri_start, sk.tris) = empty_triangles(points, &sk);
     let find = |sk: &Skeleton, e: &[u32; 2]| sk.edges.binary_search(e).ok();

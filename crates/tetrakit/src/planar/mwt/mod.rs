@@ -92,7 +92,7 @@ pub fn weight_of(points: &[Point2], edges: &[[u32; 2]]) -> Interval {
     edges
         .par_iter()
         .map(|e| Interval::length(&points[e[0] as usize], &points[e[1] as usize]))
-        .reduce(|| Interval::ZERO, Interval::add)
+        .reduce(|| Interval::ZERO, Interval::plus)
 }
 
 /// [`mwt`] with constraints.
@@ -109,6 +109,11 @@ pub fn mwt_with(points: &[Point2], opts: &MwtOptions) -> Result<Mwt, PlanarError
     } else {
         candidate_edges(points)
     };
+    let forbidden: Vec<[u32; 2]> = opts
+        .forbidden
+        .iter()
+        .map(|e| [e[0].min(e[1]), e[0].max(e[1])])
+        .collect();
     if constrained {
         let forbidden: HashSet<[u32; 2]> = opts
             .forbidden
@@ -133,7 +138,7 @@ pub fn mwt_with(points: &[Point2], opts: &MwtOptions) -> Result<Mwt, PlanarError
     stats.candidates = cands.len();
     stats.seconds[0] = t0.elapsed().as_secs_f64();
     let t1 = Instant::now();
-    let (sk, lstats) = lmt::lmt_skeleton(points, cands, &forced);
+    let (sk, lstats) = lmt::lmt_skeleton(points, cands, &forced, &forbidden);
     stats.skeleton_edges = lstats.certain;
     stats.undecided_edges = lstats.undecided;
     stats.seconds[1] = t1.elapsed().as_secs_f64();
@@ -266,12 +271,15 @@ fn find(parent: &mut [u32], mut x: u32) -> u32 {
     x
 }
 
+/// A face to solve and the alive edges usable inside it.
+type FaceProblem = (Face, HashSet<[u32; 2]>);
+
 /// Groups the alive edges by the face of the certain edges they lie in.
 fn undecided_faces(
     points: &[Point2],
     certain: &[[u32; 2]],
     alive: &[[u32; 2]],
-) -> Result<Vec<(Face, HashSet<[u32; 2]>)>, PlanarError> {
+) -> Result<Vec<FaceProblem>, PlanarError> {
     let rot = Rotation::new(points, certain);
     let (walks, walk_of) = rot.walks();
     let w = walks.len() as u32;

@@ -43,7 +43,7 @@ pub fn in_wedge(points: &[Point2], v: u32, a: u32, b: u32, d: u32) -> bool {
             &points[x as usize],
         );
         let o = orient2d(pv, pa, px);
-        let class = match o {
+        match o {
             1 => 1,
             -1 => 3,
             _ => {
@@ -53,8 +53,7 @@ pub fn in_wedge(points: &[Point2], v: u32, a: u32, b: u32, d: u32) -> bool {
                     2
                 }
             }
-        };
-        class
+        }
     };
     let cd = rel(d);
     let mut cb = rel(b);
