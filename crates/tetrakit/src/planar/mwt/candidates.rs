@@ -90,6 +90,7 @@ struct Scratch {
     by_sector: Vec<Vec<u32>>,
     nearest: Vec<f64>,
     pending: Vec<(f64, u32)>,
+    visited: Vec<bool>,
 }
 
 /// All candidate edges `[p, q]` (`p < q`), sorted.
@@ -140,8 +141,11 @@ fn candidates_of(
     let mut ring = 0usize;
     let mut dead = [f64::INFINITY; SECTORS];
     loop {
-        let live = |x: usize, y: usize| ring < 2 || cell_live(grid, sec, &pp, &dead, x, y);
-        gather_ring(grid, points, p, cx, cy, ring, live, &mut s.pending);
+        if ring < 2 {
+            gather_ring(grid, points, p, cx, cy, ring, |_, _| true, &mut s.pending);
+        } else {
+            gather_live_cones(grid, points, p, (cx, cy), ring, sec, &dead, s);
+        }
         let exhausted = ring >= cx && ring >= cy && cx + ring >= nx - 1 && cy + ring >= ny - 1;
         let complete = if exhausted {
             f64::INFINITY
@@ -218,41 +222,110 @@ fn sector_reach(p: &Point2, (lo, hi): (Point2, Point2), sec: &Sectors) -> [f64; 
     reach.map(|r| r * 1.01 + 1e-300)
 }
 
-/// False when every site of cell `(x, y)` is provably dead: farther from `p` than the
-/// dead radius of every sector the cell spans (one sector of slack on each side).
-fn cell_live(
-    grid: &PointGrid,
-    sec: &Sectors,
-    p: &Point2,
-    dead: &[f64; SECTORS],
-    x: usize,
-    y: usize,
-) -> bool {
-    let (lo, hi) = grid.cell_box(x, y);
-    let dx = (lo[0] - p[0]).max(p[0] - hi[0]).max(0.0);
-    let dy = (lo[1] - p[1]).max(p[1] - hi[1]).max(0.0);
-    let near = dx.hypot(dy) * (1.0 - 1e-9);
-    if near == 0.0 {
-        return true;
+/// Perimeter position (counter-clockwise from the east side) of the ring-`r` cell at
+/// offset `(dx, dy)` from the centre cell (`max(|dx|, |dy|) = r`, `r ≥ 1`).
+fn ring_index(dx: isize, dy: isize, r: isize) -> isize {
+    if dx == r && dy > -r {
+        dy + r - 1
+    } else if dy == r {
+        2 * r + (r - 1 - dx)
+    } else if dx == -r {
+        4 * r + (r - 1 - dy)
+    } else {
+        6 * r + (dx + r - 1)
     }
-    let mut a: [f64; 4] = [
-        [lo[0], lo[1]],
-        [lo[0], hi[1]],
-        [hi[0], lo[1]],
-        [hi[0], hi[1]],
-    ]
-    .map(|c| pseudo_angle(c[0] - p[0], c[1] - p[1]));
-    a.sort_by(f64::total_cmp);
-    // The corners span less than half a turn: the range is the complement of the
-    // largest cyclic gap.
-    let gaps = [a[1] - a[0], a[2] - a[1], a[3] - a[2], a[0] + 4.0 - a[3]];
-    let g = (0..4)
-        .max_by(|&i, &j| gaps[i].total_cmp(&gaps[j]))
-        .expect("four gaps");
-    let (from, to) = (a[(g + 1) % 4], a[g]);
-    let (k0, k1) = (sec.of_pseudo(from), sec.of_pseudo(to));
-    let span = (k1 + SECTORS - k0) % SECTORS;
-    (0..=span + 2).any(|i| dead[(k0 + SECTORS - 1 + i) % SECTORS] >= near)
+}
+
+/// Inverse of [`ring_index`].
+fn ring_cell(i: isize, r: isize) -> (isize, isize) {
+    let i = i.rem_euclid(8 * r);
+    match i / (2 * r) {
+        0 => (r, i - r + 1),
+        1 => (r - 1 - (i - 2 * r), r),
+        2 => (-r, r - 1 - (i - 4 * r)),
+        _ => (i - 6 * r - r + 1, -r),
+    }
+}
+
+/// Perimeter position of the ring-`r` cell where the ray from `p` in direction `d`
+/// leaves the ring's outer square.
+fn ray_ring_index(
+    grid: &PointGrid,
+    p: &Point2,
+    cx: usize,
+    cy: usize,
+    d: (f64, f64),
+    r: usize,
+) -> isize {
+    let cell = grid.cell();
+    let (lo, _) = grid.cell_box(cx, cy);
+    let o = [p[0] - (lo[0] + 0.5 * cell), p[1] - (lo[1] + 0.5 * cell)];
+    let h = (r as f64 + 0.5) * cell;
+    let exit = |dir: f64, off: f64| {
+        if dir > 1e-12 {
+            (h - off) / dir
+        } else if dir < -1e-12 {
+            (-h - off) / dir
+        } else {
+            f64::INFINITY
+        }
+    };
+    let t = exit(d.0, o[0]).min(exit(d.1, o[1])) * (1.0 - 1e-9);
+    let (px, py) = (o[0] + t * d.0, o[1] + t * d.1);
+    let ri = r as isize;
+    let mut dx = ((px / cell) + 0.5).floor() as isize;
+    let mut dy = ((py / cell) + 0.5).floor() as isize;
+    if dx.abs() < ri && dy.abs() < ri {
+        if px.abs() >= py.abs() {
+            dx = if px >= 0.0 { ri } else { -ri };
+        } else {
+            dy = if py >= 0.0 { ri } else { -ri };
+        }
+    }
+    ring_index(dx.clamp(-ri, ri), dy.clamp(-ri, ri), ri)
+}
+
+/// Pushes the sites of the ring-`r` cells met by the cones of the sectors still live
+/// beyond the ring's inner radius (each cone's perimeter range widened by two cells
+/// against rounding and the offset of `p` in its cell).
+#[allow(clippy::too_many_arguments)]
+fn gather_live_cones(
+    grid: &PointGrid,
+    points: &[Point2],
+    p: u32,
+    (cx, cy): (usize, usize),
+    r: usize,
+    sec: &Sectors,
+    dead: &[f64; SECTORS],
+    s: &mut Scratch,
+) {
+    let pp = points[p as usize];
+    let inner = (r as f64 - 1.0) * grid.cell() * (1.0 - 1e-9);
+    let ri = r as isize;
+    let (nx, ny) = grid.dims();
+    s.visited.clear();
+    s.visited.resize(8 * r, false);
+    for k in (0..SECTORS).filter(|&k| dead[k] >= inner) {
+        let i0 = ray_ring_index(grid, &pp, cx, cy, sec.rays[k], r) - 2;
+        let i1 = ray_ring_index(grid, &pp, cx, cy, sec.rays[k + 1], r) + 2;
+        let len = ((i1 - i0).rem_euclid(8 * ri) + 1).min(8 * ri);
+        for i in i0..i0 + len {
+            let slot = i.rem_euclid(8 * ri) as usize;
+            if std::mem::replace(&mut s.visited[slot], true) {
+                continue;
+            }
+            let (dx, dy) = ring_cell(i, ri);
+            let (x, y) = (cx as isize + dx, cy as isize + dy);
+            if x < 0 || y < 0 || x >= nx as isize || y >= ny as isize {
+                continue;
+            }
+            for &q in grid.row(y as usize, x as usize, x as usize) {
+                let a = points[q as usize];
+                let (ex, ey) = (a[0] - pp[0], a[1] - pp[1]);
+                s.pending.push((ex * ex + ey * ey, q));
+            }
+        }
+    }
 }
 
 /// Pushes `(squared distance, index)` of the sites in the live cells of ring `r`
@@ -323,4 +396,74 @@ fn diamonds_open(p: u32, q: u32, points: &[Point2], s: &Scratch, k: usize) -> bo
         }
     }
     true
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::planar::{Distribution, points2d};
+
+    #[test]
+    fn ring_positions_round_trip() {
+        for r in 1..7isize {
+            for i in 0..8 * r {
+                let (dx, dy) = ring_cell(i, r);
+                assert_eq!(dx.abs().max(dy.abs()), r);
+                assert_eq!(ring_index(dx, dy, r), i);
+            }
+        }
+    }
+
+    /// The brute-force candidate set: every pair with an empty diamond and no site on it.
+    fn brute(points: &[Point2]) -> Vec<[u32; 2]> {
+        let n = points.len() as u32;
+        let mut out = Vec::new();
+        for a in 0..n {
+            for b in a + 1..n {
+                let (mut l, mut r, mut on) = (false, false, false);
+                for c in 0..n {
+                    if c != a && c != b {
+                        let h = diamond_hit(
+                            &points[a as usize],
+                            &points[b as usize],
+                            &points[c as usize],
+                        );
+                        l |= h.left;
+                        r |= h.right;
+                        on |= h.on_segment;
+                    }
+                }
+                if !on && !(l && r) {
+                    out.push([a, b]);
+                }
+            }
+        }
+        out
+    }
+
+    #[test]
+    fn search_keeps_every_candidate_of_brute_force() {
+        for (dist, n) in [
+            (Distribution::Uniform, 600),
+            (Distribution::Clustered, 500),
+            (Distribution::Gaussian, 500),
+            (Distribution::Grid, 400),
+        ] {
+            let pts = points2d(dist, n, 3);
+            let got = candidate_edges(&pts);
+            let want = brute(&pts);
+            let missing: Vec<_> = want
+                .iter()
+                .filter(|e| got.binary_search(e).is_err())
+                .collect();
+            assert!(missing.is_empty(), "{dist:?}: missing {missing:?}");
+            // Extra edges are sound but should be rare.
+            assert!(
+                got.len() <= want.len() + want.len() / 20,
+                "{dist:?}: {} vs {}",
+                got.len(),
+                want.len()
+            );
+        }
+    }
 }
