@@ -433,7 +433,7 @@ mod tests {
                         on |= h.on_segment;
                     }
                 }
-                if !on && !(l && r) {
+                if !(on || (l && r)) {
                     out.push([a, b]);
                 }
             }
