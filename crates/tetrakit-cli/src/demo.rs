@@ -178,15 +178,25 @@ fn planar_section() {
         g.weight.mid(),
         g.stats.faces_left
     );
-    match planar::keil(beta, Some(8)) {
-        Ok(k) => out!(
-            "  Keil construction at β = 1.16, n = 8: xy in skeleton {}, in MWT {}; with xy {:.9}, without {:.9} (Lemma 5.8 asks n > {:.0}; `tetrakit keil --beta 1.16 --svg keil.svg`)",
-            k.xy_in_skeleton,
-            k.xy_in_mwt,
-            k.with_xy.0.mid(),
-            k.without_xy.0.mid(),
-            k.lemma_bound
-        ),
-        Err(e) => out!("  Keil construction: {e}"),
+    for (b, n) in [("1.1548", None), ("1.16", Some(16))] {
+        match planar::keil(b.parse().expect("a ratio"), n) {
+            Ok(k) => out!(
+                "  Keil construction (§5.2) at β = {b}, n = {}: xy in the β-skeleton: {}; in the MWT: {}; best with xy {:.9}, without {:.9}{}",
+                k.n,
+                k.xy_in_skeleton,
+                k.xy_in_mwt,
+                k.with_xy.0.mid(),
+                k.without_xy.0.mid(),
+                if k.xy_in_skeleton && !k.xy_in_mwt {
+                    " -> Keil's conjecture fails (exact)".to_string()
+                } else {
+                    format!(
+                        " (not separated at this n; Lemma 5.8 asks n > {:.0})",
+                        k.lemma_bound
+                    )
+                }
+            ),
+            Err(e) => out!("  Keil construction at β = {b}: {e}"),
+        }
     }
 }

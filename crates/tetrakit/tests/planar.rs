@@ -277,6 +277,17 @@ fn keil_construction_is_exact_and_consistent() {
             );
         }
     }
+    // Near Keil's value 2/√3 the construction separates xy with a few dozen sites per
+    // arc: the β-skeleton edge xy is in no MWT, proven by the exact weights.
+    for b in ["1.1548", "1.156"] {
+        let k = tetrakit::planar::keil(b.parse().unwrap(), None).unwrap();
+        assert!(k.xy_in_skeleton && !k.xy_in_mwt, "β={b} n={}", k.n);
+        assert_eq!(k.with_vs_without, Ordering::Greater, "β={b}");
+        assert_eq!(
+            cmp_edge_sets(&k.sites, &k.mwt, &k.without_xy.1),
+            Ordering::Equal
+        );
+    }
     assert!(tetrakit::planar::keil("1.17".parse().unwrap(), None).is_err());
     assert!(tetrakit::planar::keil("1.15".parse().unwrap(), None).is_err());
 }

@@ -8,8 +8,9 @@
 //! `x ∈ pq`, `y ∈ rs`, mirror symmetric. `q'` and `s'` are where `xq` and `ys` meet the
 //! β-circle below `xy`; they are moved outward by ulps until the exact test says they are
 //! not strictly inside, so `xy` stays a β-skeleton edge. The `n` sites `r_i` lie on a
-//! slightly curved arc from near `r` (on the hull) towards `s'`, within `δ/2` of `r`,
-//! with `δ` the thesis's `½ min{|ss'|, |pr| - |py|, |pr| + |py| - 2|pq'|}` (also kept
+//! curve from near `r` (on the hull) down towards `y`, left of the line `s'yr` (so that
+//! `s'r_i` crosses `xy`) and bent so that the fans from `s'` and from `y` do not cross
+//! (Lemma 5.5(i)), within `δ/2` of `r`, with `δ` the thesis's `½ min{|ss'|, |pr| - |py|, |pr| + |py| - 2|pq'|}` (also kept
 //! below the distance from `r` to the β-circle); the `p_i` are their mirror images (exact
 //! in floating point, so the mirror ties are exact ties). `n` defaults to one more than
 //! Lemma 5.8's bound.
@@ -104,7 +105,54 @@ fn outside(mut pt: Point2, dir: Point2, x: &Point2, y: &Point2, beta: Ratio) -> 
 
 /// The default search for `n` stops here (the exact MWT of the clustered sites grows
 /// quickly with `n`; Lemma 5.8's bound is often in the hundreds).
-pub const DEFAULT_N_CAP: usize = 32;
+pub const DEFAULT_N_CAP: usize = 64;
+
+/// The best triangulation containing `xy`, for `x`, `y` on the hull and no other site on
+/// the line `xy`: the chord splits the hull into two convex regions whose triangulations
+/// are those of the sites on each side plus `x` and `y`, so it is the union of two
+/// unconstrained MWTs (the diamond test applies to each). Otherwise the constrained
+/// solver over all segments.
+fn best_with_chord(sites: &[Point2], xy: [u32; 2]) -> Result<super::Mwt, PlanarError> {
+    let (x, y) = (&sites[xy[0] as usize], &sites[xy[1] as usize]);
+    let hull = crate::geom::Hull2::new(sites);
+    let side: Vec<i8> = sites
+        .iter()
+        .map(|p| crate::geom::orient2d(x, y, p))
+        .collect();
+    let on_line = (0..sites.len()).any(|i| side[i] == 0 && i as u32 != xy[0] && i as u32 != xy[1]);
+    let on_hull = hull.vertices.contains(&xy[0]) && hull.vertices.contains(&xy[1]);
+    if on_line || !on_hull {
+        return mwt_with(
+            sites,
+            &MwtOptions {
+                forced: vec![xy],
+                ..Default::default()
+            },
+        );
+    }
+    let mut edges = vec![xy];
+    for sign in [1i8, -1] {
+        let ids: Vec<u32> = (0..sites.len() as u32)
+            .filter(|&i| side[i as usize] == sign || i == xy[0] || i == xy[1])
+            .collect();
+        if ids.len() < 3 {
+            continue;
+        }
+        let pts: Vec<Point2> = ids.iter().map(|&i| sites[i as usize]).collect();
+        for e in mwt(&pts)?.edges {
+            let (a, b) = (ids[e[0] as usize], ids[e[1] as usize]);
+            edges.push([a.min(b), a.max(b)]);
+        }
+    }
+    edges.sort_unstable();
+    edges.dedup();
+    let weight = super::weight_of(sites, &edges);
+    Ok(super::Mwt {
+        edges,
+        weight,
+        ..Default::default()
+    })
+}
 
 /// The smallest `n ≤ cap` with `ok(n)`, assuming monotonicity, by doubling then
 /// bisection (`cap` when none is found below it).
@@ -153,19 +201,13 @@ pub fn keil(beta: Ratio, n: Option<usize>) -> Result<KeilResult, PlanarError> {
     });
     let best = mwt(&sites)?;
     let xy_in_mwt = best.edges.binary_search(&xy).is_ok();
-    if sites.len() > CONSTRAINED_LIMIT {
+    let forced = best_with_chord(&sites, xy)?;
+    if xy_in_mwt && sites.len() > CONSTRAINED_LIMIT {
         return Err(PlanarError::new(format!(
-            "{} sites: the constrained optima (with and without xy) are computed over all segments, limited to {CONSTRAINED_LIMIT} sites; use a smaller --n",
+            "{} sites and xy is in the MWT: the best triangulation without xy is computed over all segments, limited to {CONSTRAINED_LIMIT} sites; use a smaller --n",
             sites.len()
         )));
     }
-    let forced = mwt_with(
-        &sites,
-        &MwtOptions {
-            forced: vec![xy],
-            ..Default::default()
-        },
-    )?;
     let other = if xy_in_mwt {
         mwt_with(
             &sites,
@@ -260,15 +302,19 @@ fn construction(beta: Ratio) -> Result<(Box<dyn Fn(usize) -> Vec<Point2>>, f64),
     let (p1r1, xs) = (pr, dist(x, s_prime));
     let lemma_bound = 2.0 / (2.0 * alpha - 3.0 * delta) * (p1r1 - 2.0 + dist(p, s_prime) - xs);
     let build = move |n: usize| -> Vec<Point2> {
-        // The arc near r: from m (near r, on the hull) towards s', within δ/2 of r, bulging
-        // towards s' (convex seen from s', concave seen from y).
-        let to_s = {
-            let d = [s_prime[0] - r[0], s_prime[1] - r[1]];
-            let l = d[0].hypot(d[1]);
-            [d[0] / l, d[1] / l]
-        };
-        let normal = [to_s[1], -to_s[0]];
-        let len = 0.4 * delta;
+        // The arc near r, in coordinates along the line y → r (ℓ from y, unit e) and the
+        // offset d to its left (towards the band above xy), u = distance down from the
+        // top site. Lemma 5.5(i) (the fans from s' and from y do not cross) needs the
+        // slope dd/dℓ between d/(ℓ + |ys'|) and d/ℓ; the chain edges must be forced, so
+        // the arc bulges towards the band (d concave in ℓ): the slope runs from just
+        // above the lower limit at the top to just below the upper one at the bottom.
+        let lr = dist(y, r);
+        let e = [(r[0] - y[0]) / lr, (r[1] - y[1]) / lr];
+        let left = [-e[1], e[0]];
+        let ys = dist(y, s_prime);
+        let (d0, span) = (0.15 * delta, 0.3 * delta);
+        let (g_top, g_bottom) = (1.2 * d0 / (lr + ys), 0.8 * d0 / lr);
+        let kappa = (g_bottom - g_top) / span;
         let arc: Vec<Point2> = (0..n)
             .map(|i| {
                 let t = if n == 1 {
@@ -276,12 +322,10 @@ fn construction(beta: Ratio) -> Result<(Box<dyn Fn(usize) -> Vec<Point2>>, f64),
                 } else {
                     i as f64 / (n - 1) as f64
                 };
-                let along = 0.05 * delta + t * len;
-                let bulge = 0.1 * len * t * (1.0 - t);
-                [
-                    r[0] + along * to_s[0] + bulge * normal[0],
-                    r[1] + along * to_s[1] + bulge * normal[1],
-                ]
+                let u = t * span;
+                let l = lr - 0.02 * delta - u;
+                let d = d0 - g_top * u - 0.5 * kappa * u * u;
+                [y[0] + l * e[0] + d * left[0], y[1] + l * e[1] + d * left[1]]
             })
             .collect();
         let mut sites = vec![q_prime, x];
