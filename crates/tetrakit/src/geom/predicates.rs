@@ -396,6 +396,23 @@ pub fn incircle(a: &Point2, b: &Point2, c: &Point2, d: &Point2) -> i8 {
     sign(robust::incircle(f(a), f(b), f(c), f(d)))
 }
 
+/// The axis-aligned bounding box `(lo, hi)` of a planar point set (infinite bounds when
+/// empty).
+///
+/// ```
+/// assert_eq!(tetrakit::geom::bounding_box2(&[[1.0, 5.0], [3.0, 2.0]]), ([1.0, 2.0], [3.0, 5.0]));
+/// ```
+pub fn bounding_box2(points: &[Point2]) -> (Point2, Point2) {
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for p in points {
+        for k in 0..2 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    (lo, hi)
+}
+
 /// The axis-aligned bounding box `(lo, hi)` of a point set (infinite bounds when empty).
 pub fn bounding_box(points: &[Point3]) -> (Point3, Point3) {
     let mut lo = [f64::INFINITY; 3];

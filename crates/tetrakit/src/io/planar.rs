@@ -80,13 +80,7 @@ pub struct Svg {
 impl Svg {
     /// A drawing whose view fits `points` (plus a margin).
     pub fn new(points: &[Point2]) -> Svg {
-        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-        for p in points {
-            for k in 0..2 {
-                lo[k] = lo[k].min(p[k]);
-                hi[k] = hi[k].max(p[k]);
-            }
-        }
+        let (mut lo, mut hi) = crate::geom::bounding_box2(points);
         if points.is_empty() {
             (lo, hi) = ([0.0; 2], [1.0; 2]);
         }

@@ -17,13 +17,7 @@ pub(crate) struct EdgeGrid {
 impl EdgeGrid {
     /// A grid over the edges `ids` of `edges`, cells about the mean edge length.
     pub fn new(points: &[Point2], edges: &[[u32; 2]], ids: &[u32]) -> EdgeGrid {
-        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-        for p in points {
-            for k in 0..2 {
-                lo[k] = lo[k].min(p[k]);
-                hi[k] = hi[k].max(p[k]);
-            }
-        }
+        let (lo, hi) = crate::geom::bounding_box2(points);
         let len = |e: &[u32; 2]| {
             let (a, b) = (points[e[0] as usize], points[e[1] as usize]);
             (b[0] - a[0]).hypot(b[1] - a[1])

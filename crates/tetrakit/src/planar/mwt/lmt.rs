@@ -55,23 +55,9 @@ impl Skeleton {
     }
 }
 
+/// Adjacency sorted by neighbour (for merging neighbour lists).
 fn adjacency(n: usize, edges: &[[u32; 2]]) -> (Vec<u32>, Vec<(u32, u32)>) {
-    let mut start = vec![0u32; n + 1];
-    for e in edges {
-        start[e[0] as usize + 1] += 1;
-        start[e[1] as usize + 1] += 1;
-    }
-    for i in 0..n {
-        start[i + 1] += start[i];
-    }
-    let mut fill = start.clone();
-    let mut adj = vec![(0u32, 0u32); start[n] as usize];
-    for (id, e) in edges.iter().enumerate() {
-        for (a, b) in [(e[0], e[1]), (e[1], e[0])] {
-            adj[fill[a as usize] as usize] = (b, id as u32);
-            fill[a as usize] += 1;
-        }
-    }
+    let (start, mut adj) = super::walks::csr(n, edges);
     for v in 0..n {
         adj[start[v] as usize..start[v + 1] as usize].sort_unstable();
     }

@@ -77,6 +77,27 @@ pub fn in_wedge(points: &[Point2], v: u32, a: u32, b: u32, d: u32) -> bool {
     }
 }
 
+/// Compressed rows of `(neighbour, edge id)` per vertex, in edge order.
+pub fn csr(n: usize, edges: &[[u32; 2]]) -> (Vec<u32>, Vec<(u32, u32)>) {
+    let mut start = vec![0u32; n + 1];
+    for e in edges {
+        start[e[0] as usize + 1] += 1;
+        start[e[1] as usize + 1] += 1;
+    }
+    for i in 0..n {
+        start[i + 1] += start[i];
+    }
+    let mut fill = start.clone();
+    let mut adj = vec![(0u32, 0u32); start[n] as usize];
+    for (id, e) in edges.iter().enumerate() {
+        for (a, b) in [(e[0], e[1]), (e[1], e[0])] {
+            adj[fill[a as usize] as usize] = (b, id as u32);
+            fill[a as usize] += 1;
+        }
+    }
+    (start, adj)
+}
+
 /// Neighbour lists sorted counter-clockwise.
 pub struct Rotation {
     /// Compressed rows.
@@ -89,22 +110,8 @@ impl Rotation {
     /// The rotation system of an edge list.
     pub fn new(points: &[Point2], edges: &[[u32; 2]]) -> Rotation {
         let n = points.len();
-        let mut start = vec![0u32; n + 1];
-        for e in edges {
-            start[e[0] as usize + 1] += 1;
-            start[e[1] as usize + 1] += 1;
-        }
-        for i in 0..n {
-            start[i + 1] += start[i];
-        }
-        let mut fill = start.clone();
-        let mut nbr = vec![0u32; start[n] as usize];
-        for e in edges {
-            for (a, b) in [(e[0], e[1]), (e[1], e[0])] {
-                nbr[fill[a as usize] as usize] = b;
-                fill[a as usize] += 1;
-            }
-        }
+        let (start, adj) = csr(n, edges);
+        let mut nbr: Vec<u32> = adj.into_iter().map(|(b, _)| b).collect();
         for v in 0..n {
             nbr[start[v] as usize..start[v + 1] as usize]
                 .sort_by(|&a, &b| angle_cmp(points, v as u32, a, b));
