@@ -329,3 +329,88 @@ fn collect(
     };
     out.extend(option_edges(best, poly, m, i, j, k));
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geom::Hull2;
+    use crate::rng::Rng;
+
+    /// A convex polygon with isolated interior sites as holes, solved by hole branching
+    /// directly, against the full pipeline (itself checked against exhaustive search).
+    #[test]
+    fn holes_are_solved_exactly_by_branching() {
+        let mut rng = Rng::new(21);
+        let mut with_two_holes = 0;
+        for _ in 0..150 {
+            let m = 5 + rng.below(4);
+            let mut pts: Vec<Point2> = (0..m)
+                .map(|i| {
+                    let a = std::f64::consts::TAU * (i as f64 + 0.3 * rng.unit()) / m as f64;
+                    [(8.0 * a.cos()).round(), (8.0 * a.sin()).round()]
+                })
+                .collect();
+            for _ in 0..1 + rng.below(3) {
+                pts.push([rng.below(7) as f64 - 3.0, rng.below(7) as f64 - 3.0]);
+            }
+            pts.sort_by(|a, b| a.partial_cmp(b).unwrap());
+            pts.dedup();
+            let hull = Hull2::new(&pts);
+            if hull.vertices.len() < 3
+                || hull.on_boundary.iter().filter(|&&b| b).count() != hull.vertices.len()
+            {
+                continue;
+            }
+            let inner: Vec<u32> = (0..pts.len() as u32)
+                .filter(|&i| !hull.on_boundary[i as usize])
+                .collect();
+            if inner.is_empty() {
+                continue;
+            }
+            let n = pts.len() as u32;
+            let hull_set: HashSet<[u32; 2]> = (0..hull.vertices.len())
+                .map(|i| {
+                    key(
+                        hull.vertices[i],
+                        hull.vertices[(i + 1) % hull.vertices.len()],
+                    )
+                })
+                .collect();
+            let chords: HashSet<[u32; 2]> = (0..n)
+                .flat_map(|a| (a + 1..n).map(move |b| [a, b]))
+                .filter(|&[a, b]| {
+                    !hull_set.contains(&[a, b])
+                        && !(0..n).any(|r| {
+                            r != a
+                                && r != b
+                                && crate::geom::diamond_hit(
+                                    &pts[a as usize],
+                                    &pts[b as usize],
+                                    &pts[r as usize],
+                                )
+                                .on_segment
+                        })
+                })
+                .collect();
+            let face = Face {
+                outer: hull.vertices.clone(),
+                holes: inner.iter().map(|&v| vec![v]).collect(),
+            };
+            let mut budget = BRANCH_LIMIT;
+            let sol = solve(&pts, &face, &chords, &mut budget).expect("a triangulation exists");
+            let mut edges: Vec<[u32; 2]> = sol.edges.clone();
+            edges.extend(hull_set.iter().copied());
+            let best = crate::planar::mwt(&pts).unwrap();
+            assert_eq!(
+                cmp_edge_sets(&pts, &edges, &best.edges),
+                Ordering::Equal,
+                "{pts:?}"
+            );
+            edges.sort_unstable();
+            edges.dedup();
+            assert_eq!(edges.len(), 3 * pts.len() - 3 - hull.vertices.len());
+            with_two_holes += usize::from(inner.len() >= 2);
+        }
+        assert!(with_two_holes > 20);
+    }
+}
