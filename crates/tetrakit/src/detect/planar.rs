@@ -42,7 +42,7 @@ pub(super) fn detect(points: &[Point3], g: &Graph) -> (usize, Result<Cells, Witn
 
 fn detect2(points: &[Point3], p: &[Point2], g: &Graph, hull: &Hull2) -> Result<Cells, Witness> {
     super::connectivity(g)?;
-    check_chains(hull_chains(p, hull), g)?;
+    check_chains(hull.boundary_chains(p), g)?;
     let n = p.len();
     let mut rot: Vec<Vec<u32>> = Vec::with_capacity(n);
     for v in 0..n as u32 {
@@ -94,24 +94,6 @@ fn detect2(points: &[Point3], p: &[Point2], g: &Graph, hull: &Hull2) -> Result<C
         ));
     }
     Ok(Cells::Triangles(tris))
-}
-
-/// The boundary points along each hull edge, sorted along it.
-fn hull_chains(p: &[Point2], hull: &Hull2) -> Vec<Vec<u32>> {
-    let h = &hull.vertices;
-    (0..h.len())
-        .map(|i| {
-            let (a, b) = (&p[h[i] as usize], &p[h[(i + 1) % h.len()] as usize]);
-            let mut on: Vec<u32> = (0..p.len() as u32)
-                .filter(|&x| hull.on_boundary[x as usize] && orient2d(a, b, &p[x as usize]) == 0)
-                .collect();
-            on.sort_by(|&x, &y| {
-                let (px, py) = (&p[x as usize], &p[y as usize]);
-                px[0].total_cmp(&py[0]).then(px[1].total_cmp(&py[1]))
-            });
-            on
-        })
-        .collect()
 }
 
 /// Neighbours of `v` sorted counter-clockwise, starting from the first one.

@@ -72,6 +72,52 @@ impl Hull2 {
     }
 }
 
+impl Hull2 {
+    /// For each hull edge `vertices[i] → vertices[i+1]`, the boundary points along it in
+    /// order, both ends included (collinear boundary points are the ones `vertices`
+    /// leaves out). Exact: membership by orientation, order by coordinates along the line.
+    ///
+    /// ```
+    /// use tetrakit::geom::Hull2;
+    /// let pts = [[0.0, 0.0], [2.0, 0.0], [0.0, 2.0], [1.0, 0.0]];
+    /// let h = Hull2::new(&pts);
+    /// assert!(h.boundary_chains(&pts).contains(&vec![0, 3, 1]));
+    /// ```
+    pub fn boundary_chains(&self, points: &[Point2]) -> Vec<Vec<u32>> {
+        let mut is_vertex = vec![false; points.len()];
+        for &v in &self.vertices {
+            is_vertex[v as usize] = true;
+        }
+        let extra: Vec<u32> = (0..points.len() as u32)
+            .filter(|&i| self.on_boundary[i as usize] && !is_vertex[i as usize])
+            .collect();
+        let h = self.vertices.len();
+        (0..h)
+            .map(|k| {
+                let (a, b) = (self.vertices[k], self.vertices[(k + 1) % h]);
+                let (pa, pb) = (&points[a as usize], &points[b as usize]);
+                let mut chain: Vec<u32> = extra
+                    .iter()
+                    .copied()
+                    .filter(|&c| orient2d(pa, pb, &points[c as usize]) == 0)
+                    .collect();
+                // Collinear points: lexicographic order is monotone along the line.
+                let lex = |x: &u32, y: &u32| {
+                    let (px, py) = (&points[*x as usize], &points[*y as usize]);
+                    px[0].total_cmp(&py[0]).then(px[1].total_cmp(&py[1]))
+                };
+                chain.sort_by(lex);
+                if lex(&a, &b).is_gt() {
+                    chain.reverse();
+                }
+                chain.insert(0, a);
+                chain.push(b);
+                chain
+            })
+            .collect()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -243,16 +243,18 @@ mod tests {
         let d1 = squared_length(&[0.0, 0.0], &[1.0, 1.0]);
         let d2 = squared_length(&[1.0, 0.0], &[0.0, 1.0]);
         assert_eq!(compare_root_sums(&[d1], &[d2]), Ordering::Equal);
-        // 3√2 versus √2 + √8 (both 3√2), with fractional coordinates.
+        // 0.75√2 versus 0.25√2 + 0.5√2 along a diagonal with dyadic coordinates: the
+        // radicands 1.125, 0.125 and 0.5 differ by rational squares, so the sums are
+        // exactly equal, and a tiny shift of one point must break the tie.
         let e = |a: [f64; 2], b: [f64; 2]| squared_length(&a, &b);
-        let lhs = [e([0.0, 0.0], [0.3, 0.3])];
-        let rhs = [e([0.0, 0.0], [0.1, 0.1]), e([0.1, 0.1], [0.3, 0.3])];
-        // 0.1, 0.3 are not exact in binary, so these differ; the answer must match
-        // high-precision arithmetic on the actual doubles.
-        let approx = |v: &[Expansion]| -> f64 { v.iter().map(|x| x.estimate().sqrt()).sum() };
-        let expected = approx(&lhs).partial_cmp(&approx(&rhs)).unwrap();
-        let got = compare_root_sums(&lhs, &rhs);
-        assert!(got == expected || (approx(&lhs) - approx(&rhs)).abs() < 1e-15);
+        let lhs = [e([0.0, 0.0], [0.75, 0.75])];
+        let rhs = [e([0.0, 0.0], [0.25, 0.25]), e([0.25, 0.25], [0.75, 0.75])];
+        assert_eq!(compare_root_sums(&lhs, &rhs), Ordering::Equal);
+        let moved = [
+            e([0.0, 0.0], [0.25, 0.25 + 2f64.powi(-40)]),
+            e([0.25, 0.25 + 2f64.powi(-40)], [0.75, 0.75]),
+        ];
+        assert_eq!(compare_root_sums(&lhs, &moved), Ordering::Less);
     }
 
     #[test]

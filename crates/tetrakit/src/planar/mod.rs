@@ -22,6 +22,16 @@ pub use mwt::{
 };
 pub use skeleton::{Region, Skeleton, beta_skeleton};
 
+/// Union-find root with path halving (cells of cocircular Delaunay triangles, faces of
+/// the certain edges).
+pub(crate) fn find(parent: &mut [u32], mut x: u32) -> u32 {
+    while parent[x as usize] != x {
+        parent[x as usize] = parent[parent[x as usize] as usize];
+        x = parent[x as usize];
+    }
+    x
+}
+
 /// An error of a planar computation (bad parameters or an internal inconsistency).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct PlanarError(pub String);

@@ -29,9 +29,9 @@
 //! is no longer planar (it tends to the complete graph); every pair is checked against
 //! the sites in the lens's bounding box: `O(n²)` pairs, expected `O(1)` sites each.
 
-use super::PlanarError;
 use super::delaunay::{Delaunay, delaunay};
 use super::grid::PointGrid;
+use super::{PlanarError, find};
 use crate::geom::{Point2, Ratio, corner_dot_sign, in_beta_region, in_lune, orient2d};
 use rayon::prelude::*;
 use std::cmp::Ordering;
@@ -164,14 +164,6 @@ fn small_beta(points: &[Point2], beta: Ratio) -> Skeleton {
         candidates: (n as usize) * (n as usize - 1) / 2,
         cell_diameters: 0,
     }
-}
-
-fn find(parent: &mut [u32], mut x: u32) -> u32 {
-    while parent[x as usize] != x {
-        parent[x as usize] = parent[parent[x as usize] as usize];
-        x = parent[x as usize];
-    }
-    x
 }
 
 /// Antipodal vertex pairs of the cocircular Delaunay cells with four or more vertices

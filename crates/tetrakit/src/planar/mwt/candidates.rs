@@ -140,9 +140,10 @@ fn candidates_of(
     let (nx, ny) = grid.dims();
     let mut ring = 0usize;
     let mut dead = [f64::INFINITY; SECTORS];
+    let reach = sector_reach(&pp, grid.bounds(), sec);
     loop {
         if ring < 2 {
-            gather_ring(grid, points, p, cx, cy, ring, |_, _| true, &mut s.pending);
+            gather_ring(grid, points, p, cx, cy, ring, &mut s.pending);
         } else {
             gather_live_cones(grid, points, p, (cx, cy), ring, sec, &dead, s);
         }
@@ -171,7 +172,6 @@ fn candidates_of(
         if exhausted {
             return;
         }
-        let reach = sector_reach(&pp, grid.bounds(), sec);
         for (k, d) in dead.iter_mut().enumerate() {
             *d = dead_radius(s, sec, k).min(reach[k]);
         }
@@ -328,9 +328,7 @@ fn gather_live_cones(
     }
 }
 
-/// Pushes `(squared distance, index)` of the sites in the live cells of ring `r`
-/// around cell `(cx, cy)`.
-#[allow(clippy::too_many_arguments)]
+/// Pushes `(squared distance, index)` of the sites in ring `r` around cell `(cx, cy)`.
 fn gather_ring(
     grid: &PointGrid,
     points: &[Point2],
@@ -338,7 +336,6 @@ fn gather_ring(
     cx: usize,
     cy: usize,
     r: usize,
-    live: impl Fn(usize, usize) -> bool,
     pending: &mut Vec<(f64, u32)>,
 ) {
     let (nx, ny) = grid.dims();
@@ -354,11 +351,7 @@ fn gather_ring(
     };
     let x0 = cx.saturating_sub(r);
     let x1 = (cx + r).min(nx - 1);
-    let mut cell = |x: usize, y: usize| {
-        if live(x, y) {
-            push(grid.row(y, x, x));
-        }
-    };
+    let mut cell = |x: usize, y: usize| push(grid.row(y, x, x));
     for y in cy.saturating_sub(r)..=(cy + r).min(ny - 1) {
         if y + r == cy || y == cy + r {
             (x0..=x1).for_each(|x| cell(x, y));

@@ -23,6 +23,17 @@ pub const CERTAIN: u8 = 1;
 /// In no MWT.
 pub const IMPOSSIBLE: u8 = 2;
 
+/// An empty candidate triangle seen from one of its edges `[p, q]` (`p < q`).
+#[derive(Clone, Copy, Debug)]
+pub struct Tri {
+    /// The third vertex.
+    pub apex: u32,
+    /// The edges `p–apex` and `q–apex`.
+    pub sides: [u32; 2],
+    /// Orientation of `p, q, apex` (+1: the apex is left of `p → q`).
+    pub turn: i8,
+}
+
 /// The candidate graph with edge statuses.
 pub struct Skeleton {
     /// Candidate edges `[p, q]`, `p < q`.
@@ -33,11 +44,10 @@ pub struct Skeleton {
     pub start: Vec<u32>,
     /// See `start`.
     pub adj: Vec<(u32, u32)>,
-    /// Empty candidate triangles per edge, compressed rows: `(apex, edge p–apex,
-    /// edge q–apex)` for edge `[p, q]`.
+    /// Empty candidate triangles per edge, in compressed rows.
     pub tri_start: Vec<u32>,
     /// See `tri_start`.
-    pub tris: Vec<(u32, u32, u32)>,
+    pub tris: Vec<Tri>,
     /// Edges no triangulation considered may use: a flip to one of them is not
     /// available, so it does not refute local minimality.
     pub forbidden: std::collections::HashSet<[u32; 2]>,
@@ -45,7 +55,7 @@ pub struct Skeleton {
 
 impl Skeleton {
     /// Empty candidate triangles on edge `e`.
-    pub fn triangles(&self, e: u32) -> &[(u32, u32, u32)] {
+    pub fn triangles(&self, e: u32) -> &[Tri] {
         &self.tris[self.tri_start[e as usize] as usize..self.tri_start[e as usize + 1] as usize]
     }
 
@@ -65,45 +75,25 @@ fn adjacency(n: usize, edges: &[[u32; 2]]) -> (Vec<u32>, Vec<(u32, u32)>) {
 }
 
 /// Hull edges (consecutive boundary sites, collinear ones included), as `[p, q]`, `p < q`.
-pub fn hull_edges(points: &[Point2]) -> Vec<[u32; 2]> {
-    let hull = Hull2::new(points);
-    let h = hull.vertices.len();
-    let mut out = Vec::new();
-    let extra: Vec<u32> = (0..points.len() as u32)
-        .filter(|&i| hull.on_boundary[i as usize] && !hull.vertices.contains(&i))
-        .collect();
-    for k in 0..h {
-        let (a, b) = (hull.vertices[k], hull.vertices[(k + 1) % h]);
-        let (pa, pb) = (&points[a as usize], &points[b as usize]);
-        let mut chain: Vec<u32> = extra
-            .iter()
-            .copied()
-            .filter(|&c| {
-                let pc = &points[c as usize];
-                orient2d(pa, pb, pc) == 0 && crate::geom::corner_dot_sign(pa, pb, pc) < 0
-            })
-            .collect();
-        let dist = |c: u32| {
-            let pc = &points[c as usize];
-            (pc[0] - pa[0]).abs() + (pc[1] - pa[1]).abs()
-        };
-        chain.sort_by(|&x, &y| dist(x).total_cmp(&dist(y)));
-        chain.insert(0, a);
-        chain.push(b);
-        for w in chain.windows(2) {
-            out.push([w[0].min(w[1]), w[0].max(w[1])]);
-        }
-    }
-    out
+fn hull_edges(points: &[Point2]) -> Vec<[u32; 2]> {
+    Hull2::new(points)
+        .boundary_chains(points)
+        .iter()
+        .flat_map(|c| {
+            c.windows(2)
+                .map(|w| [w[0].min(w[1]), w[0].max(w[1])])
+                .collect::<Vec<_>>()
+        })
+        .collect()
 }
 
 /// Every empty triangle whose three edges are candidates, listed on each of its edges.
 /// A face of a triangulation is empty, so only these can witness local minimality;
 /// emptiness is static and computed once (a grid query per triangle).
-fn empty_triangles(points: &[Point2], sk: &Skeleton) -> (Vec<u32>, Vec<(u32, u32, u32)>) {
+fn empty_triangles(points: &[Point2], sk: &Skeleton) -> (Vec<u32>, Vec<Tri>) {
     let grid = crate::planar::grid::PointGrid::new(points, 2.0);
     let pt = |i: u32| &points[i as usize];
-    let mut inc: Vec<(u32, (u32, u32, u32))> = (0..sk.edges.len() as u32)
+    let mut inc: Vec<(u32, Tri)> = (0..sk.edges.len() as u32)
         .into_par_iter()
         .flat_map_iter(|e| {
             let [p, q] = sk.edges[e as usize];
@@ -125,9 +115,12 @@ fn empty_triangles(points: &[Point2], sk: &Skeleton) -> (Vec<u32>, Vec<(u32, u32
                         if o == 0 || !triangle_empty(points, &grid, p, q, r, o) {
                             continue;
                         }
-                        out.push((e, (r, epr, eqr)));
-                        out.push((epr, (q, e, eqr)));
-                        out.push((eqr, (p, e, epr)));
+                        // p < q < r: seen from [p, r] the apex q turns -o, from
+                        // [q, r] the apex p turns o.
+                        let tri = |apex, sides, turn| Tri { apex, sides, turn };
+                        out.push((e, tri(r, [epr, eqr], o)));
+                        out.push((epr, tri(q, [e, eqr], -o)));
+                        out.push((eqr, tri(p, [e, epr], o)));
                     }
                 }
             }
@@ -179,12 +172,13 @@ fn triangle_empty(
     })
 }
 
-/// The alive empty triangles on edge `e`: `(apex, edge p–apex, edge q–apex)`.
-fn alive_triangles(sk: &Skeleton, status: &[AtomicU8], e: u32, out: &mut Vec<(u32, u32, u32)>) {
+/// The alive empty triangles on edge `e`.
+fn alive_triangles(sk: &Skeleton, status: &[AtomicU8], e: u32, out: &mut Vec<Tri>) {
     out.clear();
-    out.extend(sk.triangles(e).iter().copied().filter(|&(_, a, b)| {
-        status[a as usize].load(Relaxed) != IMPOSSIBLE
-            && status[b as usize].load(Relaxed) != IMPOSSIBLE
+    out.extend(sk.triangles(e).iter().copied().filter(|t| {
+        t.sides
+            .iter()
+            .all(|&f| status[f as usize].load(Relaxed) != IMPOSSIBLE)
     }));
 }
 
@@ -194,24 +188,15 @@ fn locally_minimal(
     sk: &Skeleton,
     status: &[AtomicU8],
     e: u32,
-    buf: &mut Vec<(u32, u32, u32)>,
+    buf: &mut Vec<Tri>,
 ) -> bool {
     let [p, q] = sk.edges[e as usize];
     alive_triangles(sk, status, e, buf);
     let pt = |i: u32| &points[i as usize];
     let (pp, pq) = (pt(p), pt(q));
-    let side: Vec<(u32, i8)> = buf
-        .iter()
-        .map(|&(r, _, _)| (r, orient2d(pp, pq, pt(r))))
-        .collect();
-    for &(r, sr) in &side {
-        if sr <= 0 {
-            continue;
-        }
-        for &(s, ss) in &side {
-            if ss >= 0 {
-                continue;
-            }
+    for left in buf.iter().filter(|t| t.turn > 0) {
+        for right in buf.iter().filter(|t| t.turn < 0) {
+            let (r, s) = (left.apex, right.apex);
             let (a, b) = (orient2d(pt(r), pt(s), pp), orient2d(pt(r), pt(s), pq));
             let convex = a * b < 0;
             if !convex
@@ -225,17 +210,11 @@ fn locally_minimal(
     false
 }
 
-/// Runs the LMT rounds from `queue` to a fixpoint; returns the edges made impossible.
-fn eliminate(
-    points: &[Point2],
-    sk: &Skeleton,
-    status: &[AtomicU8],
-    mut queue: Vec<u32>,
-) -> Vec<u32> {
+/// Runs the LMT rounds from `queue` to a fixpoint.
+fn eliminate(points: &[Point2], sk: &Skeleton, status: &[AtomicU8], mut queue: Vec<u32>) {
     let queued: Vec<AtomicBool> = (0..sk.edges.len())
         .map(|_| AtomicBool::new(false))
         .collect();
-    let mut all = Vec::new();
     while !queue.is_empty() {
         let dead: Vec<u32> = queue
             .par_iter()
@@ -257,7 +236,7 @@ fn eliminate(
                 // in one round, the third must still be rechecked.
                 sk.triangles(e)
                     .iter()
-                    .flat_map(|&(_, a, b)| [a, b])
+                    .flat_map(|t| t.sides)
                     .filter(|&f| {
                         status[f as usize].load(Relaxed) == ALIVE
                             && !queued[f as usize].swap(true, Relaxed)
@@ -266,9 +245,7 @@ fn eliminate(
             })
             .flatten_iter()
             .collect();
-        all.extend(dead);
     }
-    all
 }
 
 /// Alive edges crossed by no other alive (or certain) edge.

@@ -14,7 +14,7 @@ mod walks;
 pub use candidates::candidate_edges;
 pub use faces::cmp_edge_sets;
 
-use super::PlanarError;
+use super::{PlanarError, find};
 use crate::geom::{Hull2, Interval, Point2, orient2d};
 use crate::mesh::verify_triangulation;
 use faces::{Face, Solution};
@@ -104,29 +104,18 @@ pub fn mwt_with(points: &[Point2], opts: &MwtOptions) -> Result<Mwt, PlanarError
     let mut stats = MwtStats::default();
     let t0 = Instant::now();
     let constrained = !opts.forced.is_empty() || !opts.forbidden.is_empty();
+    let sorted = |v: &[[u32; 2]]| -> Vec<[u32; 2]> {
+        let mut v: Vec<[u32; 2]> = v.iter().map(|e| [e[0].min(e[1]), e[0].max(e[1])]).collect();
+        v.sort_unstable();
+        v
+    };
+    let (forced, forbidden) = (sorted(&opts.forced), sorted(&opts.forbidden));
     let mut cands = if constrained {
         all_segments(points)
     } else {
         candidate_edges(points)
     };
-    let forbidden: Vec<[u32; 2]> = opts
-        .forbidden
-        .iter()
-        .map(|e| [e[0].min(e[1]), e[0].max(e[1])])
-        .collect();
-    if constrained {
-        let forbidden: HashSet<[u32; 2]> = opts
-            .forbidden
-            .iter()
-            .map(|e| [e[0].min(e[1]), e[0].max(e[1])])
-            .collect();
-        cands.retain(|e| !forbidden.contains(e));
-    }
-    let forced: Vec<[u32; 2]> = opts
-        .forced
-        .iter()
-        .map(|e| [e[0].min(e[1]), e[0].max(e[1])])
-        .collect();
+    cands.retain(|e| forbidden.binary_search(e).is_err());
     for f in &forced {
         if cands.binary_search(f).is_err() {
             return Err(PlanarError::new(format!(
@@ -261,14 +250,6 @@ fn triangles_of(points: &[Point2], edges: &[[u32; 2]]) -> Vec<[u32; 3]> {
         })
         .map(|w| [w[0], w[1], w[2]])
         .collect()
-}
-
-fn find(parent: &mut [u32], mut x: u32) -> u32 {
-    while parent[x as usize] != x {
-        parent[x as usize] = parent[parent[x as usize] as usize];
-        x = parent[x as usize];
-    }
-    x
 }
 
 /// A face to solve and the alive edges usable inside it.
