@@ -54,6 +54,15 @@ pub struct Skeleton {
 }
 
 impl Skeleton {
+    /// The edges with status `status`, in order.
+    pub fn with_status(&self, status: u8) -> Vec<[u32; 2]> {
+        let pairs = self.edges.iter().zip(&self.status);
+        pairs
+            .filter(|(_, s)| **s == status)
+            .map(|(e, _)| *e)
+            .collect()
+    }
+
     /// Empty candidate triangles on edge `e`.
     pub fn triangles(&self, e: u32) -> &[Tri] {
         &self.tris[self.tri_start[e as usize] as usize..self.tri_start[e as usize + 1] as usize]

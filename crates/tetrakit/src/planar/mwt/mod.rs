@@ -132,20 +132,7 @@ pub fn mwt_with(points: &[Point2], opts: &MwtOptions) -> Result<Mwt, PlanarError
     stats.undecided_edges = lstats.undecided;
     stats.seconds[1] = t1.elapsed().as_secs_f64();
     let t2 = Instant::now();
-    let certain: Vec<[u32; 2]> = sk
-        .edges
-        .iter()
-        .zip(&sk.status)
-        .filter(|(_, s)| **s == CERTAIN)
-        .map(|(e, _)| *e)
-        .collect();
-    let alive: Vec<[u32; 2]> = sk
-        .edges
-        .iter()
-        .zip(&sk.status)
-        .filter(|(_, s)| **s == ALIVE)
-        .map(|(e, _)| *e)
-        .collect();
+    let (certain, alive) = (sk.with_status(CERTAIN), sk.with_status(ALIVE));
     let mut edges = certain.clone();
     if !alive.is_empty() {
         let problems = undecided_faces(points, &certain, &alive)?;
