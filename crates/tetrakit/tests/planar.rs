@@ -3,7 +3,7 @@
 use std::cmp::Ordering;
 use std::collections::HashSet;
 use tetrakit::geom::{Point2, Ratio, in_beta_region, in_lune, orient2d};
-use tetrakit::planar::{Region, beta_skeleton, cmp_edge_sets, mwt};
+use tetrakit::planar::{MwtOptions, Region, beta_skeleton, cmp_edge_sets, mwt, mwt_with};
 use tetrakit::rng::Rng;
 
 fn random_points(rng: &mut Rng, n: usize, grid: usize) -> Vec<Point2> {
@@ -253,41 +253,36 @@ fn mwt_matches_exhaustive_search_and_skeleton_is_in_every_optimum() {
 
 #[test]
 fn keil_construction_is_exact_and_consistent() {
-    // The realization of §5.2 (see the issue note: it does not yet push xy out of the
-    // MWT for the n tried). What must hold regardless: xy is a β-skeleton edge, the
-    // MWT is no heavier than the best triangulation with xy, and the verdict matches the
-    // exact comparison of the two constrained optima.
+    // The split along L (Lemma 5.6) against the general solver: the MWT, and the best
+    // triangulations with and without xy over all segments, must weigh exactly the same.
     for b in ["1.16", "1.155", "1.1548"] {
         let beta: Ratio = b.parse().unwrap();
-        for n in [2, 5, 9] {
+        for n in [1, 2, 5, 9] {
             let k = tetrakit::planar::keil(beta, Some(n)).unwrap();
-            assert!(k.xy_in_skeleton, "β={b} n={n}");
-            let m = mwt(&k.sites).unwrap();
-            assert_ne!(
-                cmp_edge_sets(&k.sites, &m.edges, &k.with_xy.1),
-                Ordering::Greater
-            );
-            assert_ne!(
-                cmp_edge_sets(&k.sites, &m.edges, &k.without_xy.1),
-                Ordering::Greater
-            );
-            assert_eq!(
-                k.xy_in_mwt,
-                k.with_vs_without != Ordering::Greater || k.mwt.binary_search(&k.xy).is_ok()
-            );
+            assert!(k.xy_in_skeleton && k.split, "β={b} n={n}");
+            let same = |a: &[[u32; 2]], b: &[[u32; 2]]| cmp_edge_sets(&k.sites, a, b);
+            let constrained = |forced: Vec<[u32; 2]>, forbidden: Vec<[u32; 2]>| {
+                mwt_with(&k.sites, &MwtOptions { forced, forbidden }).unwrap().edges
+            };
+            assert_eq!(same(&mwt(&k.sites).unwrap().edges, &k.mwt), Ordering::Equal);
+            assert_eq!(same(&constrained(vec![k.xy], vec![]), &k.with_xy.1), Ordering::Equal);
+            assert_eq!(same(&constrained(vec![], vec![k.xy]), &k.without_xy.1), Ordering::Equal);
+            assert_eq!(k.xy_in_mwt, k.with_vs_without != Ordering::Greater);
         }
     }
-    // Near Keil's value 2/√3 the construction separates xy with a few dozen sites per
-    // arc: the β-skeleton edge xy is in no MWT, proven by the exact weights.
-    for b in ["1.1548", "1.156"] {
-        let k = tetrakit::planar::keil(b.parse().unwrap(), None).unwrap();
+    // Lemma 5.8: with n above its bound, xy is a β-skeleton edge in no MWT, proven by
+    // the exact weights; at β = 1.16 the realization separates from n = 420 on (and not
+    // yet at 400), far below the bound of about 1450.
+    for (b, n) in [("1.1548", None), ("1.156", None), ("1.16", Some(420)), ("1.16", None)] {
+        let k = tetrakit::planar::keil(b.parse().unwrap(), n).unwrap();
+        assert!(k.n as f64 > k.lemma_bound || n.is_some());
         assert!(k.xy_in_skeleton && !k.xy_in_mwt, "β={b} n={}", k.n);
         assert_eq!(k.with_vs_without, Ordering::Greater, "β={b}");
-        assert_eq!(
-            cmp_edge_sets(&k.sites, &k.mwt, &k.without_xy.1),
-            Ordering::Equal
-        );
+        assert!(k.with_xy.0.lo > k.without_xy.0.hi);
+        assert_eq!(cmp_edge_sets(&k.sites, &k.mwt, &k.without_xy.1), Ordering::Equal);
     }
+    let k = tetrakit::planar::keil("1.16".parse().unwrap(), Some(400)).unwrap();
+    assert!(k.xy_in_mwt);
     assert!(tetrakit::planar::keil("1.17".parse().unwrap(), None).is_err());
     assert!(tetrakit::planar::keil("1.15".parse().unwrap(), None).is_err());
 }

@@ -30,4 +30,4 @@ pub use proximity::{
     DiamondHit, Ratio, cmp_length, corner_dot_sign, diamond_hit, in_beta_region, in_lune,
     squared_length,
 };
-pub use radical::{Interval, compare_root_sums};
+pub use radical::{DoubleDouble, Interval, compare_root_sums};

@@ -153,6 +153,15 @@ fn add_to(t: &mut Term, num: BigInt, den: &BigUint) {
 /// assert_eq!(compare_root_sums(&[e(2.0), e(3.0)], &[e(10.0)]), Ordering::Less);
 /// ```
 pub fn compare_root_sums(a: &[Expansion], b: &[Expansion]) -> Ordering {
+    let (a, b) = cancel_equal(a, b);
+    if a.is_empty() && b.is_empty() {
+        return Ordering::Equal;
+    }
+    double_double_cmp(&a, &b).unwrap_or_else(|| exact_cmp(&a, &b))
+}
+
+/// The exact comparison by integer arithmetic (steps 1–4 of the module docs).
+fn exact_cmp(a: &[Expansion], b: &[Expansion]) -> Ordering {
     let mut terms: Vec<Term> = Vec::new();
     let items = a.iter().map(|x| (x, Sign::Plus));
     for (x, sign) in items.chain(b.iter().map(|x| (x, Sign::Minus))) {
@@ -168,6 +177,166 @@ pub fn compare_root_sums(a: &[Expansion], b: &[Expansion]) -> Ordering {
         return Ordering::Equal;
     }
     bracket_sign(&terms)
+}
+
+/// The two lists without the values they share (mirror images, repeated lengths).
+fn cancel_equal(a: &[Expansion], b: &[Expansion]) -> (Vec<Expansion>, Vec<Expansion>) {
+    let exact = |x: &Expansion, y: &Expansion| x.sub(y).sign().cmp(&0);
+    let (mut a, mut b) = (a.to_vec(), b.to_vec());
+    a.sort_by(exact);
+    b.sort_by(exact);
+    let (mut ra, mut rb) = (Vec::new(), Vec::new());
+    let (mut i, mut j) = (0, 0);
+    while i < a.len() || j < b.len() {
+        let o = match (a.get(i), b.get(j)) {
+            (Some(x), Some(y)) => exact(x, y),
+            (Some(_), None) => Ordering::Less,
+            _ => Ordering::Greater,
+        };
+        match o {
+            Ordering::Less => {
+                ra.push(a[i].clone());
+                i += 1;
+            }
+            Ordering::Greater => {
+                rb.push(b[j].clone());
+                j += 1;
+            }
+            Ordering::Equal => {
+                i += 1;
+                j += 1;
+            }
+        }
+    }
+    (ra, rb)
+}
+
+/// `(s, e)` with `s + e = a + b` exactly (Knuth's TwoSum).
+fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    let bv = s - a;
+    (s, (a - (s - bv)) + (b - bv))
+}
+
+/// `(s, e)` with `s + e = a + b` exactly, for `|a| ≥ |b|`.
+fn fast_two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    (s, b - (s - a))
+}
+
+/// A double-double number `hi + lo` (`|lo| ≤ ulp(hi)/2`), for sums of lengths whose
+/// error is a few `u² = 2^-106` per operation: the filter between [`Interval`]s and the
+/// exact [`compare_root_sums`].
+///
+/// Error model, used by [`DoubleDouble::certain_cmp`]: a length is within `2^-100`
+/// relative of `|ab|` (the squared length to `2^-103`, one Newton step for the root),
+/// and an addition of non-negative numbers within `3u² + 13u³` relative (Joldes, Muller
+/// and Popescu's AccurateDWPlusDW), so a sum of `k` lengths is within
+/// `(1 + k/8)·2^-100` of exact; the tests use `(2k + 2)·2^-96`, far above that.
+///
+/// ```
+/// use tetrakit::geom::DoubleDouble;
+/// use std::cmp::Ordering;
+/// let (o, u, v) = ([0.0, 0.0], [1.0, 1.0], [2.0, 2.0]);
+/// let w = [2.0, 2.0 + f64::EPSILON]; // |ow| exceeds 2√2 by about 1e-16 relative
+/// let two = DoubleDouble::length(&o, &u).plus(DoubleDouble::length(&o, &u));
+/// assert_eq!(two.certain_cmp(DoubleDouble::length(&o, &w), 2), Some(Ordering::Less));
+/// // An exact tie (√2 + √2 = √8) is never decided here.
+/// assert_eq!(two.certain_cmp(DoubleDouble::length(&o, &v), 2), None);
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct DoubleDouble {
+    /// The leading part.
+    pub hi: f64,
+    /// The trailing part.
+    pub lo: f64,
+}
+
+impl DoubleDouble {
+    /// Zero.
+    pub const ZERO: DoubleDouble = DoubleDouble { hi: 0.0, lo: 0.0 };
+
+    /// `|ab|` within `2^-100` relative.
+    pub fn length(a: &[f64; 2], b: &[f64; 2]) -> DoubleDouble {
+        let (dx, ex) = two_sum(b[0], -a[0]);
+        let (dy, ey) = two_sum(b[1], -a[1]);
+        let (px, qx) = (dx * dx, dx.mul_add(dx, -(dx * dx)));
+        let (py, qy) = (dy * dy, dy.mul_add(dy, -(dy * dy)));
+        // dx² + dy² = px + qx + py + qy + 2(dx·ex + dy·ey) + ex² + ey²; the last two are
+        // below 2^-104 relative and dropped.
+        let tail = qx + qy + 2.0 * (dx * ex + dy * ey);
+        let square = DoubleDouble { hi: px, lo: 0.0 }
+            .plus(DoubleDouble { hi: py, lo: 0.0 })
+            .plus(DoubleDouble { hi: tail, lo: 0.0 });
+        square.sqrt()
+    }
+
+    fn sqrt(self) -> DoubleDouble {
+        if self.hi <= 0.0 {
+            return DoubleDouble::ZERO;
+        }
+        let r = self.hi.sqrt();
+        let residual = (-r).mul_add(r, self.hi) + self.lo;
+        let (hi, lo) = fast_two_sum(r, residual / (2.0 * r));
+        DoubleDouble { hi, lo }
+    }
+
+    /// The sum.
+    pub fn plus(self, y: DoubleDouble) -> DoubleDouble {
+        let (s, e) = two_sum(self.hi, y.hi);
+        let (t, f) = two_sum(self.lo, y.lo);
+        let (s, e) = fast_two_sum(s, e + t);
+        let (hi, lo) = fast_two_sum(s, e + f);
+        DoubleDouble { hi, lo }
+    }
+
+    fn neg(self) -> DoubleDouble {
+        DoubleDouble {
+            hi: -self.hi,
+            lo: -self.lo,
+        }
+    }
+
+    /// An upper bound on the error of a sum of at most `k` lengths close to `self`.
+    fn error(self, k: usize) -> f64 {
+        self.hi.abs() * (1.0 + 1e-10) * (2 * k + 2) as f64 * 2f64.powi(-96)
+    }
+
+    /// `Some` when the two sums, of at most `k` lengths each, are certainly ordered.
+    pub fn certain_cmp(self, other: DoubleDouble, k: usize) -> Option<Ordering> {
+        let d = self.plus(other.neg());
+        let bound = 2.0 * (self.error(k) + other.error(k));
+        if d.hi.abs() > bound {
+            d.hi.partial_cmp(&0.0)
+        } else {
+            None
+        }
+    }
+
+    /// A certified interval for a sum of at most `k` lengths.
+    pub fn interval(self, k: usize) -> Interval {
+        let e = self.error(k);
+        Interval {
+            lo: (self.hi + self.lo - e).next_down().max(0.0),
+            hi: (self.hi + self.lo + e).next_up(),
+        }
+    }
+}
+
+/// `√x` of an exact non-negative value, within `2^-100` relative.
+fn dd_sqrt(x: &Expansion) -> DoubleDouble {
+    x.components()
+        .iter()
+        .fold(DoubleDouble::ZERO, |acc, &c| {
+            acc.plus(DoubleDouble { hi: c, lo: 0.0 })
+        })
+        .sqrt()
+}
+
+/// The sign of `Σ √a_i − Σ √b_j` in double-double when it clears the error bound.
+fn double_double_cmp(a: &[Expansion], b: &[Expansion]) -> Option<Ordering> {
+    let sum = |v: &[Expansion]| v.iter().fold(DoubleDouble::ZERO, |acc, x| acc.plus(dd_sqrt(x)));
+    sum(a).certain_cmp(sum(b), a.len().max(b.len()))
 }
 
 /// Merges terms whose radicands differ by a rational square: `√R_j = (s/R_i)·√R_i`
@@ -235,6 +404,38 @@ mod tests {
             let (m, e) = decompose(x);
             assert_eq!(m as f64 * 2f64.powi(e), x);
         }
+    }
+
+    /// The double-double filter never contradicts the exact comparison: sums of up to
+    /// five lengths against the same sums with one endpoint moved by a few ulps
+    /// (differences near 1e-16 relative, below what `f64` intervals resolve).
+    #[test]
+    fn double_double_filter_agrees_with_exact_comparison() {
+        let mut rng = crate::rng::Rng::new(77);
+        let mut decided = 0;
+        for _ in 0..2000 {
+            let k = 1 + rng.below(5);
+            let pts: Vec<[f64; 2]> = (0..2 * k)
+                .map(|_| [rng.unit() * 100.0, rng.unit() * 100.0])
+                .collect();
+            let sq = |v: &[[f64; 2]]| -> Vec<Expansion> {
+                v.chunks(2).map(|c| squared_length(&c[0], &c[1])).collect()
+            };
+            let mut moved = pts.clone();
+            let t = rng.below(2 * k);
+            let axis = rng.below(2);
+            for _ in 0..1 + rng.below(3) {
+                moved[t][axis] = moved[t][axis].next_up();
+            }
+            let (a, b) = (sq(&pts), sq(&moved));
+            let exact = exact_cmp(&a, &b);
+            if let Some(o) = double_double_cmp(&a, &b) {
+                assert_eq!(o, exact);
+                decided += 1;
+            }
+            assert_eq!(compare_root_sums(&a, &b), exact);
+        }
+        assert!(decided > 1000, "{decided}");
     }
 
     #[test]

@@ -8,6 +8,7 @@
 //! ([`crate::geom::compare_root_sums`]).
 
 mod delaunay;
+mod forced;
 mod generate;
 mod grid;
 mod keil;
@@ -15,6 +16,7 @@ mod mwt;
 mod skeleton;
 
 pub use delaunay::{Delaunay, DelaunayEdge, delaunay};
+pub use forced::{Blocker, blocked_pairs, edge_blocker};
 pub use generate::{Distribution, points2d};
 pub use keil::{KeilResult, above_cheng_xu, check_random, in_keil_interval, keil, keil_sites};
 pub use mwt::{

@@ -13,6 +13,8 @@ mod walks;
 
 pub use candidates::candidate_edges;
 pub use faces::cmp_edge_sets;
+pub(crate) use faces::polygon_dp;
+pub(crate) use walks::walk_area_sign;
 
 use super::{PlanarError, find};
 use crate::geom::{Hull2, Interval, Point2, orient2d};
@@ -22,7 +24,7 @@ use lmt::{ALIVE, CERTAIN};
 use rayon::prelude::*;
 use std::collections::{HashMap, HashSet};
 use std::time::Instant;
-use walks::{Rotation, walk_area_sign};
+use walks::Rotation;
 
 /// True when the open segments `ab` and `cd` cross at one interior point (exact).
 pub(crate) fn cross(a: &Point2, b: &Point2, c: &Point2, d: &Point2) -> bool {
@@ -162,15 +164,7 @@ pub fn mwt_with(points: &[Point2], opts: &MwtOptions) -> Result<Mwt, PlanarError
     stats.seconds[2] = t2.elapsed().as_secs_f64();
     edges.par_sort_unstable();
     edges.dedup();
-    let triangles = triangles_of(points, &edges);
-    let report = verify_triangulation(points, &triangles);
-    if !report.is_valid() || edges.len() != 3 * points.len() - 3 - hull_size(&hull) {
-        return Err(PlanarError::new(format!(
-            "internal: the MWT edges do not form a triangulation ({} edges, {} triangles)",
-            edges.len(),
-            triangles.len()
-        )));
-    }
+    let triangles = certified_triangles(points, &hull, &edges)?;
     let weight = weight_of(points, &edges);
     Ok(Mwt {
         edges,
@@ -181,8 +175,24 @@ pub fn mwt_with(points: &[Point2], opts: &MwtOptions) -> Result<Mwt, PlanarError
     })
 }
 
-fn hull_size(hull: &Hull2) -> usize {
-    hull.on_boundary.iter().filter(|&&b| b).count()
+/// The counter-clockwise triangles of `edges` (sorted, distinct), after checking that
+/// they triangulate the hull of `points`: [`verify_triangulation`] and `3n - 3 - h` edges.
+pub(crate) fn certified_triangles(
+    points: &[Point2],
+    hull: &Hull2,
+    edges: &[[u32; 2]],
+) -> Result<Vec<[u32; 3]>, PlanarError> {
+    let triangles = triangles_of(points, edges);
+    let h = hull.on_boundary.iter().filter(|&&b| b).count();
+    if !verify_triangulation(points, &triangles).is_valid() || edges.len() != 3 * points.len() - 3 - h
+    {
+        return Err(PlanarError::new(format!(
+            "internal: the edges do not form a triangulation ({} edges, {} triangles)",
+            edges.len(),
+            triangles.len()
+        )));
+    }
+    Ok(triangles)
 }
 
 fn collinear(points: &[Point2]) -> Mwt {

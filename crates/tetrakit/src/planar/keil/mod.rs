@@ -19,8 +19,12 @@
 //! actual sites by the exact skeleton test and the exact MWT, with the constrained
 //! optimum "with `xy`" for comparison, so what is reported is proven for these sites.
 
-use super::{MwtOptions, PlanarError, cmp_edge_sets, mwt, mwt_with};
+mod construction;
+mod split;
+
+use super::{MwtOptions, PlanarError, cmp_edge_sets, mwt, mwt_with, weight_of};
 use crate::geom::{Interval, Point2, Ratio, in_beta_region};
+use construction::construction;
 use std::cmp::Ordering;
 
 /// The lower end of the construction's interval, `2/√3` (Keil's conjectured value):
@@ -59,9 +63,9 @@ pub struct KeilResult {
     pub lemma_bound: f64,
     /// `xy` is an edge of the (circle-based) β-skeleton (exact).
     pub xy_in_skeleton: bool,
-    /// `xy` is an edge of the minimum weight triangulation (exact).
+    /// `xy` is an edge of some minimum weight triangulation (exact).
     pub xy_in_mwt: bool,
-    /// The minimum weight triangulation.
+    /// A minimum weight triangulation (the one with `xy` on a tie).
     pub mwt: Vec<[u32; 2]>,
     /// Weight of the best triangulation containing `xy`, and its edges.
     pub with_xy: (Interval, Vec<[u32; 2]>),
@@ -69,43 +73,11 @@ pub struct KeilResult {
     pub without_xy: (Interval, Vec<[u32; 2]>),
     /// Exact comparison of the two: `Greater` when containing `xy` costs more.
     pub with_vs_without: Ordering,
+    /// The optima were found by splitting along `L` (thesis Lemma 5.6, every side of
+    /// `L` certified uncrossable) rather than by the general MWT solver.
+    pub split: bool,
 }
 
-fn dist(a: Point2, b: Point2) -> f64 {
-    (a[0] - b[0]).hypot(a[1] - b[1])
-}
-
-/// Second intersection of the ray from `from` (on the circle) towards `to` with the
-/// circle of centre `c` and radius `rad`.
-fn ray_circle(from: Point2, to: Point2, c: Point2, rad: f64) -> Point2 {
-    let d = [to[0] - from[0], to[1] - from[1]];
-    let f = [from[0] - c[0], from[1] - c[1]];
-    let a = d[0] * d[0] + d[1] * d[1];
-    let b = 2.0 * (f[0] * d[0] + f[1] * d[1]);
-    let cc = f[0] * f[0] + f[1] * f[1] - rad * rad;
-    let disc = (b * b - 4.0 * a * cc).max(0.0).sqrt();
-    let t = (-b + disc) / (2.0 * a);
-    let t = if t.abs() < 1e-12 {
-        (-b - disc) / (2.0 * a)
-    } else {
-        t
-    };
-    [from[0] + t * d[0], from[1] + t * d[1]]
-}
-
-/// Nudges `pt` along `dir` by ulps until it is not strictly inside the β-region of `xy`.
-fn outside(mut pt: Point2, dir: Point2, x: &Point2, y: &Point2, beta: Ratio) -> Point2 {
-    let mut step = 1e-15;
-    while in_beta_region(x, y, &pt, beta) {
-        pt = [pt[0] + step * dir[0], pt[1] + step * dir[1]];
-        step *= 2.0;
-    }
-    pt
-}
-
-/// The default search for `n` stops here (the exact MWT of the clustered sites grows
-/// quickly with `n`; Lemma 5.8's bound is often in the hundreds).
-pub const DEFAULT_N_CAP: usize = 64;
 
 /// The best triangulation containing `xy`, for `x`, `y` on the hull and no other site on
 /// the line `xy`: the chord splits the hull into two convex regions whose triangulations
@@ -154,85 +126,85 @@ fn best_with_chord(sites: &[Point2], xy: [u32; 2]) -> Result<super::Mwt, PlanarE
     })
 }
 
-/// The smallest `n ≤ cap` with `ok(n)`, assuming monotonicity, by doubling then
-/// bisection (`cap` when none is found below it).
-fn smallest_n(
-    cap: usize,
-    ok: impl Fn(usize) -> Result<bool, PlanarError>,
-) -> Result<usize, PlanarError> {
-    let mut hi = 1;
-    while hi < cap && !ok(hi)? {
-        hi *= 2;
-    }
-    if hi >= cap {
-        return Ok(cap);
-    }
-    let mut lo = hi / 2 + 1;
-    while lo < hi {
-        let mid = (lo + hi) / 2;
-        if ok(mid)? { hi = mid } else { lo = mid + 1 }
-    }
-    Ok(hi)
-}
+/// Largest `n` accepted (the polygon dynamic program on `2n + 4` sites keeps
+/// `(2n + 4)²/2` cells of 24 bytes).
+pub const MAX_N: usize = 4000;
 
-/// Builds the construction for `beta` with `n` sites per arc (`None`: Lemma 5.8's
-/// smallest `n` whose exact MWT avoids `xy`, at most Lemma 5.8's bound plus one) and
-/// decides everything exactly.
+/// Builds the construction for `beta` with `n` sites per arc (`None`: one more than
+/// Lemma 5.8's bound, where the thesis proves `xy` is in no MWT) and decides everything
+/// exactly: the skeleton test on `xy`, and the best triangulations with and without
+/// `xy`, compared exactly.
+///
+/// The optima are found by splitting along the polygon `L` when every side of `L` is
+/// certified to be in every triangulation (`split`), else by the general MWT solver.
+///
+/// ```
+/// use tetrakit::planar::keil;
+/// let k = keil("1.1548".parse().unwrap(), Some(20)).unwrap();
+/// assert!(k.xy_in_skeleton && !k.xy_in_mwt);
+/// assert!(k.with_xy.0.lo > k.without_xy.0.hi);
+/// ```
 pub fn keil(beta: Ratio, n: Option<usize>) -> Result<KeilResult, PlanarError> {
     let (build, lemma_bound) = construction(beta)?;
-    let (x, y) = ([-1.0, 0.0], [1.0, 0.0]);
-    let bound_n = lemma_bound.max(0.0).floor() as usize + 1;
-    // Without a given n: the smallest power of two (then bisected) whose exact MWT
-    // avoids xy, never beyond Lemma 5.8's bound (where the thesis proves it must).
-    let n = match n {
-        Some(n) => n.max(1),
-        None => smallest_n(bound_n.min(DEFAULT_N_CAP), |n| {
-            let sites = build(n);
-            Ok(mwt(&sites)?
-                .edges
-                .binary_search(&[1, (2 * n + 2) as u32])
-                .is_err())
-        })?,
-    };
+    let n = n
+        .unwrap_or(lemma_bound.max(0.0).floor() as usize + 1)
+        .max(1);
+    if n > MAX_N {
+        return Err(PlanarError::new(format!(
+            "n = {n} is above the limit of {MAX_N} sites per arc (Lemma 5.8 asks n > {lemma_bound:.1}); give a smaller --n"
+        )));
+    }
     let sites = build(n);
+    let (x, y) = (sites[1], sites[2 * n + 2]);
     let xy = [1u32, (2 * n + 2) as u32];
     let xy_in_skeleton = (0..sites.len()).all(|i| {
         i as u32 == xy[0] || i as u32 == xy[1] || !in_beta_region(&x, &y, &sites[i], beta)
     });
-    let best = mwt(&sites)?;
-    let xy_in_mwt = best.edges.binary_search(&xy).is_ok();
-    let forced = best_with_chord(&sites, xy)?;
-    if xy_in_mwt && sites.len() > CONSTRAINED_LIMIT {
+    let cycle: Vec<u32> = (0..sites.len() as u32).collect();
+    let (with, without, split) = match split::split_along(&sites, &cycle, xy)? {
+        Some(s) => (s.with_xy, s.without_xy, true),
+        None => {
+            let (with, without) = general(&sites, xy)?;
+            (with, without, false)
+        }
+    };
+    let with_vs_without = cmp_edge_sets(&sites, &with, &without);
+    let xy_in_mwt = with_vs_without != Ordering::Greater;
+    Ok(KeilResult {
+        beta,
+        n,
+        lemma_bound,
+        xy,
+        xy_in_skeleton,
+        xy_in_mwt,
+        mwt: if xy_in_mwt { with.clone() } else { without.clone() },
+        with_xy: (weight_of(&sites, &with), with),
+        without_xy: (weight_of(&sites, &without), without),
+        with_vs_without,
+        split,
+        sites,
+    })
+}
+
+/// The two optima by the general solver: the MWT, the best triangulation with `xy`,
+/// and, when the MWT contains `xy`, the best one without it (over all segments).
+fn general(sites: &[Point2], xy: [u32; 2]) -> Result<(Vec<[u32; 2]>, Vec<[u32; 2]>), PlanarError> {
+    let best = mwt(sites)?;
+    let with = best_with_chord(sites, xy)?.edges;
+    if best.edges.binary_search(&xy).is_err() {
+        return Ok((with, best.edges));
+    }
+    if sites.len() > CONSTRAINED_LIMIT {
         return Err(PlanarError::new(format!(
             "{} sites and xy is in the MWT: the best triangulation without xy is computed over all segments, limited to {CONSTRAINED_LIMIT} sites; use a smaller --n",
             sites.len()
         )));
     }
-    let other = if xy_in_mwt {
-        mwt_with(
-            &sites,
-            &MwtOptions {
-                forbidden: vec![xy],
-                ..Default::default()
-            },
-        )?
-    } else {
-        best.clone()
+    let opts = MwtOptions {
+        forbidden: vec![xy],
+        ..Default::default()
     };
-    let with_vs_without = cmp_edge_sets(&sites, &forced.edges, &other.edges);
-    Ok(KeilResult {
-        beta,
-        sites,
-        xy,
-        n,
-        lemma_bound,
-        xy_in_skeleton,
-        xy_in_mwt,
-        mwt: best.edges,
-        with_xy: (forced.weight, forced.edges),
-        without_xy: (other.weight, other.edges),
-        with_vs_without,
-    })
+    Ok((with, mwt_with(sites, &opts)?.edges))
 }
 
 /// The sites of the construction for `beta` with `n` sites per arc.
@@ -245,98 +217,6 @@ pub fn keil_sites(beta: Ratio, n: usize) -> Result<Vec<Point2>, PlanarError> {
     Ok(construction(beta)?.0(n.max(1)))
 }
 
-/// The site builder (sites for a given `n`) and Lemma 5.8's bound on `n`.
-#[allow(clippy::type_complexity)]
-fn construction(beta: Ratio) -> Result<(Box<dyn Fn(usize) -> Vec<Point2>>, f64), PlanarError> {
-    if !in_keil_interval(beta) {
-        return Err(PlanarError::new(format!(
-            "β = {beta} is outside [2/√3, √(2√3+45)/6) ≈ [1.154701, 1.160274): the construction of §5.2 does not apply"
-        )));
-    }
-    let (x, y) = ([-1.0, 0.0], [1.0, 0.0]);
-    let s3 = 3f64.sqrt();
-    let b1 = (2.0 * s3 + 9.0).sqrt() / 3.0;
-    let (r1, h1) = (b1, (b1 * b1 - 1.0).sqrt());
-    let (ct, st) = ((s3 - 1.0) / 2.0, (2.0 * s3).sqrt() / 2.0);
-    // p = (-u, v) on d1 with v = (u - 1) tan θ: solve u² + (v - h1)² = r1².
-    let tan = st / ct;
-    let (qa, qb, qc) = (
-        1.0 + tan * tan,
-        -2.0 * tan * tan - 2.0 * tan * h1,
-        tan * tan + 2.0 * tan * h1 + h1 * h1 - r1 * r1,
-    );
-    let u = (-qb + (qb * qb - 4.0 * qa * qc).sqrt()) / (2.0 * qa);
-    let v = (u - 1.0) * tan;
-    let (p, r) = ([-u, v], [u, v]);
-    let q = [-u + 2.0 * u * ct, v - 2.0 * u * st];
-    let s = [-q[0], q[1]];
-    let bf = beta.to_f64();
-    let (r2, h2) = (bf, (bf * bf - 1.0).sqrt());
-    let lower2 = [0.0, -h2];
-    let s_prime = outside(
-        ray_circle(y, s, lower2, r2),
-        [s[0] - y[0], s[1] - y[1]],
-        &x,
-        &y,
-        beta,
-    );
-    let q_prime = [-s_prime[0], s_prime[1]];
-    // δ of the thesis, also below the distance from r to the β-circle above xy.
-    let pr = dist(p, r);
-    let gap_circle = dist(r, [0.0, h2]) - r2;
-    let delta = 0.5
-        * [
-            dist(s, s_prime),
-            pr - dist(p, y),
-            pr + dist(p, y) - 2.0 * dist(p, q_prime),
-            2.0 * gap_circle,
-        ]
-        .into_iter()
-        .fold(f64::INFINITY, f64::min);
-    if delta.is_nan() || delta <= 1e-9 {
-        return Err(PlanarError::new(format!(
-            "β = {beta} is so close to the upper end that δ = {delta:.3e} is below double precision's reach"
-        )));
-    }
-    let alpha = pr + dist(p, y) - 2.0 * dist(p, q_prime);
-    let (p1r1, xs) = (pr, dist(x, s_prime));
-    let lemma_bound = 2.0 / (2.0 * alpha - 3.0 * delta) * (p1r1 - 2.0 + dist(p, s_prime) - xs);
-    let build = move |n: usize| -> Vec<Point2> {
-        // The arc near r, in coordinates along the line y → r (ℓ from y, unit e) and the
-        // offset d to its left (towards the band above xy), u = distance down from the
-        // top site. Lemma 5.5(i) (the fans from s' and from y do not cross) needs the
-        // slope dd/dℓ between d/(ℓ + |ys'|) and d/ℓ; the chain edges must be forced, so
-        // the arc bulges towards the band (d concave in ℓ): the slope runs from just
-        // above the lower limit at the top to just below the upper one at the bottom.
-        let lr = dist(y, r);
-        let e = [(r[0] - y[0]) / lr, (r[1] - y[1]) / lr];
-        let left = [-e[1], e[0]];
-        let ys = dist(y, s_prime);
-        let (d0, span) = (0.15 * delta, 0.3 * delta);
-        let (g_top, g_bottom) = (1.2 * d0 / (lr + ys), 0.8 * d0 / lr);
-        let kappa = (g_bottom - g_top) / span;
-        let arc: Vec<Point2> = (0..n)
-            .map(|i| {
-                let t = if n == 1 {
-                    0.0
-                } else {
-                    i as f64 / (n - 1) as f64
-                };
-                let u = t * span;
-                let l = lr - 0.02 * delta - u;
-                let d = d0 - g_top * u - 0.5 * kappa * u * u;
-                [y[0] + l * e[0] + d * left[0], y[1] + l * e[1] + d * left[1]]
-            })
-            .collect();
-        let mut sites = vec![q_prime, x];
-        sites.extend(arc.iter().rev().map(|a| [-a[0], a[1]]));
-        sites.extend(arc.iter().copied());
-        sites.push(y);
-        sites.push(s_prime);
-        sites
-    };
-    Ok((Box::new(build), lemma_bound))
-}
 
 /// True when β exceeds the Cheng–Xu bound `√(2√3+9)/3 ≈ 1.17682`, above which the
 /// β-skeleton is a subgraph of every MWT: `t = 9β² − 9 > 0` and `t² > 12` (exact).
