@@ -178,24 +178,37 @@ fn planar_section() {
         g.weight.mid(),
         g.stats.faces_left
     );
-    for (b, n) in [("1.1548", None), ("1.16", Some(16))] {
+    // β = 1.16 with n = 420, the smallest n at which this realization separates xy
+    // (tests pin 400 and 420); `tetrakit keil --beta 1.16` uses Lemma 5.8's n instead.
+    for (b, n) in [("1.1548", None), ("1.16", Some(420))] {
+        let start = Instant::now();
         match planar::keil(b.parse().expect("a ratio"), n) {
-            Ok(k) => out!(
-                "  Keil construction (§5.2) at β = {b}, n = {}: xy in the β-skeleton: {}; in the MWT: {}; best with xy {:.9}, without {:.9}{}",
-                k.n,
-                k.xy_in_skeleton,
-                k.xy_in_mwt,
-                k.with_xy.0.mid(),
-                k.without_xy.0.mid(),
-                if k.xy_in_skeleton && !k.xy_in_mwt {
-                    " -> Keil's conjecture fails (exact)".to_string()
-                } else {
-                    format!(
-                        " (not separated at this n; Lemma 5.8 asks n > {:.0})",
-                        k.lemma_bound
-                    )
-                }
-            ),
+            Ok(k) => {
+                let svg = std::env::temp_dir().join(format!("tetrakit-keil-{b}.svg"));
+                let picture = match std::fs::write(&svg, crate::planar::keil_svg(&k)) {
+                    Ok(()) => format!("picture: {}", svg.display()),
+                    Err(e) => format!("no picture ({e})"),
+                };
+                out!(
+                    "  Keil construction (§5.2) at β = {b}, n = {} ({} sites; Lemma 5.8 asks n > {:.1}): xy in the β-skeleton: {}; in an MWT: {}",
+                    k.n,
+                    k.sites.len(),
+                    k.lemma_bound,
+                    k.xy_in_skeleton,
+                    k.xy_in_mwt,
+                );
+                out!(
+                    "    best with xy {:.9}, without {:.9}{} [{:.0} ms; {picture}]",
+                    k.with_xy.0.mid(),
+                    k.without_xy.0.mid(),
+                    if k.xy_in_skeleton && !k.xy_in_mwt {
+                        " -> Keil's conjecture fails (exact)"
+                    } else {
+                        " (not separated at this n)"
+                    },
+                    start.elapsed().as_secs_f64() * 1e3
+                );
+            }
             Err(e) => out!("  Keil construction at β = {b}: {e}"),
         }
     }

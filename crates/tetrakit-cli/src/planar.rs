@@ -203,6 +203,7 @@ pub fn keil(a: KeilArgs) -> u8 {
                 "weight_without_xy": k.without_xy.0.mid(),
                 "weight_without_xy_interval": iv(&k.without_xy.0),
                 "with_minus_without_sign": k.with_vs_without as i8,
+                "method": method(&k),
                 "svg": a.svg.map(|p| p.display().to_string()),
                 "seconds": start.elapsed().as_secs_f64(),
             })
@@ -214,6 +215,7 @@ pub fn keil(a: KeilArgs) -> u8 {
             k.sites.len(),
             k.lemma_bound
         );
+        out!("  method: {}", method(&k));
         out!("  xy in the β-skeleton: {} (exact)", k.xy_in_skeleton);
         out!(
             "  xy in the minimum weight triangulation: {} (exact)",
@@ -230,8 +232,8 @@ pub fn keil(a: KeilArgs) -> u8 {
                 "xy is a β-skeleton edge in no MWT: Keil's conjecture fails here".to_string()
             } else {
                 format!(
-                    "this realization does not separate xy yet at n = {}; try a larger --n",
-                    k.n
+                    "this realization does not separate xy yet at n = {}; try a larger --n (Lemma 5.8: n > {:.1} suffices)",
+                    k.n, k.lemma_bound
                 )
             }
         );
@@ -273,8 +275,17 @@ fn check_random(beta: Ratio, sets: usize, n: usize, as_json: bool, start: Instan
     if bad.is_empty() { 0 } else { 1 }
 }
 
+/// How the two optima were found.
+fn method(k: &planar::KeilResult) -> &'static str {
+    if k.split {
+        "split along L (Lemma 5.6: every side of L certified to be in every triangulation), exact polygon DP"
+    } else {
+        "general exact MWT solver"
+    }
+}
+
 /// The picture: sites, the β-disks through x and y, the MWT, and xy.
-fn keil_svg(k: &planar::KeilResult) -> String {
+pub(crate) fn keil_svg(k: &planar::KeilResult) -> String {
     let (x, y) = (k.sites[k.xy[0] as usize], k.sites[k.xy[1] as usize]);
     let mut view = k.sites.clone();
     let b = k.beta.to_f64();

@@ -446,7 +446,7 @@ fn keil_reports_exact_verdicts_and_checks_random_sets() {
         "--beta",
         "1.16",
         "--n",
-        "6",
+        "420",
         "--json",
         "--svg",
         s(&svg),
@@ -454,12 +454,21 @@ fn keil_reports_exact_verdicts_and_checks_random_sets() {
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let v = json(&o);
     assert_eq!(v["xy_in_skeleton"], true);
+    assert_eq!(v["xy_in_mwt"], false);
+    assert_eq!(v["refutes_keil"], true);
+    assert_eq!(v["sites"], 844);
+    let (with, without) = (
+        &v["weight_with_xy_interval"],
+        &v["weight_without_xy_interval"],
+    );
+    assert!(with[0].as_f64().unwrap() > without[1].as_f64().unwrap());
     for k in [
         "beta",
         "sites",
         "xy_in_mwt",
         "weight_with_xy",
         "weight_without_xy",
+        "method",
     ] {
         assert!(v.get(k).is_some(), "missing {k}");
     }

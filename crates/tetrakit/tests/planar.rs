@@ -262,27 +262,133 @@ fn keil_construction_is_exact_and_consistent() {
             assert!(k.xy_in_skeleton && k.split, "β={b} n={n}");
             let same = |a: &[[u32; 2]], b: &[[u32; 2]]| cmp_edge_sets(&k.sites, a, b);
             let constrained = |forced: Vec<[u32; 2]>, forbidden: Vec<[u32; 2]>| {
-                mwt_with(&k.sites, &MwtOptions { forced, forbidden }).unwrap().edges
+                mwt_with(&k.sites, &MwtOptions { forced, forbidden })
+                    .unwrap()
+                    .edges
             };
             assert_eq!(same(&mwt(&k.sites).unwrap().edges, &k.mwt), Ordering::Equal);
-            assert_eq!(same(&constrained(vec![k.xy], vec![]), &k.with_xy.1), Ordering::Equal);
-            assert_eq!(same(&constrained(vec![], vec![k.xy]), &k.without_xy.1), Ordering::Equal);
+            assert_eq!(
+                same(&constrained(vec![k.xy], vec![]), &k.with_xy.1),
+                Ordering::Equal
+            );
+            assert_eq!(
+                same(&constrained(vec![], vec![k.xy]), &k.without_xy.1),
+                Ordering::Equal
+            );
             assert_eq!(k.xy_in_mwt, k.with_vs_without != Ordering::Greater);
         }
     }
     // Lemma 5.8: with n above its bound, xy is a β-skeleton edge in no MWT, proven by
     // the exact weights; at β = 1.16 the realization separates from n = 420 on (and not
     // yet at 400), far below the bound of about 1450.
-    for (b, n) in [("1.1548", None), ("1.156", None), ("1.16", Some(420)), ("1.16", None)] {
+    for (b, n) in [
+        ("1.1548", None),
+        ("1.156", None),
+        ("1.16", Some(420)),
+        ("1.16", None),
+    ] {
         let k = tetrakit::planar::keil(b.parse().unwrap(), n).unwrap();
         assert!(k.n as f64 > k.lemma_bound || n.is_some());
         assert!(k.xy_in_skeleton && !k.xy_in_mwt, "β={b} n={}", k.n);
         assert_eq!(k.with_vs_without, Ordering::Greater, "β={b}");
         assert!(k.with_xy.0.lo > k.without_xy.0.hi);
-        assert_eq!(cmp_edge_sets(&k.sites, &k.mwt, &k.without_xy.1), Ordering::Equal);
+        assert_eq!(
+            cmp_edge_sets(&k.sites, &k.mwt, &k.without_xy.1),
+            Ordering::Equal
+        );
     }
     let k = tetrakit::planar::keil("1.16".parse().unwrap(), Some(400)).unwrap();
     assert!(k.xy_in_mwt);
     assert!(tetrakit::planar::keil("1.17".parse().unwrap(), None).is_err());
     assert!(tetrakit::planar::keil("1.15".parse().unwrap(), None).is_err());
+}
+
+/// The textbook `O(n³)` dynamic program over a convex polygon given in counter-clockwise
+/// order, in plain `f64`: the edges of one optimum.
+fn convex_dp(pts: &[Point2], order: &[u32]) -> Vec<[u32; 2]> {
+    let m = order.len();
+    let len = |i: usize, j: usize| {
+        let (a, b) = (pts[order[i] as usize], pts[order[j] as usize]);
+        (a[0] - b[0]).hypot(a[1] - b[1])
+    };
+    let mut best = vec![vec![(0.0, usize::MAX); m]; m];
+    for span in 2..m {
+        for i in 0..m - span {
+            let j = i + span;
+            best[i][j] = (i + 1..j)
+                .map(|k| {
+                    let d = |a: usize, b: usize| if b == a + 1 { 0.0 } else { len(a, b) };
+                    (best[i][k].0 + best[k][j].0 + d(i, k) + d(k, j), k)
+                })
+                .min_by(|a, b| a.0.total_cmp(&b.0))
+                .unwrap();
+        }
+    }
+    let mut edges = Vec::new();
+    let mut stack = vec![(0, m - 1)];
+    while let Some((i, j)) = stack.pop() {
+        edges.push([order[i].min(order[j]), order[i].max(order[j])]);
+        if j > i + 1 {
+            let k = best[i][j].1;
+            stack.extend([(i, k), (k, j)]);
+        }
+    }
+    for i in 0..m - 1 {
+        edges.push([order[i].min(order[i + 1]), order[i].max(order[i + 1])]);
+    }
+    edges.sort_unstable();
+    edges.dedup();
+    edges
+}
+
+#[test]
+fn mwt_of_convex_polygons_matches_the_convex_dp() {
+    use tetrakit::geom::Hull2;
+    use tetrakit::planar::{Distribution, points2d};
+    let mut rng = Rng::new(31);
+    let mut sets: Vec<Vec<Point2>> = (3..40)
+        .map(|n| points2d(Distribution::Regular, n, 1))
+        .collect();
+    for _ in 0..150 {
+        let n = 3 + rng.below(30);
+        let mut angles: Vec<f64> = (0..n).map(|_| rng.unit() * std::f64::consts::TAU).collect();
+        angles.sort_by(f64::total_cmp);
+        sets.push(
+            angles
+                .iter()
+                .map(|a| [100.0 * a.cos(), 60.0 * a.sin()])
+                .collect(),
+        );
+    }
+    // Past the LMT triangle budget: the whole polygon goes to the exact stage.
+    sets.push(points2d(Distribution::Regular, 600, 1));
+    let mut checked = 0;
+    for pts in sets {
+        let hull = Hull2::new(&pts);
+        if hull.vertices.len() != pts.len() {
+            continue; // a point fell inside or on an edge
+        }
+        let got = mwt(&pts).unwrap();
+        let oracle = convex_dp(&pts, &hull.vertices);
+        let w: f64 = oracle
+            .iter()
+            .map(|e| {
+                let (a, b) = (pts[e[0] as usize], pts[e[1] as usize]);
+                (a[0] - b[0]).hypot(a[1] - b[1])
+            })
+            .sum();
+        assert_ne!(
+            cmp_edge_sets(&pts, &got.edges, &oracle),
+            Ordering::Greater,
+            "{pts:?}"
+        );
+        assert!(
+            (got.weight.mid() - w).abs() <= 1e-9 * w,
+            "{} vs {w}",
+            got.weight.mid()
+        );
+        assert_eq!(got.edges.len(), 2 * pts.len() - 3);
+        checked += 1;
+    }
+    assert!(checked > 150);
 }

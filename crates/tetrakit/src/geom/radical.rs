@@ -238,7 +238,7 @@ fn fast_two_sum(a: f64, b: f64) -> (f64, f64) {
 /// use tetrakit::geom::DoubleDouble;
 /// use std::cmp::Ordering;
 /// let (o, u, v) = ([0.0, 0.0], [1.0, 1.0], [2.0, 2.0]);
-/// let w = [2.0, 2.0 + f64::EPSILON]; // |ow| exceeds 2√2 by about 1e-16 relative
+/// let w = [2.0, 2.0f64.next_up()]; // |ow| exceeds 2√2 by about 1e-16 relative
 /// let two = DoubleDouble::length(&o, &u).plus(DoubleDouble::length(&o, &u));
 /// assert_eq!(two.certain_cmp(DoubleDouble::length(&o, &w), 2), Some(Ordering::Less));
 /// // An exact tie (√2 + √2 = √8) is never decided here.
@@ -335,7 +335,10 @@ fn dd_sqrt(x: &Expansion) -> DoubleDouble {
 
 /// The sign of `Σ √a_i − Σ √b_j` in double-double when it clears the error bound.
 fn double_double_cmp(a: &[Expansion], b: &[Expansion]) -> Option<Ordering> {
-    let sum = |v: &[Expansion]| v.iter().fold(DoubleDouble::ZERO, |acc, x| acc.plus(dd_sqrt(x)));
+    let sum = |v: &[Expansion]| {
+        v.iter()
+            .fold(DoubleDouble::ZERO, |acc, x| acc.plus(dd_sqrt(x)))
+    };
     sum(a).certain_cmp(sum(b), a.len().max(b.len()))
 }
 

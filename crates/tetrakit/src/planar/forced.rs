@@ -125,7 +125,11 @@ pub fn blocked_pairs(points: &[Point2]) -> HashSet<[u32; 2]> {
                 let (qs, qt) = (p(s), p(t));
                 let axis = usize::from(qs[0] == pc[0]);
                 let ord = qs[axis].total_cmp(&qt[axis]);
-                if qs[axis] > pc[axis] { ord } else { ord.reverse() }
+                if qs[axis] > pc[axis] {
+                    ord
+                } else {
+                    ord.reverse()
+                }
             };
             let mut around: Vec<u32> = (0..n).filter(|&s| s != c).collect();
             around.sort_by(|&s, &t| direction(s, t).then_with(|| nearer(s, t)));

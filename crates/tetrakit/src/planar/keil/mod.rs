@@ -25,6 +25,7 @@ mod split;
 use super::{MwtOptions, PlanarError, cmp_edge_sets, mwt, mwt_with, weight_of};
 use crate::geom::{Interval, Point2, Ratio, in_beta_region};
 use construction::construction;
+use split::Optima;
 use std::cmp::Ordering;
 
 /// The lower end of the construction's interval, `2/√3` (Keil's conjectured value):
@@ -77,7 +78,6 @@ pub struct KeilResult {
     /// `L` certified uncrossable) rather than by the general MWT solver.
     pub split: bool,
 }
-
 
 /// The best triangulation containing `xy`, for `x`, `y` on the hull and no other site on
 /// the line `xy`: the chord splits the hull into two convex regions whose triangulations
@@ -161,13 +161,14 @@ pub fn keil(beta: Ratio, n: Option<usize>) -> Result<KeilResult, PlanarError> {
         i as u32 == xy[0] || i as u32 == xy[1] || !in_beta_region(&x, &y, &sites[i], beta)
     });
     let cycle: Vec<u32> = (0..sites.len() as u32).collect();
-    let (with, without, split) = match split::split_along(&sites, &cycle, xy)? {
-        Some(s) => (s.with_xy, s.without_xy, true),
-        None => {
-            let (with, without) = general(&sites, xy)?;
-            (with, without, false)
-        }
+    let (optima, split) = match split::split_along(&sites, &cycle, xy)? {
+        Some(s) => (s, true),
+        None => (general(&sites, xy)?, false),
     };
+    let Optima {
+        with_xy: with,
+        without_xy: without,
+    } = optima;
     let with_vs_without = cmp_edge_sets(&sites, &with, &without);
     let xy_in_mwt = with_vs_without != Ordering::Greater;
     Ok(KeilResult {
@@ -177,7 +178,11 @@ pub fn keil(beta: Ratio, n: Option<usize>) -> Result<KeilResult, PlanarError> {
         xy,
         xy_in_skeleton,
         xy_in_mwt,
-        mwt: if xy_in_mwt { with.clone() } else { without.clone() },
+        mwt: if xy_in_mwt {
+            with.clone()
+        } else {
+            without.clone()
+        },
         with_xy: (weight_of(&sites, &with), with),
         without_xy: (weight_of(&sites, &without), without),
         with_vs_without,
@@ -188,11 +193,14 @@ pub fn keil(beta: Ratio, n: Option<usize>) -> Result<KeilResult, PlanarError> {
 
 /// The two optima by the general solver: the MWT, the best triangulation with `xy`,
 /// and, when the MWT contains `xy`, the best one without it (over all segments).
-fn general(sites: &[Point2], xy: [u32; 2]) -> Result<(Vec<[u32; 2]>, Vec<[u32; 2]>), PlanarError> {
+fn general(sites: &[Point2], xy: [u32; 2]) -> Result<Optima, PlanarError> {
     let best = mwt(sites)?;
     let with = best_with_chord(sites, xy)?.edges;
     if best.edges.binary_search(&xy).is_err() {
-        return Ok((with, best.edges));
+        return Ok(Optima {
+            with_xy: with,
+            without_xy: best.edges,
+        });
     }
     if sites.len() > CONSTRAINED_LIMIT {
         return Err(PlanarError::new(format!(
@@ -204,7 +212,10 @@ fn general(sites: &[Point2], xy: [u32; 2]) -> Result<(Vec<[u32; 2]>, Vec<[u32; 2
         forbidden: vec![xy],
         ..Default::default()
     };
-    Ok((with, mwt_with(sites, &opts)?.edges))
+    Ok(Optima {
+        with_xy: with,
+        without_xy: mwt_with(sites, &opts)?.edges,
+    })
 }
 
 /// The sites of the construction for `beta` with `n` sites per arc.
@@ -216,7 +227,6 @@ fn general(sites: &[Point2], xy: [u32; 2]) -> Result<(Vec<[u32; 2]>, Vec<[u32; 2
 pub fn keil_sites(beta: Ratio, n: usize) -> Result<Vec<Point2>, PlanarError> {
     Ok(construction(beta)?.0(n.max(1)))
 }
-
 
 /// True when β exceeds the Cheng–Xu bound `√(2√3+9)/3 ≈ 1.17682`, above which the
 /// β-skeleton is a subgraph of every MWT: `t = 9β² − 9 > 0` and `t² > 12` (exact).

@@ -16,8 +16,8 @@ use crate::planar::mwt::{certified_triangles, polygon_dp, walk_area_sign};
 use crate::planar::{PlanarError, blocked_pairs, edge_blocker};
 use rayon::prelude::*;
 
-/// The two optima, as sorted edge lists of triangulations of all the sites.
-pub(super) struct Split {
+/// The best triangulations with and without `xy`, as sorted edge lists.
+pub(super) struct Optima {
     pub with_xy: Vec<[u32; 2]>,
     pub without_xy: Vec<[u32; 2]>,
 }
@@ -33,7 +33,7 @@ pub(super) fn split_along(
     points: &[Point2],
     cycle: &[u32],
     xy: [u32; 2],
-) -> Result<Option<Split>, PlanarError> {
+) -> Result<Option<Optima>, PlanarError> {
     let mut cycle = cycle.to_vec();
     match walk_area_sign(points, &cycle) {
         1 => {}
@@ -78,9 +78,11 @@ pub(super) fn split_along(
     let with_xy = complete(with.map(|s| s.edges))?;
     let without_xy = complete(without.map(|s| s.edges))?;
     if with_xy.binary_search(&xy).is_err() || without_xy.binary_search(&xy).is_ok() {
-        return Err(PlanarError::new("internal: the split lost the constraint on xy"));
+        return Err(PlanarError::new(
+            "internal: the split lost the constraint on xy",
+        ));
     }
-    Ok(Some(Split {
+    Ok(Some(Optima {
         with_xy,
         without_xy,
     }))

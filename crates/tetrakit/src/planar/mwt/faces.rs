@@ -358,8 +358,7 @@ impl Rows {
     ) -> Rows {
         let m = poly.len();
         let words = m.div_ceil(64);
-        let boundary: HashSet<[u32; 2]> =
-            (0..m).map(|i| key(poly[i], poly[(i + 1) % m])).collect();
+        let boundary: HashSet<[u32; 2]> = (0..m).map(|i| key(poly[i], poly[(i + 1) % m])).collect();
         let inside_at = |i: usize, j: usize| {
             in_wedge(
                 points,

@@ -147,6 +147,31 @@ fn empty_triangles(points: &[Point2], sk: &Skeleton) -> (Vec<u32>, Vec<Tri>) {
     (start, inc.into_iter().map(|x| x.1).collect())
 }
 
+/// The number of triangles whose three edges are candidates (empty or not): a merge of
+/// two sorted neighbour lists per edge.
+fn candidate_triangles(sk: &Skeleton) -> usize {
+    (0..sk.edges.len())
+        .into_par_iter()
+        .map(|e| {
+            let [p, q] = sk.edges[e];
+            let (a, b) = (sk.around(p), sk.around(q));
+            let (mut i, mut j, mut count) = (0, 0, 0);
+            while i < a.len() && j < b.len() {
+                match a[i].0.cmp(&b[j].0) {
+                    std::cmp::Ordering::Less => i += 1,
+                    std::cmp::Ordering::Greater => j += 1,
+                    std::cmp::Ordering::Equal => {
+                        count += usize::from(a[i].0 > q);
+                        i += 1;
+                        j += 1;
+                    }
+                }
+            }
+            count
+        })
+        .sum()
+}
+
 /// True when no site lies strictly inside triangle `pqr` (orientation `o`); candidate
 /// edges carry no site on their interiors, so the boundary needs no test.
 fn triangle_empty(
@@ -278,6 +303,9 @@ pub struct LmtStats {
     pub undecided: usize,
 }
 
+/// Candidate triangles (about 60 bytes each once listed) allowed beyond `64·n`.
+const TRIANGLE_BUDGET: usize = 20_000_000;
+
 /// Computes the LMT-skeleton of `candidates` (sorted `[p, q]`, `p < q`, containing every
 /// MWT edge), with `forced` edges taken as certain (their crossers impossible).
 pub fn lmt_skeleton(
@@ -297,7 +325,15 @@ pub fn lmt_skeleton(
         tris: Vec::new(),
         forbidden: forbidden.iter().copied().collect(),
     };
-    (sk.tri_start, sk.tris) = empty_triangles(points, &sk);
+    // Sites in (near) convex position make Θ(n³) empty triangles and no LMT
+    // progress; past the budget the elimination is skipped (every candidate stays
+    // alive, which is sound) and the exact stage gets the whole face.
+    let eliminating = candidate_triangles(&sk) <= TRIANGLE_BUDGET.max(64 * n);
+    if eliminating {
+        (sk.tri_start, sk.tris) = empty_triangles(points, &sk);
+    } else {
+        sk.tri_start = vec![0; sk.edges.len() + 1];
+    }
     let find = |sk: &Skeleton, e: &[u32; 2]| sk.edges.binary_search(e).ok();
     for e in hull_edges(points).iter().chain(forced) {
         if let Some(id) = find(&sk, e) {
@@ -318,7 +354,9 @@ pub fn lmt_skeleton(
     let queue: Vec<u32> = (0..sk.edges.len() as u32)
         .filter(|&e| sk.status[e as usize] == ALIVE)
         .collect();
-    eliminate(points, &sk, &status, queue);
+    if eliminating {
+        eliminate(points, &sk, &status, queue);
+    }
     sk.status = status.into_iter().map(|s| s.into_inner()).collect();
     // An alive edge that no alive edge crosses is in every MWT (fact 2). Promotion
     // changes no LMT test, so one pass suffices.

@@ -184,7 +184,8 @@ pub(crate) fn certified_triangles(
 ) -> Result<Vec<[u32; 3]>, PlanarError> {
     let triangles = triangles_of(points, edges);
     let h = hull.on_boundary.iter().filter(|&&b| b).count();
-    if !verify_triangulation(points, &triangles).is_valid() || edges.len() != 3 * points.len() - 3 - h
+    if !verify_triangulation(points, &triangles).is_valid()
+        || edges.len() != 3 * points.len() - 3 - h
     {
         return Err(PlanarError::new(format!(
             "internal: the edges do not form a triangulation ({} edges, {} triangles)",
