@@ -56,19 +56,7 @@ pub struct Delaunay {
 /// assert_eq!((dt.triangles.len(), dt.edges.len()), (2, 5));
 /// ```
 pub fn delaunay(points: &[Point2]) -> Result<Delaunay, PlanarError> {
-    let sites: Vec<Site> = points
-        .iter()
-        .enumerate()
-        .map(|(i, p)| Site {
-            pos: spade::Point2::new(p[0], p[1]),
-            index: i as u32,
-        })
-        .collect();
-    let dt = DelaunayTriangulation::<Site>::bulk_load(sites)
-        .map_err(|e| PlanarError::new(format!("Delaunay triangulation failed: {e:?}")))?;
-    if dt.num_vertices() != points.len() {
-        return Err(PlanarError::new("duplicate points"));
-    }
+    let dt = triangulate(points)?;
     // Triangles are indexed by spade's face index minus one (face 0 is the outer face).
     let faces: Vec<_> = dt.fixed_inner_faces().collect();
     debug_assert!(faces.iter().enumerate().all(|(k, f)| f.index() == k + 1));
@@ -104,18 +92,119 @@ pub fn delaunay(points: &[Point2]) -> Result<Delaunay, PlanarError> {
             }
         })
         .collect();
-    let bad = edges.par_iter().find_any(|e| match (e.left, e.right) {
-        (Some(l), Some(r)) => {
-            let p = |i: u32| &points[i as usize];
-            orient2d(p(e.p), p(e.q), p(l)) <= 0 || incircle(p(e.p), p(e.q), p(l), p(r)) > 0
-        }
-        _ => false,
-    });
-    if let Some(e) = bad {
-        return Err(PlanarError::new(format!(
-            "internal: the Delaunay triangulation fails the empty-circle test at edge {}-{}",
-            e.p, e.q
-        )));
+    if let Some(e) = edges
+        .par_iter()
+        .find_any(|e| !locally_delaunay(points, e.p, e.q, e.left, e.right))
+    {
+        return Err(not_delaunay(e.p, e.q));
     }
     Ok(Delaunay { triangles, edges })
+}
+
+fn triangulate(points: &[Point2]) -> Result<DelaunayTriangulation<Site>, PlanarError> {
+    let sites: Vec<Site> = points
+        .iter()
+        .enumerate()
+        .map(|(i, p)| Site {
+            pos: spade::Point2::new(p[0], p[1]),
+            index: i as u32,
+        })
+        .collect();
+    let dt = DelaunayTriangulation::<Site>::bulk_load(sites)
+        .map_err(|e| PlanarError::new(format!("Delaunay triangulation failed: {e:?}")))?;
+    if dt.num_vertices() != points.len() {
+        return Err(PlanarError::new("duplicate points"));
+    }
+    Ok(dt)
+}
+
+/// The empty-circle certificate of edge `pq` with apices `l` (left) and `r`.
+fn locally_delaunay(points: &[Point2], p: u32, q: u32, l: Option<u32>, r: Option<u32>) -> bool {
+    let pt = |i: u32| (i, points[i as usize]);
+    let view = EdgeView {
+        p: pt(p),
+        q: pt(q),
+        left: l.map(pt),
+        right: r.map(pt),
+    };
+    view.locally_delaunay()
+}
+
+fn not_delaunay(p: u32, q: u32) -> PlanarError {
+    PlanarError::new(format!(
+        "internal: the Delaunay triangulation fails the empty-circle test at edge {p}-{q}"
+    ))
+}
+
+/// A Delaunay edge `pq` with the apices of its triangles (left of `p → q`, right), each
+/// site as its index and position.
+pub(crate) struct EdgeView {
+    pub p: (u32, Point2),
+    pub q: (u32, Point2),
+    pub left: Option<(u32, Point2)>,
+    pub right: Option<(u32, Point2)>,
+}
+
+impl EdgeView {
+    fn locally_delaunay(&self) -> bool {
+        let (Some(l), Some(r)) = (self.left, self.right) else {
+            return true;
+        };
+        let (p, q) = (&self.p.1, &self.q.1);
+        orient2d(p, q, &l.1) > 0 && incircle(p, q, &l.1, &r.1) <= 0
+    }
+}
+
+/// The Delaunay edges `[p, q]` (`p < q`, sorted) for which `keep` holds, each certified
+/// as in [`delaunay`], and the number of Delaunay edges: one parallel pass over the
+/// triangulation, reading positions from it, without building triangle or edge lists.
+pub(crate) fn delaunay_edges_where(
+    points: &[Point2],
+    keep: impl Fn(&EdgeView) -> bool + Sync,
+) -> Result<(Vec<[u32; 2]>, usize), PlanarError> {
+    let dt = triangulate(points)?;
+    let handles: Vec<_> = dt.fixed_undirected_edges().collect();
+    let site = |v: spade::handles::VertexHandle<'_, Site, (), (), ()>| {
+        let s = v.data();
+        (s.index, [s.pos.x, s.pos.y])
+    };
+    let kept: Result<Vec<[u32; 2]>, PlanarError> = handles
+        .par_iter()
+        .filter_map(|&h| {
+            let d = dt.undirected_edge(h).as_directed();
+            let view = EdgeView {
+                p: site(d.from()),
+                q: site(d.to()),
+                left: d.opposite_vertex().map(site),
+                right: d.rev().opposite_vertex().map(site),
+            };
+            let (p, q) = (view.p.0, view.q.0);
+            if !view.locally_delaunay() {
+                return Some(Err(not_delaunay(p, q)));
+            }
+            keep(&view).then_some(Ok([p.min(q), p.max(q)]))
+        })
+        .collect();
+    Ok((sort_by_first(kept?, points.len()), handles.len()))
+}
+
+/// Sorts pairs with first entries below `n` by counting sort on the first entry.
+fn sort_by_first(pairs: Vec<[u32; 2]>, n: usize) -> Vec<[u32; 2]> {
+    let mut start = vec![0usize; n + 1];
+    for e in &pairs {
+        start[e[0] as usize + 1] += 1;
+    }
+    for i in 0..n {
+        start[i + 1] += start[i];
+    }
+    let mut out = vec![[0u32; 2]; pairs.len()];
+    let mut next = start.clone();
+    for e in pairs {
+        out[next[e[0] as usize]] = e;
+        next[e[0] as usize] += 1;
+    }
+    for i in 0..n {
+        out[start[i]..start[i + 1]].sort_unstable();
+    }
+    out
 }

@@ -29,7 +29,7 @@
 //! is no longer planar (it tends to the complete graph); every pair is checked against
 //! the sites in the lens's bounding box: `O(n²)` pairs, expected `O(1)` sites each.
 
-use super::delaunay::{Delaunay, delaunay};
+use super::delaunay::{Delaunay, EdgeView, delaunay, delaunay_edges_where};
 use super::grid::PointGrid;
 use super::{PlanarError, find};
 use crate::geom::{Point2, Ratio, corner_dot_sign, in_beta_region, in_lune, orient2d};
@@ -80,37 +80,51 @@ pub fn beta_skeleton(
     if beta.cmp_one() == Ordering::Less {
         return Ok(small_beta(points, beta));
     }
-    let dt = delaunay(points)?;
     let lune = region == Region::Lune && beta.cmp_one() == Ordering::Greater;
     let grid = lune.then(|| PointGrid::new(points, 2.0));
-    let p = |i: u32| &points[i as usize];
+    let keep = |e: &EdgeView| {
+        let apex_in = |r: Option<(u32, Point2)>| {
+            r.is_some_and(|(_, r)| {
+                if lune {
+                    in_lune(&e.p.1, &e.q.1, &r, beta)
+                } else {
+                    in_beta_region(&e.p.1, &e.q.1, &r, beta)
+                }
+            })
+        };
+        !apex_in(e.left)
+            && !apex_in(e.right)
+            && grid
+                .as_ref()
+                .is_none_or(|g| !lune_occupied(points, g, e.p.0, e.q.0, beta))
+    };
+    if beta.cmp_one() == Ordering::Greater {
+        let (edges, candidates) = delaunay_edges_where(points, keep)?;
+        return Ok(Skeleton {
+            edges,
+            candidates,
+            cell_diameters: 0,
+        });
+    }
+    // β = 1: the Gabriel graph, plus the diameters of cocircular Delaunay cells.
+    let dt = delaunay(points)?;
     let mut edges: Vec<[u32; 2]> = dt
         .edges
         .par_iter()
         .filter(|e| {
-            let apex_in = |a: Option<u32>| {
-                a.is_some_and(|r| {
-                    if lune {
-                        in_lune(p(e.p), p(e.q), p(r), beta)
-                    } else {
-                        in_beta_region(p(e.p), p(e.q), p(r), beta)
-                    }
-                })
-            };
-            !apex_in(e.left)
-                && !apex_in(e.right)
-                && grid
-                    .as_ref()
-                    .is_none_or(|g| !lune_occupied(points, g, e.p, e.q, beta))
+            let site = |i: u32| (i, points[i as usize]);
+            keep(&EdgeView {
+                p: site(e.p),
+                q: site(e.q),
+                left: e.left.map(site),
+                right: e.right.map(site),
+            })
         })
         .map(|e| [e.p.min(e.q), e.p.max(e.q)])
         .collect();
-    let mut cell_diameters = 0;
-    if beta.cmp_one() == Ordering::Equal {
-        let extra = cocircular_diameters(points, &dt);
-        cell_diameters = extra.len();
-        edges.extend(extra);
-    }
+    let extra = cocircular_diameters(points, &dt);
+    let cell_diameters = extra.len();
+    edges.extend(extra);
     edges.par_sort_unstable();
     edges.dedup();
     Ok(Skeleton {
