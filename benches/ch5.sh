@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # Chapter 5 benchmarks: β-skeleton (β = 1.16, circle) and exact MWT against spade's bulk
 # Delaunay triangulation of the same points, in the same run. Medians of RUNS (default 3).
-# Usage: bash benches/ch5.sh            (skeleton at 1e4..1e6, MWT up to MWT_MAX=10000)
+# Usage: bash benches/ch5.sh            (skeleton at 1e4..1e6, MWT up to MWT_MAX=10000,
+#                                        Keil at β = 1.16 unless KEIL=0)
 #        MWT_MAX=100000 bash benches/ch5.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
 RUNS=${RUNS:-3}
 MWT_MAX=${MWT_MAX:-10000}
 SIZES=${SIZES:-"10000 100000 1000000"}
+[ -x /usr/bin/time ] || { apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq time >/dev/null; }
 cargo build --release --bin tetrakit --example spade_bulk >/dev/null 2>&1
 T=target/release/tetrakit
 D=$(mktemp -d)
@@ -34,4 +36,19 @@ for dist in uniform gaussian clustered; do
       "$(python3 -c "print(round($sk/$sp,2))")" "$mw" "$mr" "$fixed" "$faces" "$holes"
   done
 done
+
+
+# Keil's construction at β = 1.16 (thesis §5.2): the smallest n that separates xy in this
+# realization, and Lemma 5.8's n (the default), by the split along L.
+if [ "${KEIL:-1}" = 1 ]; then
+  printf "\n%-8s %6s %6s %10s %10s %9s\n" beta n sites seconds xy_in_mwt peak_MB
+  for n in 400 420 1000 default; do
+    arg=(); [ "$n" != default ] && arg=(--n "$n")
+    js=$(/usr/bin/time -f "%M" -o "$D.mem" $T keil --beta 1.16 "${arg[@]}" --json)
+    printf "%-8s %6s %6s %10s %10s %9s\n" 1.16 "$(echo "$js" | field "['n']")" \
+      "$(echo "$js" | field "['sites']")" "$(echo "$js" | field "['seconds']")" \
+      "$(echo "$js" | field "['xy_in_mwt']")" "$(( $(cat "$D.mem") / 1024 ))"
+  done
+  rm -f "$D.mem"
+fi
 rm -rf "$D"
