@@ -199,7 +199,6 @@ pub fn check(path: &Path, convex: bool, as_json: bool) -> u8 {
             "convex": convex,
             "problem_count": report.problem_count,
             "problems": report.problems,
-            "notes": report.notes,
             "seconds": seconds,
         });
         out!("{v}");

@@ -7,13 +7,22 @@
 //! overlap: for an interior vertex the covering degree of its link is constant, so one cone
 //! against all others decides; a boundary vertex's cones are tested pairwise.
 //!
-//! Not covered here: two boundary components nested with the same orientation (a separate
-//! piece of mesh floating inside another). The report notes when the boundary has more than
-//! one component; `verify` with the convex hull certifies everything.
+//! **Nested components.** Local injectivity and an embedded boundary still allow a
+//! separate piece of mesh inside another (two boundary components nested with the same
+//! orientation). The covering number (how many tetrahedra contain a point) is constant
+//! off the boundary, since paired faces keep it, and rises by one across a boundary face
+//! from its outer to its inner side. So the mesh is embedded exactly when it is 0 just
+//! outside every boundary component. If it is not 0 just outside a component `S`, a
+//! tetrahedron `T` covers points just outside `S` next to any vertex `v` of `S`, so `v`
+//! lies in the closed `T`, and `T` is not incident to `v` (the star of `v` lies inside
+//! `S` near `v`, by local injectivity). In a valid mesh no vertex lies in a closed
+//! tetrahedron other than as its corner, so [`nested_overlaps`] tests one vertex per
+//! component against every tetrahedron near it, exactly.
 
+use super::grid::{Aabb, TriangleGrid, aabb, boxes_meet};
 use super::verify::{Problem, ProblemKind};
 use crate::detect::ids;
-use crate::geom::{Point3, cones_overlap};
+use crate::geom::{Point3, cones_overlap, point_in_closed_tetrahedron};
 use rayon::prelude::*;
 
 /// Overlaps near vertices. `tets` are positively oriented (degenerate ones are skipped by
@@ -165,8 +174,61 @@ pub(super) fn boundary_self_intersections(
         .collect()
 }
 
-/// Number of connected components of the boundary surface (faces joined across edges).
-pub(super) fn boundary_components(faces: &[([u32; 3], u32)]) -> usize {
+/// Pieces of mesh nested inside others: for one vertex `v` of each boundary component
+/// (the first face of the component, as `(vertex, tet)`), the tetrahedra not incident
+/// to `v` whose closure contains it (exact; a hash grid of tetrahedron boxes).
+pub(super) fn nested_overlaps(
+    points: &[Point3],
+    tets: &[[u32; 4]],
+    reps: &[(u32, u32)],
+) -> Vec<Problem> {
+    let corners = |t: &[u32; 4]| t.map(|v| points[v as usize]);
+    let boxes: Vec<Aabb> = tets
+        .par_iter()
+        .map(|t| {
+            let c = corners(t);
+            aabb(&[&c[0], &c[1], &c[2], &c[3]])
+        })
+        .collect();
+    let mean_size = boxes
+        .iter()
+        .map(|b| (0..3).map(|i| b.1[i] - b.0[i]).fold(0.0, f64::max))
+        .sum::<f64>()
+        / boxes.len().max(1) as f64;
+    let mut grid = TriangleGrid::with_cell(points, mean_size);
+    for (i, b) in boxes.iter().enumerate() {
+        grid.insert_item(b, [i as u32, 0, 0]); // keyed by tetrahedron index
+    }
+    reps.par_iter()
+        .filter_map(|&(v, own)| {
+            let x = points[v as usize];
+            let mut found = None;
+            grid.visit(&(x, x), |item| {
+                let t = &tets[item[0] as usize];
+                let hit = !t.contains(&v)
+                    && boxes_meet(&boxes[item[0] as usize], &(x, x))
+                    && point_in_closed_tetrahedron(&x, &corners(t));
+                if hit {
+                    found = Some(item[0]);
+                }
+                hit
+            });
+            found.map(|t| Problem {
+                kind: ProblemKind::Overlap,
+                tets: vec![t, own],
+                vertices: vec![v],
+                detail: format!(
+                    "vertex {v} of a boundary component lies in tetrahedron {t} ({}): a separate piece of mesh overlaps another",
+                    ids(&tets[t as usize])
+                ),
+            })
+        })
+        .collect()
+}
+
+/// One `(vertex, tet)` per connected component of the boundary surface (faces joined
+/// across edges): a vertex of the component's first face and that face's tetrahedron.
+pub(super) fn boundary_components(faces: &[([u32; 3], u32)]) -> Vec<(u32, u32)> {
     let mut parent: Vec<usize> = (0..faces.len()).collect();
     fn find(p: &mut [usize], mut x: usize) -> usize {
         while p[x] != x {
@@ -190,5 +252,6 @@ pub(super) fn boundary_components(faces: &[([u32; 3], u32)]) -> usize {
     }
     (0..faces.len())
         .filter(|&i| find(&mut parent, i) == i)
-        .count()
+        .map(|i| (faces[i].0[0], faces[i].1))
+        .collect()
 }
