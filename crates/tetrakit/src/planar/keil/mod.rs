@@ -15,9 +15,11 @@
 //! in floating point, so the mirror ties are exact ties). `n` defaults to one more than
 //! Lemma 5.8's bound.
 //!
-//! The floating-point construction is only a proposal: the verdicts are computed on the
-//! actual sites by the exact skeleton test and the exact MWT, with the constrained
-//! optimum "with `xy`" for comparison, so what is reported is proven for these sites.
+//! The floating-point construction (module `construction`) is only a proposal: the
+//! verdicts are computed on the actual sites, by the exact skeleton test and by the
+//! best triangulations with and without `xy`, found by splitting along the polygon `L`
+//! of Lemma 5.6 (module `split`, every side certified) or else by the general MWT
+//! solver, and compared exactly. What is reported is proven for these sites.
 
 mod construction;
 mod split;
