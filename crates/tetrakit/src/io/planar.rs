@@ -107,16 +107,17 @@ impl Svg {
         let ((x1, y1), (x2, y2)) = (self.xy(a), self.xy(b));
         let _ = writeln!(
             self.body,
-            r#"<line class="{class}" x1="{x1:.3}" y1="{y1:.3}" x2="{x2:.3}" y2="{y2:.3}"/>"#
+            r#"<line class="{class}" stroke="black" x1="{x1:.3}" y1="{y1:.3}" x2="{x2:.3}" y2="{y2:.3}"/>"#
         );
     }
 
-    /// A circle of data radius `r`.
+    /// An outlined circle of data radius `r`. The presentation attributes stand in for
+    /// the style sheet in renderers without CSS; the style sheet overrides them.
     pub fn circle(&mut self, c: &Point2, r: f64, class: &str) {
         let (x, y) = self.xy(c);
         let _ = writeln!(
             self.body,
-            r#"<circle class="{class}" cx="{x:.3}" cy="{y:.3}" r="{:.3}"/>"#,
+            r#"<circle class="{class}" fill="none" stroke="black" cx="{x:.3}" cy="{y:.3}" r="{:.3}"/>"#,
             r * self.scale
         );
     }
