@@ -27,25 +27,27 @@ mod split;
 use super::{MwtOptions, PlanarError, cmp_edge_sets, mwt, mwt_with, weight_of};
 use crate::geom::{Interval, Point2, Ratio, in_beta_region};
 use construction::construction;
+use num_bigint::{BigInt, Sign};
 use split::Optima;
 use std::cmp::Ordering;
 
-/// The lower end of the construction's interval, `2/√3` (Keil's conjectured value):
-/// `β ≥ 2/√3 ⟺ 3β² ≥ 4`.
+/// True when β lies in `[2/√3, √(2√3+45)/6)`, where the construction applies (exact):
+/// `β ≥ 2/√3 ⟺ 3β² ≥ 4`, and `β < √(2√3+45)/6 ⟺ 36β² − 45 < √12`.
 pub fn in_keil_interval(beta: Ratio) -> bool {
-    // upper: β < √(2√3+45)/6 ⟺ 36β² - 45 < 2√3 ⟺ t < 0 or t² < 12, t = 36β² - 45.
-    let lower = beta.square_cmp(4, 3) != Ordering::Less;
-    let (a, b) = (beta.num as i128, beta.den as i128);
-    let t_num = 36 * a * a - 45 * b * b; // t = t_num / b²
-    let upper = t_num < 0 || {
-        let t = t_num as f64 / (b * b) as f64;
-        // t² < 12 decided exactly in 128-bit when the numbers fit, else in f64 with margin
-        match (t_num.checked_mul(t_num), (b * b).checked_mul(b * b)) {
-            (Some(l), Some(r)) if r.checked_mul(12).is_some() => l < 12 * r,
-            _ => t * t < 12.0 * (1.0 - 1e-12),
-        }
-    };
-    lower && upper
+    beta.square_cmp(4, 3) != Ordering::Less && cmp_with_root12(beta, 36, 45) == Ordering::Less
+}
+
+/// The exact comparison of `c·β² − d` with `√12 = 2√3`, in integers: with `β = a/b`
+/// and `t = c·a² − d·b²`, it is `t` against `√12·b²`, so `Less` when `t ≤ 0`, else the
+/// comparison of `t²` with `12·b⁴`.
+fn cmp_with_root12(beta: Ratio, c: u32, d: u32) -> Ordering {
+    let (a, b) = (BigInt::from(beta.num), BigInt::from(beta.den));
+    let t = BigInt::from(c) * &a * &a - BigInt::from(d) * &b * &b;
+    if t.sign() != Sign::Plus {
+        return Ordering::Less;
+    }
+    let b2 = &b * &b;
+    (&t * &t).cmp(&(BigInt::from(12) * &b2 * &b2))
 }
 
 /// Largest site count for the constrained optima, which use all `O(n²)` segments.
@@ -231,21 +233,9 @@ pub fn keil_sites(beta: Ratio, n: usize) -> Result<Vec<Point2>, PlanarError> {
 }
 
 /// True when β exceeds the Cheng–Xu bound `√(2√3+9)/3 ≈ 1.17682`, above which the
-/// β-skeleton is a subgraph of every MWT: `t = 9β² − 9 > 0` and `t² > 12` (exact).
+/// β-skeleton is a subgraph of every MWT: `9β² − 9 > √12` (exact).
 pub fn above_cheng_xu(beta: Ratio) -> bool {
-    let (a, b) = (beta.num as i128, beta.den as i128);
-    let t = 9 * a * a - 9 * b * b; // t_true = t / b²
-    t > 0
-        && match (
-            t.checked_mul(t),
-            (b * b).checked_mul(b * b).and_then(|x| x.checked_mul(12)),
-        ) {
-            (Some(l), Some(r)) => l > r,
-            _ => {
-                let tf = t as f64 / (b * b) as f64;
-                tf * tf > 12.0 * (1.0 + 1e-12)
-            }
-        }
+    cmp_with_root12(beta, 9, 9) == Ordering::Greater
 }
 
 /// A violation of β-skeleton ⊆ MWT: `(set, seed, edge)`.
@@ -274,4 +264,22 @@ pub fn check_random(
         }
     }
     Ok((checked, bad))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// 15-digit decimals on both sides of each bound (their squares overflow 128-bit
+    /// arithmetic in the comparison with √12, so this pins the exact path).
+    #[test]
+    fn interval_ends_are_exact() {
+        let b = |s: &str| s.parse::<Ratio>().unwrap();
+        assert!(!in_keil_interval(b("1.15470053837925")));
+        assert!(in_keil_interval(b("1.15470053837926")));
+        assert!(in_keil_interval(b("1.16026938461071")));
+        assert!(!in_keil_interval(b("1.16026938461072")));
+        assert!(!above_cheng_xu(b("1.17681781914608")));
+        assert!(above_cheng_xu(b("1.17681781914609")));
+    }
 }
