@@ -190,21 +190,9 @@ pub(crate) fn delaunay_edges_where(
 
 /// Sorts pairs with first entries below `n` by counting sort on the first entry.
 fn sort_by_first(pairs: Vec<[u32; 2]>, n: usize) -> Vec<[u32; 2]> {
-    let mut start = vec![0usize; n + 1];
-    for e in &pairs {
-        start[e[0] as usize + 1] += 1;
-    }
-    for i in 0..n {
-        start[i + 1] += start[i];
-    }
-    let mut out = vec![[0u32; 2]; pairs.len()];
-    let mut next = start.clone();
-    for e in pairs {
-        out[next[e[0] as usize]] = e;
-        next[e[0] as usize] += 1;
-    }
-    for i in 0..n {
-        out[start[i]..start[i + 1]].sort_unstable();
+    let (start, mut out) = super::buckets(n, pairs.iter().map(|e| (e[0] as usize, *e)));
+    for w in start.windows(2) {
+        out[w[0] as usize..w[1] as usize].sort_unstable();
     }
     out
 }

@@ -37,21 +37,11 @@ impl PointGrid {
             cell,
             nx,
             ny,
-            start: vec![0; nx * ny + 1],
-            items: vec![0; points.len()],
+            start: Vec::new(),
+            items: Vec::new(),
         };
-        let keys: Vec<usize> = points.iter().map(|p| g.key(p)).collect();
-        for &k in &keys {
-            g.start[k + 1] += 1;
-        }
-        for i in 0..nx * ny {
-            g.start[i + 1] += g.start[i];
-        }
-        let mut fill = g.start.clone();
-        for (i, &k) in keys.iter().enumerate() {
-            g.items[fill[k] as usize] = i as u32;
-            fill[k] += 1;
-        }
+        let keys = points.iter().enumerate().map(|(i, p)| (g.key(p), i as u32));
+        (g.start, g.items) = super::buckets(nx * ny, keys);
         g
     }
 

@@ -35,34 +35,17 @@ impl EdgeGrid {
             cell,
             nx,
             ny,
-            start: vec![0; nx * ny + 1],
+            start: Vec::new(),
             items: Vec::new(),
         };
         let ranges: Vec<(usize, usize, usize, usize)> = ids
             .iter()
             .map(|&e| g.range(points, &edges[e as usize]))
             .collect();
-        for &(x0, x1, y0, y1) in &ranges {
-            for y in y0..=y1 {
-                for x in x0..=x1 {
-                    g.start[y * nx + x + 1] += 1;
-                }
-            }
-        }
-        for i in 0..nx * ny {
-            g.start[i + 1] += g.start[i];
-        }
-        let mut fill = g.start.clone();
-        g.items = vec![0; g.start[nx * ny] as usize];
-        for (&e, &(x0, x1, y0, y1)) in ids.iter().zip(&ranges) {
-            for y in y0..=y1 {
-                for x in x0..=x1 {
-                    let c = y * nx + x;
-                    g.items[fill[c] as usize] = e;
-                    fill[c] += 1;
-                }
-            }
-        }
+        let entries = ids.iter().zip(&ranges).flat_map(|(&e, &(x0, x1, y0, y1))| {
+            (y0..=y1).flat_map(move |y| (x0..=x1).map(move |x| (y * nx + x, e)))
+        });
+        (g.start, g.items) = crate::planar::buckets(nx * ny, entries);
         g
     }
 

@@ -24,7 +24,7 @@ pub const CERTAIN: u8 = 1;
 pub const IMPOSSIBLE: u8 = 2;
 
 /// An empty candidate triangle seen from one of its edges `[p, q]` (`p < q`).
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, Default)]
 pub struct Tri {
     /// The third vertex.
     pub apex: u32,
@@ -102,7 +102,7 @@ fn hull_edges(points: &[Point2]) -> Vec<[u32; 2]> {
 fn empty_triangles(points: &[Point2], sk: &Skeleton) -> (Vec<u32>, Vec<Tri>) {
     let grid = crate::planar::grid::PointGrid::new(points, 2.0);
     let pt = |i: u32| &points[i as usize];
-    let mut inc: Vec<(u32, Tri)> = (0..sk.edges.len() as u32)
+    let inc: Vec<(u32, Tri)> = (0..sk.edges.len() as u32)
         .into_par_iter()
         .flat_map_iter(|e| {
             let [p, q] = sk.edges[e as usize];
@@ -136,15 +136,7 @@ fn empty_triangles(points: &[Point2], sk: &Skeleton) -> (Vec<u32>, Vec<Tri>) {
             out
         })
         .collect();
-    inc.par_sort_unstable_by_key(|x| x.0);
-    let mut start = vec![0u32; sk.edges.len() + 1];
-    for x in &inc {
-        start[x.0 as usize + 1] += 1;
-    }
-    for i in 0..sk.edges.len() {
-        start[i + 1] += start[i];
-    }
-    (start, inc.into_iter().map(|x| x.1).collect())
+    crate::planar::buckets(sk.edges.len(), inc.iter().map(|&(e, t)| (e as usize, t)))
 }
 
 /// The number of triangles whose three edges are candidates (empty or not): a merge of

@@ -79,23 +79,11 @@ pub fn in_wedge(points: &[Point2], v: u32, a: u32, b: u32, d: u32) -> bool {
 
 /// Compressed rows of `(neighbour, edge id)` per vertex, in edge order.
 pub fn csr(n: usize, edges: &[[u32; 2]]) -> (Vec<u32>, Vec<(u32, u32)>) {
-    let mut start = vec![0u32; n + 1];
-    for e in edges {
-        start[e[0] as usize + 1] += 1;
-        start[e[1] as usize + 1] += 1;
-    }
-    for i in 0..n {
-        start[i + 1] += start[i];
-    }
-    let mut fill = start.clone();
-    let mut adj = vec![(0u32, 0u32); start[n] as usize];
-    for (id, e) in edges.iter().enumerate() {
-        for (a, b) in [(e[0], e[1]), (e[1], e[0])] {
-            adj[fill[a as usize] as usize] = (b, id as u32);
-            fill[a as usize] += 1;
-        }
-    }
-    (start, adj)
+    let entries = edges.iter().enumerate().flat_map(|(id, e)| {
+        let id = id as u32;
+        [(e[0] as usize, (e[1], id)), (e[1] as usize, (e[0], id))]
+    });
+    crate::planar::buckets(n, entries)
 }
 
 /// Neighbour lists sorted counter-clockwise.
