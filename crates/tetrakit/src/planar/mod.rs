@@ -34,6 +34,11 @@ pub(crate) fn find(parent: &mut [u32], mut x: u32) -> u32 {
     x
 }
 
+/// The edge `ab` as `[min, max]`.
+pub(crate) fn edge_key(a: u32, b: u32) -> [u32; 2] {
+    [a.min(b), a.max(b)]
+}
+
 /// Compressed rows: `entries` `(bucket, item)` with buckets below `n`, grouped by bucket
 /// (a counting sort, stable within a bucket). Returns the row starts (`n + 1` of them)
 /// and the items. Used for the point and edge grids, adjacency lists and edge lists.

@@ -117,7 +117,7 @@ fn best_with_chord(sites: &[Point2], xy: [u32; 2]) -> Result<super::Mwt, PlanarE
         let pts: Vec<Point2> = ids.iter().map(|&i| sites[i as usize]).collect();
         for e in mwt(&pts)?.edges {
             let (a, b) = (ids[e[0] as usize], ids[e[1] as usize]);
-            edges.push([a.min(b), a.max(b)]);
+            edges.push(super::edge_key(a, b));
         }
     }
     edges.sort_unstable();

@@ -12,6 +12,7 @@
 //! certified as triangulations of the whole set.
 
 use crate::geom::{Hull2, Point2};
+use crate::planar::edge_key as key;
 use crate::planar::mwt::{certified_triangles, polygon_dp, walk_area_sign};
 use crate::planar::{PlanarError, blocked_pairs, edge_blocker};
 use rayon::prelude::*;
@@ -20,10 +21,6 @@ use rayon::prelude::*;
 pub(super) struct Optima {
     pub with_xy: Vec<[u32; 2]>,
     pub without_xy: Vec<[u32; 2]>,
-}
-
-fn key(a: u32, b: u32) -> [u32; 2] {
-    [a.min(b), a.max(b)]
 }
 
 /// Splits along `cycle` (every site once). `Ok(None)` when the split does not apply: a

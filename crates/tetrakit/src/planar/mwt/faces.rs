@@ -15,6 +15,7 @@
 use super::cross;
 use super::walks::in_wedge;
 use crate::geom::{DoubleDouble, Interval, Point2, compare_root_sums, orient2d, squared_length};
+use crate::planar::edge_key as key;
 use rayon::prelude::*;
 use std::cmp::Ordering;
 use std::collections::HashSet;
@@ -36,10 +37,6 @@ pub struct Solution {
     pub edges: Vec<[u32; 2]>,
     /// Their total length.
     pub weight: Interval,
-}
-
-fn key(a: u32, b: u32) -> [u32; 2] {
-    [a.min(b), a.max(b)]
 }
 
 /// Exact comparison of two edge sets' total lengths.

@@ -107,7 +107,7 @@ pub fn mwt_with(points: &[Point2], opts: &MwtOptions) -> Result<Mwt, PlanarError
     let t0 = Instant::now();
     let constrained = !opts.forced.is_empty() || !opts.forbidden.is_empty();
     let sorted = |v: &[[u32; 2]]| -> Vec<[u32; 2]> {
-        let mut v: Vec<[u32; 2]> = v.iter().map(|e| [e[0].min(e[1]), e[0].max(e[1])]).collect();
+        let mut v: Vec<[u32; 2]> = v.iter().map(|e| super::edge_key(e[0], e[1])).collect();
         v.sort_unstable();
         v
     };
