@@ -71,6 +71,28 @@ struct DetectArgs {
     /// Write the tetrahedralization found: .ele (with .node), .vtk or .json.
     #[arg(long)]
     output: Option<PathBuf>,
+    /// How each vertex's link is freed of punctured segments (the verdict never depends
+    /// on it).
+    #[arg(long, value_enum, default_value = "sweep")]
+    links: LinksArg,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
+enum LinksArg {
+    /// The exact sphere sweep of thesis §2.4.2: O(|L_v| log |L_v|) exact tests per vertex.
+    Sweep,
+    /// A sign table: O(|L_v|·(|N(v)| + |L_v|)) table look-ups per vertex.
+    Table,
+}
+
+impl From<LinksArg> for tetrakit::detect::LinkMethod {
+    fn from(l: LinksArg) -> Self {
+        use tetrakit::detect::LinkMethod as M;
+        match l {
+            LinksArg::Table => M::SignTable,
+            LinksArg::Sweep => M::Sweep,
+        }
+    }
 }
 
 #[derive(Args)]
@@ -351,7 +373,7 @@ enum CorruptKind {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let code = match cli.cmd {
-        Cmd::Detect(a) => run::detect(&a.input, a.json, a.output.as_deref()),
+        Cmd::Detect(a) => run::detect(&a.input, a.json, a.output.as_deref(), a.links.into()),
         Cmd::Check(a) => run::check(&a.input, a.convex, a.json),
         Cmd::Mintetra(a) => poly::mintetra(&a.input, a.json, a.output.as_deref(), a.confirm),
         Cmd::Tetrahedralize(a) => poly::tetrahedralize(poly::TetraArgs {

@@ -4,7 +4,7 @@ use crate::{CorruptKind, GenCommon, GenKind};
 use serde_json::json;
 use std::path::Path;
 use std::time::Instant;
-use tetrakit::detect::{Cells, Detection, detect_with_progress};
+use tetrakit::detect::{Cells, Detection, LinkMethod, detect_with};
 use tetrakit::generate::{self, Corruption};
 use tetrakit::geom::Hull3;
 use tetrakit::io::{self, Input};
@@ -36,7 +36,7 @@ fn read(path: &Path) -> Result<Input, u8> {
     io::read_input(path).map_err(fail)
 }
 
-pub fn detect(path: &Path, as_json: bool, output: Option<&Path>) -> u8 {
+pub fn detect(path: &Path, as_json: bool, output: Option<&Path>, links: LinkMethod) -> u8 {
     let start = Instant::now();
     let input = match read(path) {
         Ok(i) => i,
@@ -66,7 +66,7 @@ pub fn detect(path: &Path, as_json: bool, output: Option<&Path>) -> u8 {
             b.set_position(done);
         }
     };
-    let d = detect_with_progress(&input.points, &segments, &report);
+    let d = detect_with(&input.points, &segments, links, &report);
     if let Some(b) = bar {
         b.finish_and_clear();
     }

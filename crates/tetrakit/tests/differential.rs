@@ -3,7 +3,9 @@
 //! Every crossing witness is checked independently, and every YES pins Euler's count
 //! t = |L| − n − n_b + 3 (Theorem 2.3, condition 3, with n_b the points on the hull).
 
-use tetrakit::detect::{Cells, WitnessKind, detect, oracle::forms_tetrahedralization};
+use tetrakit::detect::{
+    Cells, LinkMethod, WitnessKind, detect_with, oracle::forms_tetrahedralization,
+};
 use tetrakit::generate::{cospherical_points, random_flips, random_points, tetrahedralize_points};
 use tetrakit::geom::{Hull3, Point3, orient2d, point_in_segment_interior, segments_meet};
 use tetrakit::mesh::Tetrahedralization;
@@ -15,9 +17,29 @@ struct Tally {
     no: usize,
 }
 
+/// Runs `detect` with both link methods (the sign table and the sphere sweep) against the
+/// oracle.
 fn check(points: &[Point3], edges: &[(u32, u32)], tally: &mut Tally, what: &str) {
     let expected = forms_tetrahedralization(points, edges);
-    let d = detect(points, edges).expect("well-formed input");
+    for method in [LinkMethod::SignTable, LinkMethod::Sweep] {
+        let what = format!("{what} ({method:?})");
+        check_method(points, edges, expected, method, &what);
+    }
+    if expected {
+        tally.yes += 1;
+    } else {
+        tally.no += 1;
+    }
+}
+
+fn check_method(
+    points: &[Point3],
+    edges: &[(u32, u32)],
+    expected: bool,
+    method: LinkMethod,
+    what: &str,
+) {
+    let d = detect_with(points, edges, method, &|_, _| {}).expect("well-formed input");
     assert_eq!(
         d.is_yes(),
         expected,
@@ -26,7 +48,6 @@ fn check(points: &[Point3], edges: &[(u32, u32)], tally: &mut Tally, what: &str)
     );
     match &d.result {
         Ok(Cells::Tetrahedra(t)) => {
-            tally.yes += 1;
             let hull = Hull3::new(points);
             let nb = (0..points.len()).filter(|&i| hull.on_boundary(i)).count();
             assert_eq!(
@@ -36,7 +57,6 @@ fn check(points: &[Point3], edges: &[(u32, u32)], tally: &mut Tally, what: &str)
             );
         }
         Ok(Cells::Triangles(t)) => {
-            tally.yes += 1;
             assert_eq!(
                 t.len(),
                 edges.len() + 1 - points.len(),
@@ -44,7 +64,6 @@ fn check(points: &[Point3], edges: &[(u32, u32)], tally: &mut Tally, what: &str)
             );
         }
         Err(w) => {
-            tally.no += 1;
             let p = |i: u32| &points[i as usize];
             match w.kind {
                 WitnessKind::CrossingSegments => {

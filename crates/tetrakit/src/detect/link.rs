@@ -17,22 +17,29 @@
 //! it must leave across the edge `cd`; at that crossing `cd` is nearer to `v` than `ab`
 //! (were `ab` nearer it would puncture the face `vcd`, were they at the same depth two
 //! edges of `T` would cross), so `cd` punctures `vab`. Every deletion is therefore safe and
-//! every non-link edge is deleted. Deletions are tested against the whole of `L(v)` at once,
-//! which makes the result independent of any order.
+//! every non-link edge is deleted, in any order.
 //!
-//! Finding the punctures. For every segment `ab` of `L_v` the signs of `orient3d(v, a, b, c)`
-//! for all neighbours `c` are tabulated once (`|L_v|·|N(v)|` filtered tests, one dot product
-//! each). Seen from `v`, two segments can only puncture one another's triangles when their
-//! arcs on the sphere of directions cross, which needs each to straddle the other's plane
-//! through `v` (a bitmask test) and the two candidate crossing points `±(a×b)×(c×d)` to
-//! agree (a sign comparison); only then is one exact `orient3d(a, b, c, d)` needed, and it
-//! tells which segment is nearer `v` (or that they intersect: a witness). So the exact work
-//! is proportional to the number of crossings, and the rest is `O(|L_v|^2)` bit operations
-//! per vertex.
+//! Finding the punctures, two ways ([`LinkMethod`]):
+//! - **The sphere sweep** (default; [`sweep`](super::sweep)), the thesis's
+//!   CHECK-CLOSED-TRIANGULATION made exact: a meridian rotates about a polar axis through
+//!   `v`, arcs that become adjacent are tested, and the punctured one of a crossing pair
+//!   is deleted. `O(|L_v| log |L_v|)` exact predicates, the same for hull vertices (whose
+//!   link is a disk on the sphere; the thesis projects those onto a plane instead).
+//! - **The sign table**: for every segment `ab` of `L_v` the signs of
+//!   `orient3d(v, a, b, c)` for all neighbours `c` are tabulated once (`|L_v|·|N(v)|`
+//!   filtered tests, one dot product each). Seen from `v`, two segments can only puncture
+//!   one another's triangles when their arcs on the sphere of directions cross, which needs
+//!   each to straddle the other's plane through `v` (a bitmask test) and the two candidate
+//!   crossing points `±(a×b)×(c×d)` to agree (a sign comparison). Deletions are tested
+//!   against the whole of `L(v)` at once, with no order at all. `O(|L_v|·(|N(v)| +
+//!   |L_v|))` cheap tests: fine on small links, quadratic on the skew-lines family.
 //!
-//! The embedding. The link triangles come first from the same sign table: for each kept
-//! segment `ab`, the apex on each side of the plane `vab` is the common kept neighbour of `a`
-//! and `b` nearest in angle around `v→a`. When that gives a consistent triangulated sphere
+//! Both end in one exact `orient3d(a, b, c, d)` per crossing, which tells which segment is
+//! nearer `v` (or that they intersect: a witness).
+//!
+//! The embedding. The link triangles come first from signs (the table's, or computed for
+//! the few candidates): for each kept segment `ab`, the apex on each side of the plane
+//! `vab` is the common kept neighbour of `a` and `b` nearest in angle around `v→a`. When that gives a consistent triangulated sphere
 //! (or disk on the hull) it is the link; otherwise the surviving segments are sorted exactly
 //! by angle around each link vertex (a rotation system) and its faces traced, which either
 //! yields the link or names what is wrong. Each link triangle must be a positively oriented
@@ -40,13 +47,6 @@
 //! connected sphere (Euler characteristic 2, so Theorem 2.4's count holds). These checks only
 //! need to be *complete*: soundness of a YES comes from the independent verifier.
 //!
-//! Departure from the thesis: CHECK-TRIANGULATION and CHECK-CLOSED-TRIANGULATION find
-//! crossings by a plane or sphere sweep in `O(|L_v| log |L_v|)` exact steps. The sign table
-//! above needs no sweep order, no seam and no poles (the exact-arithmetic pitfalls of a
-//! sphere sweep), and on real meshes (`|N(v)|` ≈ 16, `|L_v|` ≈ 46) it is cheaper; its
-//! `O(|L_v|·|N(v)| + |L_v|^2)` bound is worse than the sweep's only when links are huge
-//! (the skew-lines family), where an exact sweep remains future work.
-
 use super::graph::Graph;
 use super::rotation::{connected, trace_faces};
 use super::witness::{Witness, WitnessKind, ids};
@@ -60,6 +60,21 @@ pub(super) struct Ctx<'a> {
     pub pts: &'a [Point3],
     pub g: &'a Graph,
     pub hull: &'a Hull3,
+    pub method: LinkMethod,
+}
+
+/// How the per-vertex pass finds the punctured segments of `L_v`. Both give the same
+/// verdict; each is tested against the other and against the brute-force oracle.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum LinkMethod {
+    /// The exact sphere sweep of thesis §2.4.2: `O(|L_v| log |L_v|)` exact tests, the
+    /// faster on every family we measured (Delaunay, grids, skew lines).
+    #[default]
+    Sweep,
+    /// A table of the signs of every neighbour against every segment's plane through `v`
+    /// and a bitmask test per pair of segments: `O(|L_v|·(|N(v)| + |L_v|))` cheap tests,
+    /// no sweep order at all (the independent second method).
+    SignTable,
 }
 
 /// The link triangles of `v` (each `(a, b, c)` with `(v, a, b, c)` positively oriented), or
@@ -85,6 +100,7 @@ struct Buffers {
     fill: Vec<u32>,
     adj: Vec<u32>,
     faces: Vec<[u32; 3]>,
+    sweep: super::sweep::Buffers,
 }
 
 thread_local! {
@@ -118,9 +134,28 @@ fn link_with(ctx: &Ctx, v: u32, b: &mut Buffers, out: &mut Vec<[u32; 3]>) -> Res
         d: &b.dirs,
         frame,
     };
+    let csr = (&mut b.deg, &mut b.fill, &mut b.adj, &mut b.faces);
+    if ctx.method == LinkMethod::Sweep {
+        b.keep.clear();
+        b.keep.resize(b.edges.len(), true);
+        if super::sweep::puncture_free(&lv, &b.edges, &mut b.keep, &mut b.sweep)? {
+            let edges = &b.edges;
+            let side = |e: usize, c: u32| {
+                let (a, b) = edges[e];
+                lv.orient(a as usize, b as usize, c as usize)
+            };
+            if faces_from_signs(&lv, ctx.hull, edges, &b.keep, side, csr) {
+                out.extend(b.faces.iter().step_by(3).map(|f| f.map(|x| lv.g(x))));
+                return Ok(());
+            }
+            out.extend(faces_from_rotation(&lv, ctx.hull, &b.edges, &b.keep)?);
+            return Ok(());
+        }
+    }
     puncture_free(&lv, &b.edges, &mut b.side, &mut b.keep, &mut b.masks)?;
     let csr = (&mut b.deg, &mut b.fill, &mut b.adj, &mut b.faces);
-    if faces_from_signs(&lv, ctx.hull, &b.edges, &b.keep, &b.side, csr) {
+    let side = |e: usize, c: u32| b.side[e * k + c as usize];
+    if faces_from_signs(&lv, ctx.hull, &b.edges, &b.keep, side, csr) {
         out.extend(b.faces.iter().step_by(3).map(|f| f.map(|x| lv.g(x))));
         return Ok(());
     }
@@ -166,7 +201,7 @@ fn faces_from_signs(
     hull: &Hull3,
     edges: &[(u32, u32)],
     keep: &[bool],
-    side: &[i8],
+    side: impl Fn(usize, u32) -> i8,
     (deg, fill, adj, faces): CsrBuffers,
 ) -> bool {
     let k = lv.nb.len();
@@ -205,35 +240,29 @@ fn faces_from_signs(
             continue;
         }
         kept_edges += 1;
-        let row = &side[e * k..(e + 1) * k];
         let (mut plus, mut minus) = (u32::MAX, u32::MAX);
         let (na, nb) = (nbr(a), nbr(b));
-        let (mut i, mut j) = (0, 0);
-        while i < na.len() && j < nb.len() {
-            match na[i].cmp(&nb[j]) {
-                Ordering::Less => i += 1,
-                Ordering::Greater => j += 1,
-                Ordering::Equal => {
-                    let c = na[i];
-                    i += 1;
-                    j += 1;
-                    // Around the axis v→a, the face apex on each side is the candidate
-                    // nearest to b in angle (orient3d(v, a, x, y) > 0: x comes first ccw).
-                    let (slot, nearer) = match row[c as usize] {
-                        1 => (&mut plus, 1),
-                        -1 => (&mut minus, -1),
-                        _ => continue,
-                    };
-                    if *slot != u32::MAX {
-                        match lv.orient(a as usize, c as usize, *slot as usize) * nearer {
-                            1 => {}
-                            -1 => continue,
-                            _ => return false,
-                        }
-                    }
-                    *slot = c;
+        let mut ambiguous = false;
+        intersect_sorted(na, nb, |j| {
+            let c = nb[j];
+            // Around the axis v→a, the face apex on each side is the candidate nearest to
+            // b in angle (orient3d(v, a, x, y) > 0: x comes first ccw).
+            let (slot, nearer) = match side(e, c) {
+                1 => (&mut plus, 1),
+                -1 => (&mut minus, -1),
+                _ => return,
+            };
+            if *slot != u32::MAX {
+                match lv.orient(a as usize, c as usize, *slot as usize) * nearer {
+                    1 => {}
+                    -1 => return,
+                    _ => ambiguous = true,
                 }
             }
+            *slot = c;
+        });
+        if ambiguous {
+            return false;
         }
         for (apex, tri) in [(plus, [a, b, plus]), (minus, [b, a, minus])] {
             if apex != u32::MAX {
@@ -281,13 +310,14 @@ fn bad(v: u32, detail: String) -> Witness {
     Witness::new(WitnessKind::BadLink, vec![v], vec![], detail)
 }
 
-struct LocalView<'a> {
-    v: u32,
-    pv: &'a Point3,
-    nb: &'a [u32],
-    p: &'a [Point3],
-    d: &'a [Dir],
-    frame: Frame,
+/// The neighbourhood of one vertex `v` in local indices (positions in `nb`).
+pub(super) struct LocalView<'a> {
+    pub v: u32,
+    pub pv: &'a Point3,
+    pub nb: &'a [u32],
+    pub p: &'a [Point3],
+    pub d: &'a [Dir],
+    pub frame: Frame,
 }
 
 impl LocalView<'_> {
@@ -298,7 +328,8 @@ impl LocalView<'_> {
             &self.p[a], &self.p[b], &self.p[c], &self.d[a], &self.d[b], &self.d[c],
         )
     }
-    fn g(&self, i: u32) -> u32 {
+    /// The global index of local vertex `i`.
+    pub fn g(&self, i: u32) -> u32 {
         self.nb[i as usize]
     }
 }
@@ -342,17 +373,48 @@ fn same_direction(
 }
 
 /// The segments among neighbours, as pairs of local indices (listed from the neighbours'
-/// sorted adjacency lists, never by scanning all segments).
+/// sorted adjacency lists, never by scanning all segments). Each neighbour's list is
+/// intersected with the neighbours after it by galloping, so the work adapts to how the
+/// two lists interleave: on the skew-lines family, where a neighbour has Θ(n) neighbours
+/// of its own but shares four with `v`, it is logarithmic instead of linear.
 fn local_edges(g: &Graph, nb: &[u32], edges: &mut Vec<(u32, u32)>) {
     edges.clear();
     for (i, &a) in nb.iter().enumerate() {
-        let rest = &nb[i + 1..];
-        for &b in g.nbrs(a).iter().filter(|&&b| b > a) {
-            if let Ok(j) = rest.binary_search(&b) {
-                edges.push((i as u32, (i + 1 + j) as u32));
+        let na = g.nbrs(a);
+        let after = &na[na.partition_point(|&b| b <= a)..];
+        intersect_sorted(after, &nb[i + 1..], |j| {
+            edges.push((i as u32, (i + 1 + j) as u32));
+        });
+    }
+}
+
+/// Calls `found(j)` for every `y[j]` that is also in `x` (both sorted, no repeats), by
+/// galloping: `O(r log(len / r))` comparisons for `r` alternations between the lists.
+fn intersect_sorted(x: &[u32], y: &[u32], mut found: impl FnMut(usize)) {
+    let (mut i, mut j) = (0, 0);
+    while i < x.len() && j < y.len() {
+        match x[i].cmp(&y[j]) {
+            Ordering::Equal => {
+                found(j);
+                i += 1;
+                j += 1;
             }
+            Ordering::Less => i = gallop(x, i, y[j]),
+            Ordering::Greater => j = gallop(y, j, x[i]),
         }
     }
+}
+
+/// The first index after `from` whose entry is at least `t` (`s[from] < t`): exponential,
+/// then binary search.
+fn gallop(s: &[u32], from: usize, t: u32) -> usize {
+    let (mut lo, mut step) = (from, 1);
+    while lo + step < s.len() && s[lo + step] < t {
+        lo += step;
+        step *= 2;
+    }
+    let hi = (lo + step).min(s.len());
+    lo + 1 + s[lo + 1..hi].partition_point(|&e| e < t)
 }
 
 /// Which segments of `L_v` survive the generalized puncture rule.
@@ -466,7 +528,7 @@ fn puncture_free(
 /// are `orient3d(c, d, v, a) = sa` and `orient3d(c, d, b, v) = −orient3d(v, c, d, b) = sa`;
 /// the third, `orient3d(c, d, a, b) = orient3d(a, b, c, d)`, is the only new test, and
 /// symmetrically for `ab` inside `vcd` (against `sc`).
-fn crossing(
+pub(super) fn crossing(
     lv: &LocalView,
     (a, b): (u32, u32),
     (c, d): (u32, u32),
@@ -667,7 +729,8 @@ mod tests {
     use crate::generate;
 
     /// The sign-table fast path and the exact rotation system agree on every vertex of
-    /// valid tetrahedralizations (grids, random, cospherical, skew lines).
+    /// valid tetrahedralizations (grids, random, cospherical, skew lines), and the sphere
+    /// sweep keeps exactly the segments the sign table keeps (the link).
     #[test]
     fn fast_faces_agree_with_rotation_system() {
         let meshes = [
@@ -676,6 +739,8 @@ mod tests {
             generate::random_tetrahedralization(200, 300, 4, Some(6)),
             generate::tetrahedralize_points(generate::cospherical_points(50), 2),
             generate::skew_lines(16),
+            generate::skew_lines(61),
+            generate::kuhn(5),
         ];
         let mut fast_hits = 0;
         for t in &meshes {
@@ -699,6 +764,12 @@ mod tests {
                 local_edges(&g, nb, &mut edges);
                 let (mut side, mut keep, mut masks) = (Vec::new(), Vec::new(), Vec::new());
                 puncture_free(&lv, &edges, &mut side, &mut keep, &mut masks).unwrap();
+                let mut swept = vec![true; edges.len()];
+                let mut bufs = Default::default();
+                let swept_ok =
+                    super::super::sweep::puncture_free(&lv, &edges, &mut swept, &mut bufs);
+                assert!(swept_ok.unwrap());
+                assert_eq!(swept, keep, "sweep and sign table disagree at vertex {v}");
                 let mut slow = faces_from_rotation(&lv, &hull, &edges, &keep).unwrap();
                 let norm = |f: &mut Vec<[u32; 3]>| {
                     for x in f.iter_mut() {
@@ -710,7 +781,9 @@ mod tests {
                 norm(&mut slow);
                 let mut bufs = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
                 let csr = (&mut bufs.0, &mut bufs.1, &mut bufs.2, &mut bufs.3);
-                if faces_from_signs(&lv, &hull, &edges, &keep, &side, csr) {
+                let k = nb.len();
+                let side = |e: usize, c: u32| side[e * k + c as usize];
+                if faces_from_signs(&lv, &hull, &edges, &keep, side, csr) {
                     let mut fast: Vec<[u32; 3]> = bufs
                         .3
                         .iter()

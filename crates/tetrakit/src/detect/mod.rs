@@ -12,10 +12,10 @@
 //! 4. (Step 4) every tetrahedron must be found from all four of its vertices;
 //! 5. the tetrahedra are certified by [`crate::mesh::verify`] and `edges(T) = L` is checked.
 //!
-//! Work is output-sensitive: `L_v` is listed from the adjacency lists of `v`'s neighbours,
-//! never by scanning all of `L`, and the per-vertex work is `O(|L_v|·(|N(v)| + |L_v|))`
-//! with the crossing tests reduced to table look-ups. Memory is linear in `|L|` plus the
-//! link triangles.
+//! Work is output-sensitive: `L_v` is listed from the adjacency lists of `v`'s neighbours
+//! (galloping intersections, never a scan of all of `L`), and the link is freed of
+//! punctured segments by the thesis's sphere sweep with `O(|L_v| log |L_v|)` exact
+//! predicates. Memory is linear in `|L|` plus the link triangles.
 //!
 //! A NO always carries a [`Witness`]. Each check above is *complete* (it never rejects the
 //! edge set of a tetrahedralization), so a failed check is a correct NO; crossing segments
@@ -26,9 +26,11 @@ mod link;
 pub mod oracle;
 mod planar;
 mod rotation;
+mod sweep;
 mod witness;
 
 pub use graph::Graph;
+pub use link::LinkMethod;
 pub use witness::{Witness, WitnessKind};
 pub use witness::{ids, renumber_text};
 
@@ -105,6 +107,24 @@ pub fn detect_with_progress(
     segments: &[(u32, u32)],
     progress: Progress,
 ) -> Result<Detection, String> {
+    detect_with(points, segments, LinkMethod::Sweep, progress)
+}
+
+/// [`detect_with_progress`] with a choice of how links are computed. Both methods give
+/// the same verdict; they differ only in work.
+///
+/// ```
+/// use tetrakit::detect::{detect_with, LinkMethod};
+/// let t = tetrakit::generate::skew_lines(12);
+/// let d = detect_with(&t.points, &t.edges(), LinkMethod::SignTable, &|_, _| {}).unwrap();
+/// assert!(d.is_yes());
+/// ```
+pub fn detect_with(
+    points: &[Point3],
+    segments: &[(u32, u32)],
+    method: LinkMethod,
+    progress: Progress,
+) -> Result<Detection, String> {
     let n = points.len();
     if let Some(k) = segments
         .iter()
@@ -125,7 +145,7 @@ pub fn detect_with_progress(
         .iter()
         .map(|s| [rank[s[0] as usize], rank[s[1] as usize]])
         .collect();
-    let Ok(mut d) = detect_ordered(&pts, &segs, progress) else {
+    let Ok(mut d) = detect_ordered(&pts, &segs, method, progress) else {
         // Only a repeated segment gets here: name it in the caller's numbering.
         let orig: Vec<[u32; 2]> = segments.iter().map(|&(a, b)| [a, b]).collect();
         return Err(Graph::new(n, &orig)
@@ -173,6 +193,7 @@ fn spatial_order(points: &[Point3]) -> Vec<u32> {
 fn detect_ordered(
     points: &[Point3],
     segs: &[[u32; 2]],
+    method: LinkMethod,
     progress: Progress,
 ) -> Result<Detection, String> {
     let mut phases = Phases::new();
@@ -212,7 +233,7 @@ fn detect_ordered(
         return Ok(out);
     }
     out.hull_vertices = (0..points.len()).filter(|&i| hull.on_boundary(i)).count();
-    out.result = detect3(points, &g, &hull, progress);
+    out.result = detect3(points, &g, &hull, method, progress);
     Ok(out)
 }
 
@@ -235,6 +256,7 @@ fn detect3(
     points: &[Point3],
     g: &Graph,
     hull: &Hull3,
+    method: LinkMethod,
     progress: Progress,
 ) -> Result<Cells, Witness> {
     let mut phases = Phases::new();
@@ -246,6 +268,7 @@ fn detect3(
         pts: points,
         g,
         hull,
+        method,
     };
     let n = points.len();
     // Each rayon piece is a run of consecutive vertices whose link triangles go to one flat

@@ -14,6 +14,19 @@ pub(super) fn trace_faces(rot: &[Vec<u32>]) -> Vec<Vec<u32>> {
     for i in 0..k {
         start[i + 1] = start[i] + rot[i].len();
     }
+    // by_nbr[start[y]..start[y + 1]]: (x, position of x in rot[y]), sorted by x, so the
+    // reverse of a dart is found by binary search (high-degree vertices stay cheap).
+    let mut by_nbr: Vec<(u32, u32)> = Vec::with_capacity(start[k]);
+    for r in rot {
+        let from = by_nbr.len();
+        by_nbr.extend(r.iter().enumerate().map(|(p, &x)| (x, p as u32)));
+        by_nbr[from..].sort_unstable();
+    }
+    let position = |y: usize, x: usize| {
+        let row = &by_nbr[start[y]..start[y + 1]];
+        row.binary_search_by_key(&(x as u32), |e| e.0)
+            .map_or(0, |i| row[i].1 as usize)
+    };
     let mut seen = vec![false; start[k]];
     let mut faces = Vec::new();
     for a in 0..k {
@@ -27,7 +40,7 @@ pub(super) fn trace_faces(rot: &[Vec<u32>]) -> Vec<Vec<u32>> {
                 seen[start[x] + px] = true;
                 cycle.push(x as u32);
                 let y = rot[x][px] as usize;
-                let back = rot[y].iter().position(|&z| z as usize == x).unwrap_or(0);
+                let back = position(y, x);
                 (x, px) = (y, (back + rot[y].len() - 1) % rot[y].len());
             }
             faces.push(cycle);
