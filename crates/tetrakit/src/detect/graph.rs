@@ -76,6 +76,14 @@ impl Graph {
         &self.nbrs[self.start[v as usize]..self.start[v as usize + 1]]
     }
 
+    /// Where `b` sits in the flat adjacency array (within `a`'s row), if `ab` is a segment:
+    /// a dense index for per-dart flags (`0..2 × edge_count()`).
+    #[inline]
+    pub fn slot(&self, a: u32, b: u32) -> Option<usize> {
+        let from = self.start[a as usize];
+        self.nbrs(a).binary_search(&b).ok().map(|i| from + i)
+    }
+
     /// True when `ab` is a segment.
     #[inline]
     pub fn has_edge(&self, a: u32, b: u32) -> bool {

@@ -315,13 +315,13 @@ fn detect3(
     if let Some(w) = witness {
         return Err(sharpen(points, g, w));
     }
-    let mut links = Links {
-        chunks: pieces
+    let mut links = Links::new(
+        pieces
             .into_iter()
             .map(|(c, _)| c)
             .filter(|c| c.first != u32::MAX)
             .collect(),
-    };
+    );
     phases.mark("links");
     let tets = confirm(&mut links).map_err(|w| sharpen(points, g, w))?;
     phases.mark("confirm");
@@ -360,31 +360,24 @@ fn sharpen(points: &[Point3], g: &Graph, w: Witness) -> Witness {
 
 /// `edges(T) = L`: every edge of a tetrahedron is a segment, and every segment is used.
 fn edges_are_segments(tets: &[[u32; 4]], g: &Graph) -> Result<(), Witness> {
-    let n = g.len();
-    let mut used: Vec<Vec<bool>> = (0..n as u32)
-        .map(|v| vec![false; g.nbrs(v).len()])
-        .collect();
+    let mut used = vec![false; 2 * g.edge_count()];
     for t in tets {
         for (i, j) in [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)] {
             let (x, y) = (t[i].min(t[j]), t[i].max(t[j]));
-            match g.nbrs(x).binary_search(&y) {
-                Ok(pos) => used[x as usize][pos] = true,
-                Err(_) => {
-                    return Err(Witness::new(
-                        WitnessKind::Inconsistent,
-                        vec![x, y],
-                        vec![],
-                        format!(
-                            "a tetrahedron found has edge (#{x}, #{y}), which is not a segment"
-                        ),
-                    ));
-                }
-            }
+            let Some(slot) = g.slot(x, y) else {
+                return Err(Witness::new(
+                    WitnessKind::Inconsistent,
+                    vec![x, y],
+                    vec![],
+                    format!("a tetrahedron found has edge (#{x}, #{y}), which is not a segment"),
+                ));
+            };
+            used[slot] = true;
         }
     }
-    for x in 0..n as u32 {
-        for (pos, &y) in g.nbrs(x).iter().enumerate() {
-            if y > x && !used[x as usize][pos] {
+    for x in 0..g.len() as u32 {
+        for &y in g.nbrs(x).iter().filter(|&&y| y > x) {
+            if !g.slot(x, y).is_some_and(|s| used[s]) {
                 return Err(Witness::new(
                     WitnessKind::Inconsistent,
                     vec![x, y],
@@ -427,11 +420,22 @@ struct LinkChunk {
 /// The link triangles of every vertex, in runs.
 struct Links {
     chunks: Vec<LinkChunk>,
+    /// The run holding each vertex.
+    chunk_of: Vec<u32>,
 }
 
 impl Links {
+    /// The runs, in order of their first vertex, covering `0..n` without gaps.
+    fn new(chunks: Vec<LinkChunk>) -> Self {
+        let mut chunk_of = Vec::new();
+        for (i, c) in chunks.iter().enumerate() {
+            chunk_of.resize(chunk_of.len() + c.start.len() - 1, i as u32);
+        }
+        Links { chunks, chunk_of }
+    }
+
     fn of(&self, v: u32) -> &[[u32; 3]] {
-        let c = &self.chunks[self.chunks.partition_point(|c| c.first <= v) - 1];
+        let c = &self.chunks[self.chunk_of[v as usize] as usize];
         let i = (v - c.first) as usize;
         &c.faces[c.start[i] as usize..c.start[i + 1] as usize]
     }
@@ -479,12 +483,9 @@ fn confirm(links: &mut Links) -> Result<Vec<[u32; 4]>, Witness> {
             .binary_search(&crate::mesh::sorted_face(f))
             .is_ok()
     };
-    let unconfirmed = tets.par_iter().find_any(|t| {
-        (1..4).any(|i| {
-            let o: Vec<u32> = (0..4).filter(|&j| j != i).map(|j| t[j]).collect();
-            !found(t[i], [o[0], o[1], o[2]])
-        })
-    });
+    let unconfirmed = tets
+        .par_iter()
+        .find_any(|t| (1..4).any(|i| !found(t[i], opposite(t, i))));
     if let Some(t) = unconfirmed {
         return Err(unconfirmed_witness(*t, &found));
     }
@@ -503,12 +504,14 @@ fn confirm(links: &mut Links) -> Result<Vec<[u32; 4]>, Witness> {
     Ok(tets)
 }
 
+/// The face of `t` opposite its `i`-th vertex.
+fn opposite(t: &[u32; 4], i: usize) -> [u32; 3] {
+    std::array::from_fn(|j| t[if j < i { j } else { j + 1 }])
+}
+
 fn unconfirmed_witness(t: [u32; 4], found: &dyn Fn(u32, [u32; 3]) -> bool) -> Witness {
     let from: Vec<u32> = (0..4)
-        .filter(|&i| {
-            let o: Vec<u32> = (0..4).filter(|&j| j != i).map(|j| t[j]).collect();
-            found(t[i], [o[0], o[1], o[2]])
-        })
+        .filter(|&i| found(t[i], opposite(&t, i)))
         .map(|i| t[i])
         .collect();
     let mut s = t;
@@ -542,13 +545,11 @@ mod tests {
                 faces.extend(fs);
                 start.push(faces.len() as u32);
             }
-            Links {
-                chunks: vec![LinkChunk {
-                    first: 0,
-                    start,
-                    faces,
-                }],
-            }
+            Links::new(vec![LinkChunk {
+                first: 0,
+                start,
+                faces,
+            }])
         };
         let full = vec![
             vec![[1, 2, 3]],

@@ -106,8 +106,9 @@ pub(super) struct Buffers {
     leaving: Vec<u32>,
     /// Arcs met by the sweeping meridian, south to north.
     status: Vec<u32>,
-    /// The neighbours in sweep order.
+    /// The neighbours in sweep order, and their rounded longitudes.
     order: Vec<u32>,
+    rough: Vec<f64>,
 }
 
 struct Sweep<'a, 'k> {
@@ -258,25 +259,64 @@ impl Sweep<'_, '_> {
     }
 
     /// The neighbours in sweep order: by half, then west to east, then south to north.
+    /// A floating-point longitude proposes the order and the exact comparison certifies
+    /// each consecutive pair (one test per neighbour); any doubt sorts exactly.
     fn event_order(&mut self, k: usize) {
-        let (y, r) = (k, k + 1);
         let mut order = std::mem::take(&mut self.b.order);
+        let mut longitude = std::mem::take(&mut self.b.rough);
+        self.rough_longitudes(k, &mut longitude);
         order.clear();
         order.extend(0..k as u32);
-        let half = &self.b.half;
-        order.sort_by(|&a, &b| {
-            let (a, b) = (a as usize, b as usize);
-            half[a].cmp(&half[b]).then_with(|| match self.o(y, a, b) {
-                1 => Ordering::Less,
-                -1 => Ordering::Greater,
-                // One meridian: R is west of it in the first half, east in the second.
-                _ => {
-                    let north = self.o(b, a, r) * if half[a] == 0 { 1 } else { -1 };
-                    north.cmp(&0)
-                }
-            })
-        });
+        order.sort_unstable_by(|&a, &b| longitude[a as usize].total_cmp(&longitude[b as usize]));
+        let cmp = |a: &u32, b: &u32| self.event_cmp(k, *a as usize, *b as usize);
+        if order
+            .windows(2)
+            .any(|w| cmp(&w[0], &w[1]) != Ordering::Less)
+        {
+            order.sort_by(cmp);
+        }
         self.b.order = order;
+        self.b.rough = longitude;
+    }
+
+    /// The exact sweep order of two neighbours.
+    fn event_cmp(&self, k: usize, a: usize, b: usize) -> Ordering {
+        let (y, r, half) = (k, k + 1, &self.b.half);
+        half[a].cmp(&half[b]).then_with(|| match self.o(y, a, b) {
+            1 => Ordering::Less,
+            -1 => Ordering::Greater,
+            // One meridian: R is west of it in the first half, east in the second.
+            _ => {
+                let north = self.o(b, a, r) * if half[a] == 0 { 1 } else { -1 };
+                north.cmp(&0)
+            }
+        })
+    }
+
+    /// A monotone stand-in for each neighbour's longitude, in `[0, 4)`, rounded (a guess
+    /// for the order; never trusted).
+    fn rough_longitudes(&self, k: usize, out: &mut Vec<f64>) {
+        let (yd, rd) = (self.b.d[k].d, self.b.d[k + 1].d);
+        let dot = |a: &Point3, b: &Point3| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        let t = dot(&rd, &yd) / dot(&yd, &yd);
+        let u: Point3 = std::array::from_fn(|i| rd[i] - t * yd[i]);
+        let w = [
+            yd[1] * u[2] - yd[2] * u[1],
+            yd[2] * u[0] - yd[0] * u[2],
+            yd[0] * u[1] - yd[1] * u[0],
+        ];
+        out.clear();
+        out.extend(self.b.d[..k].iter().map(|d| {
+            let (x, y) = (dot(&d.d, &u), dot(&d.d, &w));
+            let s = x.abs() + y.abs();
+            let (x, y) = if s > 0.0 { (x / s, y / s) } else { (1.0, 0.0) };
+            match (y >= 0.0, x >= 0.0) {
+                (true, true) => y,
+                (true, false) => 1.0 - x,
+                (false, false) => 2.0 - y,
+                (false, true) => 3.0 + x,
+            }
+        }));
     }
 
     /// Sign of "`c` is north of arc `x`" at `c`'s meridian (0: on it, or an end of it).

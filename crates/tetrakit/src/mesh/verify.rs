@@ -320,7 +320,7 @@ fn pair_bucket(a: u32, recs: &mut [(u64, u32)]) -> (Vec<BoundaryFace>, Vec<Probl
         let j = i + recs[i..].iter().take_while(|r| r.0 == key).count();
         let face = [a, (key >> 32) as u32, key as u32];
         let group = &recs[i..j];
-        let tets: Vec<u32> = group.iter().map(|r| r.1 >> 1).collect();
+        let tets = || -> Vec<u32> { group.iter().map(|r| r.1 >> 1).collect() };
         match group.len() {
             1 => {
                 let odd = group[0].1 & 1 == 1;
@@ -329,30 +329,32 @@ fn pair_bucket(a: u32, recs: &mut [(u64, u32)]) -> (Vec<BoundaryFace>, Vec<Probl
                 } else {
                     face
                 };
-                boundary.push(BoundaryFace { v, tet: tets[0] });
+                boundary.push(BoundaryFace {
+                    v,
+                    tet: group[0].1 >> 1,
+                });
             }
             2 if (group[0].1 ^ group[1].1) & 1 == 1 => {}
-            2 => problems.push(problem(
-                ProblemKind::SameSide,
-                tets.clone(),
-                face.to_vec(),
-                format!(
+            2 => {
+                let tets = tets();
+                let detail = format!(
                     "tetrahedra #{} and #{} lie on the same side of their common face {}",
                     tets[0],
                     tets[1],
                     ids(&face)
-                ),
-            )),
-            k => problems.push(problem(
-                ProblemKind::FaceSharedByMore,
-                tets.clone(),
-                face.to_vec(),
-                format!(
+                );
+                problems.push(problem(ProblemKind::SameSide, tets, face.to_vec(), detail));
+            }
+            k => {
+                let tets = tets();
+                let detail = format!(
                     "triangle {} is a face of {k} tetrahedra {}",
                     ids(&face),
                     ids(&tets)
-                ),
-            )),
+                );
+                let kind = ProblemKind::FaceSharedByMore;
+                problems.push(problem(kind, tets, face.to_vec(), detail));
+            }
         }
         i = j;
     }
