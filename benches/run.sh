@@ -57,9 +57,25 @@ with open(sys.argv[2],'w') as f:
   [ -f "$WORK/r$n.1.edge" ] || tetgen -eQ "$node" >/dev/null
   row "Delaunay, $n random points" "$WORK/r$n.1.node" "$WORK/r$n.1.edge"
 done
-for n in 100 200 400; do
+for n in ${SKEW:-100 200 400 800 1600}; do
   "$TK" generate skew-lines --points "$n" -o "$WORK/skew$n.ele" >/dev/null
   row "skew lines, $n points" "$WORK/skew$n.node" "$WORK/skew$n.edge"
+done
+
+# The two link methods on the same inputs: the sphere sweep (default) and the sign table.
+links_time() { # file method -> median seconds of the per-vertex phase
+  for _ in $(seq "$RUNS"); do
+    TETRAKIT_PHASES=1 "$TK" detect "$1" --links "$2" 2>&1 >/dev/null | awk '/phase links/{print $3}'
+  done | median
+}
+echo
+echo "| input | links phase, sweep s | links phase, sign table s | table / sweep |"
+echo "|---|---|---|---|"
+for f in ${LINKS_INPUTS:-r100000.1 skew400 skew800 skew1600}; do
+  [ -f "$WORK/$f.edge" ] || continue
+  sw=$(links_time "$WORK/$f.edge" sweep)
+  tb=$(links_time "$WORK/$f.edge" table)
+  python3 -c "import sys;f,a,b=sys.argv[1],float(sys.argv[2]),float(sys.argv[3]);print(f'| {f} | {a:.3f} | {b:.3f} | {b/a:.1f} |')" "$f" "$sw" "$tb"
 done
 echo
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs), $(free -g | awk '/Mem/{print $2}') GiB; $(date -u +%Y-%m-%d)"

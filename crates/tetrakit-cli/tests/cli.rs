@@ -50,6 +50,30 @@ fn generate_then_detect_yes_with_json_fields() {
     assert!(vtk.contains("CELL_TYPES 162"));
 }
 
+/// Both link methods give the same verdicts and tetrahedra on skew lines (huge links),
+/// valid and corrupted; an unknown method is a usage error.
+#[test]
+fn link_methods_agree() {
+    let d = dir("links");
+    for corrupt in [None, Some("add-crossing"), Some("drop-edge")] {
+        let ele = d.join(format!("s{}.ele", corrupt.unwrap_or("ok")));
+        let mut args = vec!["generate", "skew-lines", "--points", "60", "-o", s(&ele)];
+        args.extend(corrupt.map(|c| ["--corrupt", c]).into_iter().flatten());
+        assert!(run(&args).status.success());
+        let edge = ele.with_extension("edge");
+        let out: Vec<serde_json::Value> = ["sweep", "table"]
+            .iter()
+            .map(|m| json(&run(&["detect", s(&edge), "--json", "--links", m])))
+            .collect();
+        assert_eq!(out[0]["verdict"], out[1]["verdict"], "{corrupt:?}");
+        assert_eq!(out[0]["tetrahedra"], out[1]["tetrahedra"], "{corrupt:?}");
+        let want = if corrupt.is_none() { "yes" } else { "no" };
+        assert_eq!(out[0]["verdict"], want, "{corrupt:?}");
+    }
+    let o = run(&["detect", "x.edge", "--links", "fast"]);
+    assert_eq!(o.status.code(), Some(2));
+}
+
 #[test]
 fn corrupted_instances_give_no_with_witness_in_file_numbering() {
     let d = dir("no");
