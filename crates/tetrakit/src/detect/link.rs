@@ -134,32 +134,30 @@ fn link_with(ctx: &Ctx, v: u32, b: &mut Buffers, out: &mut Vec<[u32; 3]>) -> Res
         d: &b.dirs,
         frame,
     };
-    let csr = (&mut b.deg, &mut b.fill, &mut b.adj, &mut b.faces);
-    if ctx.method == LinkMethod::Sweep {
-        b.keep.clear();
-        b.keep.resize(b.edges.len(), true);
-        if super::sweep::puncture_free(&lv, &b.edges, &mut b.keep, &mut b.sweep)? {
-            let edges = &b.edges;
-            let side = |e: usize, c: u32| {
-                let (a, b) = edges[e];
-                lv.orient(a as usize, b as usize, c as usize)
-            };
-            if faces_from_signs(&lv, ctx.hull, edges, &b.keep, side, csr) {
-                out.extend(b.faces.iter().step_by(3).map(|f| f.map(|x| lv.g(x))));
-                return Ok(());
-            }
-            out.extend(faces_from_rotation(&lv, ctx.hull, &b.edges, &b.keep)?);
-            return Ok(());
-        }
+    // The sweep clears `keep` for punctured segments; without a valid pole (adversarial
+    // input only) the sign table decides instead.
+    b.keep.clear();
+    b.keep.resize(b.edges.len(), true);
+    let swept = ctx.method == LinkMethod::Sweep
+        && super::sweep::puncture_free(&lv, &b.edges, &mut b.keep, &mut b.sweep)?;
+    if !swept {
+        puncture_free(&lv, &b.edges, &mut b.side, &mut b.keep, &mut b.masks)?;
     }
-    puncture_free(&lv, &b.edges, &mut b.side, &mut b.keep, &mut b.masks)?;
+    let (edges, table) = (&b.edges, &b.side);
+    let side = |e: usize, c: u32| {
+        if swept {
+            let (a, b) = edges[e];
+            lv.orient(a as usize, b as usize, c as usize)
+        } else {
+            table[e * k + c as usize]
+        }
+    };
     let csr = (&mut b.deg, &mut b.fill, &mut b.adj, &mut b.faces);
-    let side = |e: usize, c: u32| b.side[e * k + c as usize];
-    if faces_from_signs(&lv, ctx.hull, &b.edges, &b.keep, side, csr) {
+    if faces_from_signs(&lv, ctx.hull, edges, &b.keep, side, csr) {
         out.extend(b.faces.iter().step_by(3).map(|f| f.map(|x| lv.g(x))));
         return Ok(());
     }
-    out.extend(faces_from_rotation(&lv, ctx.hull, &b.edges, &b.keep)?);
+    out.extend(faces_from_rotation(&lv, ctx.hull, edges, &b.keep)?);
     Ok(())
 }
 
