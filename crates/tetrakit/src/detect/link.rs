@@ -726,11 +726,68 @@ mod tests {
     use super::*;
     use crate::generate;
 
-    /// The sign-table fast path and the exact rotation system agree on every vertex of
-    /// valid tetrahedralizations (grids, random, cospherical, skew lines), and the sphere
-    /// sweep keeps exactly the segments the sign table keeps (the link).
+    /// At every vertex of `t` (a valid tetrahedralization): the sphere sweep keeps exactly
+    /// the segments the sign table keeps (the link), and the faces from signs, when they
+    /// are found, equal the faces of the exact rotation system. Returns how many vertices
+    /// took the fast faces.
+    fn check_methods_agree(t: &crate::mesh::Tetrahedralization) -> usize {
+        let segs: Vec<[u32; 2]> = t.edges().iter().map(|&(a, b)| [a, b]).collect();
+        let g = Graph::new(t.points.len(), &segs).unwrap();
+        let hull = Hull3::new(&t.points);
+        let mut fast_hits = 0;
+        for v in 0..t.points.len() as u32 {
+            let nb = g.nbrs(v);
+            let frame = Frame::new(&t.points[v as usize]);
+            let p: Vec<Point3> = nb.iter().map(|&a| t.points[a as usize]).collect();
+            let d: Vec<Dir> = p.iter().map(|x| frame.dir(x)).collect();
+            let lv = LocalView {
+                v,
+                pv: &t.points[v as usize],
+                nb,
+                p: &p,
+                d: &d,
+                frame,
+            };
+            let mut edges = Vec::new();
+            local_edges(&g, nb, &mut edges);
+            let (mut side, mut keep, mut masks) = (Vec::new(), Vec::new(), Vec::new());
+            puncture_free(&lv, &edges, &mut side, &mut keep, &mut masks).unwrap();
+            let mut swept = vec![true; edges.len()];
+            let mut bufs = Default::default();
+            let swept_ok = super::super::sweep::puncture_free(&lv, &edges, &mut swept, &mut bufs);
+            assert!(swept_ok.unwrap());
+            assert_eq!(swept, keep, "sweep and sign table disagree at vertex {v}");
+            let mut slow = faces_from_rotation(&lv, &hull, &edges, &keep).unwrap();
+            let norm = |f: &mut Vec<[u32; 3]>| {
+                for x in f.iter_mut() {
+                    let m = (0..3).min_by_key(|&i| x[i]).unwrap();
+                    x.rotate_left(m);
+                }
+                f.sort_unstable();
+            };
+            norm(&mut slow);
+            let mut bufs = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+            let csr = (&mut bufs.0, &mut bufs.1, &mut bufs.2, &mut bufs.3);
+            let k = nb.len();
+            let side = |e: usize, c: u32| side[e * k + c as usize];
+            if faces_from_signs(&lv, &hull, &edges, &keep, side, csr) {
+                let mut fast: Vec<[u32; 3]> = bufs
+                    .3
+                    .iter()
+                    .step_by(3)
+                    .map(|f| f.map(|x| lv.g(x)))
+                    .collect();
+                norm(&mut fast);
+                assert_eq!(fast, slow, "vertex {v}");
+                fast_hits += 1;
+            }
+        }
+        fast_hits
+    }
+
+    /// Grids, random, cospherical and skew-lines tetrahedralizations.
     #[test]
-    fn fast_faces_agree_with_rotation_system() {
+    fn link_methods_and_face_paths_agree() {
         let meshes = [
             generate::kuhn(3),
             generate::random_tetrahedralization(300, 600, 3, None),
@@ -740,63 +797,28 @@ mod tests {
             generate::skew_lines(61),
             generate::kuhn(5),
         ];
-        let mut fast_hits = 0;
-        for t in &meshes {
-            let segs: Vec<[u32; 2]> = t.edges().iter().map(|&(a, b)| [a, b]).collect();
-            let g = Graph::new(t.points.len(), &segs).unwrap();
-            let hull = Hull3::new(&t.points);
-            for v in 0..t.points.len() as u32 {
-                let nb = g.nbrs(v);
-                let frame = Frame::new(&t.points[v as usize]);
-                let p: Vec<Point3> = nb.iter().map(|&a| t.points[a as usize]).collect();
-                let d: Vec<Dir> = p.iter().map(|x| frame.dir(x)).collect();
-                let lv = LocalView {
-                    v,
-                    pv: &t.points[v as usize],
-                    nb,
-                    p: &p,
-                    d: &d,
-                    frame,
-                };
-                let mut edges = Vec::new();
-                local_edges(&g, nb, &mut edges);
-                let (mut side, mut keep, mut masks) = (Vec::new(), Vec::new(), Vec::new());
-                puncture_free(&lv, &edges, &mut side, &mut keep, &mut masks).unwrap();
-                let mut swept = vec![true; edges.len()];
-                let mut bufs = Default::default();
-                let swept_ok =
-                    super::super::sweep::puncture_free(&lv, &edges, &mut swept, &mut bufs);
-                assert!(swept_ok.unwrap());
-                assert_eq!(swept, keep, "sweep and sign table disagree at vertex {v}");
-                let mut slow = faces_from_rotation(&lv, &hull, &edges, &keep).unwrap();
-                let norm = |f: &mut Vec<[u32; 3]>| {
-                    for x in f.iter_mut() {
-                        let m = (0..3).min_by_key(|&i| x[i]).unwrap();
-                        x.rotate_left(m);
-                    }
-                    f.sort_unstable();
-                };
-                norm(&mut slow);
-                let mut bufs = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
-                let csr = (&mut bufs.0, &mut bufs.1, &mut bufs.2, &mut bufs.3);
-                let k = nb.len();
-                let side = |e: usize, c: u32| side[e * k + c as usize];
-                if faces_from_signs(&lv, &hull, &edges, &keep, side, csr) {
-                    let mut fast: Vec<[u32; 3]> = bufs
-                        .3
-                        .iter()
-                        .step_by(3)
-                        .map(|f| f.map(|x| lv.g(x)))
-                        .collect();
-                    norm(&mut fast);
-                    assert_eq!(fast, slow, "vertex {v}");
-                    fast_hits += 1;
-                }
-            }
-        }
+        let fast_hits: usize = meshes.iter().map(check_methods_agree).sum();
         assert!(
             fast_hits > 500,
             "the fast path should handle most vertices: {fast_hits}"
         );
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(256))]
+        /// Random tetrahedralizations, on floats or on small integer grids (coplanar and
+        /// cocircular points everywhere), with random flips.
+        #[test]
+        fn link_methods_agree_on_random_tetrahedralizations(
+            n in 8usize..80,
+            flips in 0usize..200,
+            seed in 0u64..1_000_000,
+            grid in proptest::option::of(2u32..6),
+        ) {
+            let t = generate::random_tetrahedralization(n, flips, seed, grid);
+            if !t.tets.is_empty() {
+                check_methods_agree(&t);
+            }
+        }
     }
 }
