@@ -254,9 +254,7 @@ fn outward_faces(t: [u32; 4]) -> [[u32; 3]; 4] {
 }
 
 fn pair_faces(points: &[Point3], tets: &[[u32; 4]]) -> (Vec<BoundaryFace>, Vec<Problem>) {
-    // Bucket every oriented face by its smallest vertex.
     let n = points.len();
-    let mut start = vec![0usize; n + 1];
     let oriented: Vec<Option<[u32; 4]>> = tets
         .par_iter()
         .map(|t| {
@@ -268,28 +266,7 @@ fn pair_faces(points: &[Point3], tets: &[[u32; 4]]) -> (Vec<BoundaryFace>, Vec<P
             }
         })
         .collect();
-    for t in oriented.iter().flatten() {
-        for f in outward_faces(*t) {
-            start[*f.iter().min().unwrap() as usize + 1] += 1;
-        }
-    }
-    for i in 0..n {
-        start[i + 1] += start[i];
-    }
-    let mut fill = start.clone();
-    let mut recs = vec![(0u64, 0u32); start[n]];
-    for (ti, t) in oriented.iter().enumerate() {
-        let Some(t) = t else { continue };
-        for f in outward_faces(*t) {
-            let (s, odd) = sort3(f);
-            let slot = &mut fill[s[0] as usize];
-            recs[*slot] = (
-                ((s[1] as u64) << 32) | s[2] as u64,
-                ((ti as u32) << 1) | odd as u32,
-            );
-            *slot += 1;
-        }
-    }
+    let (start, mut recs) = bucket_faces(&oriented, n);
     let mut chunks = Vec::with_capacity(n);
     let mut rest = recs.as_mut_slice();
     for i in 0..n {
@@ -310,20 +287,77 @@ fn pair_faces(points: &[Point3], tets: &[[u32; 4]]) -> (Vec<BoundaryFace>, Vec<P
     (boundary, problems)
 }
 
-fn pair_bucket(a: u32, recs: &mut [(u64, u32)]) -> (Vec<BoundaryFace>, Vec<Problem>) {
+/// Every outward face `(a, b, c)` with `a < b, c` as the record `[b, c, tet << 1 | odd]`
+/// (`odd`: the sorted order reverses the orientation) in the bucket of `a` (rows
+/// `start[a]..start[a + 1]`). Each thread counts and fills the buckets of its own range of
+/// vertices while reading all tetrahedra: the writes, scattered, are what costs.
+fn bucket_faces(oriented: &[Option<[u32; 4]>], n: usize) -> (Vec<usize>, Vec<[u32; 3]>) {
+    let parts = rayon::current_num_threads().clamp(1, n.max(1));
+    let bounds: Vec<usize> = (0..=parts).map(|p| n * p / parts).collect();
+    let faces_in = |lo: usize, hi: usize, put: &mut dyn FnMut(usize, [u32; 3])| {
+        for (ti, t) in oriented.iter().enumerate() {
+            let Some(t) = t else { continue };
+            for f in outward_faces(*t) {
+                let (s, odd) = sort3(f);
+                let a = s[0] as usize;
+                if (lo..hi).contains(&a) {
+                    put(a - lo, [s[1], s[2], ((ti as u32) << 1) | odd as u32]);
+                }
+            }
+        }
+    };
+    let mut count = vec![0usize; n];
+    split_at_offsets(&mut count, &bounds)
+        .into_par_iter()
+        .zip(bounds.par_windows(2))
+        .for_each(|(c, w)| faces_in(w[0], w[1], &mut |i, _| c[i] += 1));
+    let mut start = Vec::with_capacity(n + 1);
+    start.push(0usize);
+    for c in &count {
+        start.push(start[start.len() - 1] + c);
+    }
+    let mut recs = vec![[0u32; 3]; start[n]];
+    let offsets: Vec<usize> = bounds.iter().map(|&b| start[b]).collect();
+    split_at_offsets(&mut recs, &offsets)
+        .into_par_iter()
+        .zip(bounds.par_windows(2))
+        .for_each(|(out, w)| {
+            let mut fill: Vec<usize> = start[w[0]..w[1]].iter().map(|&s| s - start[w[0]]).collect();
+            faces_in(w[0], w[1], &mut |i, r| {
+                out[fill[i]] = r;
+                fill[i] += 1;
+            });
+        });
+    (start, recs)
+}
+
+/// `v` cut into the pieces `offsets[i]..offsets[i + 1]` (`offsets` runs from 0 to the
+/// length, nondecreasing).
+fn split_at_offsets<'a, T>(v: &'a mut [T], offsets: &[usize]) -> Vec<&'a mut [T]> {
+    let mut pieces = Vec::with_capacity(offsets.len() - 1);
+    let mut rest = v;
+    for w in offsets.windows(2) {
+        let (head, tail) = rest.split_at_mut(w[1] - w[0]);
+        pieces.push(head);
+        rest = tail;
+    }
+    pieces
+}
+
+fn pair_bucket(a: u32, recs: &mut [[u32; 3]]) -> (Vec<BoundaryFace>, Vec<Problem>) {
     recs.sort_unstable();
     let mut boundary = Vec::new();
     let mut problems = Vec::new();
     let mut i = 0;
     while i < recs.len() {
-        let key = recs[i].0;
-        let j = i + recs[i..].iter().take_while(|r| r.0 == key).count();
-        let face = [a, (key >> 32) as u32, key as u32];
+        let key = [recs[i][0], recs[i][1]];
+        let j = i + recs[i..].iter().take_while(|r| r[..2] == key).count();
+        let face = [a, key[0], key[1]];
         let group = &recs[i..j];
-        let tets = || -> Vec<u32> { group.iter().map(|r| r.1 >> 1).collect() };
+        let tets = || -> Vec<u32> { group.iter().map(|r| r[2] >> 1).collect() };
         match group.len() {
             1 => {
-                let odd = group[0].1 & 1 == 1;
+                let odd = group[0][2] & 1 == 1;
                 let v = if odd {
                     [face[0], face[2], face[1]]
                 } else {
@@ -331,10 +365,10 @@ fn pair_bucket(a: u32, recs: &mut [(u64, u32)]) -> (Vec<BoundaryFace>, Vec<Probl
                 };
                 boundary.push(BoundaryFace {
                     v,
-                    tet: group[0].1 >> 1,
+                    tet: group[0][2] >> 1,
                 });
             }
-            2 if (group[0].1 ^ group[1].1) & 1 == 1 => {}
+            2 if (group[0][2] ^ group[1][2]) & 1 == 1 => {}
             2 => {
                 let tets = tets();
                 let detail = format!(
@@ -534,6 +568,50 @@ mod tests {
             !r.is_valid(),
             "local checks alone catch a tet sharing faces"
         );
+    }
+
+    /// Face pairing names both tetrahedra on one side of a face, and every tetrahedron of
+    /// a face shared by three; one tetrahedron has four boundary faces.
+    #[test]
+    fn face_pairing_problems_name_their_tetrahedra() {
+        let pts = vec![
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.0, 0.0, 1.0],
+            [0.2, 0.2, 2.0],
+            [0.2, 0.2, -1.0],
+        ];
+        let pos = |t: [u32; 4]| {
+            let p = |k: usize| &pts[t[k] as usize];
+            if orient3d(p(0), p(1), p(2), p(3)) < 0 {
+                [t[0], t[1], t[3], t[2]]
+            } else {
+                t
+            }
+        };
+        let r = verify(&pts, &[pos([0, 1, 2, 3])], None);
+        assert!(r.is_valid() && r.boundary_faces == 4);
+        let r = verify(&pts, &[pos([0, 1, 2, 3]), pos([0, 1, 2, 4])], None);
+        let same: Vec<&Problem> = r
+            .problems
+            .iter()
+            .filter(|p| p.kind == ProblemKind::SameSide)
+            .collect();
+        assert_eq!(same.len(), 1, "{:?}", r.problems);
+        assert_eq!(
+            (same[0].tets.clone(), same[0].vertices.clone()),
+            (vec![0, 1], vec![0, 1, 2])
+        );
+        let three = [pos([0, 1, 2, 3]), pos([0, 1, 2, 4]), pos([0, 1, 2, 5])];
+        let r = verify(&pts, &three, None);
+        let shared: Vec<&Problem> = r
+            .problems
+            .iter()
+            .filter(|p| p.kind == ProblemKind::FaceSharedByMore)
+            .collect();
+        assert_eq!(shared.len(), 1, "{:?}", r.problems);
+        assert_eq!(shared[0].tets, vec![0, 1, 2]);
     }
 
     fn kinds(r: &Report) -> Vec<ProblemKind> {
