@@ -360,7 +360,7 @@ pub fn triangles_meet_improperly(
 /// Two convex polytopes have disjoint interiors exactly when a plane puts them on opposite
 /// closed sides; by the separating-axis theorem in 3D such a plane can be taken parallel to
 /// a face of either or to an edge of each. Face planes are [`orient3d`] tests; the
-/// edge-edge planes use the exact expansions of [`super::expansion`].
+/// edge-edge planes use exact floating-point expansions (the crate's `geom::expansion`).
 ///
 /// ```
 /// use tetrakit::geom::tetrahedra_overlap;
