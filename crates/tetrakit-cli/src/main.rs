@@ -73,26 +73,8 @@ struct DetectArgs {
     output: Option<PathBuf>,
     /// How each vertex's link is freed of punctured segments (the verdict never depends
     /// on it).
-    #[arg(long, value_enum, default_value = "sweep")]
-    links: LinksArg,
-}
-
-#[derive(ValueEnum, Clone, Copy, Debug)]
-enum LinksArg {
-    /// The exact sphere sweep of thesis §2.4.2: O(|L_v| log |L_v|) exact tests per vertex.
-    Sweep,
-    /// A sign table: O(|L_v|·(|N(v)| + |L_v|)) table look-ups per vertex.
-    Table,
-}
-
-impl From<LinksArg> for tetrakit::detect::LinkMethod {
-    fn from(l: LinksArg) -> Self {
-        use tetrakit::detect::LinkMethod as M;
-        match l {
-            LinksArg::Table => M::SignTable,
-            LinksArg::Sweep => M::Sweep,
-        }
-    }
+    #[arg(long, value_enum, default_value_t)]
+    links: tetrakit::detect::LinkMethod,
 }
 
 #[derive(Args)]
@@ -279,8 +261,8 @@ enum GenKind {
     /// Planar points for `skeleton` and `mwt`.
     Points2d {
         /// The distribution.
-        #[arg(long, value_enum, default_value_t = DistArg::Uniform)]
-        dist: DistArg,
+        #[arg(long, value_enum, default_value_t = tetrakit::planar::Distribution::Uniform)]
+        dist: tetrakit::planar::Distribution,
         /// Number of points.
         #[arg(long)]
         n: usize,
@@ -330,36 +312,6 @@ struct BpArgs {
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug)]
-enum DistArg {
-    /// Uniform in the unit square.
-    Uniform,
-    /// Standard normal.
-    Gaussian,
-    /// About √n Gaussian clusters.
-    Clustered,
-    /// Strictly convex position.
-    Convex,
-    /// A regular polygon (near-ties).
-    Regular,
-    /// An integer grid (exact ties).
-    Grid,
-}
-
-impl From<DistArg> for tetrakit::planar::Distribution {
-    fn from(d: DistArg) -> Self {
-        use tetrakit::planar::Distribution as D;
-        match d {
-            DistArg::Uniform => D::Uniform,
-            DistArg::Gaussian => D::Gaussian,
-            DistArg::Clustered => D::Clustered,
-            DistArg::Convex => D::Convex,
-            DistArg::Regular => D::Regular,
-            DistArg::Grid => D::Grid,
-        }
-    }
-}
-
-#[derive(ValueEnum, Clone, Copy, Debug)]
 enum CorruptKind {
     /// Remove one segment.
     DropEdge,
@@ -373,7 +325,7 @@ enum CorruptKind {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let code = match cli.cmd {
-        Cmd::Detect(a) => run::detect(&a.input, a.json, a.output.as_deref(), a.links.into()),
+        Cmd::Detect(a) => run::detect(&a.input, a.json, a.output.as_deref(), a.links),
         Cmd::Check(a) => run::check(&a.input, a.convex, a.json),
         Cmd::Mintetra(a) => poly::mintetra(&a.input, a.json, a.output.as_deref(), a.confirm),
         Cmd::Tetrahedralize(a) => poly::tetrahedralize(poly::TetraArgs {
@@ -403,7 +355,7 @@ fn main() -> ExitCode {
                     seed,
                     output,
                 },
-        }) => planar::generate_points(dist.into(), n, seed, &output),
+        }) => planar::generate_points(dist, n, seed, &output),
         Cmd::Generate(a) => match polyhedron_kind(a.kind) {
             Ok((kind, out)) => poly::generate(kind, out.seed, &out.output),
             Err(kind) => run::generate(kind),

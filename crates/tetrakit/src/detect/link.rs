@@ -66,6 +66,7 @@ pub(super) struct Ctx<'a> {
 /// How the per-vertex pass finds the punctured segments of `L_v`. Both give the same
 /// verdict; each is tested against the other and against the brute-force oracle.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
 pub enum LinkMethod {
     /// The exact sphere sweep of thesis §2.4.2: `O(|L_v| log |L_v|)` exact tests, the
     /// faster on every family we measured (Delaunay, grids, skew lines).
@@ -74,6 +75,7 @@ pub enum LinkMethod {
     /// A table of the signs of every neighbour against every segment's plane through `v`
     /// and a bitmask test per pair of segments: `O(|L_v|·(|N(v)| + |L_v|))` cheap tests,
     /// no sweep order at all (the independent second method).
+    #[cfg_attr(feature = "clap", value(name = "table"))]
     SignTable,
 }
 

@@ -582,36 +582,34 @@ mod tests {
             [0.2, 0.2, 2.0],
             [0.2, 0.2, -1.0],
         ];
-        let pos = |t: [u32; 4]| {
-            let p = |k: usize| &pts[t[k] as usize];
-            if orient3d(p(0), p(1), p(2), p(3)) < 0 {
-                [t[0], t[1], t[3], t[2]]
-            } else {
-                t
-            }
+        let run = |tets: &[[u32; 4]]| {
+            let mut t = crate::mesh::Tetrahedralization {
+                points: pts.clone(),
+                tets: tets.to_vec(),
+            };
+            t.orient_positively();
+            verify(&t.points, &t.tets, None)
         };
-        let r = verify(&pts, &[pos([0, 1, 2, 3])], None);
+        let of_kind = |r: &Report, kind| -> Vec<(Vec<u32>, Vec<u32>)> {
+            r.problems
+                .iter()
+                .filter(|p| p.kind == kind)
+                .map(|p| (p.tets.clone(), p.vertices.clone()))
+                .collect()
+        };
+        let r = run(&[[0, 1, 2, 3]]);
         assert!(r.is_valid() && r.boundary_faces == 4);
-        let r = verify(&pts, &[pos([0, 1, 2, 3]), pos([0, 1, 2, 4])], None);
-        let same: Vec<&Problem> = r
-            .problems
-            .iter()
-            .filter(|p| p.kind == ProblemKind::SameSide)
-            .collect();
-        assert_eq!(same.len(), 1, "{:?}", r.problems);
+        let r = run(&[[0, 1, 2, 3], [0, 1, 2, 4]]);
+        let same = of_kind(&r, ProblemKind::SameSide);
+        assert_eq!(same, vec![(vec![0, 1], vec![0, 1, 2])], "{:?}", r.problems);
+        let r = run(&[[0, 1, 2, 3], [0, 1, 2, 4], [0, 1, 2, 5]]);
+        let shared = of_kind(&r, ProblemKind::FaceSharedByMore);
         assert_eq!(
-            (same[0].tets.clone(), same[0].vertices.clone()),
-            (vec![0, 1], vec![0, 1, 2])
+            shared,
+            vec![(vec![0, 1, 2], vec![0, 1, 2])],
+            "{:?}",
+            r.problems
         );
-        let three = [pos([0, 1, 2, 3]), pos([0, 1, 2, 4]), pos([0, 1, 2, 5])];
-        let r = verify(&pts, &three, None);
-        let shared: Vec<&Problem> = r
-            .problems
-            .iter()
-            .filter(|p| p.kind == ProblemKind::FaceSharedByMore)
-            .collect();
-        assert_eq!(shared.len(), 1, "{:?}", r.problems);
-        assert_eq!(shared[0].tets, vec![0, 1, 2]);
     }
 
     fn kinds(r: &Report) -> Vec<ProblemKind> {

@@ -6,6 +6,7 @@ use std::collections::HashSet;
 
 /// A distribution of planar points.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
 pub enum Distribution {
     /// Uniform in the unit square.
     Uniform,
