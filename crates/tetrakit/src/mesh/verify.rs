@@ -128,7 +128,8 @@ impl Report {
 /// ```
 pub fn verify(points: &[Point3], tets: &[[u32; 4]], hull: Option<&Hull3>) -> Report {
     let mut report = Report::default();
-    for p in check_tets(points, tets) {
+    let (problems, signs) = check_tets(points, tets);
+    for p in problems {
         report.push(p);
     }
     if report
@@ -138,7 +139,7 @@ pub fn verify(points: &[Point3], tets: &[[u32; 4]], hull: Option<&Hull3>) -> Rep
     {
         return report;
     }
-    let (boundary, pairing) = pair_faces(points, tets);
+    let (boundary, pairing) = pair_faces(points.len(), tets, &signs);
     for p in pairing {
         report.push(p);
     }
@@ -191,22 +192,27 @@ fn problem(kind: ProblemKind, tets: Vec<u32>, vertices: Vec<u32>, detail: String
     }
 }
 
-fn check_tets(points: &[Point3], tets: &[[u32; 4]]) -> Vec<Problem> {
+/// Index, repeated-vertex and orientation problems, and the orientation of every
+/// tetrahedron (0 when it is degenerate or malformed), computed once for the face pairing.
+fn check_tets(points: &[Point3], tets: &[[u32; 4]]) -> (Vec<Problem>, Vec<i8>) {
     let n = points.len() as u32;
-    tets.par_iter()
+    let (problems, signs): (Vec<Option<Problem>>, Vec<i8>) = tets
+        .par_iter()
         .enumerate()
-        .filter_map(|(i, t)| {
+        .map(|(i, t)| {
             let i = i as u32;
             if let Some(&v) = t.iter().find(|&&v| v >= n) {
                 let d = format!("tetrahedron #{i} names vertex #{v}, but there are {n} points");
-                return Some(problem(ProblemKind::BadIndex, vec![i], vec![v], d));
+                return (Some(problem(ProblemKind::BadIndex, vec![i], vec![v], d)), 0);
             }
             if (0..4).any(|a| (a + 1..4).any(|b| t[a] == t[b])) {
                 let d = format!("tetrahedron #{i} repeats a vertex: {}", ids(t));
-                return Some(problem(ProblemKind::RepeatedVertex, vec![i], t.to_vec(), d));
+                let p = problem(ProblemKind::RepeatedVertex, vec![i], t.to_vec(), d);
+                return (Some(p), 0);
             }
             let p = |k: usize| &points[t[k] as usize];
-            match orient3d(p(0), p(1), p(2), p(3)) {
+            let sign = orient3d(p(0), p(1), p(2), p(3));
+            let bad = match sign {
                 1 => None,
                 0 => Some(problem(
                     ProblemKind::Degenerate,
@@ -223,9 +229,11 @@ fn check_tets(points: &[Point3], tets: &[[u32; 4]]) -> Vec<Problem> {
                     t.to_vec(),
                     format!("tetrahedron #{i} {} is negatively oriented", ids(t)),
                 )),
-            }
+            };
+            (bad, sign)
         })
-        .collect()
+        .unzip();
+    (problems.into_iter().flatten().collect(), signs)
 }
 
 /// A boundary face, oriented outward, with its tetrahedron.
@@ -253,17 +261,15 @@ fn outward_faces(t: [u32; 4]) -> [[u32; 3]; 4] {
     [[b, c, d], [a, d, c], [a, b, d], [a, c, b]]
 }
 
-fn pair_faces(points: &[Point3], tets: &[[u32; 4]]) -> (Vec<BoundaryFace>, Vec<Problem>) {
-    let n = points.len();
+/// Pairs the faces of the tetrahedra with orientation `signs` (degenerate ones skipped).
+fn pair_faces(n: usize, tets: &[[u32; 4]], signs: &[i8]) -> (Vec<BoundaryFace>, Vec<Problem>) {
     let oriented: Vec<Option<[u32; 4]>> = tets
         .par_iter()
-        .map(|t| {
-            let p = |k: usize| &points[t[k] as usize];
-            match orient3d(p(0), p(1), p(2), p(3)) {
-                1 => Some(*t),
-                -1 => Some([t[0], t[1], t[3], t[2]]),
-                _ => None,
-            }
+        .zip(signs)
+        .map(|(t, &sign)| match sign {
+            1 => Some(*t),
+            -1 => Some([t[0], t[1], t[3], t[2]]),
+            _ => None,
         })
         .collect();
     let (start, mut recs) = bucket_faces(&oriented, n);
