@@ -15,6 +15,9 @@ mod keil;
 mod mwt;
 mod skeleton;
 
+use crate::geom::Point2;
+use rayon::prelude::*;
+
 pub use delaunay::{Delaunay, DelaunayEdge, delaunay};
 pub use forced::{Blocker, blocked_pairs, edge_blocker};
 pub use generate::{Distribution, points2d};
@@ -60,6 +63,44 @@ pub(crate) fn buckets<T: Copy + Default>(
         fill[b] += 1;
     }
     (start, items)
+}
+
+/// Checks that every coordinate is in the exactly supported range
+/// ([`coordinate_in_range`](crate::geom::coordinate_in_range)): the predicates are exact
+/// there, and the floating-point search bounds of the skeleton and the MWT filter have
+/// the error bounds their docs state.
+pub(crate) fn check_coordinates(points: &[Point2]) -> Result<(), PlanarError> {
+    match points
+        .iter()
+        .position(|p| !p.iter().all(|&x| crate::geom::coordinate_in_range(x)))
+    {
+        None => Ok(()),
+        Some(i) => Err(PlanarError::new(format!(
+            "site {i} ({:?}) has a coordinate that is not finite or outside the exactly supported magnitude range [2^-142, 2^201]",
+            points[i]
+        ))),
+    }
+}
+
+/// Checks the coordinates ([`check_coordinates`]) and that no two sites coincide.
+pub(crate) fn check_sites(points: &[Point2]) -> Result<(), PlanarError> {
+    check_coordinates(points)?;
+    // `+ 0.0` maps -0 to +0, so the total order agrees with equality of points.
+    let key = |i: u32| points[i as usize].map(|x| x + 0.0);
+    let mut order: Vec<u32> = (0..points.len() as u32).collect();
+    order.par_sort_unstable_by(|&a, &b| {
+        let (p, q) = (key(a), key(b));
+        p[0].total_cmp(&q[0]).then(p[1].total_cmp(&q[1]))
+    });
+    match order.windows(2).find(|w| key(w[0]) == key(w[1])) {
+        None => Ok(()),
+        Some(w) => Err(PlanarError::new(format!(
+            "sites {} and {} coincide at {:?}",
+            w[0].min(w[1]),
+            w[0].max(w[1]),
+            points[w[0] as usize]
+        ))),
+    }
 }
 
 /// An error of a planar computation (bad parameters or an internal inconsistency).

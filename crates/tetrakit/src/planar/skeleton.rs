@@ -58,7 +58,8 @@ pub struct Skeleton {
     pub cell_diameters: usize,
 }
 
-/// The β-skeleton of distinct points (exact).
+/// The β-skeleton of distinct points (exact; an error names coinciding sites or a
+/// coordinate outside the exact range).
 ///
 /// ```
 /// use tetrakit::planar::{Region, beta_skeleton};
@@ -74,10 +75,12 @@ pub fn beta_skeleton(
     beta: Ratio,
     region: Region,
 ) -> Result<Skeleton, PlanarError> {
+    super::check_coordinates(points)?;
     if points.len() < 2 {
         return Ok(Skeleton::default());
     }
     if beta.cmp_one() == Ordering::Less {
+        super::check_sites(points)?;
         return Ok(small_beta(points, beta));
     }
     let lune = region == Region::Lune && beta.cmp_one() == Ordering::Greater;

@@ -16,12 +16,34 @@
 //! visited site in sectors `k+2..=k+5` (offsets in `(s, 6s)`, `s = 5.625°`) kills the
 //! left diamonds of every farther `q` in sector `k` beyond a computed radius, and
 //! sectors `k-5..=k-2` the right ones. The search stops when every sector is dead
-//! beyond the radius already searched. The bounds carry a 0.1% margin, far above the
-//! rounding of the float distances and angles, and only ever skip edges that the exact
-//! test would exclude.
+//! beyond the radius already searched.
+//!
+//! **Why the floating-point search is exact.** Every exclusion is decided one of three
+//! ways: by exact hits ([`diamond_hit`] on two sites, one per diamond, or one on the
+//! segment), by `|pq|` above the dead radius of `q`'s sector, or by the search stopping
+//! before `q` is reached. Only the last two use floating-point distances and angles, and
+//! they hold with margins far above their rounding error:
+//! - [`mwt`](super::mwt) admits only coordinates in the exact range (zero or magnitude
+//!   in `[2^-142, 2^201]`), so a non-zero coordinate difference is at least `2^-194` and
+//!   a squared distance at most `2^405`: nothing underflows or overflows, and each
+//!   distance, pseudo-angle, sector boundary and cell coordinate carries a relative error
+//!   below `2^-45` (a handful of roundings; cell coordinates are below `2^14`, so a cell
+//!   index is off by at most one near a cell boundary, which moves a ring radius by
+//!   under `2^-37` cells).
+//! - The margins: 0.1% on the kill factors; a site rounded into the next sector shifts
+//!   `ψ` by under `2^-40` of a sector and stays in `(0, θ)` (offsets 2..=5 span
+//!   `(s, 6s)`, `6s = 33.75° < θ = 39.09°`); diamonds reach 7 sectors while `θ` needs
+//!   6.95 (a 0.28° margin); 1% on the bounding-box reach; two cells on each side of a
+//!   cone's range in a ring (a ray crosses at most three cells of a ring); `10^-9` on the
+//!   inner ring radius.
+//! - Keeping a pair the exact test would exclude is always safe (the LMT-skeleton and
+//!   the exact stage optimise over the candidates, a superset of the MWT's edges), so the
+//!   order in which sites are visited, by rounded distance, only affects speed: the
+//!   kill radii come from sites actually visited, whatever the order.
 
 use crate::geom::{Point2, diamond_hit};
 use crate::planar::grid::PointGrid;
+use crate::planar::{PlanarError, check_sites};
 use rayon::prelude::*;
 
 const SECTORS: usize = 64;
@@ -93,8 +115,25 @@ struct Scratch {
     visited: Vec<bool>,
 }
 
-/// All candidate edges `[p, q]` (`p < q`), sorted.
-pub fn candidate_edges(points: &[Point2]) -> Vec<[u32; 2]> {
+/// All candidate edges `[p, q]` (`p < q`) of distinct sites, sorted: the pairs with an
+/// empty diamond and no site on the open segment (a few more may be kept, never fewer).
+/// An error names coinciding sites or a coordinate outside the exact range.
+///
+/// ```
+/// use tetrakit::planar::candidate_edges;
+/// // The long diagonal 0-2 of this thin rhombus has a site deep in each diamond.
+/// let pts = [[0.0, 0.0], [4.0, -1.0], [8.0, 0.0], [4.0, 1.0]];
+/// let c = candidate_edges(&pts).unwrap();
+/// assert!(c.contains(&[1, 3]) && !c.contains(&[0, 2]));
+/// assert!(candidate_edges(&[[0.0, 0.0], [0.0, -0.0]]).is_err());
+/// ```
+pub fn candidate_edges(points: &[Point2]) -> Result<Vec<[u32; 2]>, PlanarError> {
+    check_sites(points)?;
+    Ok(search(points))
+}
+
+/// [`candidate_edges`] for checked sites.
+pub(super) fn search(points: &[Point2]) -> Vec<[u32; 2]> {
     let grid = PointGrid::new(points, 2.0);
     let sectors = Sectors::new();
     let mut edges: Vec<[u32; 2]> = (0..points.len() as u32)
@@ -434,6 +473,52 @@ mod tests {
         out
     }
 
+    /// The search's floating-point bounds at the ends of the exact range: tiny and huge
+    /// scales, a large offset (few significant bits left for the spread), and ties.
+    #[test]
+    fn search_is_complete_at_the_ends_of_the_exact_range() {
+        let sets = [
+            points2d(Distribution::Uniform, 300, 5),
+            points2d(Distribution::Grid, 225, 5),
+            points2d(Distribution::Regular, 40, 5),
+            points2d(Distribution::Clustered, 300, 5),
+        ];
+        let transforms = [
+            (2f64.powi(-120), 0.0),
+            (2f64.powi(190), 0.0),
+            (1.0, 2f64.powi(24)),
+            (2f64.powi(-100), -(2f64.powi(-80))),
+        ];
+        let mut tested = 0;
+        for (i, base) in sets.iter().enumerate() {
+            for &(scale, shift) in &transforms {
+                let pts: Vec<Point2> = base.iter().map(|p| p.map(|x| x * scale + shift)).collect();
+                if check_sites(&pts).is_err() {
+                    continue; // a coordinate fell below 2^-142, or two sites merged
+                }
+                let (got, want) = (search(&pts), brute(&pts));
+                let missing = want
+                    .iter()
+                    .filter(|e| got.binary_search(e).is_err())
+                    .count();
+                assert_eq!(missing, 0, "set {i}, scale {scale:e}, shift {shift:e}");
+                tested += 1;
+            }
+        }
+        assert!(
+            tested >= 12,
+            "only {tested} of 16 transformed sets were in range"
+        );
+    }
+
+    #[test]
+    fn bad_sites_are_named() {
+        let err = candidate_edges(&[[1.0, 2.0], [3.0, 4.0], [1.0, 2.0]]).unwrap_err();
+        assert!(err.0.contains("sites 0 and 2 coincide"), "{err}");
+        let err = candidate_edges(&[[1.0, 2.0], [1e-300, 4.0]]).unwrap_err();
+        assert!(err.0.contains("site 1"), "{err}");
+    }
+
     #[test]
     fn search_keeps_every_candidate_of_brute_force() {
         for (dist, n) in [
@@ -443,7 +528,7 @@ mod tests {
             (Distribution::Grid, 400),
         ] {
             let pts = points2d(dist, n, 3);
-            let got = candidate_edges(&pts);
+            let got = search(&pts);
             let want = brute(&pts);
             let missing: Vec<_> = want
                 .iter()

@@ -76,7 +76,8 @@ pub struct Mwt {
     pub stats: MwtStats,
 }
 
-/// The exact minimum weight triangulation of distinct sites.
+/// The exact minimum weight triangulation of distinct sites (an error names any two
+/// that coincide, or a coordinate outside the exact range).
 ///
 /// ```
 /// use tetrakit::planar::mwt;
@@ -99,6 +100,7 @@ pub fn weight_of(points: &[Point2], edges: &[[u32; 2]]) -> Interval {
 
 /// [`mwt`] with constraints.
 pub fn mwt_with(points: &[Point2], opts: &MwtOptions) -> Result<Mwt, PlanarError> {
+    super::check_sites(points)?;
     let hull = Hull2::new(points);
     if hull.vertices.len() < 3 {
         return Ok(collinear(points));
@@ -115,7 +117,7 @@ pub fn mwt_with(points: &[Point2], opts: &MwtOptions) -> Result<Mwt, PlanarError
     let mut cands = if constrained {
         all_segments(points)
     } else {
-        candidate_edges(points)
+        candidates::search(points)
     };
     cands.retain(|e| forbidden.binary_search(e).is_err());
     for f in &forced {
