@@ -15,6 +15,9 @@ pub(crate) struct PointGrid {
     ny: usize,
     start: Vec<u32>,
     items: Vec<u32>,
+    /// The coordinates of `items`, in the same order (reading a cell touches no other
+    /// memory).
+    coords: Vec<Point2>,
 }
 
 impl PointGrid {
@@ -39,9 +42,11 @@ impl PointGrid {
             ny,
             start: Vec::new(),
             items: Vec::new(),
+            coords: Vec::new(),
         };
         let keys = points.iter().enumerate().map(|(i, p)| (g.key(p), i as u32));
         (g.start, g.items) = super::buckets(nx * ny, keys);
+        g.coords = g.items.iter().map(|&i| points[i as usize]).collect();
         g
     }
 
@@ -87,10 +92,16 @@ impl PointGrid {
         (self.nx, self.ny)
     }
 
-    /// The points in cells `x0..=x1` of row `y` (caller keeps indices in range).
-    pub fn row(&self, y: usize, x0: usize, x1: usize) -> &[u32] {
-        let row = y * self.nx;
-        &self.items[self.start[row + x0] as usize..self.start[row + x1 + 1] as usize]
+    /// The slots of cell `(x, y)`: positions in [`Self::slots`].
+    pub fn cell_slots(&self, x: usize, y: usize) -> std::ops::Range<usize> {
+        let c = y * self.nx + x;
+        self.start[c] as usize..self.start[c + 1] as usize
+    }
+
+    /// Every point index and its coordinates, cell by cell (row-major): an order with
+    /// spatial locality, and cell contents without lookups elsewhere.
+    pub fn slots(&self) -> (&[u32], &[Point2]) {
+        (&self.items, &self.coords)
     }
 
     /// Calls `f` on every point in cells meeting the box `[lo, hi]` widened by one cell

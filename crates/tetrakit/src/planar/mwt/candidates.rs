@@ -48,6 +48,8 @@ use rayon::prelude::*;
 
 const SECTORS: usize = 64;
 const WIDTH: f64 = std::f64::consts::TAU / SECTORS as f64;
+/// Steps per unit of pseudo-angle in the sector lookup table.
+const LUT_SCALE: usize = 256;
 /// Diamonds reach at most `θ = atan(13/16) < 7 sectors` from `q`'s direction.
 const REACH: usize = 7;
 
@@ -68,6 +70,9 @@ fn pseudo_angle(dx: f64, dy: f64) -> f64 {
 
 struct Sectors {
     bounds: [f64; SECTORS],
+    /// `first[i]`: the sector holding pseudo-angle `i / LUT_SCALE` (a sector spans more
+    /// than one such step, so at most one boundary lies in each).
+    first: Vec<u8>,
     /// Unit vectors of the sector boundaries `0..=SECTORS`.
     rays: [(f64, f64); SECTORS + 1],
     /// `kill[i]`: the distance factor for a site `i` sectors away (i = 2..=5).
@@ -94,7 +99,15 @@ impl Sectors {
             let a = k as f64 * WIDTH;
             (a.cos(), a.sin())
         });
-        Sectors { bounds, rays, kill }
+        let first = (0..4 * LUT_SCALE)
+            .map(|i| (bounds.partition_point(|&b| b <= i as f64 / LUT_SCALE as f64) - 1) as u8)
+            .collect();
+        Sectors {
+            bounds,
+            first,
+            rays,
+            kill,
+        }
     }
 
     fn of(&self, dx: f64, dy: f64) -> usize {
@@ -102,7 +115,15 @@ impl Sectors {
     }
 
     fn of_pseudo(&self, a: f64) -> usize {
-        self.bounds.partition_point(|&b| b <= a).saturating_sub(1)
+        // Equal to `bounds.partition_point(|&b| b <= a) - 1`: the step's sector, then at
+        // most one boundary up.
+        let i = ((a * LUT_SCALE as f64) as usize).min(4 * LUT_SCALE - 1);
+        let k = self.first[i] as usize;
+        if k + 1 < SECTORS && self.bounds[k + 1] <= a {
+            k + 1
+        } else {
+            k
+        }
     }
 }
 
@@ -136,11 +157,12 @@ pub fn candidate_edges(points: &[Point2]) -> Result<Vec<[u32; 2]>, PlanarError> 
 pub(super) fn search(points: &[Point2]) -> Vec<[u32; 2]> {
     let grid = PointGrid::new(points, 2.0);
     let sectors = Sectors::new();
-    let mut edges: Vec<[u32; 2]> = (0..points.len() as u32)
+    // Sites in cell order, so that consecutive searches share cached cells.
+    let mut edges: Vec<[u32; 2]> = (0..points.len())
         .into_par_iter()
-        .map_init(Scratch::default, |s, p| {
+        .map_init(Scratch::default, |s, slot| {
             let mut out = Vec::new();
-            candidates_of(p, points, &grid, &sectors, s, &mut out);
+            candidates_of(slot, &grid, &sectors, s, &mut out);
             out
         })
         .flatten_iter()
@@ -161,9 +183,10 @@ fn dead_radius(s: &Scratch, sec: &Sectors, k: usize) -> f64 {
     side(1).max(side(-1))
 }
 
+/// The candidates `[p, q]`, `p < q`, of the site in grid slot `slot`. Sites are handled
+/// by slot throughout (index and coordinates side by side in the grid).
 fn candidates_of(
-    p: u32,
-    points: &[Point2],
+    slot: usize,
     grid: &PointGrid,
     sec: &Sectors,
     s: &mut Scratch,
@@ -174,7 +197,8 @@ fn candidates_of(
     s.nearest.clear();
     s.nearest.resize(SECTORS, f64::INFINITY);
     s.pending.clear();
-    let pp = points[p as usize];
+    let (index, coords) = grid.slots();
+    let (p, pp) = (index[slot], coords[slot]);
     let (cx, cy) = grid.cell_of(&pp);
     let (nx, ny) = grid.dims();
     let mut ring = 0usize;
@@ -182,9 +206,9 @@ fn candidates_of(
     let reach = sector_reach(&pp, grid.bounds(), sec);
     loop {
         if ring < 2 {
-            gather_ring(grid, points, p, cx, cy, ring, &mut s.pending);
+            gather_ring(grid, slot, cx, cy, ring, &mut s.pending);
         } else {
-            gather_live_cones(grid, points, p, (cx, cy), ring, sec, &dead, s);
+            gather_live_cones(grid, slot, (cx, cy), ring, sec, &dead, s);
         }
         let exhausted = ring >= cx && ring >= cy && cx + ring >= nx - 1 && cy + ring >= ny - 1;
         let complete = if exhausted {
@@ -193,19 +217,19 @@ fn candidates_of(
             ring as f64 * grid.cell()
         };
         s.pending.sort_unstable_by(|a, b| b.0.total_cmp(&a.0));
-        while let Some(&(d2, q)) = s.pending.last() {
+        while let Some(&(d2, qs)) = s.pending.last() {
             if d2 >= complete * complete {
                 break;
             }
             s.pending.pop();
-            let pq = points[q as usize];
+            let (q, pq) = (index[qs as usize], coords[qs as usize]);
             let (dx, dy) = (pq[0] - pp[0], pq[1] - pp[1]);
             let k = sec.of(dx, dy);
             let d = d2.sqrt();
-            if q > p && d <= dead_radius(s, sec, k) && diamonds_open(p, q, points, s, k) {
+            if q > p && d <= dead_radius(s, sec, k) && diamonds_open(&pp, &pq, coords, s, k) {
                 out.push([p, q]);
             }
-            s.by_sector[k].push(q);
+            s.by_sector[k].push(qs);
             s.nearest[k] = s.nearest[k].min(d);
         }
         if exhausted {
@@ -327,70 +351,85 @@ fn ray_ring_index(
 /// Pushes the sites of the ring-`r` cells met by the cones of the sectors still live
 /// beyond the ring's inner radius (each cone's perimeter range widened by two cells
 /// against rounding and the offset of `p` in its cell).
-#[allow(clippy::too_many_arguments)]
 fn gather_live_cones(
     grid: &PointGrid,
-    points: &[Point2],
-    p: u32,
+    slot: usize,
     (cx, cy): (usize, usize),
     r: usize,
     sec: &Sectors,
     dead: &[f64; SECTORS],
     s: &mut Scratch,
 ) {
-    let pp = points[p as usize];
+    let pp = grid.slots().1[slot];
     let inner = (r as f64 - 1.0) * grid.cell() * (1.0 - 1e-9);
     let ri = r as isize;
     let (nx, ny) = grid.dims();
     s.visited.clear();
     s.visited.resize(8 * r, false);
+    // Each boundary ray is shared by two sectors: locate it once.
+    let mut at = [isize::MIN; SECTORS + 1];
+    let mut ray = |j: usize| {
+        if at[j] == isize::MIN {
+            at[j] = ray_ring_index(grid, &pp, cx, cy, sec.rays[j], r);
+        }
+        at[j]
+    };
     for k in (0..SECTORS).filter(|&k| dead[k] >= inner) {
-        let i0 = ray_ring_index(grid, &pp, cx, cy, sec.rays[k], r) - 2;
-        let i1 = ray_ring_index(grid, &pp, cx, cy, sec.rays[k + 1], r) + 2;
+        let i0 = ray(k) - 2;
+        let i1 = ray(k + 1) + 2;
         let len = ((i1 - i0).rem_euclid(8 * ri) + 1).min(8 * ri);
         for i in i0..i0 + len {
-            let slot = i.rem_euclid(8 * ri) as usize;
-            if std::mem::replace(&mut s.visited[slot], true) {
+            let visit = i.rem_euclid(8 * ri) as usize;
+            if std::mem::replace(&mut s.visited[visit], true) {
                 continue;
             }
             let (dx, dy) = ring_cell(i, ri);
             let (x, y) = (cx as isize + dx, cy as isize + dy);
-            if x < 0 || y < 0 || x >= nx as isize || y >= ny as isize {
-                continue;
-            }
-            for &q in grid.row(y as usize, x as usize, x as usize) {
-                let a = points[q as usize];
-                let (ex, ey) = (a[0] - pp[0], a[1] - pp[1]);
-                s.pending.push((ex * ex + ey * ey, q));
+            if x >= 0 && y >= 0 && x < nx as isize && y < ny as isize {
+                push_cell(
+                    grid,
+                    &pp,
+                    x as usize,
+                    y as usize,
+                    usize::MAX,
+                    &mut s.pending,
+                );
             }
         }
     }
 }
 
-/// Pushes `(squared distance, index)` of the sites in ring `r` around cell `(cx, cy)`.
+/// Pushes `(squared distance from pp, slot)` for the sites of cell `(x, y)` except `skip`.
+fn push_cell(
+    grid: &PointGrid,
+    pp: &Point2,
+    x: usize,
+    y: usize,
+    skip: usize,
+    pending: &mut Vec<(f64, u32)>,
+) {
+    let coords = grid.slots().1;
+    for q in grid.cell_slots(x, y).filter(|&q| q != skip) {
+        let a = coords[q];
+        let (ex, ey) = (a[0] - pp[0], a[1] - pp[1]);
+        pending.push((ex * ex + ey * ey, q as u32));
+    }
+}
+
+/// Pushes `(squared distance, slot)` of the sites in ring `r` around cell `(cx, cy)`.
 fn gather_ring(
     grid: &PointGrid,
-    points: &[Point2],
-    p: u32,
+    slot: usize,
     cx: usize,
     cy: usize,
     r: usize,
     pending: &mut Vec<(f64, u32)>,
 ) {
     let (nx, ny) = grid.dims();
-    let pp = points[p as usize];
-    let mut push = |items: &[u32]| {
-        for &q in items {
-            if q != p {
-                let a = points[q as usize];
-                let (dx, dy) = (a[0] - pp[0], a[1] - pp[1]);
-                pending.push((dx * dx + dy * dy, q));
-            }
-        }
-    };
+    let pp = grid.slots().1[slot];
+    let mut cell = |x: usize, y: usize| push_cell(grid, &pp, x, y, slot, pending);
     let x0 = cx.saturating_sub(r);
     let x1 = (cx + r).min(nx - 1);
-    let mut cell = |x: usize, y: usize| push(grid.row(y, x, x));
     for y in cy.saturating_sub(r)..=(cy + r).min(ny - 1) {
         if y + r == cy || y == cy + r {
             (x0..=x1).for_each(|x| cell(x, y));
@@ -406,9 +445,9 @@ fn gather_ring(
 }
 
 /// True when `pq` has an empty diamond and no site on its open segment, among the
-/// visited sites (which include every site that could be in either).
-fn diamonds_open(p: u32, q: u32, points: &[Point2], s: &Scratch, k: usize) -> bool {
-    let (a, b) = (&points[p as usize], &points[q as usize]);
+/// visited sites (slots in `s.by_sector`, which include every site that could be in
+/// either).
+fn diamonds_open(a: &Point2, b: &Point2, coords: &[Point2], s: &Scratch, k: usize) -> bool {
     let (mut left, mut right) = (false, false);
     // Nearest directions first: sites close to the line pq are the likeliest blockers.
     for t in 0..=2 * REACH {
@@ -419,7 +458,7 @@ fn diamonds_open(p: u32, q: u32, points: &[Point2], s: &Scratch, k: usize) -> bo
         };
         let j = (k + SECTORS + off - REACH) % SECTORS;
         for &r in &s.by_sector[j] {
-            let h = diamond_hit(a, b, &points[r as usize]);
+            let h = diamond_hit(a, b, &coords[r as usize]);
             left |= h.left;
             right |= h.right;
             if h.on_segment || (left && right) {
@@ -434,6 +473,21 @@ fn diamonds_open(p: u32, q: u32, points: &[Point2], s: &Scratch, k: usize) -> bo
 mod tests {
     use super::*;
     use crate::planar::{Distribution, points2d};
+
+    #[test]
+    fn sector_lookup_table_agrees_with_binary_search() {
+        let sec = Sectors::new();
+        let slow = |a: f64| sec.bounds.partition_point(|&b| b <= a) - 1;
+        let mut probes: Vec<f64> = (0..40_000).map(|i| i as f64 * 1e-4).collect();
+        for &b in &sec.bounds {
+            probes.extend([b, b.next_up(), b.next_down().max(0.0)]);
+        }
+        probes.extend((1..4 * LUT_SCALE).map(|i| i as f64 / LUT_SCALE as f64));
+        probes.push(4f64.next_down());
+        for a in probes {
+            assert_eq!(sec.of_pseudo(a), slow(a), "pseudo-angle {a}");
+        }
+    }
 
     #[test]
     fn ring_positions_round_trip() {
