@@ -19,6 +19,7 @@ pub use planar::{Svg, write_planar_edges, write_points2d};
 pub use write::{write_edges, write_mesh, write_surface, write_vtk};
 
 use crate::geom::{Point3, coordinate_in_range, lex_cmp};
+use rayon::prelude::*;
 use std::fmt;
 use std::path::{Path, PathBuf};
 
@@ -280,7 +281,7 @@ pub(crate) fn check_segments(
 fn check_distinct_points(input: &Input) -> Result<(), InputError> {
     let pts = &input.points;
     let mut order: Vec<u32> = (0..pts.len() as u32).collect();
-    order.sort_unstable_by(|&a, &b| lex_cmp(&pts[a as usize], &pts[b as usize]));
+    order.par_sort_unstable_by(|&a, &b| lex_cmp(&pts[a as usize], &pts[b as usize]));
     for w in order.windows(2) {
         let (a, b) = (w[0].min(w[1]) as usize, w[0].max(w[1]) as usize);
         if pts[a] == pts[b] {
@@ -311,7 +312,8 @@ pub(crate) fn token_lines(text: &str) -> impl Iterator<Item = (usize, Tokens<'_>
     })
 }
 
-/// The tokens of one line, kept inline (no allocation) up to 24 of them.
+/// The tokens of one line, separated by ASCII whitespace (as TetGen and the other
+/// formats' readers separate them), kept inline (no allocation) up to 24 of them.
 pub(crate) struct Tokens<'a> {
     inline: [&'a str; 24],
     len: usize,
@@ -325,7 +327,7 @@ impl<'a> Tokens<'a> {
             len: 0,
             heap: Vec::new(),
         };
-        for tok in line.split_whitespace() {
+        for tok in line.split_ascii_whitespace() {
             if t.len < 24 {
                 t.inline[t.len] = tok;
             } else {

@@ -47,6 +47,26 @@ fn rejects_non_numeric_nan_and_range() {
 }
 
 #[test]
+fn separators_are_ascii_whitespace() {
+    // Tabs, carriage returns and form feeds separate tokens; a no-break space does not,
+    // and a line holding only one is a row (not a blank line) whose text is named.
+    assert_eq!(
+        read_input(&tmp(
+            "ws.node",
+            "4\t3 0 0\r\n1 0\x0c0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n"
+        ))
+        .unwrap()
+        .points
+        .len(),
+        4
+    );
+    let e = err("nbsp.node", "2 3 0 0\n1 0\u{a0}0 0\n2 1 1 1\n");
+    assert_eq!(e.line, 2, "{e}");
+    let e = err("nbsp2.node", "2 3 0 0\n\u{a0}\n1 0 0 0\n2 1 1 1\n");
+    assert_eq!(e.line, 2, "{e}");
+}
+
+#[test]
 fn rejects_truncated_and_empty() {
     let e = err("trunc.node", "5 3 0 0\n1 0 0 0\n2 1 0 0\n");
     assert!(e.message.contains("truncated"), "{e}");

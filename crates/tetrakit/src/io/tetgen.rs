@@ -69,7 +69,7 @@ fn first_row(body: &str, first_line: usize) -> Option<(usize, &str)> {
             .split('#')
             .next()
             .unwrap_or("")
-            .split_whitespace()
+            .split_ascii_whitespace()
             .next()?;
         Some((first_line + i, t))
     })
@@ -99,10 +99,11 @@ fn parse_body<T: Send>(
         cuts.push(end);
     }
     let pieces: Vec<&str> = cuts.windows(2).map(|w| &body[w[0]..w[1]]).collect();
+    // A token before any `#` (the same test as `Tokens`, on bytes).
     let meaningful = |raw: &str| {
-        raw.split('#')
-            .next()
-            .is_some_and(|c| c.split_whitespace().next().is_some())
+        raw.bytes()
+            .take_while(|&b| b != b'#')
+            .any(|b| !b.is_ascii_whitespace())
     };
     let counts: Vec<(usize, usize)> = pieces
         .par_iter()
