@@ -137,8 +137,13 @@ pub fn beta_skeleton(
     })
 }
 
-/// Bounding box of the disk around the midpoint of `pq` of radius `factor·|pq|`,
-/// widened by a relative margin far above the rounding error.
+/// Bounding box of the disk around the midpoint of `pq` of radius `factor·|pq|`, widened
+/// by a margin far above the rounding error. With coordinates in the exact range
+/// ([`beta_skeleton`] checks them), nothing underflows or overflows: the midpoint is off
+/// by at most one rounding of each coordinate (`u·|m|`), `|pq|` by a few roundings
+/// relative (`4u`), and `factor` (a square root, for lunes) by one more. The margin is
+/// `10^-9` relative plus `10^-9·(|m_x| + |m_y|)`, more than `10^6` times that; the grid
+/// query widens the box by a further cell. So every site in the disk is tested exactly.
 fn disk_box(a: &Point2, b: &Point2, factor: f64) -> (Point2, Point2) {
     let m = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
     let len = (b[0] - a[0]).hypot(b[1] - a[1]);
