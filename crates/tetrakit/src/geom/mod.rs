@@ -23,8 +23,8 @@ pub use intersect::{
 };
 pub use predicates::{
     ApexPlane, Dir, Frame, MAX_MAGNITUDE, MIN_MAGNITUDE, Plane, Point2, Point3, bounding_box,
-    bounding_box2, collinear3, coordinate_in_range, drop_axis, incircle, insphere, lex_cmp,
-    orient2d, orient2d_drop, orient3d, projection_axis, strictly_between,
+    collinear3, coordinate_in_range, drop_axis, incircle, insphere, lex_cmp, orient2d,
+    orient2d_drop, orient3d, projection_axis, strictly_between,
 };
 pub use proximity::{
     DiamondHit, Ratio, cmp_length, corner_dot_sign, diamond_hit, in_beta_region, in_lune,

@@ -396,29 +396,18 @@ pub fn incircle(a: &Point2, b: &Point2, c: &Point2, d: &Point2) -> i8 {
     sign(robust::incircle(f(a), f(b), f(c), f(d)))
 }
 
-/// The axis-aligned bounding box `(lo, hi)` of a planar point set (infinite bounds when
-/// empty).
+/// The axis-aligned bounding box `(lo, hi)` of a point set in 2D or 3D (infinite bounds
+/// when empty).
 ///
 /// ```
-/// assert_eq!(tetrakit::geom::bounding_box2(&[[1.0, 5.0], [3.0, 2.0]]), ([1.0, 2.0], [3.0, 5.0]));
+/// use tetrakit::geom::bounding_box;
+/// assert_eq!(bounding_box(&[[1.0, 5.0], [3.0, 2.0]]), ([1.0, 2.0], [3.0, 5.0]));
+/// assert_eq!(bounding_box(&[[0.0, 1.0, 2.0]]).1, [0.0, 1.0, 2.0]);
 /// ```
-pub fn bounding_box2(points: &[Point2]) -> (Point2, Point2) {
-    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+pub fn bounding_box<const N: usize>(points: &[[f64; N]]) -> ([f64; N], [f64; N]) {
+    let (mut lo, mut hi) = ([f64::INFINITY; N], [f64::NEG_INFINITY; N]);
     for p in points {
-        for k in 0..2 {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
-        }
-    }
-    (lo, hi)
-}
-
-/// The axis-aligned bounding box `(lo, hi)` of a point set (infinite bounds when empty).
-pub fn bounding_box(points: &[Point3]) -> (Point3, Point3) {
-    let mut lo = [f64::INFINITY; 3];
-    let mut hi = [f64::NEG_INFINITY; 3];
-    for p in points {
-        for k in 0..3 {
+        for k in 0..N {
             lo[k] = lo[k].min(p[k]);
             hi[k] = hi[k].max(p[k]);
         }
@@ -433,9 +422,15 @@ pub fn lex_cmp(a: &Point3, b: &Point3) -> std::cmp::Ordering {
         .then(a[2].total_cmp(&b[2]))
 }
 
-/// For three collinear points, true when `p` lies strictly between `a` and `b`.
-pub fn strictly_between(a: &Point3, p: &Point3, b: &Point3) -> bool {
-    (0..3).any(|k| (a[k] < p[k] && p[k] < b[k]) || (b[k] < p[k] && p[k] < a[k]))
+/// For three collinear points (2D or 3D), true when `p` lies strictly between `a` and `b`.
+///
+/// ```
+/// use tetrakit::geom::strictly_between;
+/// assert!(strictly_between(&[0.0, 4.0], &[0.0, 3.0], &[0.0, 1.0]));
+/// assert!(!strictly_between(&[0.0, 0.0, 0.0], &[2.0, 2.0, 2.0], &[1.0, 1.0, 1.0]));
+/// ```
+pub fn strictly_between<const N: usize>(a: &[f64; N], p: &[f64; N], b: &[f64; N]) -> bool {
+    (0..N).any(|k| (a[k] < p[k] && p[k] < b[k]) || (b[k] < p[k] && p[k] < a[k]))
 }
 
 #[cfg(test)]

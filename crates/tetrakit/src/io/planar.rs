@@ -80,7 +80,7 @@ pub struct Svg {
 impl Svg {
     /// A drawing whose view fits `points` (plus a margin).
     pub fn new(points: &[Point2]) -> Svg {
-        let (mut lo, mut hi) = crate::geom::bounding_box2(points);
+        let (mut lo, mut hi) = crate::geom::bounding_box(points);
         if points.is_empty() {
             (lo, hi) = ([0.0; 2], [1.0; 2]);
         }

@@ -13,7 +13,7 @@
 //! `d` come in one angular order around `a` and in the other around `b`, so a crossing
 //! pair is an inversion between two sorted orders.
 
-use crate::geom::{Point2, orient2d};
+use crate::geom::{Point2, orient2d, strictly_between};
 use rayon::prelude::*;
 use std::cmp::Ordering;
 use std::collections::HashSet;
@@ -48,7 +48,7 @@ pub fn edge_blocker(points: &[Point2], a: u32, b: u32) -> Option<Blocker> {
             continue;
         }
         match orient2d(pa, pb, p(s)) {
-            0 if between(pa, p(s), pb) => return Some(Blocker::Site(s)),
+            0 if strictly_between(pa, p(s), pb) => return Some(Blocker::Site(s)),
             0 => {}
             o => items.push((s, o)),
         }
@@ -83,16 +83,6 @@ pub fn edge_blocker(points: &[Point2], a: u32, b: u32) -> Option<Blocker> {
         g = end;
     }
     None
-}
-
-/// True when `x`, collinear with `a` and `b`, lies strictly between them.
-fn between(a: &Point2, x: &Point2, b: &Point2) -> bool {
-    let strictly = |u: f64, v: f64, w: f64| (u < v && v < w) || (w < v && v < u);
-    if a[0] != b[0] {
-        strictly(a[0], x[0], b[0])
-    } else {
-        strictly(a[1], x[1], b[1])
-    }
 }
 
 /// Every pair of sites `[i, j]` (`i < j`) whose open segment holds another site. Exact,
@@ -150,12 +140,17 @@ mod tests {
     use crate::planar::mwt::cross;
     use crate::rng::Rng;
 
+    /// Site `s` lies in the open segment `ab` (brute force: orientation and order).
+    fn inside(pts: &[Point2], a: u32, b: u32, s: u32) -> bool {
+        let p = |i: u32| &pts[i as usize];
+        s != a && s != b && orient2d(p(a), p(b), p(s)) == 0 && strictly_between(p(a), p(s), p(b))
+    }
+
     fn brute_blocker(pts: &[Point2], a: u32, b: u32) -> bool {
         let n = pts.len() as u32;
         let p = |i: u32| &pts[i as usize];
-        (0..n).any(|s| {
-            s != a && s != b && orient2d(p(a), p(b), p(s)) == 0 && between(p(a), p(s), p(b))
-        }) || (0..n).any(|c| (0..n).any(|d| cross(p(a), p(b), p(c), p(d))))
+        (0..n).any(|s| inside(pts, a, b, s))
+            || (0..n).any(|c| (0..n).any(|d| cross(p(a), p(b), p(c), p(d))))
     }
 
     /// Against the brute force on grids (many collinear and crossing ties) and random
@@ -181,19 +176,12 @@ mod tests {
                     let p = |i: u32| &pts[i as usize];
                     match got {
                         None => uncrossable += 1,
-                        Some(Blocker::Site(s)) => {
-                            assert!(orient2d(p(a), p(b), p(s)) == 0 && between(p(a), p(s), p(b)))
-                        }
+                        Some(Blocker::Site(s)) => assert!(inside(&pts, a, b, s)),
                         Some(Blocker::Crossing([c, d])) => {
                             assert!(cross(p(a), p(b), p(c), p(d)))
                         }
                     }
-                    let on = (0..m).any(|s| {
-                        s != a
-                            && s != b
-                            && orient2d(p(a), p(b), p(s)) == 0
-                            && between(p(a), p(s), p(b))
-                    });
+                    let on = (0..m).any(|s| inside(&pts, a, b, s));
                     assert_eq!(blocked.contains(&[a, b]), on, "{pts:?} {a} {b}");
                 }
             }

@@ -23,7 +23,7 @@ pub(crate) struct PointGrid {
 impl PointGrid {
     /// A grid of about `per_cell` points per cell over the bounding box of `points`.
     pub fn new(points: &[Point2], per_cell: f64) -> PointGrid {
-        let (lo, hi) = crate::geom::bounding_box2(points);
+        let (lo, hi) = crate::geom::bounding_box(points);
         let (w, h) = ((hi[0] - lo[0]).max(0.0), (hi[1] - lo[1]).max(0.0));
         let cells = (points.len() as f64 / per_cell).clamp(1.0, 4e7);
         let mut cell = ((w * h) / cells).sqrt();

@@ -17,7 +17,7 @@ pub(crate) struct EdgeGrid {
 impl EdgeGrid {
     /// A grid over the edges `ids` of `edges`, cells about the mean edge length.
     pub fn new(points: &[Point2], edges: &[[u32; 2]], ids: &[u32]) -> EdgeGrid {
-        let (lo, hi) = crate::geom::bounding_box2(points);
+        let (lo, hi) = crate::geom::bounding_box(points);
         let len = |e: &[u32; 2]| {
             let (a, b) = (points[e[0] as usize], points[e[1] as usize]);
             (b[0] - a[0]).hypot(b[1] - a[1])
