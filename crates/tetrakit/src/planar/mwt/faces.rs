@@ -489,21 +489,10 @@ mod tests {
                     )
                 })
                 .collect();
+            let blocked = crate::planar::blocked_pairs(&pts);
             let chords: HashSet<[u32; 2]> = (0..n)
                 .flat_map(|a| (a + 1..n).map(move |b| [a, b]))
-                .filter(|&[a, b]| {
-                    !hull_set.contains(&[a, b])
-                        && !(0..n).any(|r| {
-                            r != a
-                                && r != b
-                                && crate::geom::diamond_hit(
-                                    &pts[a as usize],
-                                    &pts[b as usize],
-                                    &pts[r as usize],
-                                )
-                                .on_segment
-                        })
-                })
+                .filter(|e| !hull_set.contains(e) && !blocked.contains(e))
                 .collect();
             let face = Face {
                 outer: hull.vertices.clone(),

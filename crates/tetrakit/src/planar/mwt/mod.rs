@@ -266,17 +266,13 @@ fn collinear(points: &[Point2]) -> Mwt {
     }
 }
 
-/// Every segment without a site on its open interior (`O(n³)`; small inputs).
+/// Every segment without a site on its open interior (`O(n² log n)`; small inputs).
 fn all_segments(points: &[Point2]) -> Vec<[u32; 2]> {
+    let blocked = super::blocked_pairs(points);
     let n = points.len() as u32;
     (0..n)
         .flat_map(|a| (a + 1..n).map(move |b| [a, b]))
-        .filter(|&[a, b]| {
-            let (pa, pb) = (&points[a as usize], &points[b as usize]);
-            !(0..n).any(|r| {
-                r != a && r != b && crate::geom::diamond_hit(pa, pb, &points[r as usize]).on_segment
-            })
-        })
+        .filter(|e| !blocked.contains(e))
         .collect()
 }
 
