@@ -68,6 +68,28 @@ impl Skeleton {
         &self.tris[self.tri_start[e as usize] as usize..self.tri_start[e as usize + 1] as usize]
     }
 
+    /// For edge `e = [p, q]`, calls `f(r, edge p–r, edge q–r)` for every common
+    /// neighbour `r > q` (so each candidate triangle once, from its two smallest
+    /// vertices): a merge of the two sorted neighbour lists.
+    fn third_vertices(&self, e: u32, mut f: impl FnMut(u32, u32, u32)) {
+        let [p, q] = self.edges[e as usize];
+        let (a, b) = (self.around(p), self.around(q));
+        let (mut i, mut j) = (0, 0);
+        while i < a.len() && j < b.len() {
+            match a[i].0.cmp(&b[j].0) {
+                std::cmp::Ordering::Less => i += 1,
+                std::cmp::Ordering::Greater => j += 1,
+                std::cmp::Ordering::Equal => {
+                    if a[i].0 > q {
+                        f(a[i].0, a[i].1, b[j].1);
+                    }
+                    i += 1;
+                    j += 1;
+                }
+            }
+        }
+    }
+
     /// Neighbours of `v` with edge ids.
     pub fn around(&self, v: u32) -> &[(u32, u32)] {
         &self.adj[self.start[v as usize] as usize..self.start[v as usize + 1] as usize]
@@ -106,33 +128,19 @@ fn empty_triangles(points: &[Point2], sk: &Skeleton) -> (Vec<u32>, Vec<Tri>) {
         .into_par_iter()
         .flat_map_iter(|e| {
             let [p, q] = sk.edges[e as usize];
-            let (a, b) = (sk.around(p), sk.around(q));
             let mut out = Vec::new();
-            let (mut i, mut j) = (0, 0);
-            while i < a.len() && j < b.len() {
-                match a[i].0.cmp(&b[j].0) {
-                    std::cmp::Ordering::Less => i += 1,
-                    std::cmp::Ordering::Greater => j += 1,
-                    std::cmp::Ordering::Equal => {
-                        let (r, epr, eqr) = (a[i].0, a[i].1, b[j].1);
-                        i += 1;
-                        j += 1;
-                        if r < q {
-                            continue; // each triangle once, from its two smallest vertices
-                        }
-                        let o = orient2d(pt(p), pt(q), pt(r));
-                        if o == 0 || !triangle_empty(points, &grid, p, q, r, o) {
-                            continue;
-                        }
-                        // p < q < r: seen from [p, r] the apex q turns -o, from
-                        // [q, r] the apex p turns o.
-                        let tri = |apex, sides, turn| Tri { apex, sides, turn };
-                        out.push((e, tri(r, [epr, eqr], o)));
-                        out.push((epr, tri(q, [e, eqr], -o)));
-                        out.push((eqr, tri(p, [e, epr], o)));
-                    }
+            sk.third_vertices(e, |r, epr, eqr| {
+                let o = orient2d(pt(p), pt(q), pt(r));
+                if o == 0 || !triangle_empty(points, &grid, p, q, r, o) {
+                    return;
                 }
-            }
+                // p < q < r: seen from [p, r] the apex q turns -o, from [q, r] the apex
+                // p turns o.
+                let tri = |apex, sides, turn| Tri { apex, sides, turn };
+                out.push((e, tri(r, [epr, eqr], o)));
+                out.push((epr, tri(q, [e, eqr], -o)));
+                out.push((eqr, tri(p, [e, epr], o)));
+            });
             out
         })
         .collect();
@@ -142,23 +150,11 @@ fn empty_triangles(points: &[Point2], sk: &Skeleton) -> (Vec<u32>, Vec<Tri>) {
 /// The number of triangles whose three edges are candidates (empty or not): a merge of
 /// two sorted neighbour lists per edge.
 fn candidate_triangles(sk: &Skeleton) -> usize {
-    (0..sk.edges.len())
+    (0..sk.edges.len() as u32)
         .into_par_iter()
         .map(|e| {
-            let [p, q] = sk.edges[e];
-            let (a, b) = (sk.around(p), sk.around(q));
-            let (mut i, mut j, mut count) = (0, 0, 0);
-            while i < a.len() && j < b.len() {
-                match a[i].0.cmp(&b[j].0) {
-                    std::cmp::Ordering::Less => i += 1,
-                    std::cmp::Ordering::Greater => j += 1,
-                    std::cmp::Ordering::Equal => {
-                        count += usize::from(a[i].0 > q);
-                        i += 1;
-                        j += 1;
-                    }
-                }
-            }
+            let mut count = 0;
+            sk.third_vertices(e, |_, _, _| count += 1);
             count
         })
         .sum()
