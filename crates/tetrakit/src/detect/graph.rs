@@ -73,15 +73,21 @@ impl Graph {
     /// Sorted neighbours of `v`.
     #[inline]
     pub fn nbrs(&self, v: u32) -> &[u32] {
-        &self.nbrs[self.start[v as usize]..self.start[v as usize + 1]]
+        &self.nbrs[self.slots(v)]
     }
 
     /// Where `b` sits in the flat adjacency array (within `a`'s row), if `ab` is a segment:
     /// a dense index for per-dart flags (`0..2 × edge_count()`).
     #[inline]
     pub fn slot(&self, a: u32, b: u32) -> Option<usize> {
-        let from = self.start[a as usize];
+        let from = self.slots(a).start;
         self.nbrs(a).binary_search(&b).ok().map(|i| from + i)
+    }
+
+    /// The slots of `v`'s row, in the order of [`Self::nbrs`].
+    #[inline]
+    pub fn slots(&self, v: u32) -> std::ops::Range<usize> {
+        self.start[v as usize]..self.start[v as usize + 1]
     }
 
     /// True when `ab` is a segment.

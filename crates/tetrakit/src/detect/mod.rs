@@ -376,8 +376,8 @@ fn edges_are_segments(tets: &[[u32; 4]], g: &Graph) -> Result<(), Witness> {
         }
     }
     for x in 0..g.len() as u32 {
-        for &y in g.nbrs(x).iter().filter(|&&y| y > x) {
-            if !g.slot(x, y).is_some_and(|s| used[s]) {
+        for (slot, &y) in g.slots(x).zip(g.nbrs(x)) {
+            if y > x && !used[slot] {
                 return Err(Witness::new(
                     WitnessKind::Inconsistent,
                     vec![x, y],
@@ -532,6 +532,27 @@ fn unconfirmed_witness(t: [u32; 4], found: &dyn Fn(u32, [u32; 3]) -> bool) -> Wi
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `edges(T) = L` names a tetrahedron edge that is no segment, and a segment that is
+    /// no tetrahedron edge.
+    #[test]
+    fn edges_must_equal_the_segments() {
+        let tet = [[0, 1, 2, 3]];
+        let six = [[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]];
+        assert!(edges_are_segments(&tet, &Graph::new(5, &six).unwrap()).is_ok());
+        let mut extra = six.to_vec();
+        extra.push([2, 4]);
+        let w = edges_are_segments(&tet, &Graph::new(5, &extra).unwrap()).unwrap_err();
+        assert_eq!(
+            (w.kind, w.segments.clone()),
+            (WitnessKind::Inconsistent, vec![[2, 4]])
+        );
+        let w = edges_are_segments(&tet, &Graph::new(5, &six[1..]).unwrap()).unwrap_err();
+        assert_eq!(
+            (w.kind, w.vertices.clone()),
+            (WitnessKind::Inconsistent, vec![0, 1])
+        );
+    }
 
     /// Step 4 on synthetic links: a tetrahedron missing from one vertex's link is reported
     /// with the vertices it was found from.

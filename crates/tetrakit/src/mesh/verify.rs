@@ -273,16 +273,10 @@ fn pair_faces(n: usize, tets: &[[u32; 4]], signs: &[i8]) -> (Vec<BoundaryFace>, 
         })
         .collect();
     let (start, mut recs) = bucket_faces(&oriented, n);
-    let mut chunks = Vec::with_capacity(n);
-    let mut rest = recs.as_mut_slice();
-    for i in 0..n {
-        let (head, tail) = rest.split_at_mut(start[i + 1] - start[i]);
-        chunks.push((i as u32, head));
-        rest = tail;
-    }
-    let results: Vec<(Vec<BoundaryFace>, Vec<Problem>)> = chunks
+    let results: Vec<(Vec<BoundaryFace>, Vec<Problem>)> = split_at_offsets(&mut recs, &start)
         .into_par_iter()
-        .map(|(a, c)| pair_bucket(a, c))
+        .enumerate()
+        .map(|(a, c)| pair_bucket(a as u32, c))
         .collect();
     let mut boundary = Vec::new();
     let mut problems = Vec::new();
