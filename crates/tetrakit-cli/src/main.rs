@@ -162,8 +162,8 @@ struct KeilCliArgs {
     /// --check-random).
     #[arg(long)]
     beta: String,
-    /// Sites on each arc (default: the smallest that separates xy, up to 32); with
-    /// --check-random, points per random set (default 200).
+    /// Sites on each arc (default: one more than Lemma 5.8's bound, where the thesis
+    /// proves xy is in no MWT); with --check-random, points per random set (default 200).
     #[arg(long)]
     n: Option<usize>,
     /// Print one JSON object on stdout.

@@ -761,10 +761,7 @@ mod tests {
             assert_eq!(swept, keep, "sweep and sign table disagree at vertex {v}");
             let mut slow = faces_from_rotation(&lv, &hull, &edges, &keep).unwrap();
             let norm = |f: &mut Vec<[u32; 3]>| {
-                for x in f.iter_mut() {
-                    let m = (0..3).min_by_key(|&i| x[i]).unwrap();
-                    x.rotate_left(m);
-                }
+                f.iter_mut().for_each(|x| *x = min_first(*x));
                 f.sort_unstable();
             };
             norm(&mut slow);

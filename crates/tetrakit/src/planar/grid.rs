@@ -27,7 +27,7 @@ impl PointGrid {
         let (w, h) = ((hi[0] - lo[0]).max(0.0), (hi[1] - lo[1]).max(0.0));
         let cells = (points.len() as f64 / per_cell).clamp(1.0, 4e7);
         let mut cell = ((w * h) / cells).sqrt();
-        if cell.is_nan() || cell <= 0.0 || !cell.is_finite() {
+        if !cell.is_finite() || cell <= 0.0 {
             cell = (w.max(h) / cells).max(f64::MIN_POSITIVE);
         }
         let nx = ((w / cell) as usize + 1).min(1 << 14);
