@@ -75,6 +75,10 @@ struct DetectArgs {
     /// on it).
     #[arg(long, value_enum, default_value_t)]
     links: tetrakit::detect::LinkMethod,
+    /// Skip the Delaunay proposal and always run the thesis's per-vertex algorithm (the
+    /// verdict never depends on it).
+    #[arg(long)]
+    links_only: bool,
 }
 
 #[derive(Args)]
@@ -325,7 +329,15 @@ enum CorruptKind {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let code = match cli.cmd {
-        Cmd::Detect(a) => run::detect(&a.input, a.json, a.output.as_deref(), a.links),
+        Cmd::Detect(a) => run::detect(
+            &a.input,
+            a.json,
+            a.output.as_deref(),
+            tetrakit::detect::Options {
+                delaunay_first: !a.links_only,
+                links: a.links,
+            },
+        ),
         Cmd::Check(a) => run::check(&a.input, a.convex, a.json),
         Cmd::Mintetra(a) => poly::mintetra(&a.input, a.json, a.output.as_deref(), a.confirm),
         Cmd::Tetrahedralize(a) => poly::tetrahedralize(poly::TetraArgs {

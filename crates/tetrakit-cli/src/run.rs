@@ -4,7 +4,7 @@ use crate::{CorruptKind, GenCommon, GenKind};
 use serde_json::json;
 use std::path::Path;
 use std::time::Instant;
-use tetrakit::detect::{Cells, Detection, LinkMethod, detect_with};
+use tetrakit::detect::{Cells, Detection, Options, detect_with};
 use tetrakit::generate::{self, Corruption};
 use tetrakit::geom::Hull3;
 use tetrakit::io::{self, Input};
@@ -36,7 +36,7 @@ fn read(path: &Path) -> Result<Input, u8> {
     io::read_input(path).map_err(fail)
 }
 
-pub fn detect(path: &Path, as_json: bool, output: Option<&Path>, links: LinkMethod) -> u8 {
+pub fn detect(path: &Path, as_json: bool, output: Option<&Path>, opts: Options) -> u8 {
     let start = Instant::now();
     let input = match read(path) {
         Ok(i) => i,
@@ -66,7 +66,7 @@ pub fn detect(path: &Path, as_json: bool, output: Option<&Path>, links: LinkMeth
             b.set_position(done);
         }
     };
-    let d = detect_with(&input.points, &segments, links, &report);
+    let d = detect_with(&input.points, &segments, opts, &report);
     if let Some(b) = bar {
         b.finish_and_clear();
     }
@@ -114,6 +114,7 @@ fn detection_json(d: &Detection, base: u32, seconds: f64, parsed: f64) -> serde_
         "dimension": d.dimension,
         "seconds": seconds,
         "parse_seconds": parsed,
+        "route": d.route,
     });
     match &d.result {
         Ok(Cells::Tetrahedra(t)) => v["tetrahedra"] = json!(t.len()),

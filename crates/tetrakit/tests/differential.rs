@@ -4,7 +4,7 @@
 //! t = |L| − n − n_b + 3 (Theorem 2.3, condition 3, with n_b the points on the hull).
 
 use tetrakit::detect::{
-    Cells, LinkMethod, WitnessKind, detect_with, oracle::forms_tetrahedralization,
+    Cells, LinkMethod, Options, WitnessKind, detect_with, oracle::forms_tetrahedralization,
 };
 use tetrakit::generate::{cospherical_points, random_flips, random_points, tetrahedralize_points};
 use tetrakit::geom::{Hull3, Point3, orient2d, point_in_segment_interior, segments_meet};
@@ -17,13 +17,20 @@ struct Tally {
     no: usize,
 }
 
-/// Runs `detect` with both link methods (the sign table and the sphere sweep) against the
-/// oracle.
+/// Runs `detect` with both link methods (the sign table and the sphere sweep), with and
+/// without the Delaunay proposal first, against the oracle.
 fn check(points: &[Point3], edges: &[(u32, u32)], tally: &mut Tally, what: &str) {
     let expected = forms_tetrahedralization(points, edges);
-    for method in [LinkMethod::SignTable, LinkMethod::Sweep] {
-        let what = format!("{what} ({method:?})");
-        check_method(points, edges, expected, method, &what);
+    for (delaunay_first, links) in [
+        (false, LinkMethod::SignTable),
+        (false, LinkMethod::Sweep),
+        (true, LinkMethod::Sweep),
+    ] {
+        let opts = Options {
+            delaunay_first,
+            links,
+        };
+        check_method(points, edges, expected, opts, &format!("{what} ({opts:?})"));
     }
     if expected {
         tally.yes += 1;
@@ -36,10 +43,10 @@ fn check_method(
     points: &[Point3],
     edges: &[(u32, u32)],
     expected: bool,
-    method: LinkMethod,
+    opts: Options,
     what: &str,
 ) {
-    let d = detect_with(points, edges, method, &|_, _| {}).expect("well-formed input");
+    let d = detect_with(points, edges, opts, &|_, _| {}).expect("well-formed input");
     assert_eq!(
         d.is_yes(),
         expected,
@@ -352,4 +359,66 @@ fn planar_triangulations() {
         tally.yes,
         tally.no
     );
+}
+
+/// The Delaunay route: on Delaunay edge sets in general position it answers (with exactly
+/// the brute-force Delaunay tetrahedra), and every variant gets the oracle's verdict from
+/// all routes (`check`).
+#[test]
+fn delaunay_route_on_delaunay_edge_sets() {
+    use tetrakit::detect::{Route, oracle::delaunay_tetrahedra};
+    let mut rng = Rng::new(7);
+    let mut tally = Tally::default();
+    let mut by_delaunay = 0;
+    for case in 0..300 {
+        let n = 5 + case % 14;
+        let points = random_points(n, case as u64 + 1, None);
+        let Some(mut tets) = delaunay_tetrahedra(&points) else {
+            continue;
+        };
+        let edges = tetrakit::mesh::edges_of(&tets);
+        let d = detect_with(&points, &edges, Options::default(), &|_, _| {}).unwrap();
+        let Ok(Cells::Tetrahedra(mut found)) = d.result else {
+            panic!("case {case}: the Delaunay edge set is rejected");
+        };
+        assert_eq!(d.route, Route::Delaunay, "case {case}");
+        by_delaunay += 1;
+        for t in tets.iter_mut().chain(found.iter_mut()) {
+            t.sort_unstable();
+        }
+        tets.sort_unstable();
+        found.sort_unstable();
+        assert_eq!(found, tets, "case {case}");
+        check_with_variants(
+            &points,
+            &edges,
+            &mut rng,
+            &mut tally,
+            &format!("Delaunay {case}"),
+        );
+    }
+    assert!(
+        by_delaunay >= 290 && tally.no > 100,
+        "{by_delaunay} {}",
+        tally.no
+    );
+}
+
+/// The Delaunay proposal withdraws on cospherical and coplanar input and fails
+/// certification on valid non-Delaunay tetrahedralizations; the thesis's algorithm then
+/// answers YES.
+#[test]
+fn delaunay_route_falls_back_to_links() {
+    use tetrakit::detect::Route;
+    let mut links = 0;
+    let mut instances = vec![tetrakit::generate::kuhn(3)];
+    for seed in 0..40 {
+        instances.extend(tet_instance(random_points(12, seed, None), 30, seed));
+    }
+    for t in &instances {
+        let d = detect_with(&t.points, &t.edges(), Options::default(), &|_, _| {}).unwrap();
+        assert!(d.is_yes());
+        links += usize::from(d.route == Route::Links);
+    }
+    assert!(links >= 20, "{links} of {}", instances.len());
 }

@@ -121,3 +121,32 @@ impl Graph {
         comp
     }
 }
+
+/// Calls `found(j)` for every `y[j]` that is also in `x` (both sorted, no repeats), by
+/// galloping: `O(r log(len / r))` comparisons for `r` alternations between the lists.
+pub(super) fn intersect_sorted(x: &[u32], y: &[u32], mut found: impl FnMut(usize)) {
+    let (mut i, mut j) = (0, 0);
+    while i < x.len() && j < y.len() {
+        match x[i].cmp(&y[j]) {
+            std::cmp::Ordering::Equal => {
+                found(j);
+                i += 1;
+                j += 1;
+            }
+            std::cmp::Ordering::Less => i = gallop(x, i, y[j]),
+            std::cmp::Ordering::Greater => j = gallop(y, j, x[i]),
+        }
+    }
+}
+
+/// The first index after `from` whose entry is at least `t` (`s[from] < t`): exponential,
+/// then binary search.
+fn gallop(s: &[u32], from: usize, t: u32) -> usize {
+    let (mut lo, mut step) = (from, 1);
+    while lo + step < s.len() && s[lo + step] < t {
+        lo += step;
+        step *= 2;
+    }
+    let hi = (lo + step).min(s.len());
+    lo + 1 + s[lo + 1..hi].partition_point(|&e| e < t)
+}

@@ -47,7 +47,7 @@
 //! connected sphere (Euler characteristic 2, so Theorem 2.4's count holds). These checks only
 //! need to be *complete*: soundness of a YES comes from the independent verifier.
 //!
-use super::graph::Graph;
+use super::graph::{Graph, intersect_sorted};
 use super::rotation::{connected, trace_faces};
 use super::witness::{Witness, WitnessKind, ids};
 use crate::geom::{
@@ -386,35 +386,6 @@ fn local_edges(g: &Graph, nb: &[u32], edges: &mut Vec<(u32, u32)>) {
             edges.push((i as u32, (i + 1 + j) as u32));
         });
     }
-}
-
-/// Calls `found(j)` for every `y[j]` that is also in `x` (both sorted, no repeats), by
-/// galloping: `O(r log(len / r))` comparisons for `r` alternations between the lists.
-fn intersect_sorted(x: &[u32], y: &[u32], mut found: impl FnMut(usize)) {
-    let (mut i, mut j) = (0, 0);
-    while i < x.len() && j < y.len() {
-        match x[i].cmp(&y[j]) {
-            Ordering::Equal => {
-                found(j);
-                i += 1;
-                j += 1;
-            }
-            Ordering::Less => i = gallop(x, i, y[j]),
-            Ordering::Greater => j = gallop(y, j, x[i]),
-        }
-    }
-}
-
-/// The first index after `from` whose entry is at least `t` (`s[from] < t`): exponential,
-/// then binary search.
-fn gallop(s: &[u32], from: usize, t: u32) -> usize {
-    let (mut lo, mut step) = (from, 1);
-    while lo + step < s.len() && s[lo + step] < t {
-        lo += step;
-        step *= 2;
-    }
-    let hi = (lo + step).min(s.len());
-    lo + 1 + s[lo + 1..hi].partition_point(|&e| e < t)
 }
 
 /// Which segments of `L_v` survive the generalized puncture rule.

@@ -12,6 +12,11 @@
 //! 4. (Step 4) every tetrahedron must be found from all four of its vertices;
 //! 5. the tetrahedra are certified by [`crate::mesh::verify`] and `edges(T) = L` is checked.
 //!
+//! Before steps 3–4, a cheap proposal is tried ([`Route::Delaunay`]): when `L` is the edge
+//! set of a Delaunay tetrahedralization, its tetrahedra are found from the graph once each
+//! (see `delaunay.rs`) and certified by step 5 alone. When the proposal is withdrawn or
+//! fails step 5, steps 3–5 decide as above; a NO always comes from them.
+//!
 //! Work is output-sensitive: `L_v` is listed from the adjacency lists of `v`'s neighbours
 //! (galloping intersections, never a scan of all of `L`), and the link is freed of
 //! punctured segments by the thesis's sphere sweep with `O(|L_v| log |L_v|)` exact
@@ -21,6 +26,7 @@
 //! edge set of a tetrahedralization), so a failed check is a correct NO; crossing segments
 //! and vertices inside segments are reported as such whenever they are met.
 
+mod delaunay;
 mod graph;
 mod link;
 pub mod oracle;
@@ -61,6 +67,39 @@ pub struct Detection {
     pub dimension: usize,
     /// The cells (YES) or why not (NO).
     pub result: Result<Cells, Witness>,
+    /// Which procedure gave the answer.
+    pub route: Route,
+}
+
+/// Which procedure answered. Both end in the same certificate check, so the verdict never
+/// depends on it; only the work does.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Route {
+    /// The Delaunay tetrahedra of the graph, proposed once each and certified by
+    /// [`crate::mesh::verify`] plus `edges(T) = L` (YES only).
+    Delaunay,
+    /// The thesis's per-vertex links (§2.4), every tetrahedron confirmed from its four
+    /// vertices, then certified the same way (YES and NO).
+    Links,
+}
+
+/// What [`detect_with`] tries. The verdict never depends on it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Options {
+    /// Try the Delaunay proposal ([`Route::Delaunay`]) before the thesis's algorithm.
+    pub delaunay_first: bool,
+    /// How the thesis's algorithm computes links.
+    pub links: LinkMethod,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            delaunay_first: true,
+            links: LinkMethod::Sweep,
+        }
+    }
 }
 
 impl Detection {
@@ -107,22 +146,23 @@ pub fn detect_with_progress(
     segments: &[(u32, u32)],
     progress: Progress,
 ) -> Result<Detection, String> {
-    detect_with(points, segments, LinkMethod::Sweep, progress)
+    detect_with(points, segments, Options::default(), progress)
 }
 
-/// [`detect_with_progress`] with a choice of how links are computed. Both methods give
-/// the same verdict; they differ only in work.
+/// [`detect_with_progress`] with a choice of route and of how links are computed. All
+/// choices give the same verdict; they differ only in work.
 ///
 /// ```
-/// use tetrakit::detect::{detect_with, LinkMethod};
+/// use tetrakit::detect::{detect_with, LinkMethod, Options, Route};
 /// let t = tetrakit::generate::skew_lines(12);
-/// let d = detect_with(&t.points, &t.edges(), LinkMethod::SignTable, &|_, _| {}).unwrap();
-/// assert!(d.is_yes());
+/// let links_only = Options { delaunay_first: false, links: LinkMethod::SignTable };
+/// let d = detect_with(&t.points, &t.edges(), links_only, &|_, _| {}).unwrap();
+/// assert!(d.is_yes() && d.route == Route::Links);
 /// ```
 pub fn detect_with(
     points: &[Point3],
     segments: &[(u32, u32)],
-    method: LinkMethod,
+    opts: Options,
     progress: Progress,
 ) -> Result<Detection, String> {
     let n = points.len();
@@ -145,7 +185,7 @@ pub fn detect_with(
         .iter()
         .map(|s| [rank[s[0] as usize], rank[s[1] as usize]])
         .collect();
-    let Ok(mut d) = detect_ordered(&pts, &segs, method, progress) else {
+    let Ok(mut d) = detect_ordered(&pts, &segs, opts, progress) else {
         // Only a repeated segment gets here: name it in the caller's numbering.
         let orig: Vec<[u32; 2]> = segments.iter().map(|&(a, b)| [a, b]).collect();
         return Err(Graph::new(n, &orig)
@@ -193,7 +233,7 @@ fn spatial_order(points: &[Point3]) -> Vec<u32> {
 fn detect_ordered(
     points: &[Point3],
     segs: &[[u32; 2]],
-    method: LinkMethod,
+    opts: Options,
     progress: Progress,
 ) -> Result<Detection, String> {
     let mut phases = Phases::new();
@@ -212,6 +252,7 @@ fn detect_ordered(
             vec![],
             String::new(),
         )),
+        route: Route::Links,
     };
     if hull.dimension == 2 {
         let (hv, result) = planar::detect(points, &g);
@@ -233,7 +274,7 @@ fn detect_ordered(
         return Ok(out);
     }
     out.hull_vertices = (0..points.len()).filter(|&i| hull.on_boundary(i)).count();
-    out.result = detect3(points, &g, &hull, method, progress);
+    (out.route, out.result) = detect3(points, &g, &hull, opts, progress);
     Ok(out)
 }
 
@@ -256,13 +297,62 @@ fn detect3(
     points: &[Point3],
     g: &Graph,
     hull: &Hull3,
+    opts: Options,
+    progress: Progress,
+) -> (Route, Result<Cells, Witness>) {
+    let mut phases = Phases::new();
+    let checked =
+        connectivity(g).and_then(|()| rotation::check_chains(hull.polytope_edges(points), g));
+    phases.mark("connectivity and hull edges");
+    if let Err(w) = checked {
+        return (Route::Links, Err(w));
+    }
+    if opts.delaunay_first {
+        let proposed = delaunay::propose(points, g);
+        phases.mark("delaunay proposal");
+        if let Some(tets) = proposed
+            && certify(points, g, hull, &tets).is_ok()
+        {
+            phases.mark("verify");
+            return (Route::Delaunay, Ok(Cells::Tetrahedra(tets)));
+        }
+        phases.mark("verify");
+    }
+    (
+        Route::Links,
+        links_route(points, g, hull, opts.links, progress),
+    )
+}
+
+/// `T` is a tetrahedralization of the hull of the points ([`mesh::verify`]) and
+/// `edges(T) = L`.
+fn certify(points: &[Point3], g: &Graph, hull: &Hull3, tets: &[[u32; 4]]) -> Result<(), Witness> {
+    let mut phases = Phases::new();
+    let report = mesh::verify(points, tets, Some(hull));
+    phases.mark("mesh::verify");
+    if let Some(p) = report.problems.first() {
+        return Err(Witness::new(
+            WitnessKind::Inconsistent,
+            p.vertices.clone(),
+            vec![],
+            format!(
+                "the tetrahedra found from the links fail verification: {}",
+                p.detail
+            ),
+        ));
+    }
+    edges_are_segments(tets, g)
+}
+
+/// Steps 3–5: the thesis's per-vertex links, confirmation, certificate.
+fn links_route(
+    points: &[Point3],
+    g: &Graph,
+    hull: &Hull3,
     method: LinkMethod,
     progress: Progress,
 ) -> Result<Cells, Witness> {
     let mut phases = Phases::new();
-    connectivity(g)?;
-    rotation::check_chains(hull.polytope_edges(points), g)?;
-    phases.mark("connectivity and hull edges");
     let counter = std::sync::atomic::AtomicU64::new(0);
     let ctx = Ctx {
         pts: points,
@@ -325,20 +415,8 @@ fn detect3(
     phases.mark("links");
     let tets = confirm(&mut links).map_err(|w| sharpen(points, g, w))?;
     phases.mark("confirm");
-    let report = mesh::verify(points, &tets, Some(hull));
+    certify(points, g, hull, &tets)?;
     phases.mark("verify");
-    if let Some(p) = report.problems.first() {
-        return Err(Witness::new(
-            WitnessKind::Inconsistent,
-            p.vertices.clone(),
-            vec![],
-            format!(
-                "the tetrahedra found from the links fail verification: {}",
-                p.detail
-            ),
-        ));
-    }
-    edges_are_segments(&tets, g)?;
     Ok(Cells::Tetrahedra(tets))
 }
 

@@ -128,3 +128,44 @@ pub fn forms_tetrahedralization(points: &[Point3], segments: &[(u32, u32)]) -> b
         _ => false,
     }
 }
+
+/// The Delaunay tetrahedra of points with no five on a sphere and no four in a plane: every
+/// positively oriented `abcd` whose circumsphere has no point strictly inside, by brute
+/// force (`O(n^5)`; for tests of the Delaunay route of [`super::detect`]). `None` when the
+/// points are not in that general position.
+///
+/// ```
+/// use tetrakit::detect::oracle::delaunay_tetrahedra;
+/// let pts = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [1.0, 1.0, 1.1]];
+/// assert_eq!(delaunay_tetrahedra(&pts).unwrap().len(), 2);
+/// ```
+pub fn delaunay_tetrahedra(points: &[Point3]) -> Option<Vec<[u32; 4]>> {
+    let n = points.len() as u32;
+    let p = |i: u32| &points[i as usize];
+    let mut tets = Vec::new();
+    for a in 0..n {
+        for b in a + 1..n {
+            for c in b + 1..n {
+                for d in c + 1..n {
+                    let t = match orient3d(p(a), p(b), p(c), p(d)) {
+                        1 => [a, b, c, d],
+                        -1 => [a, c, b, d],
+                        _ => return None,
+                    };
+                    let mut empty = true;
+                    for e in (0..n).filter(|e| !t.contains(e)) {
+                        match crate::geom::insphere(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e)) {
+                            1 => empty = false,
+                            0 => return None,
+                            _ => {}
+                        }
+                    }
+                    if empty {
+                        tets.push(t);
+                    }
+                }
+            }
+        }
+    }
+    Some(tets)
+}

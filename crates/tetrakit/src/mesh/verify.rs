@@ -194,46 +194,53 @@ fn problem(kind: ProblemKind, tets: Vec<u32>, vertices: Vec<u32>, detail: String
 
 /// Index, repeated-vertex and orientation problems, and the orientation of every
 /// tetrahedron (0 when it is degenerate or malformed), computed once for the face pairing.
+/// The orientations are computed first and problems only for the tetrahedra whose sign
+/// is not +1, so a valid mesh allocates nothing per tetrahedron beyond its sign.
 fn check_tets(points: &[Point3], tets: &[[u32; 4]]) -> (Vec<Problem>, Vec<i8>) {
     let n = points.len() as u32;
-    let (problems, signs): (Vec<Option<Problem>>, Vec<i8>) = tets
+    let malformed = |t: &[u32; 4]| {
+        t.iter().any(|&v| v >= n) || (0..4).any(|a| (a + 1..4).any(|b| t[a] == t[b]))
+    };
+    let signs: Vec<i8> = tets
         .par_iter()
-        .enumerate()
-        .map(|(i, t)| {
-            let i = i as u32;
-            if let Some(&v) = t.iter().find(|&&v| v >= n) {
-                let d = format!("tetrahedron #{i} names vertex #{v}, but there are {n} points");
-                return (Some(problem(ProblemKind::BadIndex, vec![i], vec![v], d)), 0);
-            }
-            if (0..4).any(|a| (a + 1..4).any(|b| t[a] == t[b])) {
-                let d = format!("tetrahedron #{i} repeats a vertex: {}", ids(t));
-                let p = problem(ProblemKind::RepeatedVertex, vec![i], t.to_vec(), d);
-                return (Some(p), 0);
+        .map(|t| {
+            if malformed(t) {
+                return 0;
             }
             let p = |k: usize| &points[t[k] as usize];
-            let sign = orient3d(p(0), p(1), p(2), p(3));
-            let bad = match sign {
-                1 => None,
-                0 => Some(problem(
-                    ProblemKind::Degenerate,
-                    vec![i],
-                    t.to_vec(),
-                    format!(
-                        "tetrahedron #{i} {} has its four vertices in one plane",
-                        ids(t)
-                    ),
-                )),
-                _ => Some(problem(
-                    ProblemKind::Inverted,
-                    vec![i],
-                    t.to_vec(),
-                    format!("tetrahedron #{i} {} is negatively oriented", ids(t)),
-                )),
-            };
-            (bad, sign)
+            orient3d(p(0), p(1), p(2), p(3))
         })
-        .unzip();
-    (problems.into_iter().flatten().collect(), signs)
+        .collect();
+    let problems = signs
+        .par_iter()
+        .zip(tets)
+        .enumerate()
+        .filter(|(_, (s, _))| **s != 1)
+        .map(|(i, (&sign, t))| tet_problem(i as u32, t, sign, n))
+        .collect();
+    (problems, signs)
+}
+
+/// What is wrong with tetrahedron `i` = `t` of orientation `sign` (not +1).
+fn tet_problem(i: u32, t: &[u32; 4], sign: i8, n: u32) -> Problem {
+    if let Some(&v) = t.iter().find(|&&v| v >= n) {
+        let d = format!("tetrahedron #{i} names vertex #{v}, but there are {n} points");
+        return problem(ProblemKind::BadIndex, vec![i], vec![v], d);
+    }
+    if (0..4).any(|a| (a + 1..4).any(|b| t[a] == t[b])) {
+        let d = format!("tetrahedron #{i} repeats a vertex: {}", ids(t));
+        return problem(ProblemKind::RepeatedVertex, vec![i], t.to_vec(), d);
+    }
+    let (kind, what) = if sign == 0 {
+        (
+            ProblemKind::Degenerate,
+            "has its four vertices in one plane",
+        )
+    } else {
+        (ProblemKind::Inverted, "is negatively oriented")
+    };
+    let d = format!("tetrahedron #{i} {} {what}", ids(t));
+    problem(kind, vec![i], t.to_vec(), d)
 }
 
 /// A boundary face, oriented outward, with its tetrahedron.
