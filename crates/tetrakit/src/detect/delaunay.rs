@@ -30,8 +30,8 @@
 //! already taken) mean the input is not in general position: the proposal is withdrawn and
 //! the thesis's algorithm, which assumes nothing, decides. All tests are exact.
 
-use super::graph::{Graph, intersect_sorted};
-use crate::geom::{Dir, Frame, Point3, insphere};
+use super::graph::Graph;
+use crate::geom::{Dir, Frame, Point3};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicBool, Ordering};
 
@@ -68,6 +68,12 @@ struct Scratch {
     common: Vec<u32>,
 }
 
+thread_local! {
+    /// Per vertex, its index in the neighbour list of the vertex being processed (or
+    /// `u32::MAX`): common neighbours by one lookup each instead of a list intersection.
+    static POSITION: std::cell::RefCell<Vec<u32>> = const { std::cell::RefCell::new(Vec::new()) };
+}
+
 /// Appends the tetrahedra whose lowest vertex is `a`; `None` on a tie or a plane.
 fn tets_at(
     points: &[Point3],
@@ -81,21 +87,49 @@ fn tets_at(
     if nb.len() - first < 3 {
         return Some(());
     }
-    let pa = &points[a as usize];
-    let frame = Frame::new(pa);
+    POSITION.with(|pos| {
+        let mut pos = pos.borrow_mut();
+        pos.resize(g.len(), u32::MAX);
+        for (i, &x) in nb.iter().enumerate() {
+            pos[x as usize] = i as u32;
+        }
+        let found = tets_from(points, g, a, first, &pos, s, out);
+        for &x in nb {
+            pos[x as usize] = u32::MAX;
+        }
+        found
+    })
+}
+
+/// [`tets_at`] with the positions of `a`'s neighbours marked in `pos`.
+fn tets_from(
+    points: &[Point3],
+    g: &Graph,
+    a: u32,
+    first: usize,
+    pos: &[u32],
+    s: &mut Scratch,
+    out: &mut Vec<[u32; 4]>,
+) -> Option<()> {
+    let nb = g.nbrs(a);
+    let frame = Frame::new(&points[a as usize]);
     s.dirs.clear();
     s.dirs
         .extend(nb.iter().map(|&x| frame.dir(&points[x as usize])));
     for (bi, &b) in nb.iter().enumerate().skip(first) {
-        // C_ab as indices into `nb`.
+        // C_ab as indices into `nb`, increasing (both lists are sorted).
         s.common.clear();
-        intersect_sorted(g.nbrs(b), nb, |j| s.common.push(j as u32));
+        s.common.extend(
+            g.nbrs(b)
+                .iter()
+                .map(|&y| pos[y as usize])
+                .filter(|&i| i != u32::MAX),
+        );
         let above_b = s.common.partition_point(|&j| nb[j as usize] < b);
         if s.common.len() - above_b < 2 {
             continue;
         }
         let face = Face {
-            pa,
             pts: points,
             nb,
             dirs: &s.dirs,
@@ -122,7 +156,6 @@ fn tets_at(
 /// The pencil of spheres through `a`, `b = nb[b]` and a third common neighbour, with the
 /// common neighbours `common` (indices into `nb`) as the points that may lie inside.
 struct Face<'a> {
-    pa: &'a Point3,
     pts: &'a [Point3],
     nb: &'a [u32],
     dirs: &'a [Dir],
@@ -141,8 +174,16 @@ impl Face<'_> {
     /// a Delaunay face); `None` on a tie or a point in the plane.
     fn apexes(&self, c: usize) -> Option<[Option<usize>; 2]> {
         let b = self.b;
-        let (pa, pb, pc) = (self.pa, self.p(b), self.p(c));
+        let (pb, pc) = (self.p(b), self.p(c));
         let plane = self.frame.plane(&self.dirs[b], &self.dirs[c]);
+        let spheres = self.frame.spheres(&self.dirs[b], &self.dirs[c]);
+        // +1 when nb[p] is strictly inside the sphere through a, b, c and nb[q], for
+        // `abcq` positively oriented.
+        let inside = |q: usize, p: usize| {
+            let d = self.dirs;
+            self.frame
+                .insphere(&spheres, pb, pc, self.p(q), self.p(p), &d[q], &d[p])
+        };
         // best[0]: earliest `+` point; best[1]: latest `−` point.
         let mut best: [Option<usize>; 2] = [None, None];
         for &p in self.common {
@@ -159,7 +200,7 @@ impl Face<'_> {
             match *slot {
                 None => *slot = Some(p),
                 // `p` strictly inside the sphere of `abcq` (same side) comes earlier.
-                Some(q) => match insphere(pa, pb, pc, self.p(q), self.p(p)) * side {
+                Some(q) => match inside(q, p) * side {
                     1 => *slot = Some(p),
                     0 => return None,
                     _ => {}
@@ -167,7 +208,7 @@ impl Face<'_> {
             }
         }
         if let [Some(up), Some(down)] = best {
-            match insphere(pa, pb, pc, self.p(up), self.p(down)) {
+            match inside(up, down) {
                 1 => return Some([None, None]),
                 0 => return None,
                 _ => {}

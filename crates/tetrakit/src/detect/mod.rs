@@ -437,35 +437,45 @@ fn sharpen(points: &[Point3], g: &Graph, w: Witness) -> Witness {
 }
 
 /// `edges(T) = L`: every edge of a tetrahedron is a segment, and every segment is used.
+/// In parallel; the witness is the first in tetrahedron (then vertex) order.
 fn edges_are_segments(tets: &[[u32; 4]], g: &Graph) -> Result<(), Witness> {
-    let mut used = vec![false; 2 * g.edge_count()];
-    for t in tets {
+    use std::sync::atomic::{AtomicBool, Ordering::Relaxed};
+    let used: Vec<AtomicBool> = (0..2 * g.edge_count())
+        .map(|_| AtomicBool::new(false))
+        .collect();
+    let stray = tets.par_iter().find_map_first(|t| {
         for (i, j) in [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)] {
             let (x, y) = (t[i].min(t[j]), t[i].max(t[j]));
-            let Some(slot) = g.slot(x, y) else {
-                return Err(Witness::new(
-                    WitnessKind::Inconsistent,
-                    vec![x, y],
-                    vec![],
-                    format!("a tetrahedron found has edge (#{x}, #{y}), which is not a segment"),
-                ));
-            };
-            used[slot] = true;
-        }
-    }
-    for x in 0..g.len() as u32 {
-        for (slot, &y) in g.slots(x).zip(g.nbrs(x)) {
-            if y > x && !used[slot] {
-                return Err(Witness::new(
-                    WitnessKind::Inconsistent,
-                    vec![x, y],
-                    vec![[x, y]],
-                    format!("segment (#{x}, #{y}) is an edge of no tetrahedron found"),
-                ));
+            match g.slot(x, y) {
+                Some(slot) => used[slot].store(true, Relaxed),
+                None => return Some([x, y]),
             }
         }
+        None
+    });
+    if let Some([x, y]) = stray {
+        return Err(Witness::new(
+            WitnessKind::Inconsistent,
+            vec![x, y],
+            vec![],
+            format!("a tetrahedron found has edge (#{x}, #{y}), which is not a segment"),
+        ));
     }
-    Ok(())
+    let unused = (0..g.len() as u32).into_par_iter().find_map_first(|x| {
+        g.slots(x)
+            .zip(g.nbrs(x))
+            .find(|&(slot, &y)| y > x && !used[slot].load(Relaxed))
+            .map(|(_, &y)| [x, y])
+    });
+    match unused {
+        Some([x, y]) => Err(Witness::new(
+            WitnessKind::Inconsistent,
+            vec![x, y],
+            vec![[x, y]],
+            format!("segment (#{x}, #{y}) is an edge of no tetrahedron found"),
+        )),
+        None => Ok(()),
+    }
 }
 
 /// Step 0: a tetrahedralization's graph is connected and uses every point.

@@ -22,9 +22,9 @@ pub use intersect::{
     triangles_meet_improperly,
 };
 pub use predicates::{
-    ApexPlane, Dir, Frame, MAX_MAGNITUDE, MIN_MAGNITUDE, Plane, Point2, Point3, bounding_box,
-    collinear3, coordinate_in_range, drop_axis, incircle, insphere, lex_cmp, orient2d,
-    orient2d_drop, orient3d, projection_axis, strictly_between,
+    ApexPlane, ApexSpheres, Dir, Frame, MAX_MAGNITUDE, MIN_MAGNITUDE, Plane, Point2, Point3,
+    bounding_box, collinear3, coordinate_in_range, drop_axis, incircle, insphere, lex_cmp,
+    orient2d, orient2d_drop, orient3d, projection_axis, strictly_between,
 };
 pub use proximity::{
     DiamondHit, Ratio, cmp_length, corner_dot_sign, diamond_hit, in_beta_region, in_lune,

@@ -255,6 +255,90 @@ impl Frame {
     }
 }
 
+/// The spheres through the apex `v` of a [`Frame`] and two points `b, c`, prepared for
+/// many exact in-sphere tests `insphere(v, b, c, q, p)` (see [`Frame::insphere`]).
+#[derive(Clone, Copy, Debug)]
+pub struct ApexSpheres {
+    /// Signed 2×2 minors of the lifted rows of `b` and `c`, in the order that pairs them
+    /// with the complementary minors of `q` and `p`.
+    m: [f64; 6],
+    /// Their permanents (sums of the absolute values of the two products).
+    pm: [f64; 6],
+}
+
+/// The lifted direction `(d, |d|²)`.
+#[inline]
+fn lift(d: &Point3) -> [f64; 4] {
+    [d[0], d[1], d[2], d[0] * d[0] + d[1] * d[1] + d[2] * d[2]]
+}
+
+/// The six 2×2 minors of two lifted rows, columns `(0,1) (0,2) (0,3) (1,2) (1,3) (2,3)`,
+/// and their permanents.
+#[inline]
+fn minors(x: &[f64; 4], y: &[f64; 4]) -> ([f64; 6], [f64; 6]) {
+    let pairs = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)];
+    let mut m = [0.0; 6];
+    let mut pm = [0.0; 6];
+    for (k, &(i, j)) in pairs.iter().enumerate() {
+        let (p, q) = (x[i] * y[j], x[j] * y[i]);
+        m[k] = p - q;
+        pm[k] = p.abs() + q.abs();
+    }
+    (m, pm)
+}
+
+/// Bound on the rounding error of [`Frame::insphere`]'s determinant, relative to its
+/// permanent: the expansion has degree 5 in rounded differences and about a dozen
+/// roundings per term; Shewchuk's bound for the same degree is (16 + 224u)u, we use 64u.
+const SPHERE_ERR: f64 = 64.0 * f64::EPSILON / 2.0;
+
+impl Frame {
+    /// Prepares the spheres through `v` and the points with directions `db`, `dc`.
+    #[inline]
+    pub fn spheres(&self, db: &Dir, dc: &Dir) -> ApexSpheres {
+        let (m, pm) = minors(&lift(&db.d), &lift(&dc.d));
+        // Laplace expansion of the lifted 4×4 determinant by its first two rows: the
+        // minor on columns {i, j} pairs with the one on the complement, signed.
+        ApexSpheres {
+            m: [m[0], -m[1], m[2], m[3], -m[4], m[5]],
+            pm: [pm[0], pm[1], pm[2], pm[3], pm[4], pm[5]],
+        }
+    }
+
+    /// Exact sign of [`insphere`]`(v, b, c, q, p)` for the spheres `s` through `v, b, c`:
+    /// +1 when `p` is inside the sphere through the positively oriented `vbcq`.
+    #[inline]
+    #[allow(clippy::too_many_arguments)]
+    pub fn insphere(
+        &self,
+        s: &ApexSpheres,
+        b: &Point3,
+        c: &Point3,
+        q: &Point3,
+        p: &Point3,
+        dq: &Dir,
+        dp: &Dir,
+    ) -> i8 {
+        let (n, pn) = minors(&lift(&dq.d), &lift(&dp.d));
+        // Complementary column pairs: (2,3) (1,3) (1,2) (0,3) (0,2) (0,1).
+        let mut det = 0.0;
+        let mut perm = 0.0;
+        for k in 0..6 {
+            det += s.m[k] * n[5 - k];
+            perm += s.pm[k] * pn[5 - k];
+        }
+        let bound = SPHERE_ERR * perm;
+        // The lifted determinant is negative when p is inside (for vbcq positive).
+        if det > bound {
+            return -1;
+        }
+        if det < -bound {
+            return 1;
+        }
+        insphere(&self.v, b, c, q, p)
+    }
+}
+
 /// The float determinant `det[da, db, dc]` and its permanent (for the error bound).
 #[inline]
 fn det_perm(da: &Point3, db: &Point3, dc: &Point3) -> (f64, f64) {
@@ -561,6 +645,34 @@ mod tests {
             incircle(&[0.0, 0.0], &[1.0, 0.0], &[0.0, 1.0], &[1.0, 1.0]),
             0
         );
+    }
+
+    #[test]
+    fn apex_spheres_agree_with_insphere() {
+        let mut rng = crate::rng::Rng::new(3);
+        let mut coord = |grid: bool| {
+            if grid {
+                rng.below(3) as f64
+            } else {
+                rng.unit() * 4.0 - 2.0
+            }
+        };
+        let (mut inside, mut on) = (0, 0);
+        for case in 0..20_000 {
+            let grid = case % 2 == 0;
+            let pts: Vec<Point3> = (0..5)
+                .map(|_| [coord(grid), coord(grid), coord(grid)])
+                .collect();
+            let f = Frame::new(&pts[0]);
+            let d: Vec<Dir> = pts.iter().map(|p| f.dir(p)).collect();
+            let s = f.spheres(&d[1], &d[2]);
+            let got = f.insphere(&s, &pts[1], &pts[2], &pts[3], &pts[4], &d[3], &d[4]);
+            let want = insphere(&pts[0], &pts[1], &pts[2], &pts[3], &pts[4]);
+            assert_eq!(got, want, "{pts:?}");
+            inside += usize::from(want == 1);
+            on += usize::from(want == 0);
+        }
+        assert!(inside > 1000 && on > 1000, "{inside} {on}");
     }
 
     #[test]

@@ -270,16 +270,7 @@ fn outward_faces(t: [u32; 4]) -> [[u32; 3]; 4] {
 
 /// Pairs the faces of the tetrahedra with orientation `signs` (degenerate ones skipped).
 fn pair_faces(n: usize, tets: &[[u32; 4]], signs: &[i8]) -> (Vec<BoundaryFace>, Vec<Problem>) {
-    let oriented: Vec<Option<[u32; 4]>> = tets
-        .par_iter()
-        .zip(signs)
-        .map(|(t, &sign)| match sign {
-            1 => Some(*t),
-            -1 => Some([t[0], t[1], t[3], t[2]]),
-            _ => None,
-        })
-        .collect();
-    let (start, mut recs) = bucket_faces(&oriented, n);
+    let (start, mut recs) = bucket_faces(tets, signs, n);
     let results: Vec<(Vec<BoundaryFace>, Vec<Problem>)> = split_at_offsets(&mut recs, &start)
         .into_par_iter()
         .enumerate()
@@ -298,13 +289,18 @@ fn pair_faces(n: usize, tets: &[[u32; 4]], signs: &[i8]) -> (Vec<BoundaryFace>, 
 /// (`odd`: the sorted order reverses the orientation) in the bucket of `a` (rows
 /// `start[a]..start[a + 1]`). Each thread counts and fills the buckets of its own range of
 /// vertices while reading all tetrahedra: the writes, scattered, are what costs.
-fn bucket_faces(oriented: &[Option<[u32; 4]>], n: usize) -> (Vec<usize>, Vec<[u32; 3]>) {
+fn bucket_faces(tets: &[[u32; 4]], signs: &[i8], n: usize) -> (Vec<usize>, Vec<[u32; 3]>) {
     let parts = rayon::current_num_threads().clamp(1, n.max(1));
     let bounds: Vec<usize> = (0..=parts).map(|p| n * p / parts).collect();
     let faces_in = |lo: usize, hi: usize, put: &mut dyn FnMut(usize, [u32; 3])| {
-        for (ti, t) in oriented.iter().enumerate() {
-            let Some(t) = t else { continue };
-            for f in outward_faces(*t) {
+        for (ti, (t, &sign)) in tets.iter().zip(signs).enumerate() {
+            // Positively oriented; degenerate and malformed tetrahedra are skipped.
+            let t = match sign {
+                1 => *t,
+                -1 => [t[0], t[1], t[3], t[2]],
+                _ => continue,
+            };
+            for f in outward_faces(t) {
                 let (s, odd) = sort3(f);
                 let a = s[0] as usize;
                 if (lo..hi).contains(&a) {
