@@ -31,3 +31,4 @@ pub mod mesh;
 pub mod planar;
 pub mod polyhedra;
 pub mod rng;
+mod rows;

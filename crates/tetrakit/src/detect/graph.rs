@@ -1,5 +1,7 @@
 //! The segment graph in compressed adjacency form, validated.
 
+use rayon::prelude::*;
+
 /// An undirected simple graph on `n` vertices with sorted adjacency lists.
 #[derive(Clone, Debug)]
 pub struct Graph {
@@ -43,16 +45,18 @@ impl Graph {
                 fill[a as usize] += 1;
             }
         }
+        crate::rows::for_each_row(&mut nbrs, &deg, |_, row| row.sort_unstable());
         let g = Graph { start: deg, nbrs };
-        let mut g = g;
-        for v in 0..n {
-            let (lo, hi) = (g.start[v], g.start[v + 1]);
-            g.nbrs[lo..hi].sort_unstable();
-            if let Some(w) = g.nbrs[lo..hi].windows(2).find(|w| w[0] == w[1]) {
-                return Err(format!("segment ({v}, {}) is listed twice", w[0]));
-            }
+        let repeat = (0..n as u32).into_par_iter().find_map_first(|v| {
+            g.nbrs(v)
+                .windows(2)
+                .find(|w| w[0] == w[1])
+                .map(|w| (v, w[0]))
+        });
+        match repeat {
+            Some((v, w)) => Err(format!("segment ({v}, {w}) is listed twice")),
+            None => Ok(g),
         }
-        Ok(g)
     }
 
     /// Number of vertices.

@@ -310,7 +310,12 @@ fn detect3(
     if opts.delaunay_first {
         let proposed = delaunay::propose(points, g);
         phases.mark("delaunay proposal");
+        // Euler's count (Theorem 2.3, condition 3) holds for every tetrahedralization:
+        // a proposal that misses it is not worth certifying.
+        let boundary = (0..points.len()).filter(|&i| hull.on_boundary(i)).count();
+        let euler = (g.edge_count() + 3).checked_sub(points.len() + boundary);
         if let Some(tets) = proposed
+            && euler == Some(tets.len())
             && certify(points, g, hull, &tets).is_ok()
         {
             phases.mark("verify");
@@ -327,9 +332,7 @@ fn detect3(
 /// `T` is a tetrahedralization of the hull of the points ([`mesh::verify`]) and
 /// `edges(T) = L`.
 fn certify(points: &[Point3], g: &Graph, hull: &Hull3, tets: &[[u32; 4]]) -> Result<(), Witness> {
-    let mut phases = Phases::new();
     let report = mesh::verify(points, tets, Some(hull));
-    phases.mark("mesh::verify");
     if let Some(p) = report.problems.first() {
         return Err(Witness::new(
             WitnessKind::Inconsistent,

@@ -207,7 +207,6 @@ pub(crate) fn vertex_ref(
     Ok(i as u32)
 }
 
-/// Rejects self-loops and repeated segments.
 /// Rejects self-loops and repeated segments. `lines[k]` is the source line of segment `k`,
 /// or 0 for formats without lines (then segments are named by their position). Repeats are
 /// found per vertex (small sorts), not by sorting all segments.
@@ -251,16 +250,19 @@ pub(crate) fn check_segments(
         rows[fill[lo]] = (s[0].max(s[1]), k as u32);
         fill[lo] += 1;
     }
-    let mut first: Option<(u32, u32, u32)> = None;
-    for lo in 0..n {
-        let bucket = &mut rows[start[lo]..start[lo + 1]];
-        bucket.sort_unstable();
-        for w in bucket.windows(2) {
-            if w[0].0 == w[1].0 && first.is_none_or(|f| w[1].1 < f.2) {
-                first = Some((lo as u32, w[0].1, w[1].1));
-            }
-        }
-    }
+    crate::rows::for_each_row(&mut rows, &start, |_, bucket| bucket.sort_unstable());
+    // The repeat whose second listing comes first.
+    let first = (0..n)
+        .into_par_iter()
+        .filter_map(|lo| {
+            rows[start[lo]..start[lo + 1]]
+                .windows(2)
+                .filter(|w| w[0].0 == w[1].0)
+                .map(|w| (w[1].1, w[0].1, lo as u32))
+                .min()
+        })
+        .min()
+        .map(|(k2, k1, lo)| (lo, k1, k2));
     if let Some((lo, k1, k2)) = first {
         let (s, (line, name2)) = (segs[k2 as usize], at(k2 as usize));
         let hi = s[0].max(s[1]);

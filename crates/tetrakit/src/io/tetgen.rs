@@ -85,6 +85,7 @@ type Rows<T> = Result<(Vec<T>, Vec<u32>), InputError>;
 fn parse_body<T: Send>(
     body: &str,
     first_line: usize,
+    fast: impl Fn(&[u8], usize) -> Option<T> + Sync,
     parse: impl Fn(&[&str], usize, usize) -> Result<T, InputError> + Sync,
 ) -> Rows<T> {
     let target = (body.len() / 64).max(1 << 16);
@@ -127,6 +128,11 @@ fn parse_body<T: Send>(
         .map(|(piece, &(line0, ord0))| {
             let (mut rows, mut lines) = (Vec::new(), Vec::new());
             for (i, raw) in piece.split_inclusive('\n').enumerate() {
+                if let Some(row) = fast(raw.as_bytes(), ord0 + rows.len()) {
+                    rows.push(row);
+                    lines.push((line0 + i) as u32);
+                    continue;
+                }
                 let toks = Tokens::new(raw.split('#').next().unwrap_or(""));
                 if toks.is_empty() {
                     continue;
@@ -227,24 +233,29 @@ fn read_node(path: &Path) -> Result<Input, InputError> {
     }
     let extra = (h.get(2).copied().unwrap_or(0) + h.get(3).copied().unwrap_or(0)) as usize;
     let base = numbering_base(path, body, first_line, "point")?;
-    let (points, lines) = parse_body(body, first_line, |toks, line, ordinal| {
-        if toks.len() < 1 + dim || toks.len() > 1 + dim + extra {
-            return Err(InputError::new(
-                path,
-                line,
-                format!(
-                    "expected an index, {dim} coordinates and {extra} attributes/markers, found {} values",
-                    toks.len()
-                ),
-            ));
-        }
-        check_row_index(path, toks, line, ordinal, (base, declared, "point"))?;
-        let mut p = [0.0; 3];
-        for k in 0..dim {
-            p[k] = parse_coord(toks[1 + k], path, line)?;
-        }
-        Ok(p)
-    })?;
+    let (points, lines) = parse_body(
+        body,
+        first_line,
+        |_, _| None,
+        |toks, line, ordinal| {
+            if toks.len() < 1 + dim || toks.len() > 1 + dim + extra {
+                return Err(InputError::new(
+                    path,
+                    line,
+                    format!(
+                        "expected an index, {dim} coordinates and {extra} attributes/markers, found {} values",
+                        toks.len()
+                    ),
+                ));
+            }
+            check_row_index(path, toks, line, ordinal, (base, declared, "point"))?;
+            let mut p = [0.0; 3];
+            for k in 0..dim {
+                p[k] = parse_coord(toks[1 + k], path, line)?;
+            }
+            Ok(p)
+        },
+    )?;
     check_row_count(path, points.len(), declared, "point")?;
     if declared == 0 {
         return Err(InputError::new(path, hline, "no points"));
@@ -287,7 +298,24 @@ fn read_rows<const K: usize>(
         h.get(1).copied().unwrap_or(0) as usize
     };
     let base = numbering_base(path, body, first_line, what)?;
-    let (rows, lines) = parse_body(body, first_line, |toks, line, ordinal| {
+    let (lo, hi) = (1 + per_row.max(min_per_row), 1 + per_row + extra);
+    let n = nodes.points.len() as u64;
+    // A plain row (unsigned integers only) that passes every check below, without
+    // tokenizing; anything else goes through the checks that name the problem.
+    let fast = |raw: &[u8], ordinal: usize| -> Option<[u32; K]> {
+        let (vals, count) = uint_row::<16>(raw)?;
+        let ok_count = (lo..=hi).contains(&count);
+        if !ok_count || vals[0] != (base as u64) + ordinal as u64 || ordinal >= declared {
+            return None;
+        }
+        let mut r = [0u32; K];
+        for k in 0..K {
+            let i = vals[1 + k].checked_sub(nodes.index_base as u64)?;
+            r[k] = u32::try_from(i).ok().filter(|&i| u64::from(i) < n)?;
+        }
+        Some(r)
+    };
+    let (rows, lines) = parse_body(body, first_line, fast, |toks, line, ordinal| {
         if toks.len() < 1 + per_row.max(min_per_row) || toks.len() > 1 + per_row + extra {
             return Err(InputError::new(
                 path,
@@ -308,4 +336,53 @@ fn read_rows<const K: usize>(
     })?;
     check_row_count(path, rows.len(), declared, what)?;
     Ok((rows, lines))
+}
+
+/// The unsigned decimal integers of a line (at most `N`, at most 18 digits each), separated
+/// by ASCII whitespace, and how many there are; `None` for anything else (a sign, a point,
+/// a comment, more than `N` values), which the general reader then handles.
+fn uint_row<const N: usize>(raw: &[u8]) -> Option<([u64; N], usize)> {
+    let mut vals = [0u64; N];
+    let (mut count, mut digits) = (0usize, 0usize);
+    for &b in raw {
+        if b.is_ascii_digit() {
+            if digits == 0 {
+                if count == N {
+                    return None;
+                }
+                count += 1;
+            }
+            digits += 1;
+            if digits > 18 {
+                return None;
+            }
+            vals[count - 1] = vals[count - 1] * 10 + u64::from(b - b'0');
+        } else if b.is_ascii_whitespace() {
+            digits = 0;
+        } else {
+            return None;
+        }
+    }
+    Some((vals, count))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::uint_row;
+
+    #[test]
+    fn plain_integer_rows_only() {
+        assert_eq!(uint_row::<4>(b"12 7\t9\r\n"), Some(([12, 7, 9, 0], 3)));
+        assert_eq!(uint_row::<4>(b"  \n"), Some(([0; 4], 0)));
+        for bad in [
+            &b"1 -2 3"[..],
+            b"1 2 # c",
+            b"1 2.5",
+            b"1 2 3 4 5",
+            b"1 x",
+            b"1 0000000000000000001",
+        ] {
+            assert_eq!(uint_row::<4>(bad), None, "{:?}", std::str::from_utf8(bad));
+        }
+    }
 }

@@ -21,6 +21,7 @@
 use super::embed;
 use crate::detect::ids;
 use crate::geom::{Hull3, Point3, coplanar_triangles_overlap, orient3d};
+use crate::rows::split_at_offsets;
 use rayon::prelude::*;
 use serde::Serialize;
 use std::fmt;
@@ -332,19 +333,6 @@ fn bucket_faces(tets: &[[u32; 4]], signs: &[i8], n: usize) -> (Vec<usize>, Vec<[
             });
         });
     (start, recs)
-}
-
-/// `v` cut into the pieces `offsets[i]..offsets[i + 1]` (`offsets` runs from 0 to the
-/// length, nondecreasing).
-fn split_at_offsets<'a, T>(v: &'a mut [T], offsets: &[usize]) -> Vec<&'a mut [T]> {
-    let mut pieces = Vec::with_capacity(offsets.len() - 1);
-    let mut rest = v;
-    for w in offsets.windows(2) {
-        let (head, tail) = rest.split_at_mut(w[1] - w[0]);
-        pieces.push(head);
-        rest = tail;
-    }
-    pieces
 }
 
 fn pair_bucket(a: u32, recs: &mut [[u32; 3]]) -> (Vec<BoundaryFace>, Vec<Problem>) {

@@ -1,0 +1,63 @@
+//! Compressed rows (one flat array cut at nondecreasing offsets), shared by the readers'
+//! segment check, the segment graph and the verifier's face pairing.
+
+use rayon::prelude::*;
+
+/// `v` cut into the pieces `offsets[i]..offsets[i + 1]` (`offsets` runs from 0 to the
+/// length, nondecreasing).
+pub(crate) fn split_at_offsets<'a, T>(v: &'a mut [T], offsets: &[usize]) -> Vec<&'a mut [T]> {
+    let mut pieces = Vec::with_capacity(offsets.len().saturating_sub(1));
+    let mut rest = v;
+    for w in offsets.windows(2) {
+        let (head, tail) = rest.split_at_mut(w[1] - w[0]);
+        pieces.push(head);
+        rest = tail;
+    }
+    pieces
+}
+
+/// Calls `f(i, row)` for every row `start[i]..start[i + 1]` of `v`, rows in parallel (in
+/// runs of consecutive rows, so that a million small rows do not make a million tasks).
+pub(crate) fn for_each_row<T: Send>(
+    v: &mut [T],
+    start: &[usize],
+    f: impl Fn(usize, &mut [T]) + Sync,
+) {
+    let rows = start.len().saturating_sub(1);
+    let runs = (rayon::current_num_threads() * 16).clamp(1, rows.max(1));
+    let cuts: Vec<usize> = (0..=runs).map(|r| rows * r / runs).collect();
+    let offsets: Vec<usize> = cuts.iter().map(|&c| start[c]).collect();
+    split_at_offsets(v, &offsets)
+        .into_par_iter()
+        .zip(cuts.par_windows(2))
+        .for_each(|(run, w)| {
+            let mut rest = run;
+            for i in w[0]..w[1] {
+                let (row, tail) = rest.split_at_mut(start[i + 1] - start[i]);
+                f(i, row);
+                rest = tail;
+            }
+        });
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rows_are_visited_once_in_place() {
+        let start = [0, 2, 2, 5, 6];
+        let mut v = vec![9, 1, 7, 3, 5, 4];
+        for_each_row(&mut v, &start, |i, row| {
+            row.sort_unstable();
+            row.iter_mut().for_each(|x| *x += 10 * i as i32);
+        });
+        assert_eq!(v, [1, 9, 23, 25, 27, 34]);
+        let mut w = [1, 2, 3];
+        let pieces = split_at_offsets(&mut w, &[0, 1, 1, 3]);
+        assert_eq!(
+            pieces.iter().map(|p| p.len()).collect::<Vec<_>>(),
+            [1, 0, 2]
+        );
+    }
+}
