@@ -19,32 +19,35 @@ TK=target/release/tetrakit
 
 median() { sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
 
-# runs tetrakit detect RUNS times on $1; prints "median_seconds median_parse peak_kb"
+# runs tetrakit detect RUNS times on $1 (further arguments go to detect);
+# prints "median_seconds median_parse peak_kb route"
 measure_detect() {
   local secs=() parse=() mem=()
   for _ in $(seq "$RUNS"); do
-    /usr/bin/time -f "%M" -o "$WORK/mem.txt" "$TK" detect "$1" --json > "$WORK/out.json" || true
+    /usr/bin/time -f "%M" -o "$WORK/mem.txt" "$TK" detect "$@" --json > "$WORK/out.json" || true
     secs+=("$(python3 -c 'import json,sys;print(json.load(open(sys.argv[1]))["seconds"])' "$WORK/out.json")")
     parse+=("$(python3 -c 'import json,sys;print(json.load(open(sys.argv[1]))["parse_seconds"])' "$WORK/out.json")")
     mem+=("$(cat "$WORK/mem.txt")")
   done
   python3 -c 'import json,sys;d=json.load(open(sys.argv[1]));assert d["verdict"]=="yes",d' "$WORK/out.json"
-  echo "$(printf '%s\n' "${secs[@]}" | median) $(printf '%s\n' "${parse[@]}" | median) $(printf '%s\n' "${mem[@]}" | median)"
+  local route; route=$(python3 -c 'import json,sys;print(json.load(open(sys.argv[1]))["route"])' "$WORK/out.json")
+  echo "$(printf '%s\n' "${secs[@]}" | median) $(printf '%s\n' "${parse[@]}" | median) $(printf '%s\n' "${mem[@]}" | median) $route"
 }
 
 row() { # name node edge
   local segs; segs=$(head -1 "$3" | awk '{print $1}')
-  read -r t p kb < <(measure_detect "$3")
+  read -r t p kb route < <(measure_detect "$3")
+  read -r tl _ _ _ < <(measure_detect "$3" --links-only)
   local cg; cg=$("$WORK/cgal_is_valid" "$2" "$RUNS" | python3 -c 'import json,sys;print(json.load(sys.stdin)["is_valid_seconds"])')
-  python3 - "$1" "$segs" "$t" "$p" "$kb" "$cg" <<'PY'
+  python3 - "$1" "$segs" "$route" "$t" "$p" "$kb" "$cg" "$tl" <<'PY'
 import sys
-name, segs, t, p, kb, cg = sys.argv[1], int(sys.argv[2]), *map(float, sys.argv[3:])
-print(f"| {name} | {segs:,} | {t:.3f} | {100*p/t:.0f}% | {kb*1024/segs:.0f} | {cg:.3f} | {t/cg:.2f} |")
+name, segs, route, t, p, kb, cg, tl = sys.argv[1], int(sys.argv[2]), sys.argv[3], *map(float, sys.argv[4:])
+print(f"| {name} | {segs:,} | {route} | {t:.3f} | {100*p/t:.0f}% | {kb*1024/segs:.0f} | {cg:.3f} | **{t/cg:.2f}** | {tl:.3f} | {tl/cg:.2f} |")
 PY
 }
 
-echo "| input | segments | detect s (median of $RUNS) | parse share | peak bytes/segment | CGAL is_valid s | detect / is_valid |"
-echo "|---|---|---|---|---|---|---|"
+echo "| input | segments | route | detect s (median of $RUNS) | parse share | peak bytes/segment | CGAL is_valid s | detect / is_valid | --links-only s | links-only / is_valid |"
+echo "|---|---|---|---|---|---|---|---|---|---|"
 for n in $SIZES; do
   node="$WORK/r$n.node"
   [ -f "$node" ] || python3 -c "
@@ -62,10 +65,11 @@ for n in ${SKEW:-100 200 400 800 1600}; do
   row "skew lines, $n points" "$WORK/skew$n.node" "$WORK/skew$n.edge"
 done
 
-# The two link methods on the same inputs: the sphere sweep (default) and the sign table.
+# The two link methods on the same inputs (links route forced): the sphere sweep (default)
+# and the sign table.
 links_time() { # file method -> median seconds of the per-vertex phase
   for _ in $(seq "$RUNS"); do
-    TETRAKIT_PHASES=1 "$TK" detect "$1" --links "$2" 2>&1 >/dev/null | awk '/phase links/{print $3}'
+    TETRAKIT_PHASES=1 "$TK" detect "$1" --links-only --links "$2" 2>&1 >/dev/null | awk '/phase links/{print $3}'
   done | median
 }
 echo

@@ -75,6 +75,31 @@ fn link_methods_agree() {
 }
 
 #[test]
+fn delaunay_route_and_links_only_agree() {
+    // Two Delaunay tetrahedra glued on the face 1-2-3.
+    let p = dir("route").join("two.json");
+    let points = "[[0,0,0],[1,0,0],[0,1,0],[0,0,1],[1,1,1.1]]";
+    let segs = "[[0,1],[0,2],[0,3],[1,2],[1,3],[2,3],[4,1],[4,2],[4,3]]";
+    std::fs::write(
+        &p,
+        format!("{{\"points\": {points}, \"segments\": {segs}}}"),
+    )
+    .unwrap();
+    let first = json(&run(&["detect", s(&p), "--json"]));
+    let links = json(&run(&["detect", s(&p), "--json", "--links-only"]));
+    assert_eq!(
+        (&first["route"], &links["route"]),
+        (&"delaunay".into(), &"links".into())
+    );
+    for v in [&first, &links] {
+        assert_eq!(
+            (&v["verdict"], &v["tetrahedra"]),
+            (&"yes".into(), &2.into())
+        );
+    }
+}
+
+#[test]
 fn corrupted_instances_give_no_with_witness_in_file_numbering() {
     let d = dir("no");
     for (k, kind) in [

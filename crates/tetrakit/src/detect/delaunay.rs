@@ -28,7 +28,9 @@
 //! `ab` and the face `abc`, when `d` is the apex found on its side: once per tetrahedron.
 //! Ties and planes (a point of `C_ab` on the plane `abc`, or on a sphere of the pencil
 //! already taken) mean the input is not in general position: the proposal is withdrawn and
-//! the thesis's algorithm, which assumes nothing, decides. All tests are exact.
+//! the thesis's algorithm, which assumes nothing, decides. So does a pair with more than
+//! [`MAX_COMMON`] common neighbours, which bounds the proposal's work by `O(|L|)` tests
+//! per vertex pair. All tests are exact.
 
 use super::graph::Graph;
 use crate::geom::{Dir, Frame, Point3};
@@ -60,6 +62,12 @@ pub(super) fn propose(points: &[Point3], g: &Graph) -> Option<Vec<[u32; 4]>> {
     }
     Some(pieces.concat())
 }
+
+/// The most common neighbours a pair may have before the proposal withdraws. The work at
+/// a pair is quadratic in their number (about 6 on Delaunay meshes of random points); on
+/// families with huge rings, such as the thesis's skew lines (`n/2` around an edge), the
+/// links route is the output-sensitive one, so the proposal steps aside at once.
+const MAX_COMMON: usize = 64;
 
 /// Reused per-thread buffers.
 #[derive(Default)]
@@ -125,6 +133,9 @@ fn tets_from(
                 .map(|&y| pos[y as usize])
                 .filter(|&i| i != u32::MAX),
         );
+        if s.common.len() > MAX_COMMON {
+            return None;
+        }
         let above_b = s.common.partition_point(|&j| nb[j as usize] < b);
         if s.common.len() - above_b < 2 {
             continue;
