@@ -40,6 +40,52 @@ pub(crate) fn for_each_row<T: Send>(
         });
 }
 
+/// Groups the pairs `(key, value)` that `emit(i)` gives for every item `i < items` into
+/// rows by key: `start` (`keys + 1` offsets) and the values, each row in item order. Keys
+/// at or beyond `keys` are skipped. Each thread counts and fills the rows of its own range
+/// of keys while reading every item: reads are sequential and cheap, the scattered writes
+/// are what costs, and they are split between the threads without contention.
+pub(crate) fn group<V: Copy + Default + Send + Sync, const K: usize>(
+    keys: usize,
+    items: usize,
+    emit: impl Fn(usize) -> [(usize, V); K] + Sync,
+) -> (Vec<usize>, Vec<V>) {
+    let parts = rayon::current_num_threads().clamp(1, keys.max(1));
+    let bounds: Vec<usize> = (0..=parts).map(|p| keys * p / parts).collect();
+    let scan = |lo: usize, hi: usize, put: &mut dyn FnMut(usize, V)| {
+        for i in 0..items {
+            for (key, value) in emit(i) {
+                if (lo..hi).contains(&key) {
+                    put(key - lo, value);
+                }
+            }
+        }
+    };
+    let mut count = vec![0usize; keys];
+    split_at_offsets(&mut count, &bounds)
+        .into_par_iter()
+        .zip(bounds.par_windows(2))
+        .for_each(|(c, w)| scan(w[0], w[1], &mut |k, _| c[k] += 1));
+    let mut start = Vec::with_capacity(keys + 1);
+    start.push(0usize);
+    for c in &count {
+        start.push(start[start.len() - 1] + c);
+    }
+    let mut values = vec![V::default(); start[keys]];
+    let offsets: Vec<usize> = bounds.iter().map(|&b| start[b]).collect();
+    split_at_offsets(&mut values, &offsets)
+        .into_par_iter()
+        .zip(bounds.par_windows(2))
+        .for_each(|(out, w)| {
+            let mut fill: Vec<usize> = start[w[0]..w[1]].iter().map(|&s| s - start[w[0]]).collect();
+            scan(w[0], w[1], &mut |k, v| {
+                out[fill[k]] = v;
+                fill[k] += 1;
+            });
+        });
+    (start, values)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

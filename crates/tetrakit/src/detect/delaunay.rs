@@ -125,14 +125,17 @@ fn tets_from(
     s.dirs
         .extend(nb.iter().map(|&x| frame.dir(&points[x as usize])));
     for (bi, &b) in nb.iter().enumerate().skip(first) {
-        // C_ab as indices into `nb`, increasing (both lists are sorted).
-        s.common.clear();
-        s.common.extend(
-            g.nbrs(b)
-                .iter()
-                .map(|&y| pos[y as usize])
-                .filter(|&i| i != u32::MAX),
-        );
+        // C_ab as indices into `nb`, increasing (both lists are sorted). Branch-free:
+        // whether a neighbour of `b` is common is a coin toss for the predictor.
+        let nbrs_b = g.nbrs(b);
+        s.common.resize(nbrs_b.len() + 1, 0);
+        let mut len = 0;
+        for &y in nbrs_b {
+            let i = pos[y as usize];
+            s.common[len] = i;
+            len += usize::from(i != u32::MAX);
+        }
+        s.common.truncate(len);
         if s.common.len() > MAX_COMMON {
             return None;
         }

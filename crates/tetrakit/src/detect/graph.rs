@@ -20,31 +20,24 @@ impl Graph {
     /// assert!(Graph::new(3, &[[0, 1], [1, 0]]).is_err());
     /// ```
     pub fn new(n: usize, segments: &[[u32; 2]]) -> Result<Graph, String> {
-        let mut deg = vec![0usize; n + 1];
-        for (k, s) in segments.iter().enumerate() {
-            if s[0] as usize >= n || s[1] as usize >= n {
-                return Err(format!(
+        if let Some((k, s)) = segments
+            .par_iter()
+            .enumerate()
+            .find_first(|(_, s)| s[0] as usize >= n || s[1] as usize >= n || s[0] == s[1])
+        {
+            return Err(if s[0] as usize >= n || s[1] as usize >= n {
+                format!(
                     "segment {k} ({}, {}) names a vertex beyond the {n} points",
                     s[0], s[1]
-                ));
-            }
-            if s[0] == s[1] {
-                return Err(format!("segment {k} joins vertex {} to itself", s[0]));
-            }
-            deg[s[0] as usize + 1] += 1;
-            deg[s[1] as usize + 1] += 1;
+                )
+            } else {
+                format!("segment {k} joins vertex {} to itself", s[0])
+            });
         }
-        for i in 0..n {
-            deg[i + 1] += deg[i];
-        }
-        let mut fill = deg.clone();
-        let mut nbrs = vec![0u32; deg[n]];
-        for s in segments {
-            for (a, b) in [(s[0], s[1]), (s[1], s[0])] {
-                nbrs[fill[a as usize]] = b;
-                fill[a as usize] += 1;
-            }
-        }
+        let (deg, mut nbrs) = crate::rows::group(n, segments.len(), |k| {
+            let [a, b] = segments[k];
+            [(a as usize, b), (b as usize, a)]
+        });
         crate::rows::for_each_row(&mut nbrs, &deg, |_, row| row.sort_unstable());
         let g = Graph { start: deg, nbrs };
         let repeat = (0..n as u32).into_par_iter().find_map_first(|v| {

@@ -167,23 +167,22 @@ pub fn detect_with(
 ) -> Result<Detection, String> {
     let n = points.len();
     if let Some(k) = segments
-        .iter()
-        .position(|&(a, b)| a as usize >= n || b as usize >= n || a == b)
+        .par_iter()
+        .position_first(|&(a, b)| a as usize >= n || b as usize >= n || a == b)
     {
         // Name malformed segments in the caller's numbering.
         Graph::new(n, &[[segments[k].0, segments[k].1]])?;
     }
-    let segs: Vec<[u32; 2]> = segments.iter().map(|&(a, b)| [a, b]).collect();
     // Work in a space-filling-curve order: neighbours then sit close in memory.
     let order = spatial_order(points);
     let mut rank = vec![0u32; points.len()];
     for (new, &old) in order.iter().enumerate() {
         rank[old as usize] = new as u32;
     }
-    let pts: Vec<Point3> = order.iter().map(|&o| points[o as usize]).collect();
-    let segs: Vec<[u32; 2]> = segs
-        .iter()
-        .map(|s| [rank[s[0] as usize], rank[s[1] as usize]])
+    let pts: Vec<Point3> = order.par_iter().map(|&o| points[o as usize]).collect();
+    let segs: Vec<[u32; 2]> = segments
+        .par_iter()
+        .map(|&(a, b)| [rank[a as usize], rank[b as usize]])
         .collect();
     let Ok(mut d) = detect_ordered(&pts, &segs, opts, progress) else {
         // Only a repeated segment gets here: name it in the caller's numbering.
@@ -194,7 +193,9 @@ pub fn detect_with(
     };
     let back = |v: u32| order[v as usize];
     d.result = match d.result {
-        Ok(Cells::Tetrahedra(t)) => Ok(Cells::Tetrahedra(t.iter().map(|t| t.map(back)).collect())),
+        Ok(Cells::Tetrahedra(t)) => Ok(Cells::Tetrahedra(
+            t.par_iter().map(|t| t.map(back)).collect(),
+        )),
         Ok(Cells::Triangles(t)) => Ok(Cells::Triangles(t.iter().map(|t| t.map(back)).collect())),
         Err(w) => Err(w.mapped(back)),
     };

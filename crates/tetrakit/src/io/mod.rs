@@ -223,33 +223,27 @@ pub(crate) fn check_segments(
             (0, format!("segments[{k}]"))
         }
     };
+    if let Some(k) = segs.par_iter().position_first(|s| s[0] == s[1]) {
+        let (line, name) = at(k);
+        return Err(InputError::new(
+            path,
+            line,
+            format!(
+                "segment {name} joins vertex {} to itself",
+                segs[k][0] + base
+            ),
+        ));
+    }
     let n = segs
-        .iter()
+        .par_iter()
         .map(|s| s[0].max(s[1]) as usize + 1)
         .max()
         .unwrap_or(0);
-    let mut start = vec![0usize; n + 1];
-    for (k, s) in segs.iter().enumerate() {
-        if s[0] == s[1] {
-            let (line, name) = at(k);
-            return Err(InputError::new(
-                path,
-                line,
-                format!("segment {name} joins vertex {} to itself", s[0] + base),
-            ));
-        }
-        start[s[0].min(s[1]) as usize + 1] += 1;
-    }
-    for i in 0..n {
-        start[i + 1] += start[i];
-    }
-    let mut fill = start.clone();
-    let mut rows = vec![(0u32, 0u32); segs.len()];
-    for (k, s) in segs.iter().enumerate() {
-        let lo = s[0].min(s[1]) as usize;
-        rows[fill[lo]] = (s[0].max(s[1]), k as u32);
-        fill[lo] += 1;
-    }
+    // Each segment as (larger end, position) in the row of its smaller end.
+    let (start, mut rows) = crate::rows::group(n, segs.len(), |k| {
+        let s = segs[k];
+        [(s[0].min(s[1]) as usize, (s[0].max(s[1]), k as u32))]
+    });
     crate::rows::for_each_row(&mut rows, &start, |_, bucket| bucket.sort_unstable());
     // The repeat whose second listing comes first.
     let first = (0..n)

@@ -288,51 +288,21 @@ fn pair_faces(n: usize, tets: &[[u32; 4]], signs: &[i8]) -> (Vec<BoundaryFace>, 
 
 /// Every outward face `(a, b, c)` with `a < b, c` as the record `[b, c, tet << 1 | odd]`
 /// (`odd`: the sorted order reverses the orientation) in the bucket of `a` (rows
-/// `start[a]..start[a + 1]`). Each thread counts and fills the buckets of its own range of
-/// vertices while reading all tetrahedra: the writes, scattered, are what costs.
+/// `start[a]..start[a + 1]`).
 fn bucket_faces(tets: &[[u32; 4]], signs: &[i8], n: usize) -> (Vec<usize>, Vec<[u32; 3]>) {
-    let parts = rayon::current_num_threads().clamp(1, n.max(1));
-    let bounds: Vec<usize> = (0..=parts).map(|p| n * p / parts).collect();
-    let faces_in = |lo: usize, hi: usize, put: &mut dyn FnMut(usize, [u32; 3])| {
-        for (ti, (t, &sign)) in tets.iter().zip(signs).enumerate() {
-            // Positively oriented; degenerate and malformed tetrahedra are skipped.
-            let t = match sign {
-                1 => *t,
-                -1 => [t[0], t[1], t[3], t[2]],
-                _ => continue,
-            };
-            for f in outward_faces(t) {
-                let (s, odd) = sort3(f);
-                let a = s[0] as usize;
-                if (lo..hi).contains(&a) {
-                    put(a - lo, [s[1], s[2], ((ti as u32) << 1) | odd as u32]);
-                }
-            }
-        }
-    };
-    let mut count = vec![0usize; n];
-    split_at_offsets(&mut count, &bounds)
-        .into_par_iter()
-        .zip(bounds.par_windows(2))
-        .for_each(|(c, w)| faces_in(w[0], w[1], &mut |i, _| c[i] += 1));
-    let mut start = Vec::with_capacity(n + 1);
-    start.push(0usize);
-    for c in &count {
-        start.push(start[start.len() - 1] + c);
-    }
-    let mut recs = vec![[0u32; 3]; start[n]];
-    let offsets: Vec<usize> = bounds.iter().map(|&b| start[b]).collect();
-    split_at_offsets(&mut recs, &offsets)
-        .into_par_iter()
-        .zip(bounds.par_windows(2))
-        .for_each(|(out, w)| {
-            let mut fill: Vec<usize> = start[w[0]..w[1]].iter().map(|&s| s - start[w[0]]).collect();
-            faces_in(w[0], w[1], &mut |i, r| {
-                out[fill[i]] = r;
-                fill[i] += 1;
-            });
-        });
-    (start, recs)
+    crate::rows::group(n, tets.len(), |ti| {
+        let t = tets[ti];
+        // Positively oriented; degenerate and malformed tetrahedra are skipped.
+        let t = match signs[ti] {
+            1 => t,
+            -1 => [t[0], t[1], t[3], t[2]],
+            _ => return [(usize::MAX, [0; 3]); 4],
+        };
+        outward_faces(t).map(|f| {
+            let (s, odd) = sort3(f);
+            (s[0] as usize, [s[1], s[2], ((ti as u32) << 1) | odd as u32])
+        })
+    })
 }
 
 fn pair_bucket(a: u32, recs: &mut [[u32; 3]]) -> (Vec<BoundaryFace>, Vec<Problem>) {
