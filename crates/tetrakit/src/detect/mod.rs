@@ -275,7 +275,7 @@ fn detect_ordered(
         return Ok(out);
     }
     out.hull_vertices = (0..points.len()).filter(|&i| hull.on_boundary(i)).count();
-    (out.route, out.result) = detect3(points, &g, &hull, opts, progress);
+    (out.route, out.result) = detect3(points, &g, &hull, out.hull_vertices, opts, progress);
     Ok(out)
 }
 
@@ -298,23 +298,17 @@ fn detect3(
     points: &[Point3],
     g: &Graph,
     hull: &Hull3,
+    hull_vertices: usize,
     opts: Options,
     progress: Progress,
 ) -> (Route, Result<Cells, Witness>) {
     let mut phases = Phases::new();
-    let checked =
-        connectivity(g).and_then(|()| rotation::check_chains(hull.polytope_edges(points), g));
-    phases.mark("connectivity and hull edges");
-    if let Err(w) = checked {
-        return (Route::Links, Err(w));
-    }
     if opts.delaunay_first {
         let proposed = delaunay::propose(points, g);
         phases.mark("delaunay proposal");
         // Euler's count (Theorem 2.3, condition 3) holds for every tetrahedralization:
         // a proposal that misses it is not worth certifying.
-        let boundary = (0..points.len()).filter(|&i| hull.on_boundary(i)).count();
-        let euler = (g.edge_count() + 3).checked_sub(points.len() + boundary);
+        let euler = (g.edge_count() + 3).checked_sub(points.len() + hull_vertices);
         if let Some(tets) = proposed
             && euler == Some(tets.len())
             && certify(points, g, hull, &tets).is_ok()
@@ -348,7 +342,8 @@ fn certify(points: &[Point3], g: &Graph, hull: &Hull3, tets: &[[u32; 4]]) -> Res
     edges_are_segments(tets, g)
 }
 
-/// Steps 3–5: the thesis's per-vertex links, confirmation, certificate.
+/// Steps 1–5: connectivity, hull edges, the thesis's per-vertex links, confirmation,
+/// certificate.
 fn links_route(
     points: &[Point3],
     g: &Graph,
@@ -357,6 +352,9 @@ fn links_route(
     progress: Progress,
 ) -> Result<Cells, Witness> {
     let mut phases = Phases::new();
+    connectivity(g)?;
+    rotation::check_chains(hull.polytope_edges(points), g)?;
+    phases.mark("connectivity and hull edges");
     let counter = std::sync::atomic::AtomicU64::new(0);
     let ctx = Ctx {
         pts: points,
