@@ -12,10 +12,11 @@
 //! 4. (Step 4) every tetrahedron must be found from all four of its vertices;
 //! 5. the tetrahedra are certified by [`crate::mesh::verify`] and `edges(T) = L` is checked.
 //!
-//! Before steps 3–4, a cheap proposal is tried ([`Route::Delaunay`]): when `L` is the edge
-//! set of a Delaunay tetrahedralization, its tetrahedra are found from the graph once each
-//! (see `delaunay.rs`) and certified by step 5 alone. When the proposal is withdrawn or
-//! fails step 5, steps 3–5 decide as above; a NO always comes from them.
+//! Before these steps, a cheap proposal is tried ([`Route::Delaunay`]): when `L` is the
+//! edge set of a Delaunay tetrahedralization, its tetrahedra are found from the graph once
+//! each (see `delaunay.rs`) and certified by step 5 alone (a tetrahedralization passes
+//! steps 1–4 anyway). When the proposal is withdrawn or fails step 5, steps 1–5 decide as
+//! above; a NO always comes from them.
 //!
 //! Work is output-sensitive: `L_v` is listed from the adjacency lists of `v`'s neighbours
 //! (galloping intersections, never a scan of all of `L`), and the link is freed of

@@ -4,6 +4,7 @@
 use super::{
     Input, InputError, Tokens, check_segments, parse_coord, parse_int, read_text, vertex_ref,
 };
+use crate::rows::split_at_offsets;
 use rayon::prelude::*;
 use std::path::Path;
 
@@ -78,13 +79,15 @@ fn first_row(body: &str, first_line: usize) -> Option<(usize, &str)> {
 /// Parsed rows with their line numbers, or the first error.
 type Rows<T> = Result<(Vec<T>, Vec<u32>), InputError>;
 
-/// Parses the rows of `body` in parallel: `parse(tokens, line, ordinal)` for every
+/// Parses the rows of `body` in parallel (`blank` fills the result before the rows are
+/// written): `fast(bytes, ordinal)`, else `parse(tokens, line, ordinal)`, for every
 /// meaningful line, in file order. The body is cut at line boundaries; a first pass counts
 /// lines and rows per piece so that every row knows its line number and ordinal, so the
 /// first error in file order is the one reported.
-fn parse_body<T: Send>(
+fn parse_body<T: Copy + Send + Sync>(
     body: &str,
     first_line: usize,
+    blank: T,
     fast: impl Fn(&[u8], usize) -> Option<T> + Sync,
     parse: impl Fn(&[&str], usize, usize) -> Result<T, InputError> + Sync,
 ) -> Rows<T> {
@@ -122,35 +125,40 @@ fn parse_body<T: Send>(
         line += lines;
         ordinal += rows;
     }
-    let parsed: Vec<Rows<T>> = pieces
+    // Every piece writes its rows and their line numbers straight into its own range of
+    // the result (the counting pass above applies the same "meaningful" rule as the
+    // parser: a token before any `#`).
+    let offsets: Vec<usize> = starts.iter().map(|s| s.1).chain([ordinal]).collect();
+    let mut rows = vec![blank; ordinal];
+    let mut lines = vec![0u32; ordinal];
+    let outs = split_at_offsets(&mut rows, &offsets)
+        .into_par_iter()
+        .zip(split_at_offsets(&mut lines, &offsets));
+    let results: Vec<Result<(), InputError>> = pieces
         .par_iter()
         .zip(&starts)
-        .map(|(piece, &(line0, ord0))| {
-            let (mut rows, mut lines) = (Vec::new(), Vec::new());
+        .zip(outs)
+        .map(|((piece, &(line0, ord0)), (out, out_lines))| {
+            let mut k = 0;
             for (i, raw) in piece.split_inclusive('\n').enumerate() {
-                if let Some(row) = fast(raw.as_bytes(), ord0 + rows.len()) {
-                    rows.push(row);
-                    lines.push((line0 + i) as u32);
-                    continue;
-                }
-                let toks = Tokens::new(raw.split('#').next().unwrap_or(""));
-                if toks.is_empty() {
-                    continue;
-                }
-                let line = line0 + i;
-                rows.push(parse(&toks, line, ord0 + rows.len())?);
-                lines.push(line as u32);
+                let row = match fast(raw.as_bytes(), ord0 + k) {
+                    Some(row) => row,
+                    None => {
+                        let toks = Tokens::new(raw.split('#').next().unwrap_or(""));
+                        if toks.is_empty() {
+                            continue;
+                        }
+                        parse(&toks, line0 + i, ord0 + k)?
+                    }
+                };
+                out[k] = row;
+                out_lines[k] = (line0 + i) as u32;
+                k += 1;
             }
-            Ok((rows, lines))
+            Ok(())
         })
         .collect();
-    let mut rows = Vec::with_capacity(ordinal);
-    let mut lines = Vec::with_capacity(ordinal);
-    for r in parsed {
-        let (r, l) = r?;
-        rows.extend(r);
-        lines.extend(l);
-    }
+    results.into_iter().collect::<Result<(), _>>()?;
     Ok((rows, lines))
 }
 
@@ -236,6 +244,7 @@ fn read_node(path: &Path) -> Result<Input, InputError> {
     let (points, lines) = parse_body(
         body,
         first_line,
+        [0.0; 3],
         |_, _| None,
         |toks, line, ordinal| {
             if toks.len() < 1 + dim || toks.len() > 1 + dim + extra {
@@ -315,7 +324,7 @@ fn read_rows<const K: usize>(
         }
         Some(r)
     };
-    let (rows, lines) = parse_body(body, first_line, fast, |toks, line, ordinal| {
+    let (rows, lines) = parse_body(body, first_line, [0; K], fast, |toks, line, ordinal| {
         if toks.len() < 1 + per_row.max(min_per_row) || toks.len() > 1 + per_row + extra {
             return Err(InputError::new(
                 path,
