@@ -18,6 +18,17 @@
 //! sectors `k-5..=k-2` the right ones. The search stops when every sector is dead
 //! beyond the radius already searched.
 //!
+//! **Sites near an edge of the set.** Looking along the edge, one side of a sector has
+//! no sites, so its neighbouring sectors never kill that side's diamonds and the cone
+//! would be walked to the bounding box (`O(n)` visits for such a site). The sector's own
+//! sites kill them instead: a visited site `r` of sector `k` at distance `ρ` is at
+//! `ψ ∈ (0, one sector]` from every farther `q` of the sector clockwise of it, so it
+//! lies in their left diamonds once `|pq| > ρ(cos s + sin s cot θ)` (`s` one sector, with
+//! the 0.1% margin), and in the right diamonds of those counter-clockwise of it. When
+//! one side is dead by the neighbours, the live part of the sector beyond a radius is the
+//! sliver past the last (or first) such `r`, with a `10^-9` pseudo-angle margin; its
+//! reach to the bounding box ends the walk.
+//!
 //! **Why the floating-point search is exact.** Every exclusion is decided one of three
 //! ways: by exact hits ([`diamond_hit`] on two sites, one per diamond, or one on the
 //! segment), by `|pq|` above the dead radius of `q`'s sector, or by the search stopping
@@ -35,7 +46,8 @@
 //!   `(s, 6s)`, `6s = 33.75° < θ = 39.09°`); diamonds reach 7 sectors while `θ` needs
 //!   6.95 (a 0.28° margin); 1% on the bounding-box reach; two cells on each side of a
 //!   cone's range in a ring (a ray crosses at most three cells of a ring); `10^-9` on the
-//!   inner ring radius.
+//!   inner ring radius; `10^-9` in pseudo-angle against errors below `2^-45` for the
+//!   in-sector kills, and `10^-6` when a sliver's corners are collected.
 //! - Keeping a pair the exact test would exclude is always safe (the LMT-skeleton and
 //!   the exact stage optimise over the candidates, a superset of the MWT's edges), so the
 //!   order in which sites are visited, by rounded distance, only affects speed: the
@@ -77,6 +89,8 @@ struct Sectors {
     rays: [(f64, f64); SECTORS + 1],
     /// `kill[i]`: the distance factor for a site `i` sectors away (i = 2..=5).
     kill: [f64; 6],
+    /// The distance factor for a site in the same sector (`ψ` up to one sector).
+    kill_in: f64,
 }
 
 impl Sectors {
@@ -95,6 +109,7 @@ impl Sectors {
             let psi = (i + 1) as f64 * WIDTH;
             *f = (psi.cos() + psi.sin() * 16.0 / 13.0) * 1.001;
         }
+        let kill_in = (WIDTH.cos() + WIDTH.sin() * 16.0 / 13.0) * 1.001;
         let rays = std::array::from_fn(|k| {
             let a = k as f64 * WIDTH;
             (a.cos(), a.sin())
@@ -107,6 +122,16 @@ impl Sectors {
             first,
             rays,
             kill,
+            kill_in,
+        }
+    }
+
+    /// Pseudo-angle where sector `k` ends (4 for the last).
+    fn end(&self, k: usize) -> f64 {
+        if k + 1 < SECTORS {
+            self.bounds[k + 1]
+        } else {
+            4.0
         }
     }
 
@@ -131,6 +156,9 @@ impl Sectors {
 #[derive(Default)]
 struct Scratch {
     by_sector: Vec<Vec<u32>>,
+    /// Per sector, in visiting order: (distance, smallest and largest pseudo-angle of
+    /// the sector's sites visited so far).
+    span: Vec<Vec<(f64, f64, f64)>>,
     nearest: Vec<f64>,
     pending: Vec<(f64, u32)>,
     visited: Vec<bool>,
@@ -171,7 +199,17 @@ pub(super) fn search(points: &[Point2]) -> Vec<[u32; 2]> {
     edges
 }
 
-fn dead_radius(s: &Scratch, sec: &Sectors, k: usize) -> f64 {
+/// Margin in pseudo-angle for kills by a site of the same sector (pseudo-angles carry
+/// relative errors below `2^-45`).
+const ANGLE_MARGIN: f64 = 1e-9;
+
+/// A part of a sector, as a pseudo-angle interval, where diamonds may still be open
+/// beyond some distance, with the distance beyond which its side is dead anyway.
+type Wedge = Option<(f64, f64, f64)>;
+
+/// The distances beyond which every site of sector `k` has a visited site of the
+/// neighbouring sectors in its left (counter-clockwise) and in its right diamond.
+fn side_radii(s: &Scratch, sec: &Sectors, k: usize) -> (f64, f64) {
     let side = |sign: isize| {
         (2..=5)
             .map(|i| {
@@ -180,7 +218,75 @@ fn dead_radius(s: &Scratch, sec: &Sectors, k: usize) -> f64 {
             })
             .fold(f64::INFINITY, f64::min)
     };
-    side(1).max(side(-1))
+    (side(1), side(-1))
+}
+
+/// The smallest and largest pseudo-angle among the sites of sector `k` visited at a
+/// distance `ρ` with `ρ · kill_in < t`. Such a site `r` is in the left diamond of every
+/// `pq` with `q` in the sector, farther than `t` and clockwise of `r` (`ψ ∈ (0, one
+/// sector]`, so `|pq| > ρ(cos ψ + sin ψ cot θ)`), and in the right diamond of those
+/// counter-clockwise of it.
+fn span_below(s: &Scratch, sec: &Sectors, k: usize, t: f64) -> Option<(f64, f64)> {
+    let h = &s.span[k];
+    let i = h.partition_point(|e| e.0 * sec.kill_in < t);
+    (i > 0).then(|| (h[i - 1].1, h[i - 1].2))
+}
+
+/// True when both diamonds of `pq` hold a visited site, for `q` at distance `d` and
+/// pseudo-angle `a` in sector `k`.
+fn killed(s: &Scratch, sec: &Sectors, k: usize, d: f64, a: f64) -> bool {
+    let (lr, rr) = side_radii(s, sec, k);
+    let (left, right) = (d > lr, d > rr);
+    if left == right {
+        // Both killed, or neither: the sector's own sites kill both sides only for a
+        // site between two of them, which the exact test then rejects as fast.
+        return left;
+    }
+    let Some((lo, hi)) = span_below(s, sec, k, d) else {
+        return false;
+    };
+    (left || a < hi - ANGLE_MARGIN) && (right || a > lo + ANGLE_MARGIN)
+}
+
+/// The parts of sector `k` where a site farther than `t` may have an open diamond. When
+/// the neighbouring sectors kill one side's diamonds (a site near an edge of the set,
+/// looking along it), the other side's stay open only counter-clockwise of the sector's
+/// last killer (left) or clockwise of its first (right), see [`span_below`]: that cuts
+/// the cone along the edge to a sliver that soon leaves the bounding box. With both sides
+/// open the whole sector is kept (cutting it there costs more than it saves).
+fn live_wedges(s: &Scratch, sec: &Sectors, k: usize, t: f64) -> [Wedge; 2] {
+    let (lr, rr) = side_radii(s, sec, k);
+    let (start, end) = (sec.bounds[k], sec.end(k));
+    match (lr >= t, rr >= t) {
+        (false, false) => [None, None],
+        (true, true) => [Some((start, end, lr.max(rr))), None],
+        (left, _) => {
+            let span = span_below(s, sec, k, t);
+            let (mut a0, mut a1) = (start, end);
+            if left {
+                a0 = span.map_or(start, |(_, hi)| (hi - ANGLE_MARGIN).max(start));
+            } else {
+                a1 = span.map_or(end, |(lo, _)| (lo + ANGLE_MARGIN).min(end));
+            }
+            // A wide part is not worth its own rays and reach: keep the sector.
+            if a1 - a0 > 0.25 * (end - start) {
+                (a0, a1) = (start, end);
+            }
+            [Some((a0, a1, if left { lr } else { rr })), None]
+        }
+    }
+}
+
+/// A direction whose pseudo-angle is `a` (not normalised).
+fn direction(a: f64) -> (f64, f64) {
+    let q = a.floor().clamp(0.0, 3.0);
+    let f = a - q;
+    match q as u8 {
+        0 => (1.0 - f, f),
+        1 => (-f, 1.0 - f),
+        2 => (f - 1.0, -f),
+        _ => (f, f - 1.0),
+    }
 }
 
 /// The candidates `[p, q]`, `p < q`, of the site in grid slot `slot`. Sites are handled
@@ -194,6 +300,8 @@ fn candidates_of(
 ) {
     s.by_sector.resize_with(SECTORS, Vec::new);
     s.by_sector.iter_mut().for_each(Vec::clear);
+    s.span.resize_with(SECTORS, Vec::new);
+    s.span.iter_mut().for_each(Vec::clear);
     s.nearest.clear();
     s.nearest.resize(SECTORS, f64::INFINITY);
     s.pending.clear();
@@ -202,13 +310,13 @@ fn candidates_of(
     let (cx, cy) = grid.cell_of(&pp);
     let (nx, ny) = grid.dims();
     let mut ring = 0usize;
-    let mut dead = [f64::INFINITY; SECTORS];
+    let mut live = [[None; 2]; SECTORS];
     let reach = sector_reach(&pp, grid.bounds(), sec);
     loop {
         if ring < 2 {
             gather_ring(grid, slot, cx, cy, ring, &mut s.pending);
         } else {
-            gather_live_cones(grid, slot, (cx, cy), ring, sec, &dead, s);
+            gather_live_cones(grid, slot, (cx, cy), ring, sec, &live, s);
         }
         let exhausted = ring >= cx && ring >= cy && cx + ring >= nx - 1 && cy + ring >= ny - 1;
         let complete = if exhausted {
@@ -223,57 +331,83 @@ fn candidates_of(
             }
             s.pending.pop();
             let (q, pq) = (index[qs as usize], coords[qs as usize]);
-            let (dx, dy) = (pq[0] - pp[0], pq[1] - pp[1]);
-            let k = sec.of(dx, dy);
+            let a = pseudo_angle(pq[0] - pp[0], pq[1] - pp[1]);
+            let k = sec.of_pseudo(a);
             let d = d2.sqrt();
-            if q > p && d <= dead_radius(s, sec, k) && diamonds_open(&pp, &pq, coords, s, k) {
+            if q > p && !killed(s, sec, k, d, a) && diamonds_open(&pp, &pq, coords, s, k) {
                 out.push([p, q]);
             }
             s.by_sector[k].push(qs);
             s.nearest[k] = s.nearest[k].min(d);
+            let (lo, hi) = s.span[k]
+                .last()
+                .map_or((a, a), |e| (e.1.min(a), e.2.max(a)));
+            s.span[k].push((d, lo, hi));
         }
         if exhausted {
             return;
         }
-        for (k, d) in dead.iter_mut().enumerate() {
-            *d = dead_radius(s, sec, k).min(reach[k]);
+        // What stays live beyond the next ring's inner radius, cut to the bounding box.
+        let inner = complete * (1.0 - 1e-9);
+        let mut farthest = 0.0f64;
+        for (k, wedges) in live.iter_mut().enumerate() {
+            *wedges = live_wedges(s, sec, k, inner);
+            for w in wedges.iter_mut() {
+                let Some((a0, a1, radius)) = *w else { continue };
+                // The sector's own reach first: most wedges die there, without the
+                // wedge's (dearer) reach.
+                let mut until = radius.min(reach[k]);
+                if until >= inner && (a0 > sec.bounds[k] || a1 < sec.end(k)) {
+                    until = until.min(wedge_reach(&pp, grid.bounds(), a0, a1));
+                }
+                farthest = farthest.max(until);
+                if until < inner {
+                    *w = None;
+                }
+            }
         }
-        if dead.iter().fold(0.0f64, |a, &b| a.max(b)) < complete {
+        if farthest < complete {
             return;
         }
         ring += 1;
     }
 }
 
-/// For each sector, a distance beyond which its cone holds no site: the farthest vertex
-/// of (bounding box ∩ cone), i.e. the exits of its two rays and the box corners in it
-/// (corners of the neighbouring sectors too, against rounding), with a 1% margin.
-fn sector_reach(p: &Point2, (lo, hi): (Point2, Point2), sec: &Sectors) -> [f64; SECTORS] {
-    let exit = |(c, s): (f64, f64)| {
-        let t = |d: f64, l: f64, h: f64, x: f64| {
-            if d > 1e-12 {
-                (h - x) / d
-            } else if d < -1e-12 {
-                (l - x) / d
-            } else {
-                f64::INFINITY
-            }
-        };
-        t(c, lo[0], hi[0], p[0])
-            .min(t(s, lo[1], hi[1], p[1]))
-            .max(0.0)
+/// Distance from `p` along the unit direction `(c, s)` to the bounding box's boundary.
+fn box_exit(p: &Point2, (lo, hi): (Point2, Point2), (c, s): (f64, f64)) -> f64 {
+    let t = |d: f64, l: f64, h: f64, x: f64| {
+        if d > 1e-12 {
+            (h - x) / d
+        } else if d < -1e-12 {
+            (l - x) / d
+        } else {
+            f64::INFINITY
+        }
     };
-    let rays: Vec<f64> = sec.rays.iter().map(|&r| exit(r)).collect();
-    let mut reach = [0.0; SECTORS];
-    for k in 0..SECTORS {
-        reach[k] = rays[k].max(rays[k + 1]);
-    }
-    for c in [
+    t(c, lo[0], hi[0], p[0])
+        .min(t(s, lo[1], hi[1], p[1]))
+        .max(0.0)
+}
+
+fn corners((lo, hi): (Point2, Point2)) -> [Point2; 4] {
+    [
         [lo[0], lo[1]],
         [lo[0], hi[1]],
         [hi[0], lo[1]],
         [hi[0], hi[1]],
-    ] {
+    ]
+}
+
+/// For each sector, a distance beyond which its cone holds no site: the farthest vertex
+/// of (bounding box ∩ cone), i.e. the exits of its two rays and the box corners in it
+/// (corners of the neighbouring sectors too, against rounding), with a 1% margin.
+fn sector_reach(p: &Point2, bbox: (Point2, Point2), sec: &Sectors) -> [f64; SECTORS] {
+    let rays: Vec<f64> = sec.rays.iter().map(|&r| box_exit(p, bbox, r)).collect();
+    let mut reach = [0.0; SECTORS];
+    for k in 0..SECTORS {
+        reach[k] = rays[k].max(rays[k + 1]);
+    }
+    for c in corners(bbox) {
         let (dx, dy) = (c[0] - p[0], c[1] - p[1]);
         let k = sec.of(dx, dy);
         let d = dx.hypot(dy);
@@ -283,6 +417,24 @@ fn sector_reach(p: &Point2, (lo, hi): (Point2, Point2), sec: &Sectors) -> [f64; 
         }
     }
     reach.map(|r| r * 1.01 + 1e-300)
+}
+
+/// [`sector_reach`] for the wedge of pseudo-angles `[a0, a1]` inside one sector: the
+/// exits of its two rays and the corners within `10^-6` of it, with a 1% margin.
+fn wedge_reach(p: &Point2, bbox: (Point2, Point2), a0: f64, a1: f64) -> f64 {
+    let unit = |a: f64| {
+        let (x, y) = direction(a);
+        let l = x.hypot(y);
+        (x / l, y / l)
+    };
+    let mut reach = box_exit(p, bbox, unit(a0)).max(box_exit(p, bbox, unit(a1)));
+    for c in corners(bbox) {
+        let (dx, dy) = (c[0] - p[0], c[1] - p[1]);
+        if (a0 - 1e-6..=a1 + 1e-6).contains(&pseudo_angle(dx, dy)) {
+            reach = reach.max(dx.hypot(dy));
+        }
+    }
+    reach * 1.01 + 1e-300
 }
 
 /// Perimeter position (counter-clockwise from the east side) of the ring-`r` cell at
@@ -357,11 +509,10 @@ fn gather_live_cones(
     (cx, cy): (usize, usize),
     r: usize,
     sec: &Sectors,
-    dead: &[f64; SECTORS],
+    live: &[[Wedge; 2]; SECTORS],
     s: &mut Scratch,
 ) {
     let pp = grid.slots().1[slot];
-    let inner = (r as f64 - 1.0) * grid.cell() * (1.0 - 1e-9);
     let ri = r as isize;
     let (nx, ny) = grid.dims();
     s.visited.clear();
@@ -374,9 +525,20 @@ fn gather_live_cones(
         }
         at[j]
     };
-    for k in (0..SECTORS).filter(|&k| dead[k] >= inner) {
-        let i0 = ray(k) - 2;
-        let i1 = ray(k + 1) + 2;
+    let wedges = live
+        .iter()
+        .enumerate()
+        .flat_map(|(k, w)| w.iter().flatten().map(move |&(a0, a1, _)| (k, a0, a1)));
+    for (k, a0, a1) in wedges {
+        let mut at = |a: f64, j: usize| {
+            if a == sec.bounds[j % SECTORS] || (j == SECTORS && a == 4.0) {
+                ray(j)
+            } else {
+                ray_ring_index(grid, &pp, cx, cy, direction(a), r)
+            }
+        };
+        let i0 = at(a0, k) - 2;
+        let i1 = at(a1, k + 1) + 2;
         let len = ((i1 - i0).rem_euclid(8 * ri) + 1).min(8 * ri);
         for i in i0..i0 + len {
             let visit = i.rem_euclid(8 * ri) as usize;
@@ -486,6 +648,51 @@ mod tests {
         probes.push(4f64.next_down());
         for a in probes {
             assert_eq!(sec.of_pseudo(a), slow(a), "pseudo-angle {a}");
+        }
+    }
+
+    #[test]
+    fn directions_invert_pseudo_angles() {
+        for i in 0..4000 {
+            let a = i as f64 / 1000.0;
+            let (x, y) = direction(a);
+            assert!((pseudo_angle(x, y) - a).abs() < 1e-12, "{a}");
+        }
+    }
+
+    /// Thin strips and a set hugging the edges of its box: almost every site sees the
+    /// edge along some sector, where the kills by the sector's own sites cut the cone.
+    #[test]
+    fn search_is_complete_where_cones_run_along_edges() {
+        let mut rng = crate::rng::Rng::new(11);
+        let strip: Vec<Point2> = (0..500)
+            .map(|_| [rng.unit() * 1000.0, rng.unit()])
+            .collect();
+        let slanted: Vec<Point2> = (0..400)
+            .map(|_| {
+                let t = rng.unit() * 100.0;
+                [t, 0.37 * t + rng.unit()]
+            })
+            .collect();
+        let rim: Vec<Point2> = (0..500)
+            .map(|i| {
+                let t = rng.unit();
+                let e = rng.unit() * 1e-3;
+                match i % 4 {
+                    0 => [t, e],
+                    1 => [1.0 - e, t],
+                    2 => [t, 1.0 - e],
+                    _ => [e, t],
+                }
+            })
+            .collect();
+        for (name, pts) in [("strip", strip), ("slanted", slanted), ("rim", rim)] {
+            let (got, want) = (search(&pts), brute(&pts));
+            let missing = want
+                .iter()
+                .filter(|e| got.binary_search(e).is_err())
+                .count();
+            assert_eq!(missing, 0, "{name}");
         }
     }
 
