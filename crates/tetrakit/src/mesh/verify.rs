@@ -199,9 +199,7 @@ fn problem(kind: ProblemKind, tets: Vec<u32>, vertices: Vec<u32>, detail: String
 /// is not +1, so a valid mesh allocates nothing per tetrahedron beyond its sign.
 fn check_tets(points: &[Point3], tets: &[[u32; 4]]) -> (Vec<Problem>, Vec<i8>) {
     let n = points.len() as u32;
-    let malformed = |t: &[u32; 4]| {
-        t.iter().any(|&v| v >= n) || (0..4).any(|a| (a + 1..4).any(|b| t[a] == t[b]))
-    };
+    let malformed = |t: &[u32; 4]| t.iter().any(|&v| v >= n) || repeats(t);
     let signs: Vec<i8> = tets
         .par_iter()
         .map(|t| {
@@ -222,13 +220,17 @@ fn check_tets(points: &[Point3], tets: &[[u32; 4]]) -> (Vec<Problem>, Vec<i8>) {
     (problems, signs)
 }
 
+fn repeats(t: &[u32; 4]) -> bool {
+    (0..4).any(|a| (a + 1..4).any(|b| t[a] == t[b]))
+}
+
 /// What is wrong with tetrahedron `i` = `t` of orientation `sign` (not +1).
 fn tet_problem(i: u32, t: &[u32; 4], sign: i8, n: u32) -> Problem {
     if let Some(&v) = t.iter().find(|&&v| v >= n) {
         let d = format!("tetrahedron #{i} names vertex #{v}, but there are {n} points");
         return problem(ProblemKind::BadIndex, vec![i], vec![v], d);
     }
-    if (0..4).any(|a| (a + 1..4).any(|b| t[a] == t[b])) {
+    if repeats(t) {
         let d = format!("tetrahedron #{i} repeats a vertex: {}", ids(t));
         return problem(ProblemKind::RepeatedVertex, vec![i], t.to_vec(), d);
     }
