@@ -1,7 +1,7 @@
 //! `tetrakit demo`: a newcomer's tour on built-in examples, a few seconds, no arguments.
 
 use std::time::Instant;
-use tetrakit::detect::{Cells, detect};
+use tetrakit::detect::{Cells, Route, detect};
 use tetrakit::generate::{self, Corruption};
 use tetrakit::mesh::Tetrahedralization;
 
@@ -11,10 +11,15 @@ fn verdict(name: &str, t: &Tetrahedralization, edges: &[(u32, u32)]) {
     let ms = start.elapsed().as_secs_f64() * 1e3;
     match &d.result {
         Ok(Cells::Tetrahedra(tets)) => out!(
-            "  {name}: YES, {} segments on {} points form a tetrahedralization with {} tetrahedra (every one found from all four of its vertices and certified) [{ms:.1} ms]",
+            "  {name}: YES, {} segments on {} points form a tetrahedralization with {} tetrahedra ({}) [{ms:.1} ms]",
             edges.len(),
             t.points.len(),
-            tets.len()
+            tets.len(),
+            match d.route {
+                Route::Delaunay =>
+                    "the Delaunay tetrahedra of the graph, each found once, certified",
+                Route::Links => "every one found from all four of its vertices, certified",
+            }
         ),
         Ok(Cells::Triangles(tris)) => out!(
             "  {name}: YES, a planar triangulation with {} triangles [{ms:.1} ms]",

@@ -102,10 +102,12 @@ fn place(t: &mut Tetrahedralization, x: u32) {
     }
     let p = |i: u32| &t.points[i as usize];
     let px = t.points[x as usize];
-    let new: Vec<[u32; 4]> = count
+    let mut new: Vec<[u32; 4]> = count
         .values()
         .filter(|(c, f)| *c == 1 && orient3d(p(f[0]), p(f[1]), p(f[2]), &px) > 0)
         .map(|(_, f)| [f[0], f[1], f[2], x])
         .collect();
+    // In a fixed order: the map's is random, and later flips pick tetrahedra by index.
+    new.sort_unstable();
     t.tets.extend(new);
 }

@@ -383,3 +383,19 @@ pub fn add_overlapping_tet(t: &Tetrahedralization, seed: u64) -> Option<Tetrahed
     }
     None
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `--seed` reproduces an instance: no hash-map order leaks into the output.
+    #[test]
+    fn same_seed_same_tetrahedralization() {
+        for seed in 0..4 {
+            let a = random_tetrahedralization(150, 300, seed, None);
+            for _ in 0..3 {
+                assert_eq!(random_tetrahedralization(150, 300, seed, None).tets, a.tets);
+            }
+        }
+    }
+}
