@@ -424,14 +424,14 @@ fn sector_reach(p: &Point2, bbox: (Point2, Point2), sec: &Sectors) -> [f64; SECT
 fn wedge_reach(p: &Point2, bbox: (Point2, Point2), a0: f64, a1: f64) -> f64 {
     let unit = |a: f64| {
         let (x, y) = direction(a);
-        let l = x.hypot(y);
+        let l = (x * x + y * y).sqrt();
         (x / l, y / l)
     };
     let mut reach = box_exit(p, bbox, unit(a0)).max(box_exit(p, bbox, unit(a1)));
     for c in corners(bbox) {
         let (dx, dy) = (c[0] - p[0], c[1] - p[1]);
         if (a0 - 1e-6..=a1 + 1e-6).contains(&pseudo_angle(dx, dy)) {
-            reach = reach.max(dx.hypot(dy));
+            reach = reach.max((dx * dx + dy * dy).sqrt());
         }
     }
     reach * 1.01 + 1e-300
@@ -525,20 +525,22 @@ fn gather_live_cones(
         }
         at[j]
     };
-    let wedges = live
+    for (k, &(a0, a1, _)) in live
         .iter()
         .enumerate()
-        .flat_map(|(k, w)| w.iter().flatten().map(move |&(a0, a1, _)| (k, a0, a1)));
-    for (k, a0, a1) in wedges {
-        let mut at = |a: f64, j: usize| {
-            if a == sec.bounds[j % SECTORS] || (j == SECTORS && a == 4.0) {
-                ray(j)
-            } else {
-                ray_ring_index(grid, &pp, cx, cy, direction(a), r)
-            }
-        };
-        let i0 = at(a0, k) - 2;
-        let i1 = at(a1, k + 1) + 2;
+        .flat_map(|(k, w)| w.iter().flatten().map(move |w| (k, w)))
+    {
+        // Sector boundaries are cached; a sliver's own edge is located afresh.
+        let i0 = if a0 == sec.bounds[k] {
+            ray(k)
+        } else {
+            ray_ring_index(grid, &pp, cx, cy, direction(a0), r)
+        } - 2;
+        let i1 = if a1 == sec.end(k) {
+            ray(k + 1)
+        } else {
+            ray_ring_index(grid, &pp, cx, cy, direction(a1), r)
+        } + 2;
         let len = ((i1 - i0).rem_euclid(8 * ri) + 1).min(8 * ri);
         for i in i0..i0 + len {
             let visit = i.rem_euclid(8 * ri) as usize;
