@@ -1,5 +1,6 @@
-//! Compressed rows (one flat array cut at nondecreasing offsets), shared by the readers'
-//! segment check, the segment graph and the verifier's face pairing.
+//! Compressed rows (one flat array cut at nondecreasing offsets): the counting sort of
+//! the planar grids, adjacency and edge lists ([`buckets`]), and its parallel form for the
+//! readers' segment check, the segment graph and the verifier's face pairing ([`group`]).
 
 use rayon::prelude::*;
 
@@ -38,6 +39,30 @@ pub(crate) fn for_each_row<T: Send>(
                 rest = tail;
             }
         });
+}
+
+/// Compressed rows: `entries` `(bucket, item)` with buckets below `n`, grouped by bucket
+/// (a counting sort, stable within a bucket; sequential: [`group`] is the parallel form
+/// for indexed items). Returns the row starts (`n + 1` of them)
+/// and the items. Used for the point and edge grids, adjacency lists and edge lists.
+pub(crate) fn buckets<T: Copy + Default>(
+    n: usize,
+    entries: impl Iterator<Item = (usize, T)> + Clone,
+) -> (Vec<u32>, Vec<T>) {
+    let mut start = vec![0u32; n + 1];
+    for (b, _) in entries.clone() {
+        start[b + 1] += 1;
+    }
+    for i in 0..n {
+        start[i + 1] += start[i];
+    }
+    let mut fill = start.clone();
+    let mut items = vec![T::default(); start[n] as usize];
+    for (b, x) in entries {
+        items[fill[b] as usize] = x;
+        fill[b] += 1;
+    }
+    (start, items)
 }
 
 /// Groups the pairs `(key, value)` that `emit(i)` gives for every item `i < items` into

@@ -190,7 +190,7 @@ pub(crate) fn delaunay_edges_where(
 
 /// Sorts pairs with first entries below `n` by counting sort on the first entry.
 fn sort_by_first(pairs: Vec<[u32; 2]>, n: usize) -> Vec<[u32; 2]> {
-    let (start, mut out) = super::buckets(n, pairs.iter().map(|e| (e[0] as usize, *e)));
+    let (start, mut out) = crate::rows::buckets(n, pairs.iter().map(|e| (e[0] as usize, *e)));
     for w in start.windows(2) {
         out[w[0] as usize..w[1] as usize].sort_unstable();
     }

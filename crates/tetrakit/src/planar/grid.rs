@@ -45,7 +45,7 @@ impl PointGrid {
             coords: Vec::new(),
         };
         let keys = points.iter().enumerate().map(|(i, p)| (g.key(p), i as u32));
-        (g.start, g.items) = super::buckets(nx * ny, keys);
+        (g.start, g.items) = crate::rows::buckets(nx * ny, keys);
         g.coords = g.items.iter().map(|&i| points[i as usize]).collect();
         g
     }

@@ -42,29 +42,6 @@ pub(crate) fn edge_key(a: u32, b: u32) -> [u32; 2] {
     [a.min(b), a.max(b)]
 }
 
-/// Compressed rows: `entries` `(bucket, item)` with buckets below `n`, grouped by bucket
-/// (a counting sort, stable within a bucket). Returns the row starts (`n + 1` of them)
-/// and the items. Used for the point and edge grids, adjacency lists and edge lists.
-pub(crate) fn buckets<T: Copy + Default>(
-    n: usize,
-    entries: impl Iterator<Item = (usize, T)> + Clone,
-) -> (Vec<u32>, Vec<T>) {
-    let mut start = vec![0u32; n + 1];
-    for (b, _) in entries.clone() {
-        start[b + 1] += 1;
-    }
-    for i in 0..n {
-        start[i + 1] += start[i];
-    }
-    let mut fill = start.clone();
-    let mut items = vec![T::default(); start[n] as usize];
-    for (b, x) in entries {
-        items[fill[b] as usize] = x;
-        fill[b] += 1;
-    }
-    (start, items)
-}
-
 /// Checks that every coordinate is in the exactly supported range
 /// ([`coordinate_in_range`](crate::geom::coordinate_in_range)): the predicates are exact
 /// there, and the floating-point search bounds of the skeleton and the MWT filter have

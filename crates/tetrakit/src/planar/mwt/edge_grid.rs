@@ -45,7 +45,7 @@ impl EdgeGrid {
         let entries = ids.iter().zip(&ranges).flat_map(|(&e, &(x0, x1, y0, y1))| {
             (y0..=y1).flat_map(move |y| (x0..=x1).map(move |x| (y * nx + x, e)))
         });
-        (g.start, g.items) = crate::planar::buckets(nx * ny, entries);
+        (g.start, g.items) = crate::rows::buckets(nx * ny, entries);
         g
     }
 

@@ -144,7 +144,7 @@ fn empty_triangles(points: &[Point2], sk: &Skeleton) -> (Vec<u32>, Vec<Tri>) {
             out
         })
         .collect();
-    crate::planar::buckets(sk.edges.len(), inc.iter().map(|&(e, t)| (e as usize, t)))
+    crate::rows::buckets(sk.edges.len(), inc.iter().map(|&(e, t)| (e as usize, t)))
 }
 
 /// The number of triangles whose three edges are candidates (empty or not): a merge of

@@ -83,7 +83,7 @@ pub fn csr(n: usize, edges: &[[u32; 2]]) -> (Vec<u32>, Vec<(u32, u32)>) {
         let id = id as u32;
         [(e[0] as usize, (e[1], id)), (e[1] as usize, (e[0], id))]
     });
-    crate::planar::buckets(n, entries)
+    crate::rows::buckets(n, entries)
 }
 
 /// Neighbour lists sorted counter-clockwise.
