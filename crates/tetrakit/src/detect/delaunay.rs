@@ -101,7 +101,7 @@ fn tets_at(
         for (i, &x) in nb.iter().enumerate() {
             pos[x as usize] = i as u32;
         }
-        let found = tets_from(points, g, a, first, &pos, s, out);
+        let found = tets_from(points, g, (a, nb, first), &pos, s, out);
         for &x in nb {
             pos[x as usize] = u32::MAX;
         }
@@ -109,17 +109,16 @@ fn tets_at(
     })
 }
 
-/// [`tets_at`] with the positions of `a`'s neighbours marked in `pos`.
+/// [`tets_at`] with the positions of `a`'s neighbours `nb` marked in `pos` (`nb[first..]`
+/// are the ones above `a`).
 fn tets_from(
     points: &[Point3],
     g: &Graph,
-    a: u32,
-    first: usize,
+    (a, nb, first): (u32, &[u32], usize),
     pos: &[u32],
     s: &mut Scratch,
     out: &mut Vec<[u32; 4]>,
 ) -> Option<()> {
-    let nb = g.nbrs(a);
     let frame = Frame::new(&points[a as usize]);
     s.dirs.clear();
     s.dirs

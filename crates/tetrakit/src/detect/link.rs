@@ -79,9 +79,9 @@ pub enum LinkMethod {
     SignTable,
 }
 
-/// The link triangles of `v` (each `(a, b, c)` with `(v, a, b, c)` positively oriented), or
-/// a witness that `L` is not the edge set of a tetrahedralization.
-/// Appends the link triangles of `v` to `out`.
+/// Appends the link triangles of `v` to `out` (each `(a, b, c)` with `(v, a, b, c)`
+/// positively oriented), or returns a witness that `L` is not the edge set of a
+/// tetrahedralization.
 pub(super) fn link_into(ctx: &Ctx, v: u32, out: &mut Vec<[u32; 3]>) -> Result<(), Witness> {
     BUFFERS.with(|b| link_with(ctx, v, &mut b.borrow_mut(), out))
 }
@@ -180,14 +180,6 @@ fn faces_from_rotation(
     faces(lv, hull, &rot, kept.len())
 }
 
-/// The fast path to the link triangles: for each kept segment `ab`, the face on each side
-/// of the plane `vab` has as apex the common kept neighbour of `a` and `b` on that side that
-/// comes first in angle around the axis `v→a` (signs already in the table; more than one
-/// candidate only around separating triangles of the link). When every triangle is then
-/// seen from its three edges, the boundary lies on the hull, the Euler characteristic is
-/// right and the link is connected, these are the faces of the link; anything else returns
-/// `false` and the exact rotation system decides (and names the problem). On success the
-/// faces are in `faces`, each three times in a row, local indices.
 /// Scratch for [`faces_from_signs`]: degree prefix sums, fill cursors, adjacency, faces.
 type CsrBuffers<'b> = (
     &'b mut Vec<u32>,
@@ -196,6 +188,14 @@ type CsrBuffers<'b> = (
     &'b mut Vec<[u32; 3]>,
 );
 
+/// The fast path to the link triangles: for each kept segment `ab`, the face on each side
+/// of the plane `vab` has as apex the common kept neighbour of `a` and `b` on that side that
+/// comes first in angle around the axis `v→a` (signs already in the table; more than one
+/// candidate only around separating triangles of the link). When every triangle is then
+/// seen from its three edges, the boundary lies on the hull, the Euler characteristic is
+/// right and the link is connected, these are the faces of the link; anything else returns
+/// `false` and the exact rotation system decides (and names the problem). On success the
+/// faces are in `faces`, each three times in a row, local indices.
 fn faces_from_signs(
     lv: &LocalView,
     hull: &Hull3,

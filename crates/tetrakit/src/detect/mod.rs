@@ -334,10 +334,7 @@ fn certify(points: &[Point3], g: &Graph, hull: &Hull3, tets: &[[u32; 4]]) -> Res
             WitnessKind::Inconsistent,
             p.vertices.clone(),
             vec![],
-            format!(
-                "the tetrahedra found from the links fail verification: {}",
-                p.detail
-            ),
+            format!("the tetrahedra found fail verification: {}", p.detail),
         ));
     }
     edges_are_segments(tets, g)
