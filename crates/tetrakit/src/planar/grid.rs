@@ -7,8 +7,6 @@ use crate::geom::Point2;
 
 /// Points bucketed by cell, in compressed rows.
 pub(crate) struct PointGrid {
-    lo: Point2,
-    hi: Point2,
     origin: Point2,
     cell: f64,
     nx: usize,
@@ -34,8 +32,6 @@ impl PointGrid {
         let ny = ((h / cell) as usize + 1).min(1 << 14);
         let cell = cell.max(w / nx as f64).max(h / ny as f64);
         let mut g = PointGrid {
-            lo,
-            hi,
             origin: lo,
             cell,
             nx,
@@ -57,11 +53,6 @@ impl PointGrid {
 
     fn key(&self, p: &Point2) -> usize {
         self.coord(p[1], 1, self.ny) * self.nx + self.coord(p[0], 0, self.nx)
-    }
-
-    /// The bounding box `(lo, hi)` of the points.
-    pub fn bounds(&self) -> (Point2, Point2) {
-        (self.lo, self.hi)
     }
 
     /// Side length of a cell.

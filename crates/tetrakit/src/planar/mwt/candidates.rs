@@ -2,68 +2,62 @@
 //!
 //! Drysdale, McElfresh and Snoeyink (2001) proved that an edge `pq` of an MWT has at
 //! least one of its two *diamonds* (the isosceles triangles on `pq` with base angle
-//! π/4.6) empty. We use the slightly smaller diamonds of base angle `atan(13/16)`
+//! π/4.6) empty. We use the slightly smaller diamonds of base angle `θ = atan(13/16)`
 //! ([`diamond_hit`]), which are exact rational regions inside the true ones, so
 //! excluding an edge is always justified. An edge with a site on its open segment is
 //! excluded too (it is no triangulation edge).
 //!
-//! **Search.** For each site `p`, sites are visited in order of distance (grid rings).
-//! Every site in a diamond of `pq` is closer to `p` than `q`, so the diamonds of `pq`
-//! are tested against the sites already visited, restricted to the 15 angular sectors
-//! (of 64) around `q`'s direction that a diamond can reach. A visited site `r` at
-//! distance `ρ` and angle `ψ ∈ (0, θ)` counter-clockwise from the direction of `q` is
-//! in the left diamond of `pq` once `|pq| > ρ(cos ψ + sin ψ cot θ)`; so the nearest
-//! visited site in sectors `k+2..=k+5` (offsets in `(s, 6s)`, `s = 5.625°`) kills the
-//! left diamonds of every farther `q` in sector `k` beyond a computed radius, and
-//! sectors `k-5..=k-2` the right ones. The search stops when every sector is dead
-//! beyond the radius already searched.
+//! **Search.** Each pair is examined from its lexicographically smaller end `p`, so the
+//! partners `q` of `p` lie right of it (or straight above). A site more than `θ` beyond
+//! that half-plane lies in no diamond of such a pair, so those directions are never
+//! searched. Sites are visited in order of distance (grid rings) and kept sorted by
+//! angle around `p`. Angles are pseudo-angles (monotone, in `[0, 4)`); a rotation by
+//! `±θ` is the rational map `(16x ∓ 13y, ±13x + 16y)` up to scale.
 //!
-//! **Sites near an edge of the set.** Looking along the edge, one side of a sector has
-//! no sites, so its neighbouring sectors never kill that side's diamonds and the cone
-//! would be walked to the bounding box (`O(n)` visits for such a site). The sector's own
-//! sites kill them instead: a visited site `r` of sector `k` at distance `ρ` is at
-//! `ψ ∈ (0, one sector]` from every farther `q` of the sector clockwise of it, so it
-//! lies in their left diamonds once `|pq| > ρ(cos s + sin s cot θ)` (`s` one sector, with
-//! the 0.1% margin), and in the right diamonds of those counter-clockwise of it. When
-//! one side is dead by the neighbours, the live part of the sector beyond a radius is the
-//! sliver past the last (or first) such `r`, with a `10^-9` pseudo-angle margin; its
-//! reach to the bounding box ends the walk.
+//! **Dead directions.** A site `r` at distance `ρ` and at angle `ψ ∈ (0, θ)` from the
+//! direction of `q` lies in a diamond of `pq` once `|pq| > ρ(cos ψ + sin ψ cot θ) =
+//! ρ sin(θ + ψ) / sin θ`, which is at most `2ρ cos θ`. So when the visited sites (all
+//! within distance `ρ`) include `l` counter-clockwise and `r` clockwise of a direction,
+//! both within `θ` of it, every `q` in that direction farther than `2ρ cos θ` has both
+//! diamonds occupied. Each pair of angular neighbours gives such an interval of
+//! directions; the direction of a visited site `x` itself is dead too when both its
+//! neighbours are within `θ` of it (just clockwise of `x`, `x` is in the left diamond
+//! and its clockwise neighbour in the right one; on the ray, `x` is on the segment).
+//! The intervals, active from distance `2ρ cos θ · 1.001`, are merged into a set of
+//! dead directions. Then:
+//! - a visited site in a dead direction is excluded without a test;
+//! - a grid cell all of whose directions are dead is not visited;
+//! - the search ends when every direction is dead, or when every cell of a ring is dead
+//!   or outside the grid: a ray from `p` to a farther cell crosses the ring in a cell
+//!   inside the grid (the grid is convex), so that cell's directions, dead, include it.
 //!
-//! **Why the floating-point search is exact.** Every exclusion is decided one of three
+//! A visited site in a live direction gets the exact test against the visited sites
+//! within `θ` of its direction, nearest in angle first. Only sites closer than `q` can
+//! lie in a diamond of `pq`, and they have all been visited unless their direction is
+//! dead at their distance, and so at `q`'s.
+//!
+//! **Why the floating-point search is exact.** Every exclusion is decided one of two
 //! ways: by exact hits ([`diamond_hit`] on two sites, one per diamond, or one on the
-//! segment), by `|pq|` above the dead radius of `q`'s sector, or by the search stopping
-//! before `q` is reached. Only the last two use floating-point distances and angles, and
-//! they hold with margins far above their rounding error:
+//! segment), or by a dead direction. Only the second uses floating-point distances and
+//! pseudo-angles, with margins far above their rounding errors:
 //! - [`mwt`](super::mwt) admits only coordinates in the exact range (zero or magnitude
 //!   in `[2^-142, 2^201]`), so a non-zero coordinate difference is at least `2^-194` and
 //!   a squared distance at most `2^405`: nothing underflows or overflows, and each
-//!   distance, pseudo-angle, sector boundary and cell coordinate carries a relative error
-//!   below `2^-45` (a handful of roundings; cell coordinates are below `2^14`, so a cell
-//!   index is off by at most one near a cell boundary, which moves a ring radius by
-//!   under `2^-37` cells).
-//! - The margins: 0.1% on the kill factors; a site rounded into the next sector shifts
-//!   `ψ` by under `2^-40` of a sector and stays in `(0, θ)` (offsets 2..=5 span
-//!   `(s, 6s)`, `6s = 33.75° < θ = 39.09°`); diamonds reach 7 sectors while `θ` needs
-//!   6.95 (a 0.28° margin); 1% on the bounding-box reach; two cells on each side of a
-//!   cone's range in a ring (a ray crosses at most three cells of a ring); `10^-9` on the
-//!   inner ring radius; `10^-9` in pseudo-angle against errors below `2^-45` for the
-//!   in-sector kills, and `10^-6` when a sliver's corners are collected.
+//!   distance and pseudo-angle carries an error below `2^-45` (relative for distances,
+//!   absolute for pseudo-angles, whose range is `[0, 4)`).
+//! - The margins: `10^-9` in pseudo-angle at every end of a dead interval and around
+//!   every cell's directions; 0.1% on the activation distance; cells widened by a
+//!   millionth of a cell (a site's cell index is off by at most one near a cell
+//!   boundary, by under `2^-37` cells).
 //! - Keeping a pair the exact test would exclude is always safe (the LMT-skeleton and
 //!   the exact stage optimise over the candidates, a superset of the MWT's edges), so the
-//!   order in which sites are visited, by rounded distance, only affects speed: the
-//!   kill radii come from sites actually visited, whatever the order.
+//!   order in which sites are visited, by rounded distance, only affects speed.
 
 use crate::geom::{Point2, diamond_hit};
 use crate::planar::grid::PointGrid;
-use crate::planar::{PlanarError, check_sites};
+use crate::planar::{PlanarError, check_sites, edge_key};
 use rayon::prelude::*;
-
-const SECTORS: usize = 64;
-const WIDTH: f64 = std::f64::consts::TAU / SECTORS as f64;
-/// Steps per unit of pseudo-angle in the sector lookup table.
-const LUT_SCALE: usize = 256;
-/// Diamonds reach at most `θ = atan(13/16) < 7 sectors` from `q`'s direction.
-const REACH: usize = 7;
+use std::collections::VecDeque;
 
 /// A monotone stand-in for the angle of `(dx, dy)`, in `[0, 4)`.
 fn pseudo_angle(dx: f64, dy: f64) -> f64 {
@@ -80,88 +74,175 @@ fn pseudo_angle(dx: f64, dy: f64) -> f64 {
     }
 }
 
-struct Sectors {
-    bounds: [f64; SECTORS],
-    /// `first[i]`: the sector holding pseudo-angle `i / LUT_SCALE` (a sector spans more
-    /// than one such step, so at most one boundary lies in each).
-    first: Vec<u8>,
-    /// Unit vectors of the sector boundaries `0..=SECTORS`.
-    rays: [(f64, f64); SECTORS + 1],
-    /// `kill[i]`: the distance factor for a site `i` sectors away (i = 2..=5).
-    kill: [f64; 6],
-    /// The distance factor for a site in the same sector (`ψ` up to one sector).
-    kill_in: f64,
+/// Margin in pseudo-angle (errors are below `2^-45`).
+const EPS: f64 = 1e-9;
+
+/// Beyond `2 cos θ · ρ` (with a 0.1% margin), a site at distance `ρ` within `θ` of a
+/// direction is in a diamond of every pair in that direction.
+const ACTIVATION: f64 = 2.0 * 16.0 / 20.615_528_128_088_304 * 1.001;
+
+/// `(a − b)` taken in `[0, 4)`: how far counter-clockwise `a` is from `b`.
+fn ccw_from(b: f64, a: f64) -> f64 {
+    let d = a - b;
+    if d < 0.0 { d + 4.0 } else { d }
 }
 
-impl Sectors {
-    fn new() -> Sectors {
-        let mut bounds = [0.0; SECTORS];
-        for (k, b) in bounds.iter_mut().enumerate() {
-            let a = k as f64 * WIDTH;
-            *b = if k == 0 {
-                0.0
-            } else {
-                pseudo_angle(a.cos(), a.sin())
-            };
-        }
-        let mut kill = [f64::INFINITY; 6];
-        for (i, f) in kill.iter_mut().enumerate().skip(2) {
-            let psi = (i + 1) as f64 * WIDTH;
-            *f = (psi.cos() + psi.sin() * 16.0 / 13.0) * 1.001;
-        }
-        let kill_in = (WIDTH.cos() + WIDTH.sin() * 16.0 / 13.0) * 1.001;
-        let rays = std::array::from_fn(|k| {
-            let a = k as f64 * WIDTH;
-            (a.cos(), a.sin())
-        });
-        let first = (0..4 * LUT_SCALE)
-            .map(|i| (bounds.partition_point(|&b| b <= i as f64 / LUT_SCALE as f64) - 1) as u8)
-            .collect();
-        Sectors {
-            bounds,
-            first,
-            rays,
-            kill,
-            kill_in,
+/// A visited site: its slot, pseudo-angle, and the pseudo-angle widths of `θ`
+/// clockwise (`back`) and counter-clockwise (`fwd`) of it.
+#[derive(Clone, Copy, Debug)]
+struct Seen {
+    pa: f64,
+    back: f64,
+    fwd: f64,
+    slot: u32,
+}
+
+impl Seen {
+    fn new(dx: f64, dy: f64, slot: u32) -> Seen {
+        let pa = pseudo_angle(dx, dy);
+        let cw = pseudo_angle(16.0 * dx + 13.0 * dy, 16.0 * dy - 13.0 * dx);
+        let ccw = pseudo_angle(16.0 * dx - 13.0 * dy, 13.0 * dx + 16.0 * dy);
+        Seen {
+            pa,
+            back: ccw_from(cw, pa),
+            fwd: ccw_from(pa, ccw),
+            slot,
         }
     }
+}
 
-    /// Pseudo-angle where sector `k` ends (4 for the last).
-    fn end(&self, k: usize) -> f64 {
-        if k + 1 < SECTORS {
-            self.bounds[k + 1]
-        } else {
+/// Directions strictly between `r` and its counter-clockwise neighbour `l` and within `θ`
+/// of both, as `(lo, hi)` with `lo` in `[0, 4)` (`hi` may pass 4).
+fn between(r: &Seen, l: &Seen) -> Option<(f64, f64)> {
+    let g = ccw_from(r.pa, l.pa);
+    let lo = (g - l.back).max(0.0) + EPS;
+    let hi = g.min(r.fwd) - EPS;
+    (lo <= hi).then_some((r.pa + lo, r.pa + hi))
+}
+
+/// The direction of `x` (with its margin), when its neighbours `r` (clockwise) and `l`
+/// are both within `θ` of it.
+fn through(r: &Seen, x: &Seen, l: &Seen) -> Option<(f64, f64)> {
+    let (g0, g1) = (ccw_from(r.pa, x.pa), ccw_from(x.pa, l.pa));
+    // Twice the margin, so that it overlaps the intervals on either side by `EPS`.
+    let m = 3.0 * EPS;
+    let ok = g0 > m && g1 > m && g1 < l.back - m && g0 < r.fwd - m;
+    ok.then_some((x.pa - 2.0 * EPS, x.pa + 2.0 * EPS))
+}
+
+/// Closed pseudo-angle intervals, disjoint and sorted, within `[0, 4]`.
+#[derive(Default)]
+struct Directions(Vec<(f64, f64)>);
+
+impl Directions {
+    /// Calls `f` on `[lo, hi]` (`lo` in `[-4, 8)`, a width below 4) cut into parts in `[0, 4]`.
+    fn parts(lo: f64, hi: f64, mut f: impl FnMut(f64, f64) -> bool) -> bool {
+        let shift = if lo < 0.0 {
+            -4.0
+        } else if lo >= 4.0 {
             4.0
-        }
-    }
-
-    fn of(&self, dx: f64, dy: f64) -> usize {
-        self.of_pseudo(pseudo_angle(dx, dy))
-    }
-
-    fn of_pseudo(&self, a: f64) -> usize {
-        // Equal to `bounds.partition_point(|&b| b <= a) - 1`: the step's sector, then at
-        // most one boundary up.
-        let i = ((a * LUT_SCALE as f64) as usize).min(4 * LUT_SCALE - 1);
-        let k = self.first[i] as usize;
-        if k + 1 < SECTORS && self.bounds[k + 1] <= a {
-            k + 1
         } else {
-            k
+            0.0
+        };
+        let (lo, hi) = (lo - shift, hi - shift);
+        if hi > 4.0 {
+            f(lo, 4.0) && f(0.0, hi - 4.0)
+        } else {
+            f(lo, hi)
         }
+    }
+
+    fn insert(&mut self, lo: f64, hi: f64) {
+        Self::parts(lo, hi, |lo, hi| {
+            let v = &mut self.0;
+            let i = v.partition_point(|e| e.1 < lo);
+            let j = v.partition_point(|e| e.0 <= hi);
+            if i == j {
+                v.insert(i, (lo, hi));
+            } else {
+                v[i] = (lo.min(v[i].0), hi.max(v[j - 1].1));
+                v.drain(i + 1..j);
+            }
+            true
+        });
+    }
+
+    fn covers(&self, lo: f64, hi: f64) -> bool {
+        Self::parts(lo, hi, |lo, hi| {
+            let i = self.0.partition_point(|e| e.0 <= lo);
+            i > 0 && self.0[i - 1].1 >= hi
+        })
+    }
+
+    fn full(&self) -> bool {
+        self.0
+            .first()
+            .is_some_and(|&(lo, hi)| lo <= 0.0 && hi >= 4.0)
     }
 }
 
 /// Per-thread scratch space.
 #[derive(Default)]
 struct Scratch {
-    by_sector: Vec<Vec<u32>>,
-    /// Per sector, in visiting order: (distance, smallest and largest pseudo-angle of
-    /// the sector's sites visited so far).
-    span: Vec<Vec<(f64, f64, f64)>>,
-    nearest: Vec<f64>,
+    /// Visited sites by pseudo-angle.
+    around: Vec<Seen>,
+    /// Active dead directions.
+    dead: Directions,
+    /// Dead intervals `(activation distance, lo, hi)` not active yet, by activation.
+    waiting: VecDeque<(f64, f64, f64)>,
+    /// Gathered sites `(squared distance, slot)` not visited yet.
     pending: Vec<(f64, u32)>,
-    visited: Vec<bool>,
+}
+
+impl Scratch {
+    fn reset(&mut self) {
+        self.around.clear();
+        self.dead.0.clear();
+        self.waiting.clear();
+        self.pending.clear();
+        // More than `θ` behind the half-plane `x ≥ 0`: no partner, no blocker.
+        let behind = (pseudo_angle(-13.0, 16.0), pseudo_angle(-13.0, -16.0));
+        self.dead.insert(behind.0 + EPS, behind.1 - EPS);
+    }
+
+    /// Activates the dead intervals valid at distance `d`.
+    fn activate(&mut self, d: f64) {
+        while let Some(&(act, lo, hi)) = self.waiting.front() {
+            if act > d {
+                break;
+            }
+            self.waiting.pop_front();
+            self.dead.insert(lo, hi);
+        }
+    }
+
+    /// Adds a visited site at distance `d` (the farthest so far) and the dead directions
+    /// it completes.
+    fn add(&mut self, x: Seen, d: f64) {
+        let i = self.around.partition_point(|s| s.pa < x.pa);
+        self.around.insert(i, x);
+        let n = self.around.len() as isize;
+        if n < 2 {
+            return;
+        }
+        let at = |k: isize| self.around[(i as isize + k).rem_euclid(n) as usize];
+        let act = d * ACTIVATION;
+        let mut found = [
+            between(&at(-1), &at(0)),
+            between(&at(0), &at(1)),
+            None,
+            None,
+            None,
+        ];
+        if n >= 3 {
+            for k in -1..=1 {
+                found[(k + 3) as usize] = through(&at(k - 1), &at(k), &at(k + 1));
+            }
+        }
+        for (lo, hi) in found.into_iter().flatten() {
+            self.waiting.push_back((act, lo, hi));
+        }
+    }
 }
 
 /// All candidate edges `[p, q]` (`p < q`) of distinct sites, sorted: the pairs with an
@@ -184,13 +265,12 @@ pub fn candidate_edges(points: &[Point2]) -> Result<Vec<[u32; 2]>, PlanarError> 
 /// [`candidate_edges`] for checked sites.
 pub(super) fn search(points: &[Point2]) -> Vec<[u32; 2]> {
     let grid = PointGrid::new(points, 2.0);
-    let sectors = Sectors::new();
     // Sites in cell order, so that consecutive searches share cached cells.
     let mut edges: Vec<[u32; 2]> = (0..points.len())
         .into_par_iter()
         .map_init(Scratch::default, |s, slot| {
             let mut out = Vec::new();
-            candidates_of(slot, &grid, &sectors, s, &mut out);
+            candidates_of(slot, &grid, s, &mut out);
             out
         })
         .flatten_iter()
@@ -199,126 +279,25 @@ pub(super) fn search(points: &[Point2]) -> Vec<[u32; 2]> {
     edges
 }
 
-/// Margin in pseudo-angle for kills by a site of the same sector (pseudo-angles carry
-/// relative errors below `2^-45`).
-const ANGLE_MARGIN: f64 = 1e-9;
-
-/// A part of a sector, as a pseudo-angle interval, where diamonds may still be open
-/// beyond some distance, with the distance beyond which its side is dead anyway.
-type Wedge = Option<(f64, f64, f64)>;
-
-/// The distances beyond which every site of sector `k` has a visited site of the
-/// neighbouring sectors in its left (counter-clockwise) and in its right diamond.
-fn side_radii(s: &Scratch, sec: &Sectors, k: usize) -> (f64, f64) {
-    let side = |sign: isize| {
-        (2..=5)
-            .map(|i| {
-                let j = (k as isize + sign * i as isize).rem_euclid(SECTORS as isize) as usize;
-                s.nearest[j] * sec.kill[i]
-            })
-            .fold(f64::INFINITY, f64::min)
-    };
-    (side(1), side(-1))
-}
-
-/// The smallest and largest pseudo-angle among the sites of sector `k` visited at a
-/// distance `ρ` with `ρ · kill_in < t`. Such a site `r` is in the left diamond of every
-/// `pq` with `q` in the sector, farther than `t` and clockwise of `r` (`ψ ∈ (0, one
-/// sector]`, so `|pq| > ρ(cos ψ + sin ψ cot θ)`), and in the right diamond of those
-/// counter-clockwise of it.
-fn span_below(s: &Scratch, sec: &Sectors, k: usize, t: f64) -> Option<(f64, f64)> {
-    let h = &s.span[k];
-    let i = h.partition_point(|e| e.0 * sec.kill_in < t);
-    (i > 0).then(|| (h[i - 1].1, h[i - 1].2))
-}
-
-/// True when both diamonds of `pq` hold a visited site, for `q` at distance `d` and
-/// pseudo-angle `a` in sector `k`.
-fn killed(s: &Scratch, sec: &Sectors, k: usize, d: f64, a: f64) -> bool {
-    let (lr, rr) = side_radii(s, sec, k);
-    let (left, right) = (d > lr, d > rr);
-    if left == right {
-        // Both killed, or neither: the sector's own sites kill both sides only for a
-        // site between two of them, which the exact test then rejects as fast.
-        return left;
-    }
-    let Some((lo, hi)) = span_below(s, sec, k, d) else {
-        return false;
-    };
-    (left || a < hi - ANGLE_MARGIN) && (right || a > lo + ANGLE_MARGIN)
-}
-
-/// The parts of sector `k` where a site farther than `t` may have an open diamond. When
-/// the neighbouring sectors kill one side's diamonds (a site near an edge of the set,
-/// looking along it), the other side's stay open only counter-clockwise of the sector's
-/// last killer (left) or clockwise of its first (right), see [`span_below`]: that cuts
-/// the cone along the edge to a sliver that soon leaves the bounding box. With both sides
-/// open the whole sector is kept (cutting it there costs more than it saves).
-fn live_wedges(s: &Scratch, sec: &Sectors, k: usize, t: f64) -> [Wedge; 2] {
-    let (lr, rr) = side_radii(s, sec, k);
-    let (start, end) = (sec.bounds[k], sec.end(k));
-    match (lr >= t, rr >= t) {
-        (false, false) => [None, None],
-        (true, true) => [Some((start, end, lr.max(rr))), None],
-        (left, _) => {
-            let span = span_below(s, sec, k, t);
-            let (mut a0, mut a1) = (start, end);
-            if left {
-                a0 = span.map_or(start, |(_, hi)| (hi - ANGLE_MARGIN).max(start));
-            } else {
-                a1 = span.map_or(end, |(lo, _)| (lo + ANGLE_MARGIN).min(end));
-            }
-            // A wide part is not worth its own rays and reach: keep the sector.
-            if a1 - a0 > 0.25 * (end - start) {
-                (a0, a1) = (start, end);
-            }
-            [Some((a0, a1, if left { lr } else { rr })), None]
-        }
-    }
-}
-
-/// A direction whose pseudo-angle is `a` (not normalised).
-fn direction(a: f64) -> (f64, f64) {
-    let q = a.floor().clamp(0.0, 3.0);
-    let f = a - q;
-    match q as u8 {
-        0 => (1.0 - f, f),
-        1 => (-f, 1.0 - f),
-        2 => (f - 1.0, -f),
-        _ => (f, f - 1.0),
-    }
-}
-
-/// The candidates `[p, q]`, `p < q`, of the site in grid slot `slot`. Sites are handled
-/// by slot throughout (index and coordinates side by side in the grid).
-fn candidates_of(
-    slot: usize,
-    grid: &PointGrid,
-    sec: &Sectors,
-    s: &mut Scratch,
-    out: &mut Vec<[u32; 2]>,
-) {
-    s.by_sector.resize_with(SECTORS, Vec::new);
-    s.by_sector.iter_mut().for_each(Vec::clear);
-    s.span.resize_with(SECTORS, Vec::new);
-    s.span.iter_mut().for_each(Vec::clear);
-    s.nearest.clear();
-    s.nearest.resize(SECTORS, f64::INFINITY);
-    s.pending.clear();
+/// The candidates of the site in grid slot `slot` with lexicographically larger sites.
+/// Sites are handled by slot throughout (index and coordinates side by side in the grid).
+fn candidates_of(slot: usize, grid: &PointGrid, s: &mut Scratch, out: &mut Vec<[u32; 2]>) {
+    s.reset();
     let (index, coords) = grid.slots();
     let (p, pp) = (index[slot], coords[slot]);
     let (cx, cy) = grid.cell_of(&pp);
     let (nx, ny) = grid.dims();
-    let mut ring = 0usize;
-    let mut live = [[None; 2]; SECTORS];
-    let reach = sector_reach(&pp, grid.bounds(), sec);
-    loop {
-        if ring < 2 {
+    for ring in 0usize.. {
+        // Every cell of ring `r ≥ 1` is at least `(r - 1)` cells from `p`.
+        s.activate(ring.saturating_sub(1) as f64 * grid.cell());
+        let live = if ring < 2 {
             gather_ring(grid, slot, cx, cy, ring, &mut s.pending);
+            true
         } else {
-            gather_live_cones(grid, slot, (cx, cy), ring, sec, &live, s);
-        }
-        let exhausted = ring >= cx && ring >= cy && cx + ring >= nx - 1 && cy + ring >= ny - 1;
+            !s.dead.full() && gather_live(grid, &pp, (cx, cy), ring, s)
+        };
+        let exhausted =
+            !live || (ring >= cx && ring >= cy && cx + ring >= nx - 1 && cy + ring >= ny - 1);
         let complete = if exhausted {
             f64::INFINITY
         } else {
@@ -330,237 +309,109 @@ fn candidates_of(
                 break;
             }
             s.pending.pop();
-            let (q, pq) = (index[qs as usize], coords[qs as usize]);
-            let a = pseudo_angle(pq[0] - pp[0], pq[1] - pp[1]);
-            let k = sec.of_pseudo(a);
             let d = d2.sqrt();
-            if q > p && !killed(s, sec, k, d, a) && diamonds_open(&pp, &pq, coords, s, k) {
-                out.push([p, q]);
+            s.activate(d);
+            let pq = coords[qs as usize];
+            let (dx, dy) = (pq[0] - pp[0], pq[1] - pp[1]);
+            let x = Seen::new(dx, dy, qs);
+            let partner = dx > 0.0 || (dx == 0.0 && dy > 0.0);
+            if partner && !s.dead.covers(x.pa, x.pa) && open(&pp, &pq, coords, &s.around, &x) {
+                out.push(edge_key(p, index[qs as usize]));
             }
-            s.by_sector[k].push(qs);
-            s.nearest[k] = s.nearest[k].min(d);
-            let (lo, hi) = s.span[k]
-                .last()
-                .map_or((a, a), |e| (e.1.min(a), e.2.max(a)));
-            s.span[k].push((d, lo, hi));
+            s.add(x, d);
+            if s.dead.full() {
+                return;
+            }
         }
         if exhausted {
-            return;
+            break;
         }
-        // What stays live beyond the next ring's inner radius, cut to the bounding box.
-        let inner = complete * (1.0 - 1e-9);
-        let mut farthest = 0.0f64;
-        for (k, wedges) in live.iter_mut().enumerate() {
-            *wedges = live_wedges(s, sec, k, inner);
-            for w in wedges.iter_mut() {
-                let Some((a0, a1, radius)) = *w else { continue };
-                // The sector's own reach first: most wedges die there, without the
-                // wedge's (dearer) reach.
-                let mut until = radius.min(reach[k]);
-                if until >= inner && (a0 > sec.bounds[k] || a1 < sec.end(k)) {
-                    until = until.min(wedge_reach(&pp, grid.bounds(), a0, a1));
-                }
-                farthest = farthest.max(until);
-                if until < inner {
-                    *w = None;
-                }
-            }
-        }
-        if farthest < complete {
-            return;
-        }
-        ring += 1;
     }
 }
 
-/// Distance from `p` along the unit direction `(c, s)` to the bounding box's boundary.
-fn box_exit(p: &Point2, (lo, hi): (Point2, Point2), (c, s): (f64, f64)) -> f64 {
-    let t = |d: f64, l: f64, h: f64, x: f64| {
-        if d > 1e-12 {
-            (h - x) / d
-        } else if d < -1e-12 {
-            (l - x) / d
-        } else {
-            f64::INFINITY
-        }
+/// True when `pq` (`q` seen as `x`) has an empty diamond and no site on its open segment
+/// among the visited sites `around`, which include every site that could be in either.
+fn open(pp: &Point2, pq: &Point2, coords: &[Point2], around: &[Seen], x: &Seen) -> bool {
+    let n = around.len();
+    let start = around.partition_point(|s| s.pa < x.pa - EPS);
+    // `hits`: a visited site in the left, in the right diamond.
+    let blocked = |k: usize, hits: &mut (bool, bool)| {
+        let h = diamond_hit(pp, pq, &coords[around[k % n].slot as usize]);
+        hits.0 |= h.left;
+        hits.1 |= h.right;
+        h.on_segment || (hits.0 && hits.1)
     };
-    t(c, lo[0], hi[0], p[0])
-        .min(t(s, lo[1], hi[1], p[1]))
-        .max(0.0)
-}
-
-fn corners((lo, hi): (Point2, Point2)) -> [Point2; 4] {
-    [
-        [lo[0], lo[1]],
-        [lo[0], hi[1]],
-        [hi[0], lo[1]],
-        [hi[0], hi[1]],
-    ]
-}
-
-/// For each sector, a distance beyond which its cone holds no site: the farthest vertex
-/// of (bounding box ∩ cone), i.e. the exits of its two rays and the box corners in it
-/// (corners of the neighbouring sectors too, against rounding), with a 1% margin.
-fn sector_reach(p: &Point2, bbox: (Point2, Point2), sec: &Sectors) -> [f64; SECTORS] {
-    let rays: Vec<f64> = sec.rays.iter().map(|&r| box_exit(p, bbox, r)).collect();
-    let mut reach = [0.0; SECTORS];
-    for k in 0..SECTORS {
-        reach[k] = rays[k].max(rays[k + 1]);
-    }
-    for c in corners(bbox) {
-        let (dx, dy) = (c[0] - p[0], c[1] - p[1]);
-        let k = sec.of(dx, dy);
-        let d = dx.hypot(dy);
-        for j in [k + SECTORS - 1, k, k + 1] {
-            let r = &mut reach[j % SECTORS];
-            *r = r.max(d);
+    let mut hits = (false, false);
+    // Counter-clockwise: the sites within `θ` of `q`'s direction (and those within the
+    // margin clockwise of it): the only ones that can be in the left diamond.
+    for k in start..start + n {
+        if ccw_from(x.pa - EPS, around[k % n].pa) > x.fwd + 2.0 * EPS {
+            break;
+        }
+        if blocked(k, &mut hits) {
+            return false;
         }
     }
-    reach.map(|r| r * 1.01 + 1e-300)
-}
-
-/// [`sector_reach`] for the wedge of pseudo-angles `[a0, a1]` inside one sector: the
-/// exits of its two rays and the corners within `10^-6` of it, with a 1% margin.
-fn wedge_reach(p: &Point2, bbox: (Point2, Point2), a0: f64, a1: f64) -> f64 {
-    let unit = |a: f64| {
-        let (x, y) = direction(a);
-        let l = (x * x + y * y).sqrt();
-        (x / l, y / l)
-    };
-    let mut reach = box_exit(p, bbox, unit(a0)).max(box_exit(p, bbox, unit(a1)));
-    for c in corners(bbox) {
-        let (dx, dy) = (c[0] - p[0], c[1] - p[1]);
-        if (a0 - 1e-6..=a1 + 1e-6).contains(&pseudo_angle(dx, dy)) {
-            reach = reach.max((dx * dx + dy * dy).sqrt());
+    if !hits.0 {
+        return true;
+    }
+    for k in (start..start + n).rev() {
+        if ccw_from(around[k % n].pa, x.pa + EPS) > x.back + 2.0 * EPS {
+            break;
+        }
+        if blocked(k, &mut hits) {
+            return false;
         }
     }
-    reach * 1.01 + 1e-300
+    true
 }
 
-/// Perimeter position (counter-clockwise from the east side) of the ring-`r` cell at
-/// offset `(dx, dy)` from the centre cell (`max(|dx|, |dy|) = r`, `r ≥ 1`).
-fn ring_index(dx: isize, dy: isize, r: isize) -> isize {
-    if dx == r && dy > -r {
-        dy + r - 1
-    } else if dy == r {
-        2 * r + (r - 1 - dx)
-    } else if dx == -r {
-        4 * r + (r - 1 - dy)
+/// The pseudo-angles `(lo, hi)` of the directions from `p` into the box `[lo, hi]`, which
+/// does not contain `p` (`hi` may pass 4).
+fn directions_of_box(pp: &Point2, (lo, hi): (Point2, Point2)) -> (f64, f64) {
+    let (x0, x1, y0, y1) = (lo[0] - pp[0], hi[0] - pp[0], lo[1] - pp[1], hi[1] - pp[1]);
+    let c = [
+        pseudo_angle(x0, y0),
+        pseudo_angle(x1, y0),
+        pseudo_angle(x0, y1),
+        pseudo_angle(x1, y1),
+    ];
+    if x0 > 0.0 && y0 < 0.0 && y1 >= 0.0 {
+        // Across the direction 0: from the lower corners to the upper ones, past 4.
+        (c[0].min(c[1]), c[2].max(c[3]) + 4.0)
     } else {
-        6 * r + (dx + r - 1)
+        let lo = c.iter().copied().fold(f64::INFINITY, f64::min);
+        (lo, c.iter().copied().fold(0.0, f64::max))
     }
 }
 
-/// Inverse of [`ring_index`].
-fn ring_cell(i: isize, r: isize) -> (isize, isize) {
-    let i = i.rem_euclid(8 * r);
-    match i / (2 * r) {
-        0 => (r, i - r + 1),
-        1 => (r - 1 - (i - 2 * r), r),
-        2 => (-r, r - 1 - (i - 4 * r)),
-        _ => (i - 6 * r - r + 1, -r),
-    }
-}
-
-/// Perimeter position of the ring-`r` cell where the ray from `p` in direction `d`
-/// leaves the ring's outer square.
-fn ray_ring_index(
+/// Pushes the sites of the ring-`r` cells (`r ≥ 2`) inside the grid whose directions are
+/// not all dead; returns whether there was such a cell.
+fn gather_live(
     grid: &PointGrid,
-    p: &Point2,
-    cx: usize,
-    cy: usize,
-    d: (f64, f64),
-    r: usize,
-) -> isize {
-    let cell = grid.cell();
-    let (lo, _) = grid.cell_box(cx, cy);
-    let o = [p[0] - (lo[0] + 0.5 * cell), p[1] - (lo[1] + 0.5 * cell)];
-    let h = (r as f64 + 0.5) * cell;
-    let exit = |dir: f64, off: f64| {
-        if dir > 1e-12 {
-            (h - off) / dir
-        } else if dir < -1e-12 {
-            (-h - off) / dir
-        } else {
-            f64::INFINITY
-        }
-    };
-    let t = exit(d.0, o[0]).min(exit(d.1, o[1])) * (1.0 - 1e-9);
-    let (px, py) = (o[0] + t * d.0, o[1] + t * d.1);
-    let ri = r as isize;
-    let mut dx = ((px / cell) + 0.5).floor() as isize;
-    let mut dy = ((py / cell) + 0.5).floor() as isize;
-    if dx.abs() < ri && dy.abs() < ri {
-        if px.abs() >= py.abs() {
-            dx = if px >= 0.0 { ri } else { -ri };
-        } else {
-            dy = if py >= 0.0 { ri } else { -ri };
-        }
-    }
-    ring_index(dx.clamp(-ri, ri), dy.clamp(-ri, ri), ri)
-}
-
-/// Pushes the sites of the ring-`r` cells met by the cones of the sectors still live
-/// beyond the ring's inner radius (each cone's perimeter range widened by two cells
-/// against rounding and the offset of `p` in its cell).
-fn gather_live_cones(
-    grid: &PointGrid,
-    slot: usize,
+    pp: &Point2,
     (cx, cy): (usize, usize),
     r: usize,
-    sec: &Sectors,
-    live: &[[Wedge; 2]; SECTORS],
     s: &mut Scratch,
-) {
-    let pp = grid.slots().1[slot];
-    let ri = r as isize;
+) -> bool {
     let (nx, ny) = grid.dims();
-    s.visited.clear();
-    s.visited.resize(8 * r, false);
-    // Each boundary ray is shared by two sectors: locate it once.
-    let mut at = [isize::MIN; SECTORS + 1];
-    let mut ray = |j: usize| {
-        if at[j] == isize::MIN {
-            at[j] = ray_ring_index(grid, &pp, cx, cy, sec.rays[j], r);
-        }
-        at[j]
-    };
-    for (k, &(a0, a1, _)) in live
-        .iter()
-        .enumerate()
-        .flat_map(|(k, w)| w.iter().flatten().map(move |w| (k, w)))
-    {
-        // Sector boundaries are cached; a sliver's own edge is located afresh.
-        let i0 = if a0 == sec.bounds[k] {
-            ray(k)
-        } else {
-            ray_ring_index(grid, &pp, cx, cy, direction(a0), r)
-        } - 2;
-        let i1 = if a1 == sec.end(k) {
-            ray(k + 1)
-        } else {
-            ray_ring_index(grid, &pp, cx, cy, direction(a1), r)
-        } + 2;
-        let len = ((i1 - i0).rem_euclid(8 * ri) + 1).min(8 * ri);
-        for i in i0..i0 + len {
-            let visit = i.rem_euclid(8 * ri) as usize;
-            if std::mem::replace(&mut s.visited[visit], true) {
-                continue;
-            }
-            let (dx, dy) = ring_cell(i, ri);
-            let (x, y) = (cx as isize + dx, cy as isize + dy);
-            if x >= 0 && y >= 0 && x < nx as isize && y < ny as isize {
-                push_cell(
-                    grid,
-                    &pp,
-                    x as usize,
-                    y as usize,
-                    usize::MAX,
-                    &mut s.pending,
-                );
-            }
+    let (x0, x1) = (cx.saturating_sub(r), (cx + r).min(nx - 1));
+    let (y0, y1) = (cy.saturating_sub(r), (cy + r).min(ny - 1));
+    let rows = [cy.checked_sub(r), Some(cy + r).filter(|&y| y < ny)];
+    let cols = [cx.checked_sub(r), Some(cx + r).filter(|&x| x < nx)];
+    let cells = (rows.into_iter().flatten()).flat_map(|y| (x0..=x1).map(move |x| (x, y)));
+    let sides = (cols.into_iter().flatten()).flat_map(|x| {
+        (y0.max((cy + 1).saturating_sub(r))..=y1.min(cy + r - 1)).map(move |y| (x, y))
+    });
+    let mut live = false;
+    for (x, y) in cells.chain(sides) {
+        let (lo, hi) = directions_of_box(pp, grid.cell_box(x, y));
+        if !s.dead.covers(lo - EPS, hi + EPS) {
+            live = true;
+            push_cell(grid, pp, x, y, usize::MAX, &mut s.pending);
         }
     }
+    live
 }
 
 /// Pushes `(squared distance from pp, slot)` for the sites of cell `(x, y)` except `skip`.
@@ -608,58 +459,97 @@ fn gather_ring(
     }
 }
 
-/// True when `pq` has an empty diamond and no site on its open segment, among the
-/// visited sites (slots in `s.by_sector`, which include every site that could be in
-/// either).
-fn diamonds_open(a: &Point2, b: &Point2, coords: &[Point2], s: &Scratch, k: usize) -> bool {
-    let (mut left, mut right) = (false, false);
-    // Nearest directions first: sites close to the line pq are the likeliest blockers.
-    for t in 0..=2 * REACH {
-        let off = if t % 2 == 0 {
-            REACH + t / 2
-        } else {
-            REACH - t.div_ceil(2)
-        };
-        let j = (k + SECTORS + off - REACH) % SECTORS;
-        for &r in &s.by_sector[j] {
-            let h = diamond_hit(a, b, &coords[r as usize]);
-            left |= h.left;
-            right |= h.right;
-            if h.on_segment || (left && right) {
-                return false;
-            }
-        }
-    }
-    true
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::planar::{Distribution, points2d};
 
     #[test]
-    fn sector_lookup_table_agrees_with_binary_search() {
-        let sec = Sectors::new();
-        let slow = |a: f64| sec.bounds.partition_point(|&b| b <= a) - 1;
-        let mut probes: Vec<f64> = (0..40_000).map(|i| i as f64 * 1e-4).collect();
-        for &b in &sec.bounds {
-            probes.extend([b, b.next_up(), b.next_down().max(0.0)]);
+    fn directions_merge_and_wrap() {
+        let mut d = Directions::default();
+        d.insert(3.5, 4.25); // wraps: [3.5, 4] and [0, 0.25]
+        assert!(d.covers(3.9, 4.1) && d.covers(0.0, 0.25) && !d.covers(0.0, 0.3));
+        d.insert(1.0, 2.0);
+        d.insert(2.0, 3.0); // touching closed intervals merge
+        assert!(d.covers(1.5, 2.5) && !d.full());
+        d.insert(0.25, 1.0);
+        assert!(!d.full() && !d.covers(3.0, 3.5));
+        d.insert(7.0, 7.5); // the same as [3, 3.5]
+        assert!(d.full() && d.0.len() == 1);
+    }
+
+    /// The widths of `θ` around a direction match the rotations by `atan(13/16)`.
+    #[test]
+    fn theta_widths_match_the_angle() {
+        let theta = (13.0f64 / 16.0).atan();
+        for i in 0..720 {
+            let a = i as f64 * std::f64::consts::TAU / 720.0 + 1e-3;
+            let s = Seen::new(a.cos(), a.sin(), 0);
+            let (b, c) = (a - theta, a + theta);
+            let want_back = ccw_from(pseudo_angle(b.cos(), b.sin()), s.pa);
+            let want_fwd = ccw_from(s.pa, pseudo_angle(c.cos(), c.sin()));
+            assert!((s.back - want_back).abs() < 1e-12, "{a}");
+            assert!((s.fwd - want_fwd).abs() < 1e-12, "{a}");
         }
-        probes.extend((1..4 * LUT_SCALE).map(|i| i as f64 / LUT_SCALE as f64));
-        probes.push(4f64.next_down());
-        for a in probes {
-            assert_eq!(sec.of_pseudo(a), slow(a), "pseudo-angle {a}");
+        assert!((2.0 * theta.cos() * 1.001 - ACTIVATION).abs() < 1e-12);
+    }
+
+    /// The directions into a cell's box contain the direction of every point of it.
+    #[test]
+    fn box_directions_contain_their_points() {
+        let mut rng = crate::rng::Rng::new(5);
+        for _ in 0..2000 {
+            let (x, y) = ((rng.unit() - 0.5) * 20.0, (rng.unit() - 0.5) * 20.0);
+            let (w, h) = (rng.unit(), rng.unit());
+            if x <= 0.0 && x + w >= 0.0 && y <= 0.0 && y + h >= 0.0 {
+                continue;
+            }
+            let (lo, hi) = directions_of_box(&[0.0, 0.0], ([x, y], [x + w, y + h]));
+            assert!(hi - lo < 2.0);
+            for _ in 0..20 {
+                let a = pseudo_angle(x + rng.unit() * w, y + rng.unit() * h);
+                let a = if a < lo { a + 4.0 } else { a };
+                assert!(
+                    lo <= a && a <= hi,
+                    "{x} {y} {w} {h}: {a} not in [{lo}, {hi}]"
+                );
+            }
         }
     }
 
+    /// Many sites share a direction from many others: sites on rays from a centre and on
+    /// a few long lines (equal pseudo-angles, sites on segments).
     #[test]
-    fn directions_invert_pseudo_angles() {
-        for i in 0..4000 {
-            let a = i as f64 / 1000.0;
-            let (x, y) = direction(a);
-            assert!((pseudo_angle(x, y) - a).abs() < 1e-12, "{a}");
+    fn search_is_complete_on_rays_and_lines() {
+        let mut pts: Vec<Point2> = vec![[0.0, 0.0]];
+        for k in 0..12 {
+            let (dx, dy) = [(1, 0), (3, 1), (1, 1), (1, 3), (0, 1), (-2, 1)][k % 6];
+            let s = if k < 6 { 1.0 } else { -1.0 };
+            pts.extend((1..=15).map(|i| [s * (dx * i) as f64, s * (dy * i) as f64]));
         }
+        let mut rng = crate::rng::Rng::new(9);
+        pts.extend((0..60).map(|i| [(i % 20) as f64 * 2.0 - 20.0, 37.0 + (i / 20) as f64]));
+        pts.extend((0..80).map(|_| [rng.unit() * 60.0 - 30.0, rng.unit() * 60.0 - 30.0]));
+        pts.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        pts.dedup();
+        assert_eq!(missing_candidates(&pts), 0);
+    }
+
+    /// A site `q` almost behind `x` as seen from `p`: `x` blocks one diamond of `pq`, and
+    /// the other is open because `l`, 42° away, is beyond `θ`. The direction of `x` must
+    /// stay live (only both neighbours within `θ` kill it).
+    #[test]
+    fn a_direction_through_a_site_needs_both_neighbours() {
+        let a = 42f64.to_radians();
+        let pts = [
+            [0.0, 0.0],
+            [1.0, 0.0],
+            [10.0, 1e-10],
+            [1.2 * a.cos(), 1.2 * a.sin()],
+            [1.0, -0.1],
+        ];
+        assert!(brute(&pts).contains(&[0, 2]));
+        assert_eq!(missing_candidates(&pts), 0);
     }
 
     /// Thin strips and a set hugging the edges of its box: almost every site sees the
@@ -690,17 +580,6 @@ mod tests {
             .collect();
         for (name, pts) in [("strip", strip), ("slanted", slanted), ("rim", rim)] {
             assert_eq!(missing_candidates(&pts), 0, "{name}");
-        }
-    }
-
-    #[test]
-    fn ring_positions_round_trip() {
-        for r in 1..7isize {
-            for i in 0..8 * r {
-                let (dx, dy) = ring_cell(i, r);
-                assert_eq!(dx.abs().max(dy.abs()), r);
-                assert_eq!(ring_index(dx, dy, r), i);
-            }
         }
     }
 
