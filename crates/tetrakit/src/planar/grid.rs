@@ -106,14 +106,6 @@ impl PointGrid {
         self.any_in_cells(x0, x1, y0, y1, f)
     }
 
-    /// [`Self::any_in_box`] for an exact box: the cell index is monotone in the
-    /// coordinate, so the cells of `lo` and `hi` bound every point in the box.
-    pub fn any_in_exact_box(&self, lo: Point2, hi: Point2, f: impl FnMut(u32) -> bool) -> bool {
-        let (x0, y0) = self.cell_of(&lo);
-        let (x1, y1) = self.cell_of(&hi);
-        self.any_in_cells(x0, x1, y0, y1, f)
-    }
-
     fn any_in_cells(
         &self,
         x0: usize,

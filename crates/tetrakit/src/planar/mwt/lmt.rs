@@ -6,15 +6,21 @@
 //! 1. `M` is locally minimal: an interior edge `pq` of `M` bounds triangles `pqr`, `pqs`
 //!    of `M` whose edges are in `M`, hence alive, and if `prqs` is strictly convex then
 //!    `|pq| ≤ |rs|`. An alive edge without such a pair of alive triangles is impossible.
+//!    The triangles considered are all those whose three edges are alive, empty or not
+//!    (as in Haas 2018): a non-empty one can only add certificates, which may keep an edge
+//!    alive that a stricter test would drop, never drop an edge of `M`.
 //! 2. `M` is a maximal plane graph: an alive edge crossed by no alive edge crosses no
 //!    edge of `M`, so it is in `M`, and is certain. Hull edges are certain.
 //!
-//! Statuses only ever move from alive to impossible or certain, so the per-edge tests
-//! run in parallel rounds: a stale "alive" read only makes a test more lenient.
+//! Each edge keeps the certificate it was last found alive with (the four other edges
+//! of its two triangles), and is examined again only when one of those dies. Statuses
+//! only ever move from alive to impossible or certain, so the examinations run in
+//! parallel rounds: a stale "alive" read only makes a test more lenient, and the edge is
+//! examined again in the next round.
 
 use crate::geom::{Hull2, Point2, cmp_length, orient2d};
 use rayon::prelude::*;
-use std::sync::atomic::{AtomicBool, AtomicU8, Ordering::Relaxed};
+use std::sync::atomic::{AtomicBool, AtomicU8, AtomicU32, Ordering::Relaxed};
 
 /// Edge status codes.
 pub const ALIVE: u8 = 0;
@@ -23,31 +29,19 @@ pub const CERTAIN: u8 = 1;
 /// In no MWT.
 pub const IMPOSSIBLE: u8 = 2;
 
-/// An empty candidate triangle seen from one of its edges `[p, q]` (`p < q`).
-#[derive(Clone, Copy, Debug, Default)]
-pub struct Tri {
-    /// The third vertex.
-    pub apex: u32,
-    /// The edges `p–apex` and `q–apex`.
-    pub sides: [u32; 2],
-    /// Orientation of `p, q, apex` (+1: the apex is left of `p → q`).
-    pub turn: i8,
-}
-
 /// The candidate graph with edge statuses.
 pub struct Skeleton {
     /// Candidate edges `[p, q]`, `p < q`.
     pub edges: Vec<[u32; 2]>,
     /// Status of each edge.
     pub status: Vec<u8>,
-    /// Adjacency in compressed rows: `(neighbour, edge)` sorted by neighbour.
+    /// Adjacency in compressed rows: `(neighbour, edge)` counter-clockwise around each
+    /// site, from the direction of the positive x-axis.
     pub start: Vec<u32>,
     /// See `start`.
     pub adj: Vec<(u32, u32)>,
-    /// Empty candidate triangles per edge, in compressed rows.
-    pub tri_start: Vec<u32>,
-    /// See `tri_start`.
-    pub tris: Vec<Tri>,
+    /// For edge `[p, q]`: where `q` is in the row of `p`, and `p` in the row of `q`.
+    pub pos: Vec<[u32; 2]>,
     /// Edges no triangulation considered may use: a flip to one of them is not
     /// available, so it does not refute local minimality.
     pub forbidden: std::collections::HashSet<[u32; 2]>,
@@ -63,46 +57,41 @@ impl Skeleton {
             .collect()
     }
 
-    /// Empty candidate triangles on edge `e`.
-    pub fn triangles(&self, e: u32) -> &[Tri] {
-        &self.tris[self.tri_start[e as usize] as usize..self.tri_start[e as usize + 1] as usize]
-    }
-
-    /// For edge `e = [p, q]`, calls `f(r, edge p–r, edge q–r)` for every common
-    /// neighbour `r > q` (so each candidate triangle once, from its two smallest
-    /// vertices): a merge of the two sorted neighbour lists.
-    fn third_vertices(&self, e: u32, mut f: impl FnMut(u32, u32, u32)) {
-        let [p, q] = self.edges[e as usize];
-        let (a, b) = (self.around(p), self.around(q));
-        let (mut i, mut j) = (0, 0);
-        while i < a.len() && j < b.len() {
-            match a[i].0.cmp(&b[j].0) {
-                std::cmp::Ordering::Less => i += 1,
-                std::cmp::Ordering::Greater => j += 1,
-                std::cmp::Ordering::Equal => {
-                    if a[i].0 > q {
-                        f(a[i].0, a[i].1, b[j].1);
-                    }
-                    i += 1;
-                    j += 1;
-                }
-            }
-        }
-    }
-
     /// Neighbours of `v` with edge ids.
     pub fn around(&self, v: u32) -> &[(u32, u32)] {
         &self.adj[self.start[v as usize] as usize..self.start[v as usize + 1] as usize]
     }
 }
 
-/// Adjacency sorted by neighbour (for merging neighbour lists).
-fn adjacency(n: usize, edges: &[[u32; 2]]) -> (Vec<u32>, Vec<(u32, u32)>) {
-    let (start, mut adj) = super::walks::csr(n, edges);
-    for v in 0..n {
-        adj[start[v] as usize..start[v + 1] as usize].sort_unstable();
-    }
+/// Adjacency counter-clockwise around each site from the positive x-axis (exact).
+fn adjacency(points: &[Point2], edges: &[[u32; 2]]) -> (Vec<u32>, Vec<(u32, u32)>) {
+    let (start, mut adj) = super::walks::csr(points.len(), edges);
+    let offsets: Vec<usize> = start.iter().map(|&o| o as usize).collect();
+    crate::rows::for_each_row(&mut adj, &offsets, |v, row| {
+        let o = &points[v];
+        // Upper half-plane (including the positive x-axis) first, then by orientation.
+        let half = |w: u32| {
+            let d = [points[w as usize][0] - o[0], points[w as usize][1] - o[1]];
+            d[1] < 0.0 || (d[1] == 0.0 && d[0] < 0.0)
+        };
+        row.sort_unstable_by(|a, b| {
+            (half(a.0).cmp(&half(b.0)))
+                .then_with(|| 0.cmp(&orient2d(o, &points[a.0 as usize], &points[b.0 as usize])))
+        });
+    });
     (start, adj)
+}
+
+/// For each edge `[p, q]`, where `q` is in the row of `p` and `p` in the row of `q`.
+fn positions(start: &[u32], adj: &[(u32, u32)], edges: usize) -> Vec<[u32; 2]> {
+    let mut pos = vec![[0u32; 2]; edges];
+    for v in 0..start.len() - 1 {
+        for i in start[v]..start[v + 1] {
+            let (w, e) = adj[i as usize];
+            pos[e as usize][usize::from(w < v as u32)] = i;
+        }
+    }
+    pos
 }
 
 /// Hull edges (consecutive boundary sites, collinear ones included), as `[p, q]`, `p < q`.
@@ -118,149 +107,159 @@ fn hull_edges(points: &[Point2]) -> Vec<[u32; 2]> {
         .collect()
 }
 
-/// Every empty triangle whose three edges are candidates, listed on each of its edges.
-/// A face of a triangulation is empty, so only these can witness local minimality;
-/// emptiness is static and computed once (a grid query per triangle).
-fn empty_triangles(points: &[Point2], sk: &Skeleton) -> (Vec<u32>, Vec<Tri>) {
-    let grid = crate::planar::grid::PointGrid::new(points, 2.0);
-    let pt = |i: u32| &points[i as usize];
-    let inc: Vec<(u32, Tri)> = (0..sk.edges.len() as u32)
-        .into_par_iter()
-        .flat_map_iter(|e| {
-            let [p, q] = sk.edges[e as usize];
-            let mut out = Vec::new();
-            sk.third_vertices(e, |r, epr, eqr| {
-                let o = orient2d(pt(p), pt(q), pt(r));
-                if o == 0 || !triangle_empty(points, &grid, p, q, r, o) {
-                    return;
-                }
-                // p < q < r: seen from [p, r] the apex q turns -o, from [q, r] the apex
-                // p turns o.
-                let tri = |apex, sides, turn| Tri { apex, sides, turn };
-                out.push((e, tri(r, [epr, eqr], o)));
-                out.push((epr, tri(q, [e, eqr], -o)));
-                out.push((eqr, tri(p, [e, epr], o)));
-            });
-            out
-        })
-        .collect();
-    crate::rows::buckets(sk.edges.len(), inc.iter().map(|&(e, t)| (e as usize, t)))
-}
+/// A triangle on an edge `pq`: its apex and the edges `p–apex`, `q–apex`.
+type Apex = (u32, [u32; 2]);
 
-/// The number of triangles whose three edges are candidates (empty or not): a merge of
-/// two sorted neighbour lists per edge.
-fn candidate_triangles(sk: &Skeleton) -> usize {
-    (0..sk.edges.len() as u32)
-        .into_par_iter()
-        .map(|e| {
-            let mut count = 0;
-            sk.third_vertices(e, |_, _, _| count += 1);
-            count
-        })
-        .sum()
-}
-
-/// True when no site lies strictly inside triangle `pqr` (orientation `o`); candidate
-/// edges carry no site on their interiors, so the boundary needs no test.
-fn triangle_empty(
+/// The triangles left of `p → q` whose three edges are alive, except those with a
+/// neighbour of `p` or `q` (alive or not) strictly inside: such a triangle is not empty,
+/// so it is no face of a triangulation. `ip` is where `q` is in the row of `p`, `iq`
+/// where `p` is in the row of `q`.
+///
+/// The neighbours of `p` left of `p → q` are the row of `p` counter-clockwise after `q`
+/// (by angle `α` at `p` from `q`); those of `q` are the row of `q` clockwise before `p`
+/// (by angle `γ` at `q` from `p`). A site `s` is inside triangle `pqr` exactly when
+/// `α(s) < α(r)` and `γ(s) < γ(r)`, so a sweep in `α` keeping the least `γ`, and one in
+/// `γ` keeping the least `α`, find the apexes with a neighbour inside (checked exactly).
+fn left_triangles(
     points: &[Point2],
-    grid: &crate::planar::grid::PointGrid,
-    p: u32,
-    q: u32,
-    r: u32,
-    o: i8,
-) -> bool {
-    let pt = |i: u32| &points[i as usize];
-    let (a, b, c) = if o > 0 { (p, q, r) } else { (p, r, q) };
-    let lo = [
-        pt(a)[0].min(pt(b)[0]).min(pt(c)[0]),
-        pt(a)[1].min(pt(b)[1]).min(pt(c)[1]),
-    ];
-    let hi = [
-        pt(a)[0].max(pt(b)[0]).max(pt(c)[0]),
-        pt(a)[1].max(pt(b)[1]).max(pt(c)[1]),
-    ];
-    !grid.any_in_exact_box(lo, hi, |t| {
-        t != a && t != b && t != c && {
-            let x = pt(t);
-            x[0] >= lo[0]
-                && x[0] <= hi[0]
-                && x[1] >= lo[1]
-                && x[1] <= hi[1]
-                && orient2d(pt(a), pt(b), x) > 0
-                && orient2d(pt(b), pt(c), x) > 0
-                && orient2d(pt(c), pt(a), x) > 0
-        }
-    })
-}
-
-/// The alive empty triangles on edge `e`.
-fn alive_triangles(sk: &Skeleton, status: &[AtomicU8], e: u32, out: &mut Vec<Tri>) {
+    sk: &Skeleton,
+    status: &[AtomicU8],
+    (p, ip): (u32, u32),
+    (q, iq): (u32, u32),
+    out: &mut Vec<Apex>,
+    near: &mut Vec<(u32, u32, bool)>,
+) {
     out.clear();
-    out.extend(sk.triangles(e).iter().copied().filter(|t| {
-        t.sides
-            .iter()
-            .all(|&f| status[f as usize].load(Relaxed) != IMPOSSIBLE)
-    }));
+    near.clear();
+    let pt = |v: u32| &points[v as usize];
+    let (pp, pq) = (pt(p), pt(q));
+    let left = |v: u32| orient2d(pp, pq, pt(v)) > 0;
+    // Neighbours of q by γ, each flagged when one swept before (smaller γ) has a smaller
+    // α: it is inside. One orientation against the least α so far decides both that and
+    // whether the neighbour is the new least.
+    let (b0, len) = (
+        sk.start[q as usize],
+        sk.start[q as usize + 1] - sk.start[q as usize],
+    );
+    let mut least: Option<u32> = None;
+    let mut i = iq - b0;
+    for _ in 1..len {
+        i = if i == 0 { len - 1 } else { i - 1 };
+        let (u, f) = sk.adj[(b0 + i) as usize];
+        if !left(u) {
+            break;
+        }
+        let o = least.map_or(1, |m| orient2d(pp, pt(u), pt(m)));
+        near.push((u, f, o < 0));
+        if o > 0 {
+            least = Some(u);
+        }
+    }
+    // Neighbours of p by α, against the least γ so far.
+    let alive = |f: u32| status[f as usize].load(Relaxed) != IMPOSSIBLE;
+    let (a0, len) = (
+        sk.start[p as usize],
+        sk.start[p as usize + 1] - sk.start[p as usize],
+    );
+    let mut least: Option<u32> = None;
+    let mut i = ip - a0;
+    for _ in 1..len {
+        i = if i + 1 == len { 0 } else { i + 1 };
+        let (t, g) = sk.adj[(a0 + i) as usize];
+        if !left(t) {
+            break;
+        }
+        let o = least.map_or(-1, |m| orient2d(pq, pt(t), pt(m)));
+        if o <= 0
+            && let Some(&(_, f, hidden)) = near.iter().find(|b| b.0 == t)
+            && !hidden
+            && alive(f)
+            && alive(g)
+        {
+            out.push((t, [g, f]));
+        }
+        if o < 0 {
+            least = Some(t);
+        }
+    }
 }
 
-/// True when the edge has a locally minimal pair of alive triangles.
-fn locally_minimal(
+/// Per-thread buffers: the triangles on each side, and a sweep's neighbours.
+type Buffers = (Vec<Apex>, Vec<Apex>, Vec<(u32, u32, bool)>);
+
+/// A pair of alive triangles on `e` that makes it locally minimal, as the four other
+/// edges (left pair, right pair), if there is one.
+fn certificate(
     points: &[Point2],
     sk: &Skeleton,
     status: &[AtomicU8],
     e: u32,
-    buf: &mut Vec<Tri>,
-) -> bool {
+    (left, right, near): &mut Buffers,
+) -> Option<[u32; 4]> {
     let [p, q] = sk.edges[e as usize];
-    alive_triangles(sk, status, e, buf);
+    let [ip, iq] = sk.pos[e as usize];
+    left_triangles(points, sk, status, (p, ip), (q, iq), left, near);
+    if left.is_empty() {
+        return None;
+    }
+    left_triangles(points, sk, status, (q, iq), (p, ip), right, near);
     let pt = |i: u32| &points[i as usize];
     let (pp, pq) = (pt(p), pt(q));
-    for left in buf.iter().filter(|t| t.turn > 0) {
-        for right in buf.iter().filter(|t| t.turn < 0) {
-            let (r, s) = (left.apex, right.apex);
-            let (a, b) = (orient2d(pt(r), pt(s), pp), orient2d(pt(r), pt(s), pq));
-            let convex = a * b < 0;
+    for &(r, [a, b]) in left.iter() {
+        for &(s, [c, d]) in right.iter() {
+            let convex = orient2d(pt(r), pt(s), pp) * orient2d(pt(r), pt(s), pq) < 0;
             if !convex
                 || cmp_length(pp, pq, pt(r), pt(s)) != std::cmp::Ordering::Greater
-                || sk.forbidden.contains(&[r.min(s), r.max(s)])
+                || (!sk.forbidden.is_empty() && sk.forbidden.contains(&[r.min(s), r.max(s)]))
             {
-                return true;
+                return Some([a, b, c, d]);
             }
         }
     }
-    false
+    None
 }
 
 /// Runs the LMT rounds from `queue` to a fixpoint.
 fn eliminate(points: &[Point2], sk: &Skeleton, status: &[AtomicU8], mut queue: Vec<u32>) {
-    let queued: Vec<AtomicBool> = (0..sk.edges.len())
-        .map(|_| AtomicBool::new(false))
+    let m = sk.edges.len();
+    let queued: Vec<AtomicBool> = (0..m).map(|_| AtomicBool::new(false)).collect();
+    let certs: Vec<[AtomicU32; 4]> = (0..m)
+        .map(|_| std::array::from_fn(|_| AtomicU32::new(u32::MAX)))
         .collect();
     while !queue.is_empty() {
         let dead: Vec<u32> = queue
             .par_iter()
-            .map_init(Vec::new, |buf, &e| {
+            .map_init(Buffers::default, |bufs, &e| {
                 queued[e as usize].store(false, Relaxed);
-                let ok = status[e as usize].load(Relaxed) != ALIVE
-                    || locally_minimal(points, sk, status, e, buf);
-                if !ok {
-                    status[e as usize].store(IMPOSSIBLE, Relaxed);
+                if status[e as usize].load(Relaxed) != ALIVE {
+                    return None;
                 }
-                (!ok).then_some(e)
+                match certificate(points, sk, status, e, bufs) {
+                    Some(c) => {
+                        for (slot, f) in certs[e as usize].iter().zip(c) {
+                            slot.store(f, Relaxed);
+                        }
+                        None
+                    }
+                    None => {
+                        status[e as usize].store(IMPOSSIBLE, Relaxed);
+                        Some(e)
+                    }
+                }
             })
             .flatten_iter()
             .collect();
+        // Examine again the alive edges whose certificate used a dead edge: they share
+        // an endpoint with it.
         queue = dead
             .par_iter()
             .map(|&e| {
-                // Every triangle on e, dead or alive: when two edges of a triangle die
-                // in one round, the third must still be rechecked.
-                sk.triangles(e)
-                    .iter()
-                    .flat_map(|t| t.sides)
+                let [p, q] = sk.edges[e as usize];
+                (sk.around(p).iter().chain(sk.around(q)))
+                    .map(|&(_, f)| f)
                     .filter(|&f| {
                         status[f as usize].load(Relaxed) == ALIVE
+                            && certs[f as usize].iter().any(|c| c.load(Relaxed) == e)
                             && !queued[f as usize].swap(true, Relaxed)
                     })
                     .collect::<Vec<u32>>()
@@ -291,8 +290,8 @@ pub struct LmtStats {
     pub undecided: usize,
 }
 
-/// Candidate triangles (about 60 bytes each once listed) allowed beyond `64·n`.
-const TRIANGLE_BUDGET: usize = 20_000_000;
+/// Merge steps (`Σ deg²` over the sites) allowed beyond `1000·n` for the elimination.
+const WORK_BUDGET: usize = 100_000_000;
 
 /// Computes the LMT-skeleton of `candidates` (sorted `[p, q]`, `p < q`, containing every
 /// MWT edge), with `forced` edges taken as certain (their crossers impossible).
@@ -303,25 +302,21 @@ pub fn lmt_skeleton(
     forbidden: &[[u32; 2]],
 ) -> (Skeleton, LmtStats) {
     let n = points.len();
-    let (start, adj) = adjacency(n, &candidates);
+    let (start, adj) = adjacency(points, &candidates);
+    let pos = positions(&start, &adj, candidates.len());
     let mut sk = Skeleton {
         status: vec![ALIVE; candidates.len()],
         edges: candidates,
         start,
         adj,
-        tri_start: Vec::new(),
-        tris: Vec::new(),
+        pos,
         forbidden: forbidden.iter().copied().collect(),
     };
-    // Sites in (near) convex position make Θ(n³) empty triangles and no LMT
+    // Sites in (near) convex position have Θ(n) candidates each and make no LMT
     // progress; past the budget the elimination is skipped (every candidate stays
     // alive, which is sound) and the exact stage gets the whole face.
-    let eliminating = candidate_triangles(&sk) <= TRIANGLE_BUDGET.max(64 * n);
-    if eliminating {
-        (sk.tri_start, sk.tris) = empty_triangles(points, &sk);
-    } else {
-        sk.tri_start = vec![0; sk.edges.len() + 1];
-    }
+    let work: usize = (0..n as u32).map(|v| sk.around(v).len().pow(2)).sum();
+    let eliminating = work <= WORK_BUDGET + 1000 * n;
     let find = |sk: &Skeleton, e: &[u32; 2]| sk.edges.binary_search(e).ok();
     for e in hull_edges(points).iter().chain(forced) {
         if let Some(id) = find(&sk, e) {
@@ -356,4 +351,75 @@ pub fn lmt_skeleton(
     let undecided = sk.status.iter().filter(|&&s| s == ALIVE).count();
     let stats = LmtStats { certain, undecided };
     (sk, stats)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::planar::{Distribution, points2d};
+
+    /// The triangles left of `p → q` by definition: common neighbours with both edges
+    /// alive, and no neighbour of `p` or `q` strictly inside.
+    fn brute_left(points: &[Point2], sk: &Skeleton, alive: &[bool], p: u32, q: u32) -> Vec<u32> {
+        let pt = |v: u32| &points[v as usize];
+        let edge = |a: u32, b: u32| sk.around(a).iter().find(|x| x.0 == b).map(|x| x.1);
+        let inside = |s: u32, r: u32| {
+            orient2d(pt(p), pt(q), pt(s)) > 0
+                && orient2d(pt(q), pt(r), pt(s)) > 0
+                && orient2d(pt(r), pt(p), pt(s)) > 0
+        };
+        let mut out: Vec<u32> = (sk.around(p).iter())
+            .filter(|&&(r, g)| {
+                let f = edge(q, r);
+                orient2d(pt(p), pt(q), pt(r)) > 0
+                    && f.is_some_and(|f| alive[f as usize] && alive[g as usize])
+                    && !(sk.around(p).iter().chain(sk.around(q))).any(|&(s, _)| inside(s, r))
+            })
+            .map(|&(r, _)| r)
+            .collect();
+        out.sort_unstable();
+        out
+    }
+
+    #[test]
+    fn left_triangles_match_their_definition() {
+        for (dist, n, seed) in [
+            (Distribution::Uniform, 120, 1),
+            (Distribution::Grid, 100, 2),
+            (Distribution::Clustered, 120, 3),
+            (Distribution::Regular, 30, 4),
+        ] {
+            let pts = points2d(dist, n, seed);
+            let cands = super::super::candidates::search(&pts);
+            let (start, adj) = adjacency(&pts, &cands);
+            let pos = positions(&start, &adj, cands.len());
+            let sk = Skeleton {
+                status: vec![ALIVE; cands.len()],
+                edges: cands,
+                start,
+                adj,
+                pos,
+                forbidden: Default::default(),
+            };
+            let mut rng = crate::rng::Rng::new(seed);
+            let alive: Vec<bool> = (0..sk.edges.len()).map(|_| rng.unit() < 0.8).collect();
+            let status: Vec<AtomicU8> = (alive.iter())
+                .map(|&a| AtomicU8::new(if a { ALIVE } else { IMPOSSIBLE }))
+                .collect();
+            let (mut out, mut near) = (Vec::new(), Vec::new());
+            for (e, &[p, q]) in sk.edges.iter().enumerate() {
+                let [ip, iq] = sk.pos[e];
+                for ((a, ia), (b, ib)) in [((p, ip), (q, iq)), ((q, iq), (p, ip))] {
+                    left_triangles(&pts, &sk, &status, (a, ia), (b, ib), &mut out, &mut near);
+                    let mut got: Vec<u32> = out.iter().map(|t| t.0).collect();
+                    got.sort_unstable();
+                    assert_eq!(
+                        got,
+                        brute_left(&pts, &sk, &alive, a, b),
+                        "{dist:?} {a}->{b}"
+                    );
+                }
+            }
+        }
+    }
 }
