@@ -126,10 +126,9 @@ fn left_triangles(
     status: &[AtomicU8],
     (p, ip): (u32, u32),
     (q, iq): (u32, u32),
-    out: &mut Vec<Apex>,
     near: &mut Vec<(u32, u32, bool)>,
-) {
-    out.clear();
+    mut found: impl FnMut(Apex) -> bool,
+) -> bool {
     near.clear();
     let pt = |v: u32| &points[v as usize];
     let (pp, pq) = (pt(p), pt(q));
@@ -175,17 +174,19 @@ fn left_triangles(
             && !hidden
             && alive(f)
             && alive(g)
+            && found((t, [g, f]))
         {
-            out.push((t, [g, f]));
+            return true;
         }
         if o < 0 {
             least = Some(t);
         }
     }
+    false
 }
 
-/// Per-thread buffers: the triangles on each side, and a sweep's neighbours.
-type Buffers = (Vec<Apex>, Vec<Apex>, Vec<(u32, u32, bool)>);
+/// Per-thread buffers: the triangles left of an edge, and a sweep's neighbours.
+type Buffers = (Vec<Apex>, Vec<(u32, u32, bool)>);
 
 /// A pair of alive triangles on `e` that makes it locally minimal, as the four other
 /// edges (left pair, right pair), if there is one.
@@ -194,29 +195,33 @@ fn certificate(
     sk: &Skeleton,
     status: &[AtomicU8],
     e: u32,
-    (left, right, near): &mut Buffers,
+    (left, near): &mut Buffers,
 ) -> Option<[u32; 4]> {
     let [p, q] = sk.edges[e as usize];
     let [ip, iq] = sk.pos[e as usize];
-    left_triangles(points, sk, status, (p, ip), (q, iq), left, near);
+    left.clear();
+    left_triangles(points, sk, status, (p, ip), (q, iq), near, |t| {
+        left.push(t);
+        false
+    });
     if left.is_empty() {
         return None;
     }
-    left_triangles(points, sk, status, (q, iq), (p, ip), right, near);
     let pt = |i: u32| &points[i as usize];
     let (pp, pq) = (pt(p), pt(q));
-    for &(r, [a, b]) in left.iter() {
-        for &(s, [c, d]) in right.iter() {
+    // Each triangle on the right against those on the left, as it is found.
+    let mut cert = None;
+    left_triangles(points, sk, status, (q, iq), (p, ip), near, |(s, [d, c])| {
+        cert = left.iter().find_map(|&(r, [a, b])| {
             let convex = orient2d(pt(r), pt(s), pp) * orient2d(pt(r), pt(s), pq) < 0;
-            if !convex
-                || cmp_length(pp, pq, pt(r), pt(s)) != std::cmp::Ordering::Greater
-                || (!sk.forbidden.is_empty() && sk.forbidden.contains(&[r.min(s), r.max(s)]))
-            {
-                return Some([a, b, c, d]);
-            }
-        }
-    }
-    None
+            let flip_shorter = convex && cmp_length(pp, pq, pt(r), pt(s)).is_gt();
+            let flip_allowed =
+                sk.forbidden.is_empty() || !sk.forbidden.contains(&[r.min(s), r.max(s)]);
+            (!flip_shorter || !flip_allowed).then_some([a, b, c, d])
+        });
+        cert.is_some()
+    });
+    cert
 }
 
 /// Runs the LMT rounds from `queue` to a fixpoint.
@@ -406,12 +411,15 @@ mod tests {
             let status: Vec<AtomicU8> = (alive.iter())
                 .map(|&a| AtomicU8::new(if a { ALIVE } else { IMPOSSIBLE }))
                 .collect();
-            let (mut out, mut near) = (Vec::new(), Vec::new());
+            let mut near = Vec::new();
             for (e, &[p, q]) in sk.edges.iter().enumerate() {
                 let [ip, iq] = sk.pos[e];
                 for ((a, ia), (b, ib)) in [((p, ip), (q, iq)), ((q, iq), (p, ip))] {
-                    left_triangles(&pts, &sk, &status, (a, ia), (b, ib), &mut out, &mut near);
-                    let mut got: Vec<u32> = out.iter().map(|t| t.0).collect();
+                    let mut got = Vec::new();
+                    left_triangles(&pts, &sk, &status, (a, ia), (b, ib), &mut near, |t| {
+                        got.push(t.0);
+                        false
+                    });
                     got.sort_unstable();
                     assert_eq!(
                         got,
