@@ -46,7 +46,8 @@
 //!   distance and pseudo-angle carries an error below `2^-45` (relative for distances,
 //!   absolute for pseudo-angles, whose range is `[0, 4)`).
 //! - The margins: `10^-9` in pseudo-angle at every end of a dead interval and around
-//!   every cell's directions; 0.1% on the activation distance; cells widened by a
+//!   every cell's directions (twice that around a site's own direction, so that it
+//!   overlaps the intervals beside it); 0.1% on the activation distance; cells widened by a
 //!   millionth of a cell (a site's cell index is off by at most one near a cell
 //!   boundary, by under `2^-37` cells).
 //! - Keeping a pair the exact test would exclude is always safe (the LMT-skeleton and
@@ -57,7 +58,8 @@ use crate::geom::{Point2, diamond_hit};
 use crate::planar::grid::PointGrid;
 use crate::planar::{PlanarError, check_sites, edge_key};
 use rayon::prelude::*;
-use std::collections::VecDeque;
+use std::cmp::Reverse;
+use std::collections::{BinaryHeap, VecDeque};
 
 /// A monotone stand-in for the angle of `(dx, dy)`, in `[0, 4)`.
 fn pseudo_angle(dx: f64, dy: f64) -> f64 {
@@ -78,12 +80,13 @@ fn pseudo_angle(dx: f64, dy: f64) -> f64 {
 const EPS: f64 = 1e-9;
 
 /// Beyond `2 cos θ · ρ` (with a 0.1% margin), a site at distance `ρ` within `θ` of a
-/// direction is in a diamond of every pair in that direction.
+/// direction is in a diamond of every pair in that direction (`cos θ = 16/√425`).
 const ACTIVATION: f64 = 2.0 * 16.0 / 20.615_528_128_088_304 * 1.001;
 
-/// `(a − b)` taken in `[0, 4)`: how far counter-clockwise `a` is from `b`.
-fn ccw_from(b: f64, a: f64) -> f64 {
-    let d = a - b;
+/// How far counter-clockwise pseudo-angle `to` is from `from` (both in `[0, 4)`, up to
+/// the margins), in `[0, 4)`.
+fn ccw_from(from: f64, to: f64) -> f64 {
+    let d = to - from;
     if d < 0.0 { d + 4.0 } else { d }
 }
 
@@ -181,6 +184,10 @@ impl Directions {
     }
 }
 
+/// Gathered sites `(squared distance, slot)`, nearest on top; the distance is kept as
+/// its bits, which order non-negative floats as the floats.
+type Pending = BinaryHeap<Reverse<(u64, u32)>>;
+
 /// Per-thread scratch space.
 #[derive(Default)]
 struct Scratch {
@@ -190,8 +197,8 @@ struct Scratch {
     dead: Directions,
     /// Dead intervals `(activation distance, lo, hi)` not active yet, by activation.
     waiting: VecDeque<(f64, f64, f64)>,
-    /// Gathered sites `(squared distance, slot)` not visited yet.
-    pending: Vec<(f64, u32)>,
+    /// Gathered sites not visited yet.
+    pending: Pending,
 }
 
 impl Scratch {
@@ -303,8 +310,10 @@ fn candidates_of(slot: usize, grid: &PointGrid, s: &mut Scratch, out: &mut Vec<[
         } else {
             ring as f64 * grid.cell()
         };
-        s.pending.sort_unstable_by(|a, b| b.0.total_cmp(&a.0));
-        while let Some(&(d2, qs)) = s.pending.last() {
+        // A heap, not a sort: in a dense cluster a ring gathers many more sites than the
+        // search visits before every direction is dead.
+        while let Some(&Reverse((bits, qs))) = s.pending.peek() {
+            let d2 = f64::from_bits(bits);
             if d2 >= complete * complete {
                 break;
             }
@@ -343,13 +352,18 @@ fn open(pp: &Point2, pq: &Point2, coords: &[Point2], around: &[Seen], x: &Seen) 
     };
     let mut hits = (false, false);
     // Counter-clockwise: the sites within `θ` of `q`'s direction (and those within the
-    // margin clockwise of it): the only ones that can be in the left diamond.
+    // margin clockwise of it): the only ones that can be in the left diamond. Past the
+    // first hit, the rest are left of `pq` (or a margin's width right of it, whose test
+    // is skipped: keeping a pair is always safe).
     for k in start..start + n {
         if ccw_from(x.pa - EPS, around[k % n].pa) > x.fwd + 2.0 * EPS {
             break;
         }
         if blocked(k, &mut hits) {
             return false;
+        }
+        if hits.0 {
+            break;
         }
     }
     if !hits.0 {
@@ -405,40 +419,47 @@ fn gather_live(
     });
     let mut live = false;
     for (x, y) in cells.chain(sides) {
+        // An empty cell matters only until the ring is known to be live.
+        let empty = grid.cell_slots(x, y).is_empty();
+        if live && empty {
+            continue;
+        }
         let (lo, hi) = directions_of_box(pp, grid.cell_box(x, y));
         if !s.dead.covers(lo - EPS, hi + EPS) {
             live = true;
-            push_cell(grid, pp, x, y, usize::MAX, &mut s.pending);
+            if !empty {
+                push_cell(grid, pp, x, y, usize::MAX, &mut s.pending);
+            }
         }
     }
     live
 }
 
-/// Pushes `(squared distance from pp, slot)` for the sites of cell `(x, y)` except `skip`.
+/// Pushes the sites of cell `(x, y)` except `skip`.
 fn push_cell(
     grid: &PointGrid,
     pp: &Point2,
     x: usize,
     y: usize,
     skip: usize,
-    pending: &mut Vec<(f64, u32)>,
+    pending: &mut Pending,
 ) {
     let coords = grid.slots().1;
     for q in grid.cell_slots(x, y).filter(|&q| q != skip) {
         let a = coords[q];
         let (ex, ey) = (a[0] - pp[0], a[1] - pp[1]);
-        pending.push((ex * ex + ey * ey, q as u32));
+        pending.push(Reverse(((ex * ex + ey * ey).to_bits(), q as u32)));
     }
 }
 
-/// Pushes `(squared distance, slot)` of the sites in ring `r` around cell `(cx, cy)`.
+/// Pushes the sites in ring `r` around cell `(cx, cy)`.
 fn gather_ring(
     grid: &PointGrid,
     slot: usize,
     cx: usize,
     cy: usize,
     r: usize,
-    pending: &mut Vec<(f64, u32)>,
+    pending: &mut Pending,
 ) {
     let (nx, ny) = grid.dims();
     let pp = grid.slots().1[slot];

@@ -6,9 +6,12 @@
 //! 1. `M` is locally minimal: an interior edge `pq` of `M` bounds triangles `pqr`, `pqs`
 //!    of `M` whose edges are in `M`, hence alive, and if `prqs` is strictly convex then
 //!    `|pq| ≤ |rs|`. An alive edge without such a pair of alive triangles is impossible.
-//!    The triangles considered are all those whose three edges are alive, empty or not
-//!    (as in Haas 2018): a non-empty one can only add certificates, which may keep an edge
-//!    alive that a stricter test would drop, never drop an edge of `M`.
+//!    The triangles considered are those whose three edges are alive and which hold no
+//!    candidate neighbour of `p` or `q` (a cheap test in the angular order around `p` and
+//!    `q`; Haas 2018 walks the same order). A triangle with another site inside can only
+//!    add certificates, which may keep alive an edge a strict emptiness test would drop,
+//!    never drop an edge of `M`. On uniform sets the skeleton is the same as with exact
+//!    emptiness tests.
 //! 2. `M` is a maximal plane graph: an alive edge crossed by no alive edge crosses no
 //!    edge of `M`, so it is in `M`, and is certain. Hull edges are certain.
 //!
