@@ -133,6 +133,21 @@ fn through(r: &Seen, x: &Seen, l: &Seen) -> Option<(f64, f64)> {
     ok.then_some((x.pa - 2.0 * EPS, x.pa + 2.0 * EPS))
 }
 
+/// The nearest sites clockwise and counter-clockwise of entry `i` whose directions are
+/// more than `3 EPS` from its own: sites in the same direction (a grid's rows) are
+/// skipped, so that the direction of a whole collinear run can die.
+fn distinct_neighbours(around: &[Seen], i: usize) -> Option<(Seen, Seen)> {
+    let (n, x) = (around.len(), around[i].pa);
+    let apart = 3.0 * EPS;
+    let cw = (1..n)
+        .map(|k| around[(i + n - k) % n])
+        .find(|s| ccw_from(s.pa, x) > apart)?;
+    let ccw = (1..n)
+        .map(|k| around[(i + k) % n])
+        .find(|s| ccw_from(x, s.pa) > apart)?;
+    Some((cw, ccw))
+}
+
 /// Closed pseudo-angle intervals, disjoint and sorted, within `[0, 4]`.
 #[derive(Default)]
 struct Directions(Vec<(f64, f64)>);
@@ -243,7 +258,9 @@ impl Scratch {
         ];
         if n >= 3 {
             for k in -1..=1 {
-                found[(k + 3) as usize] = through(&at(k - 1), &at(k), &at(k + 1));
+                let j = (i as isize + k).rem_euclid(n) as usize;
+                found[(k + 3) as usize] = distinct_neighbours(&self.around, j)
+                    .and_then(|(r, l)| through(&r, &self.around[j], &l));
             }
         }
         for (lo, hi) in found.into_iter().flatten() {
