@@ -110,6 +110,20 @@ fn hull_edges(points: &[Point2]) -> Vec<[u32; 2]> {
         .collect()
 }
 
+/// The entries of the row of `v` after entry `i` (an index into `adj`), once round,
+/// counter-clockwise or clockwise.
+fn row_after(sk: &Skeleton, v: u32, i: u32, ccw: bool) -> impl Iterator<Item = (u32, u32)> + '_ {
+    let (first, len) = (
+        sk.start[v as usize],
+        sk.start[v as usize + 1] - sk.start[v as usize],
+    );
+    let at = i - first;
+    (1..len).map(move |k| {
+        let j = if ccw { at + k } else { at + len - k };
+        sk.adj[(first + if j >= len { j - len } else { j }) as usize]
+    })
+}
+
 /// A triangle on an edge `pq`: its apex and the edges `p–apex`, `q–apex`.
 type Apex = (u32, [u32; 2]);
 
@@ -139,15 +153,8 @@ fn left_triangles(
     // Neighbours of q by γ, each flagged when one swept before (smaller γ) has a smaller
     // α: it is inside. One orientation against the least α so far decides both that and
     // whether the neighbour is the new least.
-    let (b0, len) = (
-        sk.start[q as usize],
-        sk.start[q as usize + 1] - sk.start[q as usize],
-    );
     let mut least: Option<u32> = None;
-    let mut i = iq - b0;
-    for _ in 1..len {
-        i = if i == 0 { len - 1 } else { i - 1 };
-        let (u, f) = sk.adj[(b0 + i) as usize];
+    for (u, f) in row_after(sk, q, iq, false) {
         if !left(u) {
             break;
         }
@@ -159,15 +166,8 @@ fn left_triangles(
     }
     // Neighbours of p by α, against the least γ so far.
     let alive = |f: u32| status[f as usize].load(Relaxed) != IMPOSSIBLE;
-    let (a0, len) = (
-        sk.start[p as usize],
-        sk.start[p as usize + 1] - sk.start[p as usize],
-    );
     let mut least: Option<u32> = None;
-    let mut i = ip - a0;
-    for _ in 1..len {
-        i = if i + 1 == len { 0 } else { i + 1 };
-        let (t, g) = sk.adj[(a0 + i) as usize];
+    for (t, g) in row_after(sk, p, ip, true) {
         if !left(t) {
             break;
         }
