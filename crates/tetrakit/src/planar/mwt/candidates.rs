@@ -590,6 +590,23 @@ mod tests {
         assert_eq!(missing_candidates(&pts), 0);
     }
 
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(200))]
+        /// Small integer lattices (collinear and cocircular sites everywhere, many sites
+        /// in one direction), sheared and scaled: the search keeps every candidate.
+        #[test]
+        fn search_is_complete_on_sheared_lattices(
+            sites in proptest::collection::hash_set((0i32..9, 0i32..9), 3..60),
+            shear in -3i32..=3,
+            scale in proptest::prop_oneof![proptest::strategy::Just(1.0f64), 1e-3f64..1e3],
+        ) {
+            let pts: Vec<Point2> = (sites.iter())
+                .map(|&(x, y)| [(x + shear * y) as f64 * scale, y as f64 * scale])
+                .collect();
+            proptest::prop_assert_eq!(missing_candidates(&pts), 0);
+        }
+    }
+
     /// Thin strips and a set hugging the edges of its box: almost every site sees the
     /// edge along some sector, where the kills by the sector's own sites cut the cone.
     #[test]
