@@ -315,7 +315,7 @@ fn candidates_of(slot: usize, grid: &PointGrid, s: &mut Scratch, out: &mut Vec<[
         // Every cell of ring `r ≥ 1` is at least `(r - 1)` cells from `p`.
         s.activate(ring.saturating_sub(1) as f64 * grid.cell());
         let live = if ring < 2 {
-            gather_ring(grid, slot, cx, cy, ring, &mut s.pending);
+            gather_ring(grid, slot, (cx, cy), ring, &mut s.pending);
             true
         } else {
             !s.dead.full() && gather_live(grid, &pp, (cx, cy), ring, s)
@@ -425,21 +425,12 @@ fn gather_live(
     r: usize,
     s: &mut Scratch,
 ) -> bool {
-    let (nx, ny) = grid.dims();
-    let (x0, x1) = (cx.saturating_sub(r), (cx + r).min(nx - 1));
-    let (y0, y1) = (cy.saturating_sub(r), (cy + r).min(ny - 1));
-    let rows = [cy.checked_sub(r), Some(cy + r).filter(|&y| y < ny)];
-    let cols = [cx.checked_sub(r), Some(cx + r).filter(|&x| x < nx)];
-    let cells = (rows.into_iter().flatten()).flat_map(|y| (x0..=x1).map(move |x| (x, y)));
-    let sides = (cols.into_iter().flatten()).flat_map(|x| {
-        (y0.max((cy + 1).saturating_sub(r))..=y1.min(cy + r - 1)).map(move |y| (x, y))
-    });
     let mut live = false;
-    for (x, y) in cells.chain(sides) {
+    for_ring_cells(grid, (cx, cy), r, |x, y| {
         // An empty cell matters only until the ring is known to be live.
         let empty = grid.cell_slots(x, y).is_empty();
         if live && empty {
-            continue;
+            return;
         }
         let (lo, hi) = directions_of_box(pp, grid.cell_box(x, y));
         if !s.dead.covers(lo - EPS, hi + EPS) {
@@ -448,7 +439,7 @@ fn gather_live(
                 push_cell(grid, pp, x, y, usize::MAX, &mut s.pending);
             }
         }
-    }
+    });
     live
 }
 
@@ -469,30 +460,42 @@ fn push_cell(
     }
 }
 
-/// Pushes the sites in ring `r` around cell `(cx, cy)`.
-fn gather_ring(
+/// Pushes the sites in ring `r` around cell `(cx, cy)`, except the one in `slot`.
+fn gather_ring(grid: &PointGrid, slot: usize, c: (usize, usize), r: usize, pending: &mut Pending) {
+    let pp = grid.slots().1[slot];
+    for_ring_cells(grid, c, r, |x, y| push_cell(grid, &pp, x, y, slot, pending));
+}
+
+/// Calls `f` on the cells of the grid at Chebyshev distance `r` from cell `(cx, cy)`:
+/// the bottom and top rows of the ring, then its two sides (plain loops: this is the
+/// search's inner walk).
+fn for_ring_cells(
     grid: &PointGrid,
-    slot: usize,
-    cx: usize,
-    cy: usize,
+    (cx, cy): (usize, usize),
     r: usize,
-    pending: &mut Pending,
+    mut f: impl FnMut(usize, usize),
 ) {
     let (nx, ny) = grid.dims();
-    let pp = grid.slots().1[slot];
-    let mut cell = |x: usize, y: usize| push_cell(grid, &pp, x, y, slot, pending);
-    let x0 = cx.saturating_sub(r);
-    let x1 = (cx + r).min(nx - 1);
-    for y in cy.saturating_sub(r)..=(cy + r).min(ny - 1) {
-        if y + r == cy || y == cy + r {
-            (x0..=x1).for_each(|x| cell(x, y));
-        } else {
-            if cx >= r {
-                cell(cx - r, y);
-            }
-            if cx + r < nx && r > 0 {
-                cell(cx + r, y);
-            }
+    let (x0, x1) = (cx.saturating_sub(r), (cx + r).min(nx - 1));
+    if r == 0 {
+        return f(cx, cy);
+    }
+    for y in [cy.checked_sub(r), Some(cy + r).filter(|&y| y < ny)]
+        .into_iter()
+        .flatten()
+    {
+        for x in x0..=x1 {
+            f(x, y);
+        }
+    }
+    // Rows strictly inside the ring.
+    let (y0, y1) = ((cy + 1).saturating_sub(r), (cy + r - 1).min(ny - 1));
+    for x in [cx.checked_sub(r), Some(cx + r).filter(|&x| x < nx)]
+        .into_iter()
+        .flatten()
+    {
+        for y in y0..=y1 {
+            f(x, y);
         }
     }
 }
@@ -604,6 +607,26 @@ mod tests {
                 .map(|&(x, y)| [(x + shear * y) as f64 * scale, y as f64 * scale])
                 .collect();
             proptest::prop_assert_eq!(missing_candidates(&pts), 0);
+        }
+    }
+
+    /// Every cell of the grid is in exactly one ring around any cell.
+    #[test]
+    fn rings_partition_the_grid() {
+        let pts: Vec<Point2> = (0..70)
+            .map(|i| [(i % 10) as f64, (i / 10) as f64 * 0.7])
+            .collect();
+        let grid = PointGrid::new(&pts, 1.0);
+        let (nx, ny) = grid.dims();
+        for c in [(0, 0), (nx / 2, ny / 2), (nx - 1, 0), (nx - 1, ny - 1)] {
+            let mut seen = vec![0; nx * ny];
+            for r in 0..nx.max(ny) {
+                for_ring_cells(&grid, c, r, |x, y| {
+                    assert_eq!(x.abs_diff(c.0).max(y.abs_diff(c.1)), r);
+                    seen[y * nx + x] += 1;
+                });
+            }
+            assert!(seen.iter().all(|&k| k == 1), "{c:?}: {seen:?}");
         }
     }
 
