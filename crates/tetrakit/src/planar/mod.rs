@@ -6,6 +6,9 @@
 //! tested by polynomial signs ([`crate::geom::in_beta_region`]), and weights are compared
 //! with certified intervals and an exact fallback for sums of square roots
 //! ([`crate::geom::compare_root_sums`]).
+//!
+//! [`triangulations`] enumerates every triangulation of a small set: the exhaustive
+//! oracle the exact stages are tested against.
 
 mod delaunay;
 mod forced;
@@ -13,6 +16,7 @@ mod generate;
 mod grid;
 mod keil;
 mod mwt;
+mod oracle;
 mod skeleton;
 
 use crate::geom::Point2;
@@ -25,6 +29,7 @@ pub use keil::{KeilResult, above_cheng_xu, check_random, in_keil_interval, keil,
 pub use mwt::{
     Mwt, MwtOptions, MwtStats, candidate_edges, cmp_edge_sets, mwt, mwt_with, weight_of,
 };
+pub use oracle::triangulations;
 pub use skeleton::{Region, Skeleton, beta_skeleton};
 
 /// Union-find root with path halving (cells of cocircular Delaunay triangles, faces of

@@ -5,12 +5,15 @@
 //! possibly repeated where certain edges dangle into it) and its holes (clockwise walks
 //! of certain-edge components, or isolated sites). Without holes, dynamic programming
 //! over the walk's occurrences (`O(m³)`) finds the optimum among the alive edges that
-//! leave and enter each occurrence inside its wedge. With holes, every triangulation
-//! has an edge joining the outer walk to some hole (the triangulation is connected);
-//! branching over those edges and cutting the face along the chosen one (the edge is
-//! walked twice) reduces the number of holes by one, so the minimum over the branches
-//! is exact. Costs are compared as certified intervals, with the exact comparison of
-//! sums of square roots when two intervals overlap (ties on grids, regular polygons).
+//! leave and enter each occurrence inside its wedge. With holes, every triangulation is
+//! connected, so the hole with the fewest joining edges is joined by one of them to the
+//! outer walk or to another hole (not necessarily to the outer walk: a site can be
+//! ringed by other holes). Branching over those edges and splicing the two walks along
+//! the chosen one (the edge is walked twice) removes one hole per level, so the minimum
+//! over the branches is exact; a branch whose joining edges already outweigh the best
+//! solution found is dropped. Costs are compared as certified intervals, with the exact
+//! comparison of sums of square roots when two intervals overlap (ties on grids,
+//! regular polygons).
 
 use super::cross;
 use super::walks::in_wedge;
@@ -27,9 +30,6 @@ pub struct Face {
     /// Hole walks (face on their left) and isolated sites (walks of length one).
     pub holes: Vec<Vec<u32>>,
 }
-
-/// Limits on the branching over holes.
-pub const BRANCH_LIMIT: usize = 100_000;
 
 /// A solved face: its added edges (diagonals and cut edges) and their total length.
 pub struct Solution {
@@ -66,97 +66,164 @@ pub fn cmp_edge_sets(points: &[Point2], a: &[[u32; 2]], b: &[[u32; 2]]) -> Order
     compare_root_sums(&sq(&only_a), &sq(&only_b))
 }
 
-/// Solves a face exactly. `chords` are the alive edges usable inside it.
-pub fn solve(
-    points: &[Point2],
-    face: &Face,
-    chords: &HashSet<[u32; 2]>,
-    budget: &mut usize,
-) -> Option<Solution> {
-    solve_cut(
-        points,
+/// Solves a face exactly. `chords` are the alive edges usable inside it. `None` when
+/// the face has no triangulation with them.
+///
+/// Exponential in the number of holes in the worst case (one branch per joining edge
+/// and hole); the faces the LMT-skeleton leaves have at most one hole in practice.
+pub fn solve(points: &[Point2], face: &Face, chords: &HashSet<[u32; 2]>) -> Option<Solution> {
+    let mut search = Search { points, best: None };
+    let mut cuts = Vec::new();
+    search.branch(
         face.outer.clone(),
         face.holes.clone(),
-        &[],
+        &mut cuts,
+        Interval::ZERO,
         chords,
-        budget,
-    )
+    );
+    search.best
 }
 
-fn solve_cut(
-    points: &[Point2],
-    outer: Vec<u32>,
-    holes: Vec<Vec<u32>>,
-    cuts: &[[u32; 2]],
-    chords: &HashSet<[u32; 2]>,
-    budget: &mut usize,
-) -> Option<Solution> {
-    if *budget == 0 {
-        return None;
-    }
-    *budget -= 1;
-    if holes.is_empty() {
-        return polygon_dp(points, &outer, cuts, &|e| chords.contains(&e));
-    }
-    // Branch on the hole with the fewest connecting edges.
-    let on_outer: HashSet<u32> = outer.iter().copied().collect();
-    let links = |h: &Vec<u32>| -> Vec<[u32; 2]> {
-        let mut v: Vec<[u32; 2]> = chords
-            .iter()
-            .copied()
-            .filter(|e| {
-                (on_outer.contains(&e[0]) && h.contains(&e[1]))
-                    || (on_outer.contains(&e[1]) && h.contains(&e[0]))
-            })
-            .filter(|e| !cuts.iter().any(|c| crosses(points, c, e)))
-            .collect();
-        v.sort_unstable();
-        v
-    };
-    let (hi, options) = holes
-        .iter()
-        .enumerate()
-        .map(|(i, h)| (i, links(h)))
-        .min_by_key(|(_, l)| l.len())
-        .expect("holes");
-    let mut best: Option<Solution> = None;
-    for e in options {
-        let (w, h) = if on_outer.contains(&e[0]) && holes[hi].contains(&e[1]) {
-            (e[0], e[1])
-        } else {
-            (e[1], e[0])
-        };
-        let Some(walk) = splice(points, &outer, &holes[hi], w, h) else {
-            continue;
-        };
-        let mut rest = holes.clone();
-        rest.remove(hi);
-        let mut c = cuts.to_vec();
-        c.push(e);
-        let mut chords2 = chords.clone();
-        chords2.remove(&e);
-        let Some(mut sol) = solve_cut(points, walk, rest, &c, &chords2, budget) else {
-            if *budget == 0 {
-                return None;
+/// Branch and bound over the edges that join holes to the rest of the face.
+struct Search<'a> {
+    points: &'a [Point2],
+    /// The lightest complete solution so far (cut edges included).
+    best: Option<Solution>,
+}
+
+impl Search<'_> {
+    /// Every triangulation of the face is connected, so the hole with the fewest
+    /// joining edges is joined, by one of them, to the outer walk or to another hole.
+    /// Branching over those edges and splicing the two walks along the chosen one
+    /// removes one hole per level, so every triangulation is reached. `spent` is the
+    /// length of `cuts`; a branch already heavier than the best solution is dropped.
+    fn branch(
+        &mut self,
+        outer: Vec<u32>,
+        holes: Vec<Vec<u32>>,
+        cuts: &mut Vec<[u32; 2]>,
+        spent: Interval,
+        chords: &HashSet<[u32; 2]>,
+    ) {
+        if self.heavier(spent) {
+            return;
+        }
+        if holes.is_empty() {
+            if let Some(sol) = polygon_dp(self.points, &outer, cuts, &|e| chords.contains(&e)) {
+                let mut edges = sol.edges;
+                edges.extend_from_slice(cuts);
+                self.offer(Solution {
+                    edges,
+                    weight: sol.weight.plus(spent),
+                });
             }
-            continue;
+            return;
+        }
+        let (hi, mut options) = (0..holes.len())
+            .map(|i| (i, self.joins(&outer, &holes, i, cuts, chords)))
+            .min_by_key(|(_, o)| o.len())
+            .expect("holes");
+        // Short joins first: a light solution early prunes more.
+        let points = self.points;
+        let len = |e: &Join| {
+            let (a, b) = (&points[e.from as usize], &points[e.to as usize]);
+            (a[0] - b[0]).hypot(a[1] - b[1])
         };
-        sol.edges.push(e);
-        sol.weight = sol.weight.plus(Interval::length(
-            &points[e[0] as usize],
-            &points[e[1] as usize],
-        ));
-        best = Some(match best {
-            None => sol,
-            Some(b) => match sol.weight.certain_cmp(b.weight) {
-                Some(Ordering::Less) => sol,
-                Some(_) => b,
-                None if cmp_edge_sets(points, &sol.edges, &b.edges) == Ordering::Less => sol,
-                None => b,
-            },
-        });
+        options.sort_by(|a, b| len(a).total_cmp(&len(b)));
+        for j in options {
+            let mut rest = holes.clone();
+            let hole = rest.remove(hi);
+            let walk = |target: &[u32]| splice(points, target, &hole, j.to, j.from);
+            let outer2 = match j.target {
+                None => walk(&outer),
+                Some(t) => {
+                    let t = t - usize::from(t > hi);
+                    let Some(merged) = walk(&rest[t]) else {
+                        continue;
+                    };
+                    rest[t] = merged;
+                    Some(outer.clone())
+                }
+            };
+            let Some(outer2) = outer2 else {
+                continue;
+            };
+            let e = key(j.from, j.to);
+            let mut chords2 = chords.clone();
+            chords2.remove(&e);
+            cuts.push(e);
+            let spent2 = spent.plus(Interval::length(
+                &points[e[0] as usize],
+                &points[e[1] as usize],
+            ));
+            self.branch(outer2, rest, cuts, spent2, &chords2);
+            cuts.pop();
+        }
     }
-    best
+
+    /// The usable edges from hole `i` to the outer walk (`target` `None`) or to another
+    /// hole, crossing no cut.
+    fn joins(
+        &self,
+        outer: &[u32],
+        holes: &[Vec<u32>],
+        i: usize,
+        cuts: &[[u32; 2]],
+        chords: &HashSet<[u32; 2]>,
+    ) -> Vec<Join> {
+        let mut out = Vec::new();
+        let targets = std::iter::once((None, outer)).chain(
+            (0..holes.len())
+                .filter(|&t| t != i)
+                .map(|t| (Some(t), &holes[t][..])),
+        );
+        for (target, walk) in targets {
+            for &from in dedup(&holes[i]).iter() {
+                for &to in dedup(walk).iter() {
+                    let e = key(from, to);
+                    if chords.contains(&e) && !cuts.iter().any(|c| crosses(self.points, c, &e)) {
+                        out.push(Join { from, to, target });
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// True when `w` is certainly heavier than the best solution so far.
+    fn heavier(&self, w: Interval) -> bool {
+        (self.best.as_ref()).is_some_and(|b| w.certain_cmp(b.weight) == Some(Ordering::Greater))
+    }
+
+    /// Keeps `sol` if it is lighter than the best so far (exactly).
+    fn offer(&mut self, sol: Solution) {
+        let better = match &self.best {
+            None => true,
+            Some(b) => match sol.weight.certain_cmp(b.weight) {
+                Some(o) => o == Ordering::Less,
+                None => cmp_edge_sets(self.points, &sol.edges, &b.edges) == Ordering::Less,
+            },
+        };
+        if better {
+            self.best = Some(sol);
+        }
+    }
+}
+
+/// An edge from a hole site `from` to a site `to` of the outer walk (`target` `None`)
+/// or of another hole.
+struct Join {
+    from: u32,
+    to: u32,
+    target: Option<usize>,
+}
+
+/// The distinct sites of a walk.
+fn dedup(walk: &[u32]) -> Vec<u32> {
+    let mut v = walk.to_vec();
+    v.sort_unstable();
+    v.dedup();
+    v
 }
 
 fn crosses(points: &[Point2], a: &[u32; 2], b: &[u32; 2]) -> bool {
@@ -168,27 +235,32 @@ fn crosses(points: &[Point2], a: &[u32; 2], b: &[u32; 2]) -> bool {
         && cross(p(a[0]), p(a[1]), p(b[0]), p(b[1]))
 }
 
-/// The outer walk with the hole spliced in along `w–h`.
-fn splice(points: &[Point2], outer: &[u32], hole: &[u32], w: u32, h: u32) -> Option<Vec<u32>> {
-    let m = outer.len();
-    let i = (0..m).find(|&i| {
-        outer[i] == w && in_wedge(points, w, outer[(i + 1) % m], outer[(i + m - 1) % m], h)
-    })?;
-    let k = hole.len();
-    let j = if k == 1 {
-        0
-    } else {
-        (0..k).find(|&j| {
-            hole[j] == h && in_wedge(points, h, hole[(j + 1) % k], hole[(j + k - 1) % k], w)
-        })?
+/// The walk `target` (the outer walk or a hole) with `hole` spliced in along the edge
+/// `w–h` (`w` on `target`, `h` on `hole`): the edge is walked once each way, at the
+/// occurrences of `w` and `h` whose wedges hold it. `None` if the edge leaves no
+/// occurrence inside its wedge.
+fn splice(points: &[Point2], target: &[u32], hole: &[u32], w: u32, h: u32) -> Option<Vec<u32>> {
+    // The occurrence of `v` in `walk` whose wedge (face side) holds the direction to `d`.
+    let at = |walk: &[u32], v: u32, d: u32| -> Option<usize> {
+        let k = walk.len();
+        if k == 1 {
+            return Some(0);
+        }
+        (0..k).find(|&i| {
+            walk[i] == v && in_wedge(points, v, walk[(i + 1) % k], walk[(i + k - 1) % k], d)
+        })
     };
-    let mut out: Vec<u32> = outer[..=i].to_vec();
+    let (i, j) = (at(target, w, h)?, at(hole, h, w)?);
+    let k = hole.len();
+    let mut out: Vec<u32> = target[..=i].to_vec();
     out.extend((0..k).map(|t| hole[(j + t) % k]));
     if k > 1 {
         out.push(h);
     }
-    out.push(w);
-    out.extend_from_slice(&outer[i + 1..]);
+    if target.len() > 1 {
+        out.push(w);
+    }
+    out.extend_from_slice(&target[i + 1..]);
     Some(out)
 }
 
@@ -449,70 +521,127 @@ mod tests {
     use crate::geom::Hull2;
     use crate::rng::Rng;
 
-    /// A convex polygon with isolated interior sites as holes, solved by hole branching
-    /// directly, against the full pipeline (itself checked against exhaustive search).
+    /// The face of a convex polygon whose interior sites are holes: isolated sites, or
+    /// with `pair`, the first two joined by a fixed edge (a hole walked both ways) when
+    /// no site blocks it. Every other segment through no site and across no fixed edge
+    /// is usable. Returns the optimum of the face stage and the fixed edges.
+    fn solve_face(pts: &[Point2], pair: bool) -> Option<[Vec<[u32; 2]>; 2]> {
+        let hull = Hull2::new(pts);
+        if hull.vertices.len() < 3
+            || hull.on_boundary.iter().filter(|&&b| b).count() != hull.vertices.len()
+        {
+            return None;
+        }
+        let h = hull.vertices.len();
+        let mut fixed: Vec<[u32; 2]> = (0..h)
+            .map(|i| key(hull.vertices[i], hull.vertices[(i + 1) % h]))
+            .collect();
+        let n = pts.len() as u32;
+        let inner: Vec<u32> = (0..n).filter(|&v| !hull.on_boundary[v as usize]).collect();
+        let blocked = crate::planar::blocked_pairs(pts);
+        let mut holes: Vec<Vec<u32>> = inner.iter().map(|&v| vec![v]).collect();
+        if pair && inner.len() >= 2 && !blocked.contains(&key(inner[0], inner[1])) {
+            fixed.push(key(inner[0], inner[1]));
+            holes.drain(..2);
+            holes.push(vec![inner[0], inner[1]]);
+        }
+        let chords: HashSet<[u32; 2]> = (0..n)
+            .flat_map(|a| (a + 1..n).map(move |b| [a, b]))
+            .filter(|e| !fixed.contains(e) && !blocked.contains(e))
+            .filter(|e| !fixed.iter().any(|f| crosses(pts, f, e)))
+            .collect();
+        let face = Face {
+            outer: hull.vertices.clone(),
+            holes,
+        };
+        let sol = solve(pts, &face, &chords).expect("a triangulation exists");
+        let mut edges = sol.edges;
+        edges.extend(&fixed);
+        edges.sort_unstable();
+        Some([edges, fixed])
+    }
+
+    /// The lightest triangulation containing `fixed`, by exhaustive search.
+    fn lightest(pts: &[Point2], fixed: &[[u32; 2]]) -> Vec<[u32; 2]> {
+        let all = crate::planar::triangulations(pts);
+        let with = all
+            .into_iter()
+            .filter(|t| fixed.iter().all(|f| t.contains(f)));
+        with.reduce(|best, t| {
+            if cmp_edge_sets(pts, &t, &best) == Ordering::Less {
+                t
+            } else {
+                best
+            }
+        })
+        .expect("a triangulation with the fixed edges")
+    }
+
+    /// Faces with up to four holes against exhaustive search, including sites that an
+    /// optimum joins only to other holes (a ring around a centre site).
     #[test]
-    fn holes_are_solved_exactly_by_branching() {
+    fn faces_with_holes_match_exhaustive_search() {
         let mut rng = Rng::new(21);
-        let mut with_two_holes = 0;
-        for _ in 0..150 {
-            let m = 5 + rng.below(4);
+        let mut cases: Vec<Vec<Point2>> = Vec::new();
+        for _ in 0..120 {
+            let m = 4 + rng.below(4);
             let mut pts: Vec<Point2> = (0..m)
                 .map(|i| {
                     let a = std::f64::consts::TAU * (i as f64 + 0.3 * rng.unit()) / m as f64;
                     [(8.0 * a.cos()).round(), (8.0 * a.sin()).round()]
                 })
                 .collect();
-            for _ in 0..1 + rng.below(3) {
+            for _ in 0..1 + rng.below(4) {
                 pts.push([rng.below(7) as f64 - 3.0, rng.below(7) as f64 - 3.0]);
             }
+            cases.push(pts);
+        }
+        // A centre joined to a ring of three: no edge from the centre leaves the ring.
+        let ring = vec![
+            [10.0, 0.0],
+            [0.0, 10.0],
+            [-10.0, 0.0],
+            [0.0, -10.0],
+            [0.0, 0.0],
+            [1.0, 0.0],
+            [-1.0, 1.0],
+            [-1.0, -1.0],
+        ];
+        cases.push(ring.clone());
+        cases.push(ring);
+        // The same with the centre's segments to three hull sites blocked by the ring:
+        // its one edge to the hull crosses the ring.
+        cases.push(vec![
+            [10.0, 0.0],
+            [-5.0, 10.0],
+            [-5.0, -10.0],
+            [-9.0, 0.0],
+            [0.0, 0.0],
+            [2.0, 0.0],
+            [-1.0, 2.0],
+            [-1.0, -2.0],
+        ]);
+        let (mut with_two_holes, mut with_a_walk) = (0, 0);
+        for (i, mut pts) in cases.into_iter().enumerate() {
             pts.sort_by(|a, b| a.partial_cmp(b).unwrap());
             pts.dedup();
-            let hull = Hull2::new(&pts);
-            if hull.vertices.len() < 3
-                || hull.on_boundary.iter().filter(|&&b| b).count() != hull.vertices.len()
-            {
+            let Some([edges, fixed]) = solve_face(&pts, i % 2 == 1) else {
                 continue;
-            }
-            let inner: Vec<u32> = (0..pts.len() as u32)
-                .filter(|&i| !hull.on_boundary[i as usize])
-                .collect();
-            if inner.is_empty() {
-                continue;
-            }
-            let n = pts.len() as u32;
-            let hull_set: HashSet<[u32; 2]> = (0..hull.vertices.len())
-                .map(|i| {
-                    key(
-                        hull.vertices[i],
-                        hull.vertices[(i + 1) % hull.vertices.len()],
-                    )
-                })
-                .collect();
-            let blocked = crate::planar::blocked_pairs(&pts);
-            let chords: HashSet<[u32; 2]> = (0..n)
-                .flat_map(|a| (a + 1..n).map(move |b| [a, b]))
-                .filter(|e| !hull_set.contains(e) && !blocked.contains(e))
-                .collect();
-            let face = Face {
-                outer: hull.vertices.clone(),
-                holes: inner.iter().map(|&v| vec![v]).collect(),
             };
-            let mut budget = BRANCH_LIMIT;
-            let sol = solve(&pts, &face, &chords, &mut budget).expect("a triangulation exists");
-            let mut edges: Vec<[u32; 2]> = sol.edges.clone();
-            edges.extend(hull_set.iter().copied());
-            let best = crate::planar::mwt(&pts).unwrap();
             assert_eq!(
-                cmp_edge_sets(&pts, &edges, &best.edges),
+                cmp_edge_sets(&pts, &edges, &lightest(&pts, &fixed)),
                 Ordering::Equal,
-                "{pts:?}"
+                "{pts:?} fixed {fixed:?}"
             );
-            edges.sort_unstable();
-            edges.dedup();
-            assert_eq!(edges.len(), 3 * pts.len() - 3 - hull.vertices.len());
-            with_two_holes += usize::from(inner.len() >= 2);
+            let hull = Hull2::new(&pts).vertices.len();
+            let mut distinct = edges.clone();
+            distinct.dedup();
+            assert_eq!(distinct.len(), edges.len(), "{pts:?}");
+            assert_eq!(edges.len(), 3 * pts.len() - 3 - hull, "{pts:?}");
+            let inner = pts.len() - hull;
+            with_two_holes += usize::from(inner >= 3 || (inner == 2 && fixed.len() == hull));
+            with_a_walk += usize::from(inner >= 3 && fixed.len() > hull);
         }
-        assert!(with_two_holes > 20);
+        assert!(with_two_holes > 40 && with_a_walk > 20);
     }
 }

@@ -195,15 +195,12 @@ fn solve(points: &[Point2], opts: &MwtOptions, global: &[u32]) -> Result<Mwt, Pl
             .unwrap_or(0);
         let solved: Vec<Option<Solution>> = problems
             .par_iter()
-            .map(|(face, chords)| {
-                let mut budget = faces::BRANCH_LIMIT;
-                faces::solve(points, face, chords, &mut budget)
-            })
+            .map(|(face, chords)| faces::solve(points, face, chords))
             .collect();
         for s in solved {
             let s = s.ok_or_else(|| {
                 PlanarError::new(
-                    "the exact stage gave up on a face with too many holes (branch limit)",
+                    "the exact stage found no triangulation of a face with the allowed edges",
                 )
             })?;
             edges.extend(s.edges);
