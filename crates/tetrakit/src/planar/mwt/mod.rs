@@ -91,12 +91,15 @@ pub fn mwt(points: &[Point2]) -> Result<Mwt, PlanarError> {
     mwt_with(points, &MwtOptions::default())
 }
 
-/// The total length of `edges`, certified.
+/// The total length of `edges`, certified. The same edges in the same order give the
+/// same interval to the bit: fixed blocks are summed in parallel, then in order.
 pub fn weight_of(points: &[Point2], edges: &[[u32; 2]]) -> Interval {
-    edges
-        .par_iter()
-        .map(|e| Interval::length(&points[e[0] as usize], &points[e[1] as usize]))
-        .reduce(|| Interval::ZERO, Interval::plus)
+    let length = |e: &[u32; 2]| Interval::length(&points[e[0] as usize], &points[e[1] as usize]);
+    let blocks: Vec<Interval> = edges
+        .par_chunks(4096)
+        .map(|b| b.iter().map(length).fold(Interval::ZERO, Interval::plus))
+        .collect();
+    blocks.into_iter().fold(Interval::ZERO, Interval::plus)
 }
 
 /// [`mwt`] with constraints.
@@ -349,6 +352,23 @@ fn undecided_faces(
 mod tests {
     use super::*;
     use crate::planar::{Distribution, points2d};
+
+    /// The weight interval does not depend on how the work was split between threads.
+    #[test]
+    fn weight_is_the_same_on_any_number_of_threads() {
+        let pts = points2d(Distribution::Uniform, 3000, 4);
+        let mut rng = crate::rng::Rng::new(4);
+        let edges: Vec<[u32; 2]> = (0..200_000)
+            .map(|_| [rng.below(3000) as u32, rng.below(3000) as u32])
+            .collect();
+        let on = |threads: usize| {
+            let pool = rayon::ThreadPoolBuilder::new().num_threads(threads);
+            let w = pool.build().unwrap().install(|| weight_of(&pts, &edges));
+            [w.lo.to_bits(), w.hi.to_bits()]
+        };
+        assert_eq!(on(1), on(3));
+        assert_eq!(on(1), on(8));
+    }
 
     /// The solver works on sites in grid order; its answer must be in the caller's.
     #[test]
