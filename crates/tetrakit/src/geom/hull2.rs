@@ -22,6 +22,10 @@ pub struct Hull2 {
 
 impl Hull2 {
     /// Computes the hull of `points` exactly.
+    ///
+    /// `O(n log n)`: a point is on the boundary exactly when it is on a vertical side or
+    /// on the line of the lower or upper chain edge below or above it, found by binary
+    /// search.
     pub fn new(points: &[Point2]) -> Hull2 {
         let mut idx: Vec<u32> = (0..points.len() as u32).collect();
         let p = |i: u32| &points[i as usize];
@@ -31,42 +35,44 @@ impl Hull2 {
                 .then(p(a)[1].total_cmp(&p(b)[1]))
         });
         idx.dedup_by(|a, b| p(*a) == p(*b));
-        let mut hull: Vec<u32> = Vec::new();
-        for pass in 0..2 {
-            let start = hull.len();
-            let seq: Box<dyn Iterator<Item = &u32>> = if pass == 0 {
-                Box::new(idx.iter())
-            } else {
-                Box::new(idx.iter().rev())
-            };
-            for &i in seq {
-                while hull.len() >= start + 2
-                    && orient2d(p(hull[hull.len() - 2]), p(hull[hull.len() - 1]), p(i)) <= 0
-                {
-                    hull.pop();
+        // Counter-clockwise monotone chains, collinear points dropped: the lower from the
+        // first point to the last, the upper back.
+        let chain = |seq: &mut dyn Iterator<Item = u32>| {
+            let mut c: Vec<u32> = Vec::new();
+            for i in seq {
+                while c.len() >= 2 && orient2d(p(c[c.len() - 2]), p(c[c.len() - 1]), p(i)) <= 0 {
+                    c.pop();
                 }
-                hull.push(i);
+                c.push(i);
             }
-            hull.pop();
-        }
+            c
+        };
+        let lower = chain(&mut idx.iter().copied());
+        let mut upper = chain(&mut idx.iter().rev().copied());
+        let mut vertices: Vec<u32> = lower[..lower.len().saturating_sub(1)].to_vec();
+        vertices.extend_from_slice(&upper[..upper.len().saturating_sub(1)]);
         if idx.len() == 1 {
-            hull = idx.clone();
+            vertices = idx.clone();
         }
-        let on_boundary = points
-            .iter()
-            .map(|x| {
-                let k = hull.len();
-                if k < 3 {
-                    return true;
-                }
-                (0..k).any(|i| {
-                    let (a, b) = (p(hull[i]), p(hull[(i + 1) % k]));
-                    orient2d(a, b, x) == 0
-                })
-            })
-            .collect();
+        upper.reverse();
+        let on_boundary = if vertices.len() < 3 {
+            vec![true; points.len()]
+        } else {
+            let (lo, hi) = (p(idx[0])[0], p(idx[idx.len() - 1])[0]);
+            // On the line of the chain edge spanning x's abscissa (lo < x < hi).
+            let on_chain = |c: &[u32], x: &Point2| {
+                let k = c
+                    .partition_point(|&v| p(v)[0] <= x[0])
+                    .clamp(1, c.len() - 1);
+                orient2d(p(c[k - 1]), p(c[k]), x) == 0
+            };
+            let vertical_side = |x: &Point2| x[0] == lo || x[0] == hi;
+            (points.iter())
+                .map(|x| vertical_side(x) || on_chain(&lower, x) || on_chain(&upper, x))
+                .collect()
+        };
         Hull2 {
-            vertices: hull,
+            vertices,
             on_boundary,
         }
     }
@@ -137,5 +143,35 @@ mod tests {
         assert_eq!(h.on_boundary, [true, true, true, true, true, false]);
         let h = Hull2::new(&[[0.0, 0.0], [1.0, 0.0], [3.0, 0.0]]);
         assert_eq!(h.vertices.len(), 2);
+    }
+
+    /// Boundary membership against its definition (on the line of a hull edge, which
+    /// is a supporting line), on grids full of collinear and duplicate points; every
+    /// point inside, every vertex a strict left turn.
+    #[test]
+    fn boundary_matches_the_edge_lines() {
+        let mut rng = crate::rng::Rng::new(5);
+        for round in 0..3000 {
+            let side = 2 + round % 6;
+            let pts: Vec<Point2> = (0..1 + rng.below(12))
+                .map(|_| [rng.below(side) as f64, rng.below(side) as f64])
+                .collect();
+            let h = Hull2::new(&pts);
+            let k = h.vertices.len();
+            let edge = |j: usize| {
+                let (a, b) = (h.vertices[j], h.vertices[(j + 1) % k]);
+                (&pts[a as usize], &pts[b as usize])
+            };
+            for (i, x) in pts.iter().enumerate() {
+                let on_line = (0..k).any(|j| orient2d(edge(j).0, edge(j).1, x) == 0);
+                assert_eq!(h.on_boundary[i], k < 3 || on_line, "{pts:?} point {i}");
+                let inside = (0..k).all(|j| orient2d(edge(j).0, edge(j).1, x) >= 0);
+                assert!(k < 3 || inside, "{pts:?} point {i}");
+            }
+            for j in (0..k).filter(|_| k >= 3) {
+                let c = &pts[h.vertices[(j + 2) % k] as usize];
+                assert_eq!(orient2d(edge(j).0, edge(j).1, c), 1, "{pts:?}");
+            }
+        }
     }
 }

@@ -38,6 +38,9 @@ fn normal(rng: &mut Rng) -> f64 {
 /// ```
 pub fn points2d(dist: Distribution, n: usize, seed: u64) -> Vec<Point2> {
     let mut rng = Rng::new(seed);
+    if dist == Distribution::Convex {
+        return convex(&mut rng, n);
+    }
     let mut seen = HashSet::new();
     let mut out = Vec::with_capacity(n);
     let side = (n as f64).sqrt().ceil() as usize;
@@ -54,10 +57,7 @@ pub fn points2d(dist: Distribution, n: usize, seed: u64) -> Vec<Point2> {
                     c[1] + 0.01 * normal(&mut rng),
                 ]
             }
-            Distribution::Convex => {
-                let a = std::f64::consts::TAU * rng.unit();
-                [a.cos(), a.sin()]
-            }
+            Distribution::Convex => unreachable!("drawn by convex()"),
             Distribution::Regular => {
                 let a = std::f64::consts::TAU * i as f64 / n as f64;
                 [a.cos(), a.sin()]
@@ -68,18 +68,66 @@ pub fn points2d(dist: Distribution, n: usize, seed: u64) -> Vec<Point2> {
         if seen.insert((p[0].to_bits(), p[1].to_bits())) {
             out.push(p);
         }
-        if dist == Distribution::Convex && out.len() == n {
-            let hull = Hull2::new(&out);
-            let keep: HashSet<u32> = hull.vertices.iter().copied().collect();
-            let mut k = 0;
-            out.retain(|_| {
-                k += 1;
-                keep.contains(&(k - 1))
-            });
-            if i > 20 * n {
-                break;
+    }
+    out
+}
+
+/// Up to `n` points in strictly convex position: random angles on the unit circle, of
+/// which the hull vertices are kept (rounding puts a few inside), drawn in rounds with
+/// a margin until `n` are kept, then the first `n` (a subset of points in convex
+/// position is in convex position). One hull per round, so `O(n log n)`.
+fn convex(rng: &mut Rng, n: usize) -> Vec<Point2> {
+    let mut out: Vec<Point2> = Vec::with_capacity(n);
+    let mut seen = HashSet::new();
+    let mut drawn = 0;
+    while out.len() < n && drawn <= 20 * n {
+        let want = n - out.len();
+        for _ in 0..want + want / 8 + 16 {
+            let a = std::f64::consts::TAU * rng.unit();
+            let p = [a.cos(), a.sin()];
+            if seen.insert((p[0].to_bits(), p[1].to_bits())) {
+                out.push(p);
+            }
+        }
+        drawn += want + want / 8 + 16;
+        let mut keep = vec![false; out.len()];
+        for &v in &Hull2::new(&out).vertices {
+            keep[v as usize] = true;
+        }
+        let mut k = 0;
+        out.retain(|_| {
+            k += 1;
+            keep[k - 1]
+        });
+    }
+    out.truncate(n);
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_distribution_gives_n_distinct_points() {
+        use Distribution::*;
+        for dist in [Uniform, Gaussian, Clustered, Convex, Regular, Grid] {
+            for n in [0, 1, 5, 3000] {
+                let pts = points2d(dist, n, 7);
+                assert_eq!(pts.len(), n, "{dist:?}");
+                let distinct: HashSet<_> = pts.iter().map(|p| p.map(f64::to_bits)).collect();
+                assert_eq!(distinct.len(), n, "{dist:?}");
             }
         }
     }
-    out
+
+    #[test]
+    fn convex_points_are_all_hull_vertices() {
+        for (n, seed) in [(3, 1), (50, 2), (20_000, 3)] {
+            let pts = points2d(Distribution::Convex, n, seed);
+            let hull = Hull2::new(&pts);
+            assert_eq!(hull.vertices.len(), n);
+            assert!(hull.on_boundary.iter().all(|&b| b));
+        }
+    }
 }
