@@ -87,7 +87,17 @@ pub fn mwt(path: &Path, as_json: bool, output: Option<&Path>) -> u8 {
     };
     let parsed = start.elapsed().as_secs_f64();
     let t = Instant::now();
-    let m = match planar::mwt(&points) {
+    let spinner = crate::run::stage_spinner(points.len());
+    let stage = |s: planar::MwtStage| {
+        if let Some(b) = &spinner {
+            b.set_message(format!("mwt: {s}"));
+        }
+    };
+    let m = planar::mwt_with_progress(&points, &planar::MwtOptions::default(), &stage);
+    if let Some(b) = spinner {
+        b.finish_and_clear();
+    }
+    let m = match m {
         Ok(m) => m,
         Err(e) => return fail(e),
     };

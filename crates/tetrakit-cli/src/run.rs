@@ -26,6 +26,21 @@ fn progress_bar(len: u64, what: &str) -> Option<indicatif::ProgressBar> {
     Some(bar)
 }
 
+/// A spinner on stderr naming the current stage of long work (at least `50_000` items),
+/// only when stderr is a terminal.
+pub fn stage_spinner(len: usize) -> Option<indicatif::ProgressBar> {
+    use std::io::IsTerminal;
+    if len < 50_000 || !std::io::stderr().is_terminal() {
+        return None;
+    }
+    let bar = indicatif::ProgressBar::new_spinner();
+    if let Ok(style) = indicatif::ProgressStyle::with_template("{spinner} {msg} ({elapsed})") {
+        bar.set_style(style);
+    }
+    bar.enable_steady_tick(std::time::Duration::from_millis(120));
+    Some(bar)
+}
+
 /// Prints one line for a bad input or usage and returns exit code 2.
 pub fn fail(msg: impl std::fmt::Display) -> u8 {
     eprintln!("tetrakit: {msg}");

@@ -43,6 +43,30 @@ pub struct MwtOptions {
     pub forbidden: Vec<[u32; 2]>,
 }
 
+/// The stages of [`mwt_with_progress`], reported as each one starts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MwtStage {
+    /// The candidate filter (diamond test).
+    Candidates,
+    /// The LMT-skeleton.
+    Skeleton,
+    /// The exact stage on the faces left.
+    Faces,
+    /// The check that the answer triangulates the hull.
+    Certify,
+}
+
+impl std::fmt::Display for MwtStage {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            MwtStage::Candidates => "candidate edges (diamond test)",
+            MwtStage::Skeleton => "LMT-skeleton",
+            MwtStage::Faces => "exact stage on the faces left",
+            MwtStage::Certify => "certifying the triangulation",
+        })
+    }
+}
+
 /// Statistics of an MWT computation.
 #[derive(Clone, Debug, Default)]
 pub struct MwtStats {
@@ -104,6 +128,24 @@ pub fn weight_of(points: &[Point2], edges: &[[u32; 2]]) -> Interval {
 
 /// [`mwt`] with constraints.
 pub fn mwt_with(points: &[Point2], opts: &MwtOptions) -> Result<Mwt, PlanarError> {
+    mwt_with_progress(points, opts, &|_| {})
+}
+
+/// [`mwt_with`], calling `progress` as each stage starts.
+///
+/// ```
+/// use tetrakit::planar::{MwtOptions, MwtStage, mwt_with_progress};
+/// let pts = [[0.0, 0.0], [4.0, 0.0], [4.0, 3.0], [0.0, 3.0], [1.0, 1.5]];
+/// let seen = std::sync::Mutex::new(Vec::new());
+/// let t = mwt_with_progress(&pts, &MwtOptions::default(), &|s| seen.lock().unwrap().push(s));
+/// assert_eq!(t.unwrap().edges.len(), 8);
+/// assert_eq!(seen.into_inner().unwrap()[0], MwtStage::Candidates);
+/// ```
+pub fn mwt_with_progress(
+    points: &[Point2],
+    opts: &MwtOptions,
+    progress: &dyn Fn(MwtStage),
+) -> Result<Mwt, PlanarError> {
     super::check_sites(points)?;
     let n = points.len() as u32;
     let constraints = opts.forced.iter().chain(&opts.forbidden);
@@ -136,7 +178,7 @@ pub fn mwt_with(points: &[Point2], opts: &MwtOptions) -> Result<Mwt, PlanarError
         forced: relabel(&opts.forced, &rank),
         forbidden: relabel(&opts.forbidden, &rank),
     };
-    let m = solve(&local, &local_opts, &order)?;
+    let m = solve(&local, &local_opts, &order, progress)?;
     Ok(Mwt {
         edges: relabel(&m.edges, &order),
         triangles: (m.triangles.iter())
@@ -149,12 +191,18 @@ pub fn mwt_with(points: &[Point2], opts: &MwtOptions) -> Result<Mwt, PlanarError
 }
 
 /// [`mwt_with`] on checked sites; `global` maps site indices to the caller's (messages).
-fn solve(points: &[Point2], opts: &MwtOptions, global: &[u32]) -> Result<Mwt, PlanarError> {
+fn solve(
+    points: &[Point2],
+    opts: &MwtOptions,
+    global: &[u32],
+    progress: &dyn Fn(MwtStage),
+) -> Result<Mwt, PlanarError> {
     let hull = Hull2::new(points);
     if hull.vertices.len() < 3 {
         return Ok(collinear(points));
     }
     let mut stats = MwtStats::default();
+    progress(MwtStage::Candidates);
     let t0 = Instant::now();
     let constrained = !opts.forced.is_empty() || !opts.forbidden.is_empty();
     let sorted = |v: &[[u32; 2]]| -> Vec<[u32; 2]> {
@@ -179,11 +227,13 @@ fn solve(points: &[Point2], opts: &MwtOptions, global: &[u32]) -> Result<Mwt, Pl
     }
     stats.candidates = cands.len();
     stats.seconds[0] = t0.elapsed().as_secs_f64();
+    progress(MwtStage::Skeleton);
     let t1 = Instant::now();
     let (sk, lstats) = lmt::lmt_skeleton(points, cands, &forced, &forbidden);
     stats.skeleton_edges = lstats.certain;
     stats.undecided_edges = lstats.undecided;
     stats.seconds[1] = t1.elapsed().as_secs_f64();
+    progress(MwtStage::Faces);
     let t2 = Instant::now();
     let (certain, alive) = (sk.with_status(CERTAIN), sk.with_status(ALIVE));
     let mut edges = certain.clone();
@@ -212,6 +262,7 @@ fn solve(points: &[Point2], opts: &MwtOptions, global: &[u32]) -> Result<Mwt, Pl
     stats.seconds[2] = t2.elapsed().as_secs_f64();
     edges.par_sort_unstable();
     edges.dedup();
+    progress(MwtStage::Certify);
     let triangles = certified_triangles(points, &hull, &edges)?;
     let weight = weight_of(points, &edges);
     Ok(Mwt {
