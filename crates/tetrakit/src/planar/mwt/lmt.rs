@@ -406,6 +406,58 @@ mod tests {
         out
     }
 
+    /// The candidate graph of `pts`, every edge alive.
+    fn all_alive(pts: &[Point2]) -> Skeleton {
+        let cands = super::super::candidates::search(pts);
+        let (start, adj) = adjacency(pts, &cands);
+        let pos = positions(&start, &adj, cands.len());
+        Skeleton {
+            status: vec![ALIVE; cands.len()],
+            edges: cands,
+            start,
+            adj,
+            pos,
+            forbidden: Default::default(),
+        }
+    }
+
+    /// The rounds that examine only the edges whose certificate lost an edge reach the
+    /// same fixpoint as plain rounds over every alive edge.
+    #[test]
+    fn incremental_rounds_reach_the_plain_fixpoint() {
+        for (dist, n, seed) in [
+            (Distribution::Uniform, 4000, 1),
+            (Distribution::Clustered, 4000, 2),
+            (Distribution::Grid, 900, 3),
+        ] {
+            let pts = points2d(dist, n, seed);
+            let mut plain = all_alive(&pts);
+            for e in hull_edges(&pts) {
+                if let Ok(id) = plain.edges.binary_search(&e) {
+                    plain.status[id] = CERTAIN;
+                }
+            }
+            let status: Vec<AtomicU8> = plain.status.iter().map(|&s| AtomicU8::new(s)).collect();
+            let mut bufs = Buffers::default();
+            loop {
+                let dead: Vec<u32> = (0..plain.edges.len() as u32)
+                    .filter(|&e| status[e as usize].load(Relaxed) == ALIVE)
+                    .filter(|&e| certificate(&pts, &plain, &status, e, &mut bufs).is_none())
+                    .collect();
+                if dead.is_empty() {
+                    break;
+                }
+                for e in dead {
+                    status[e as usize].store(IMPOSSIBLE, Relaxed);
+                }
+            }
+            let (sk, _) = lmt_skeleton(&pts, plain.edges.clone(), &[], &[]);
+            let kept = |s: &[u8]| -> Vec<bool> { s.iter().map(|&s| s != IMPOSSIBLE).collect() };
+            let plain_status: Vec<u8> = status.iter().map(|s| s.load(Relaxed)).collect();
+            assert_eq!(kept(&sk.status), kept(&plain_status), "{dist:?}");
+        }
+    }
+
     #[test]
     fn left_triangles_match_their_definition() {
         for (dist, n, seed) in [
@@ -415,17 +467,7 @@ mod tests {
             (Distribution::Regular, 30, 4),
         ] {
             let pts = points2d(dist, n, seed);
-            let cands = super::super::candidates::search(&pts);
-            let (start, adj) = adjacency(&pts, &cands);
-            let pos = positions(&start, &adj, cands.len());
-            let sk = Skeleton {
-                status: vec![ALIVE; cands.len()],
-                edges: cands,
-                start,
-                adj,
-                pos,
-                forbidden: Default::default(),
-            };
+            let sk = all_alive(&pts);
             let mut rng = crate::rng::Rng::new(seed);
             let alive: Vec<bool> = (0..sk.edges.len()).map(|_| rng.unit() < 0.8).collect();
             let status: Vec<AtomicU8> = (alive.iter())
