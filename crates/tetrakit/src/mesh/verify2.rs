@@ -6,6 +6,7 @@
 use super::verify::{Problem, ProblemKind, Report};
 use crate::detect::ids;
 use crate::geom::{Hull2, Point2, orient2d};
+use rayon::prelude::*;
 
 /// Verifies that counter-clockwise triangles `tris` triangulate the convex hull of
 /// `points` with every point a vertex.
@@ -53,44 +54,22 @@ pub fn verify_triangulation(points: &[Point2], tris: &[[u32; 3]]) -> Report {
             )),
         }
     }
-    let mut directed: Vec<(u32, u32, u32)> = tris
-        .iter()
-        .enumerate()
-        .flat_map(|(i, t)| (0..3).map(move |k| (t[k], t[(k + 1) % 3], i as u32)))
-        .collect();
-    directed.sort_unstable();
-    let find = |a: u32, b: u32| {
-        directed
-            .binary_search_by(|e| (e.0, e.1).cmp(&(a, b)))
-            .is_ok()
-    };
-    let mut boundary = Vec::new();
-    for (k, &(a, b, t)) in directed.iter().enumerate() {
-        if k > 0 && (directed[k - 1].0, directed[k - 1].1) == (a, b) {
-            let u = directed[k - 1].2;
-            r.push(pb(
-                ProblemKind::SameSide,
-                vec![u, t],
-                vec![a, b],
-                format!("triangles #{u} and #{t} lie on the same side of edge (#{a}, #{b})"),
-            ));
-        } else if !find(b, a) {
-            boundary.push((a, b, t));
-        }
-    }
+    let boundary = pair_sides(tris, &mut |(a, b), [u, t]| {
+        r.push(pb(
+            ProblemKind::SameSide,
+            vec![u, t],
+            vec![a, b],
+            format!("triangles #{u} and #{t} lie on the same side of edge (#{a}, #{b})"),
+        ))
+    });
     r.boundary_faces = boundary.len();
     let hull = Hull2::new(points);
-    let h = &hull.vertices;
+    let sides_of = hull_sides(points, &hull);
     let on_hull_edge = |a: u32, b: u32| {
-        (0..h.len()).find(|&i| {
-            let (x, y) = (
-                &points[h[i] as usize],
-                &points[h[(i + 1) % h.len()] as usize],
-            );
-            orient2d(x, y, &points[a as usize]) == 0 && orient2d(x, y, &points[b as usize]) == 0
-        })
+        let [sa, sb] = [sides_of[a as usize], sides_of[b as usize]];
+        sa.into_iter().find(|&k| k != NO_SIDE && sb.contains(&k))
     };
-    let sides: Vec<Option<usize>> = boundary
+    let sides: Vec<Option<u32>> = boundary
         .iter()
         .map(|&(a, b, _)| on_hull_edge(a, b))
         .collect();
@@ -132,4 +111,109 @@ pub fn verify_triangulation(points: &[Point2], tris: &[[u32; 3]]) -> Report {
         }
     }
     r
+}
+
+/// Pairs the triangle sides: `same_side((a, b), [u, t])` for each repeat of a directed
+/// side `a → b` (triangles `u`, `t` on the same side of it), and returns the boundary
+/// sides, those whose reverse is in no triangle, as `(a, b, triangle)`.
+///
+/// One parallel sort of the sides by undirected edge, then one pass.
+fn pair_sides(
+    tris: &[[u32; 3]],
+    same_side: &mut dyn FnMut((u32, u32), [u32; 2]),
+) -> Vec<(u32, u32, u32)> {
+    // (low end, high end, walked from high to low, triangle)
+    let mut sides: Vec<(u32, u32, bool, u32)> = (tris.par_iter().enumerate())
+        .flat_map_iter(|(i, t)| {
+            (0..3).map(move |k| {
+                let (a, b) = (t[k], t[(k + 1) % 3]);
+                (a.min(b), a.max(b), a > b, i as u32)
+            })
+        })
+        .collect();
+    sides.par_sort_unstable();
+    let mut boundary = Vec::new();
+    for group in sides.chunk_by(|x, y| (x.0, x.1) == (y.0, y.1)) {
+        let split = group.partition_point(|x| !x.2);
+        let (up, down) = group.split_at(split);
+        for (dir, other) in [(up, down), (down, up)] {
+            let Some(&(lo, hi, back, t)) = dir.first() else {
+                continue;
+            };
+            let ab = if back { (hi, lo) } else { (lo, hi) };
+            if other.is_empty() {
+                boundary.push((ab.0, ab.1, t));
+            }
+            for w in dir.windows(2) {
+                same_side(ab, [w[0].3, w[1].3]);
+            }
+        }
+    }
+    boundary
+}
+
+/// Marks a point on no hull edge.
+const NO_SIDE: u32 = u32::MAX;
+
+/// For each point, the hull edges (`vertices[k] → vertices[k+1]`, as `k`) it lies on:
+/// two for a hull vertex, one for another boundary point, none inside.
+fn hull_sides(points: &[Point2], hull: &Hull2) -> Vec<[u32; 2]> {
+    let mut sides = vec![[NO_SIDE; 2]; points.len()];
+    for (k, chain) in hull.boundary_chains(points).iter().enumerate() {
+        for &v in chain {
+            let s = &mut sides[v as usize];
+            let slot = usize::from(s[0] != NO_SIDE);
+            s[slot] = k as u32;
+        }
+    }
+    sides
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::planar::{Distribution, mwt, points2d};
+
+    fn has(r: &Report, kind: ProblemKind) -> bool {
+        r.problems.iter().any(|p| p.kind == kind)
+    }
+
+    /// Minimum weight triangulations (collinear hull points on grids, cocircular
+    /// sites) pass; a repeated, a missing or a clockwise triangle is named.
+    #[test]
+    fn triangulations_pass_and_defects_are_named() {
+        use Distribution::*;
+        for dist in [Uniform, Grid, Convex, Regular, Clustered] {
+            let pts = points2d(dist, 60, 1);
+            let t = mwt(&pts).unwrap().triangles;
+            let r = verify_triangulation(&pts, &t);
+            assert!(r.is_valid(), "{dist:?}");
+            assert_eq!(
+                r.boundary_faces,
+                Hull2::new(&pts)
+                    .boundary_chains(&pts)
+                    .iter()
+                    .map(|c| c.len() - 1)
+                    .sum::<usize>()
+            );
+            let mut twice = t.clone();
+            twice.push(t[7]);
+            assert!(has(
+                &verify_triangulation(&pts, &twice),
+                ProblemKind::SameSide
+            ));
+            let mut missing = t.clone();
+            missing.remove(7);
+            assert!(has(
+                &verify_triangulation(&pts, &missing),
+                ProblemKind::BoundaryNotOnHull
+            ));
+            let mut flipped = t.clone();
+            flipped[7].swap(0, 1);
+            assert!(has(
+                &verify_triangulation(&pts, &flipped),
+                ProblemKind::Inverted
+            ));
+        }
+    }
 }
