@@ -3,6 +3,11 @@
 
 use super::predicates::{Point2, orient2d};
 
+/// Lexicographic order of points, by `x` then `y`.
+fn lex(a: &Point2, b: &Point2) -> std::cmp::Ordering {
+    a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1]))
+}
+
 /// The convex hull of a planar point set.
 ///
 /// ```
@@ -29,11 +34,7 @@ impl Hull2 {
     pub fn new(points: &[Point2]) -> Hull2 {
         let mut idx: Vec<u32> = (0..points.len() as u32).collect();
         let p = |i: u32| &points[i as usize];
-        idx.sort_by(|&a, &b| {
-            p(a)[0]
-                .total_cmp(&p(b)[0])
-                .then(p(a)[1].total_cmp(&p(b)[1]))
-        });
+        idx.sort_by(|&a, &b| lex(p(a), p(b)));
         idx.dedup_by(|a, b| p(*a) == p(*b));
         // Counter-clockwise monotone chains, collinear points dropped: the lower from the
         // first point to the last, the upper back.
@@ -90,37 +91,84 @@ impl Hull2 {
     /// assert!(h.boundary_chains(&pts).contains(&vec![0, 3, 1]));
     /// ```
     pub fn boundary_chains(&self, points: &[Point2]) -> Vec<Vec<u32>> {
+        let h = self.vertices.len();
         let mut is_vertex = vec![false; points.len()];
         for &v in &self.vertices {
             is_vertex[v as usize] = true;
         }
-        let extra: Vec<u32> = (0..points.len() as u32)
-            .filter(|&i| self.on_boundary[i as usize] && !is_vertex[i as usize])
-            .collect();
-        let h = self.vertices.len();
-        (0..h)
-            .map(|k| {
-                let (a, b) = (self.vertices[k], self.vertices[(k + 1) % h]);
-                let (pa, pb) = (&points[a as usize], &points[b as usize]);
-                let mut chain: Vec<u32> = extra
-                    .iter()
-                    .copied()
-                    .filter(|&c| orient2d(pa, pb, &points[c as usize]) == 0)
-                    .collect();
-                // Collinear points: lexicographic order is monotone along the line.
-                let lex = |x: &u32, y: &u32| {
-                    let (px, py) = (&points[*x as usize], &points[*y as usize]);
-                    px[0].total_cmp(&py[0]).then(px[1].total_cmp(&py[1]))
-                };
-                chain.sort_by(lex);
-                if lex(&a, &b).is_gt() {
-                    chain.reverse();
+        let mut chains: Vec<Vec<u32>> = vec![Vec::new(); h];
+        let at = |k: usize| &points[self.vertices[k] as usize];
+        let top = (0..h).max_by(|&a, &b| lex(at(a), at(b))).unwrap_or(0);
+        for c in (0..points.len() as u32).filter(|&c| self.on_boundary[c as usize]) {
+            if is_vertex[c as usize] {
+                continue;
+            }
+            match self.edge_holding(points, top, &points[c as usize]) {
+                Some(k) => chains[k].push(c),
+                // Few vertices, or a copy of a vertex: every edge whose line holds it.
+                None => {
+                    for (k, chain) in chains.iter_mut().enumerate() {
+                        let (a, b) = (self.vertices[k], self.vertices[(k + 1) % h]);
+                        if orient2d(
+                            &points[a as usize],
+                            &points[b as usize],
+                            &points[c as usize],
+                        ) == 0
+                        {
+                            chain.push(c);
+                        }
+                    }
                 }
-                chain.insert(0, a);
-                chain.push(b);
-                chain
-            })
-            .collect()
+            }
+        }
+        // Collinear points: lexicographic order is monotone along the line.
+        for (k, chain) in chains.iter_mut().enumerate() {
+            chain.sort_by(|&x, &y| lex(&points[x as usize], &points[y as usize]));
+            if lex(at(k), at((k + 1) % h)).is_gt() {
+                chain.reverse();
+            }
+            chain.insert(0, self.vertices[k]);
+            chain.push(self.vertices[(k + 1) % h]);
+        }
+        chains
+    }
+
+    /// The hull edge `k` (`vertices[k] → vertices[k+1]`) whose relative interior holds
+    /// `x` (`None` if none does, or with fewer than three vertices); `top` is the index
+    /// of the lexicographically largest vertex.
+    ///
+    /// `vertices` runs along the lower chain (abscissa non-decreasing) to the
+    /// lexicographically largest vertex, then back along the upper chain; a binary
+    /// search on each proposes the edge spanning `x`'s abscissa, the two vertical sides
+    /// are the other candidates, and the exact test decides.
+    fn edge_holding(&self, points: &[Point2], top: usize, x: &Point2) -> Option<usize> {
+        let h = self.vertices.len();
+        if h < 3 {
+            return None;
+        }
+        let v = |k: usize| &points[self.vertices[k % h] as usize];
+        let holds = |k: usize| {
+            let (a, b) = (v(k), v(k + 1));
+            let (s, t) = (lex(a, x), lex(x, b));
+            orient2d(a, b, x) == 0 && s.is_ne() && s == t
+        };
+        // The first index in `lo..hi` where `pred` fails (it holds on a prefix).
+        let split = |mut lo: usize, mut hi: usize, pred: &dyn Fn(usize) -> bool| {
+            while lo < hi {
+                let mid = lo + (hi - lo) / 2;
+                if pred(mid) { lo = mid + 1 } else { hi = mid }
+            }
+            lo
+        };
+        let lower = split(0, top + 1, &|k| v(k)[0] <= x[0]);
+        let upper = split(top, h + 1, &|k| v(k)[0] >= x[0]);
+        let candidates = [
+            lower.saturating_sub(1),
+            upper.saturating_sub(1).min(h - 1),
+            top.saturating_sub(1),
+            h - 1,
+        ];
+        candidates.into_iter().find(|&k| holds(k))
     }
 }
 
@@ -171,6 +219,21 @@ mod tests {
             for j in (0..k).filter(|_| k >= 3) {
                 let c = &pts[h.vertices[(j + 2) % k] as usize];
                 assert_eq!(orient2d(edge(j).0, edge(j).1, c), 1, "{pts:?}");
+            }
+            // Each chain: the points on its edge's line (copies of the ends included),
+            // ordered from one end to the other.
+            let chains = h.boundary_chains(&pts);
+            for j in 0..k {
+                let (a, b) = edge(j);
+                let d = |x: &Point2| (x[0] - a[0]).abs() + (x[1] - a[1]).abs();
+                let mut want: Vec<u32> = (0..pts.len() as u32)
+                    .filter(|&c| !h.vertices.contains(&c))
+                    .filter(|&c| orient2d(a, b, &pts[c as usize]) == 0)
+                    .collect();
+                want.sort_by(|&x, &y| d(&pts[x as usize]).total_cmp(&d(&pts[y as usize])));
+                let got = &chains[j][1..chains[j].len() - 1];
+                let at = |v: &[u32]| v.iter().map(|&c| pts[c as usize]).collect::<Vec<_>>();
+                assert_eq!(at(got), at(&want), "{pts:?} edge {j}");
             }
         }
     }
