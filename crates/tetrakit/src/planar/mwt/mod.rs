@@ -381,10 +381,13 @@ fn undecided_faces(
     for (_, (members, chords)) in groups {
         let mut outer = None;
         let mut holes = Vec::new();
+        // A face's one walk bounds it (alive edges lie in bounded faces); with several,
+        // the outer one runs counter-clockwise and the holes clockwise or flat.
+        let alone = members.len() == 1;
         for x in members {
             if x >= w {
                 holes.push(vec![x - w]);
-            } else if walk_area_sign(points, &walks[x as usize]) > 0 {
+            } else if alone || walk_area_sign(points, &walks[x as usize]) > 0 {
                 if outer.replace(walks[x as usize].clone()).is_some() {
                     return Err(PlanarError::new("internal: a face with two outer walks"));
                 }

@@ -2,6 +2,7 @@
 //! walks, and wedge tests. Shared by the exact face stage and the output assembly.
 
 use crate::geom::{Expansion, Point2, orient2d};
+use rayon::prelude::*;
 use std::cmp::Ordering;
 
 /// Exact counter-clockwise order of directions `a - v` and `b - v`, starting from the
@@ -86,25 +87,39 @@ pub fn csr(n: usize, edges: &[[u32; 2]]) -> (Vec<u32>, Vec<(u32, u32)>) {
     crate::rows::buckets(n, entries)
 }
 
-/// Neighbour lists sorted counter-clockwise.
+/// Neighbour lists sorted counter-clockwise, with each half-edge's reverse.
 pub struct Rotation {
     /// Compressed rows.
     pub start: Vec<u32>,
     /// Neighbours.
     pub nbr: Vec<u32>,
+    /// For half-edge `h` (`v → nbr[h]`, `h` in the row of `v`), the half-edge `nbr[h] → v`.
+    twin: Vec<u32>,
 }
 
 impl Rotation {
-    /// The rotation system of an edge list.
+    /// The rotation system of an edge list (distinct edges, no loops); rows are sorted
+    /// in parallel.
     pub fn new(points: &[Point2], edges: &[[u32; 2]]) -> Rotation {
-        let n = points.len();
-        let (start, adj) = csr(n, edges);
-        let mut nbr: Vec<u32> = adj.into_iter().map(|(b, _)| b).collect();
-        for v in 0..n {
-            nbr[start[v] as usize..start[v + 1] as usize]
-                .sort_by(|&a, &b| angle_cmp(points, v as u32, a, b));
+        let (start, mut adj) = csr(points.len(), edges);
+        let offsets: Vec<usize> = start.iter().map(|&o| o as usize).collect();
+        crate::rows::for_each_row(&mut adj, &offsets, |v, row| {
+            row.sort_by(|a, b| angle_cmp(points, v as u32, a.0, b.0));
+        });
+        // The two half-edges of each edge.
+        let mut halves = vec![[u32::MAX; 2]; edges.len()];
+        for (h, &(_, id)) in adj.iter().enumerate() {
+            let pair = &mut halves[id as usize];
+            pair[usize::from(pair[0] != u32::MAX)] = h as u32;
         }
-        Rotation { start, nbr }
+        let twin = (adj.par_iter().enumerate())
+            .map(|(h, &(_, id))| {
+                let [a, b] = halves[id as usize];
+                if a == h as u32 { b } else { a }
+            })
+            .collect();
+        let nbr = adj.into_iter().map(|(b, _)| b).collect();
+        Rotation { start, nbr, twin }
     }
 
     /// Neighbours of `v`, counter-clockwise.
@@ -117,14 +132,16 @@ impl Rotation {
         self.start[v as usize] as usize + i
     }
 
-    /// The half-edge after `u → v` along the face on its left.
-    pub fn next(&self, u: u32, v: u32) -> (u32, u32) {
-        let ring = self.around(v);
-        let i = ring
-            .iter()
-            .position(|&x| x == u)
-            .expect("reverse half-edge exists");
-        (v, ring[(i + ring.len() - 1) % ring.len()])
+    /// The half-edge after `h` along the face on its left: out of `h`'s head, the
+    /// neighbour just clockwise of `h`'s tail.
+    fn next_half(&self, h: usize) -> usize {
+        let t = self.twin[h] as usize;
+        let w = self.nbr[h] as usize;
+        if t == self.start[w] as usize {
+            self.start[w + 1] as usize - 1
+        } else {
+            t - 1
+        }
     }
 
     /// Every face walk: the vertex sequence and, per half-edge, its walk id.
@@ -132,26 +149,18 @@ impl Rotation {
         let mut walk_of = vec![u32::MAX; self.nbr.len()];
         let mut walks = Vec::new();
         for v in 0..self.start.len() as u32 - 1 {
-            for (i, &w) in self.around(v).iter().enumerate() {
-                if walk_of[self.half(v, i)] != u32::MAX {
+            for first in self.start[v as usize] as usize..self.start[v as usize + 1] as usize {
+                if walk_of[first] != u32::MAX {
                     continue;
                 }
                 let id = walks.len() as u32;
                 let mut seq = Vec::new();
-                let (mut a, mut b) = (v, w);
-                loop {
-                    let pos = self
-                        .around(a)
-                        .iter()
-                        .position(|&x| x == b)
-                        .expect("half-edge");
-                    let h = self.half(a, pos);
-                    if walk_of[h] != u32::MAX {
-                        break;
-                    }
+                let (mut h, mut tail) = (first, v);
+                while walk_of[h] == u32::MAX {
                     walk_of[h] = id;
-                    seq.push(a);
-                    (a, b) = self.next(a, b);
+                    seq.push(tail);
+                    tail = self.nbr[h];
+                    h = self.next_half(h);
                 }
                 walks.push(seq);
             }
