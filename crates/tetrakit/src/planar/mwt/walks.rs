@@ -78,13 +78,14 @@ pub fn in_wedge(points: &[Point2], v: u32, a: u32, b: u32, d: u32) -> bool {
     }
 }
 
-/// Compressed rows of `(neighbour, edge id)` per vertex, in edge order.
+/// Compressed rows of `(neighbour, edge id)` per vertex, in edge order (built in
+/// parallel, [`crate::rows::group`]).
 pub fn csr(n: usize, edges: &[[u32; 2]]) -> (Vec<u32>, Vec<(u32, u32)>) {
-    let entries = edges.iter().enumerate().flat_map(|(id, e)| {
-        let id = id as u32;
-        [(e[0] as usize, (e[1], id)), (e[1] as usize, (e[0], id))]
+    let (start, adj) = crate::rows::group(n, edges.len(), |id| {
+        let ([a, b], id) = (edges[id], id as u32);
+        [(a as usize, (b, id)), (b as usize, (a, id))]
     });
-    crate::rows::buckets(n, entries)
+    (start.into_iter().map(|s| s as u32).collect(), adj)
 }
 
 /// Neighbour lists sorted counter-clockwise, with each half-edge's reverse.
