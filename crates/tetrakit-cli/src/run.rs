@@ -10,10 +10,16 @@ use tetrakit::geom::Hull3;
 use tetrakit::io::{self, Input};
 use tetrakit::mesh::{self, Tetrahedralization};
 
+/// Work on `len` items is long enough to show progress (at least `50_000`), and stderr
+/// is a terminal to show it on.
+fn shows_progress(len: usize) -> bool {
+    use std::io::IsTerminal;
+    len >= 50_000 && std::io::stderr().is_terminal()
+}
+
 /// A progress bar on stderr for long work, only when stderr is a terminal.
 fn progress_bar(len: u64, what: &str) -> Option<indicatif::ProgressBar> {
-    use std::io::IsTerminal;
-    if len < 50_000 || !std::io::stderr().is_terminal() {
+    if !shows_progress(len as usize) {
         return None;
     }
     let bar = indicatif::ProgressBar::new(len);
@@ -26,11 +32,9 @@ fn progress_bar(len: u64, what: &str) -> Option<indicatif::ProgressBar> {
     Some(bar)
 }
 
-/// A spinner on stderr naming the current stage of long work (at least `50_000` items),
-/// only when stderr is a terminal.
+/// A spinner on stderr naming the current stage of long work ([`shows_progress`]).
 pub fn stage_spinner(len: usize) -> Option<indicatif::ProgressBar> {
-    use std::io::IsTerminal;
-    if len < 50_000 || !std::io::stderr().is_terminal() {
+    if !shows_progress(len) {
         return None;
     }
     let bar = indicatif::ProgressBar::new_spinner();

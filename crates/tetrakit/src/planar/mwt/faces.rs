@@ -177,9 +177,11 @@ impl Search<'_> {
                 .filter(|&t| t != i)
                 .map(|t| (Some(t), &holes[t][..])),
         );
+        let sites = dedup(&holes[i]);
         for (target, walk) in targets {
-            for &from in dedup(&holes[i]).iter() {
-                for &to in dedup(walk).iter() {
+            let ends = dedup(walk);
+            for &from in &sites {
+                for &to in &ends {
                     let e = key(from, to);
                     if chords.contains(&e) && !cuts.iter().any(|c| crosses(self.points, c, &e)) {
                         out.push(Join { from, to, target });

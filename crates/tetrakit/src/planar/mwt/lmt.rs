@@ -66,25 +66,6 @@ impl Skeleton {
     }
 }
 
-/// Adjacency counter-clockwise around each site from the positive x-axis (exact).
-fn adjacency(points: &[Point2], edges: &[[u32; 2]]) -> (Vec<u32>, Vec<(u32, u32)>) {
-    let (start, mut adj) = super::walks::csr(points.len(), edges);
-    let offsets: Vec<usize> = start.iter().map(|&o| o as usize).collect();
-    crate::rows::for_each_row(&mut adj, &offsets, |v, row| {
-        let o = &points[v];
-        // Upper half-plane (including the positive x-axis) first, then by orientation.
-        let half = |w: u32| {
-            let d = [points[w as usize][0] - o[0], points[w as usize][1] - o[1]];
-            d[1] < 0.0 || (d[1] == 0.0 && d[0] < 0.0)
-        };
-        row.sort_unstable_by(|a, b| {
-            (half(a.0).cmp(&half(b.0)))
-                .then_with(|| 0.cmp(&orient2d(o, &points[a.0 as usize], &points[b.0 as usize])))
-        });
-    });
-    (start, adj)
-}
-
 /// For each edge `[p, q]`, where `q` is in the row of `p` and `p` in the row of `q`.
 fn positions(start: &[u32], adj: &[(u32, u32)], edges: usize) -> Vec<[u32; 2]> {
     let mut pos = vec![[0u32; 2]; edges];
@@ -327,7 +308,7 @@ pub fn lmt_skeleton(
     forbidden: &[[u32; 2]],
 ) -> (Skeleton, LmtStats) {
     let n = points.len();
-    let (start, adj) = adjacency(points, &candidates);
+    let (start, adj) = super::walks::ccw_rows(points, &candidates);
     let pos = positions(&start, &adj, candidates.len());
     let mut sk = Skeleton {
         status: vec![ALIVE; candidates.len()],
@@ -409,7 +390,7 @@ mod tests {
     /// The candidate graph of `pts`, every edge alive.
     fn all_alive(pts: &[Point2]) -> Skeleton {
         let cands = super::super::candidates::search(pts);
-        let (start, adj) = adjacency(pts, &cands);
+        let (start, adj) = super::super::walks::ccw_rows(pts, &cands);
         let pos = positions(&start, &adj, cands.len());
         Skeleton {
             status: vec![ALIVE; cands.len()],

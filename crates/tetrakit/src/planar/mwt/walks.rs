@@ -88,6 +88,17 @@ pub fn csr(n: usize, edges: &[[u32; 2]]) -> (Vec<u32>, Vec<(u32, u32)>) {
     (start.into_iter().map(|s| s as u32).collect(), adj)
 }
 
+/// [`csr`] with each row sorted counter-clockwise from the positive x-axis
+/// ([`angle_cmp`], exact), rows in parallel.
+pub fn ccw_rows(points: &[Point2], edges: &[[u32; 2]]) -> (Vec<u32>, Vec<(u32, u32)>) {
+    let (start, mut adj) = csr(points.len(), edges);
+    let offsets: Vec<usize> = start.iter().map(|&o| o as usize).collect();
+    crate::rows::for_each_row(&mut adj, &offsets, |v, row| {
+        row.sort_unstable_by(|a, b| angle_cmp(points, v as u32, a.0, b.0));
+    });
+    (start, adj)
+}
+
 /// Neighbour lists sorted counter-clockwise, with each half-edge's reverse.
 pub struct Rotation {
     /// Compressed rows.
@@ -102,11 +113,7 @@ impl Rotation {
     /// The rotation system of an edge list (distinct edges, no loops); rows are sorted
     /// in parallel.
     pub fn new(points: &[Point2], edges: &[[u32; 2]]) -> Rotation {
-        let (start, mut adj) = csr(points.len(), edges);
-        let offsets: Vec<usize> = start.iter().map(|&o| o as usize).collect();
-        crate::rows::for_each_row(&mut adj, &offsets, |v, row| {
-            row.sort_by(|a, b| angle_cmp(points, v as u32, a.0, b.0));
-        });
+        let (start, adj) = ccw_rows(points, edges);
         // The two half-edges of each edge.
         let mut halves = vec![[u32::MAX; 2]; edges.len()];
         for (h, &(_, id)) in adj.iter().enumerate() {
