@@ -259,11 +259,7 @@ impl Search<'_> {
         }
         let usable =
             |e: [u32; 2]| chords.contains(&e) && !cuts.iter().any(|c| crosses(self.points, c, &e));
-        let targets = std::iter::once((None, outer)).chain(
-            (0..holes.len())
-                .filter(|&t| t != i)
-                .map(|t| (Some(t), &holes[t][..])),
-        );
+        let targets = other_walks(outer, holes, i);
         let mut out = Vec::new();
         for (target, walk) in targets {
             let m = walk.len();
@@ -300,11 +296,7 @@ impl Search<'_> {
         chords: &HashSet<[u32; 2]>,
     ) -> Vec<Join> {
         let mut out = Vec::new();
-        let targets = std::iter::once((None, outer)).chain(
-            (0..holes.len())
-                .filter(|&t| t != i)
-                .map(|t| (Some(t), &holes[t][..])),
-        );
+        let targets = other_walks(outer, holes, i);
         let sites = dedup(&holes[i]);
         for (target, walk) in targets {
             let ends = dedup(walk);
@@ -338,6 +330,16 @@ impl Search<'_> {
             self.best = Some(sol);
         }
     }
+}
+
+/// The walks other than hole `i`: the outer one (`None`) and the other holes.
+fn other_walks<'w>(
+    outer: &'w [u32],
+    holes: &'w [Vec<u32>],
+    i: usize,
+) -> impl Iterator<Item = (Option<usize>, &'w [u32])> {
+    let rest = (0..holes.len()).filter(move |&t| t != i);
+    std::iter::once((None, outer)).chain(rest.map(|t| (Some(t), &holes[t][..])))
 }
 
 /// A way to connect a hole to another walk (the outer one when `target` is `None`).
