@@ -146,19 +146,21 @@ impl Search<'_> {
             }
             return;
         }
-        let (hi, mut options) = (0..holes.len())
+        let (hi, options) = (0..holes.len())
             .map(|i| (i, self.steps(&outer, &holes, i, cuts, chords)))
             .min_by_key(|(_, o)| o.len())
             .expect("holes");
-        // Light steps first: a light solution early prunes more.
+        // Light steps first (a float order, only a heuristic: every step is tried): a
+        // light solution early prunes more. Each step's cost is computed once.
         let points = self.points;
         let len = |a: u32, b: u32| {
             let (a, b) = (&points[a as usize], &points[b as usize]);
             (a[0] - b[0]).hypot(a[1] - b[1])
         };
         let cost = |s: &Step| s.new_edges().iter().map(|e| len(e[0], e[1])).sum::<f64>();
-        options.sort_by(|a, b| cost(a).total_cmp(&cost(b)));
-        for step in options {
+        let mut order: Vec<(f64, Step)> = options.into_iter().map(|s| (cost(&s), s)).collect();
+        order.sort_by(|a, b| a.0.total_cmp(&b.0));
+        for (_, step) in order {
             let mut rest = holes.clone();
             let hole = rest.remove(hi);
             let walk = |target: &[u32]| match step {
