@@ -9,19 +9,21 @@ mod candidates;
 mod edge_grid;
 mod faces;
 mod lmt;
+mod polygon;
 mod walks;
 
 pub use candidates::candidate_edges;
-pub use faces::cmp_edge_sets;
-pub(crate) use faces::polygon_dp;
+pub use polygon::cmp_edge_sets;
+pub(crate) use polygon::polygon_dp;
 pub(crate) use walks::walk_area_sign;
 
 use super::{PlanarError, find};
 use crate::geom::{Hull2, Interval, Point2, orient2d};
 use crate::mesh::verify_triangulation;
 use crate::planar::grid::PointGrid;
-use faces::{Face, Solution};
+use faces::Face;
 use lmt::{ALIVE, CERTAIN};
+use polygon::Solution;
 use rayon::prelude::*;
 use std::collections::{HashMap, HashSet};
 use std::time::Instant;
