@@ -4,29 +4,34 @@
 //! A face is given by its boundary walk (counter-clockwise, face on the left, vertices
 //! possibly repeated where certain edges dangle into it) and its holes (clockwise walks
 //! of certain-edge components, or isolated sites). Without holes, dynamic programming
-//! over the walk's occurrences (`O(m³)`) finds the optimum among the alive edges that
-//! leave and enter each occurrence inside its wedge. With holes, the search branches
-//! over the ways one hole meets the rest of the face, in one of two exhaustive forms:
+//! over the walk's occurrences ([`polygon_dp`], `O(m³)`) finds the optimum among the
+//! alive edges that leave and enter each occurrence inside its wedge. Holes that enclose
+//! no area (isolated sites, trees of edges) all go at once to the region DP of
+//! [`super::sites`], which cuts triangles off the face and memoises what is left.
+//! Holes that enclose area are first spliced into the outer walk by a branch and bound
+//! over the ways they meet the rest of the face, in one of two exhaustive forms:
 //! - **ears**: every triangulation has a triangle on the face side of each walk edge
 //!   `ab` of a hole; when no site of that hole could be its apex, the apex is on another
 //!   walk (the outer one or another hole), and the branches are those apexes. The walks
 //!   are spliced along the triangle's two new sides.
-//! - **joins**, for isolated sites (and holes whose own sites could be an apex): every
-//!   triangulation is connected, so the hole is joined by an edge to the outer walk or
-//!   to another hole (not necessarily the outer walk: a site can be ringed by other
-//!   holes); the walks are spliced along it (it is walked twice).
+//! - **joins**, for holes whose own sites could be an apex: every triangulation is
+//!   connected, so the hole is joined by an edge to the outer walk or to another hole
+//!   (not necessarily the outer walk: a site can be ringed by other holes); the walks
+//!   are spliced along it (it is walked twice).
 //!
 //! Each level removes one hole, so the minimum over the branches is exact. The hole and
 //! edge with the fewest branches are taken, and a branch whose new edges already
 //! outweigh the best solution found is dropped. A small hole inside a large convex
 //! face has few ears (triangles on a short edge that hold no other site) but many joins:
 //! a 100-gon with three triangles of sites inside takes 0.4 s by ears, 645 s by joins.
+//! Joins alone, every hole included, are the slow exact reference of the tests.
 //!
 //! Costs are compared as certified intervals, with the exact comparison of sums of
 //! square roots when two intervals overlap (ties on grids, regular polygons).
 
 use super::polygon::{Solution, cmp_edge_sets, crosses, polygon_dp};
-use super::walks::in_wedge;
+use super::sites::walk_with_sites;
+use super::walks::{in_wedge, walk_area_sign};
 use crate::geom::{Interval, Point2, orient2d};
 use crate::planar::edge_key as key;
 use std::cmp::Ordering;
@@ -43,24 +48,26 @@ pub struct Face {
 /// Solves a face exactly. `chords` are the alive edges usable inside it. `None` when
 /// the face has no triangulation with them.
 ///
-/// Exponential in the number of holes in the worst case (one branch per ear or joining
-/// edge, and hole); the faces the LMT-skeleton leaves on random sets have at most one.
+/// Exponential in the number of holes that enclose area in the worst case (one branch
+/// per ear or joining edge, and hole), and in the length of the paths through hole
+/// sites the region DP meets; the faces the LMT-skeleton leaves on random sets have at
+/// most one hole.
 pub fn solve(points: &[Point2], face: &Face, chords: &HashSet<[u32; 2]>) -> Option<Solution> {
     solve_by(points, face, chords, true)
 }
 
-/// [`solve`], branching by joins only when `ears` is false (the reference the tests
-/// hold the ear branching to).
+/// [`solve`]; when `fast` is false every hole branches by joins, even isolated sites
+/// (the slow exact reference the tests hold ears and the region DP to).
 fn solve_by(
     points: &[Point2],
     face: &Face,
     chords: &HashSet<[u32; 2]>,
-    ears: bool,
+    fast: bool,
 ) -> Option<Solution> {
     let mut search = Search {
         points,
         best: None,
-        ears,
+        fast,
     };
     let mut cuts = Vec::new();
     search.branch(
@@ -78,16 +85,17 @@ struct Search<'a> {
     points: &'a [Point2],
     /// The lightest complete solution so far (cut edges included).
     best: Option<Solution>,
-    /// Whether holes with edges branch by ears (otherwise by joins).
-    ears: bool,
+    /// Whether holes with edges branch by ears and isolated sites go to the region DP
+    /// (otherwise everything branches by joins).
+    fast: bool,
 }
 
 impl Search<'_> {
-    /// Every triangulation of the face is connected, so the hole with the fewest
-    /// joining edges is joined, by one of them, to the outer walk or to another hole.
-    /// Branching over those edges and splicing the two walks along the chosen one
-    /// removes one hole per level, so every triangulation is reached. `spent` is the
-    /// length of `cuts`; a branch already heavier than the best solution is dropped.
+    /// Splices the hole with the fewest steps (ears or joins, see the module
+    /// documentation) into another walk, one branch per step, until only holes the
+    /// region DP takes are left (none, in the reference). Each level removes one hole,
+    /// so every triangulation is reached. `spent` is the length of `cuts`; a branch
+    /// already heavier than the best solution is dropped.
     fn branch(
         &mut self,
         outer: Vec<u32>,
@@ -99,8 +107,24 @@ impl Search<'_> {
         if self.heavier(spent) {
             return;
         }
-        if holes.is_empty() {
-            if let Some(sol) = polygon_dp(self.points, &outer, cuts, &|e| chords.contains(&e)) {
+        // Holes that enclose nothing (sites, trees of edges) all at once in the region
+        // DP; the others are spliced into the outer walk first.
+        let flat = |h: &Vec<u32>| self.fast && walk_area_sign(self.points, h) == 0;
+        if holes.iter().all(flat) {
+            let usable = |e| chords.contains(&e);
+            let sol = if holes.is_empty() {
+                polygon_dp(self.points, &outer, cuts, &usable)
+            } else {
+                let mut sites: Vec<u32> = holes.concat();
+                sites.sort_unstable();
+                sites.dedup();
+                let fixed: HashSet<[u32; 2]> = (holes.iter())
+                    .flat_map(|h| (0..h.len()).map(|i| key(h[i], h[(i + 1) % h.len()])))
+                    .filter(|e| e[0] != e[1])
+                    .collect();
+                walk_with_sites(self.points, &outer, &sites, &fixed, cuts, &usable)
+            };
+            if let Some(sol) = sol {
                 let mut edges = sol.edges;
                 edges.extend_from_slice(cuts);
                 self.offer(Solution {
@@ -111,6 +135,7 @@ impl Search<'_> {
             return;
         }
         let (hi, options) = (0..holes.len())
+            .filter(|&i| !flat(&holes[i]))
             .map(|i| (i, self.steps(&outer, &holes, i, cuts, chords)))
             .min_by_key(|(_, o)| o.len())
             .expect("holes");
@@ -173,7 +198,7 @@ impl Search<'_> {
         cuts: &[[u32; 2]],
         chords: &HashSet<[u32; 2]>,
     ) -> Vec<Step> {
-        let ears = self.ears.then(|| {
+        let ears = self.fast.then(|| {
             (0..holes[i].len())
                 .filter_map(|at| self.ears(outer, holes, i, at, cuts, chords))
                 .min_by_key(|o| o.len())
@@ -597,11 +622,11 @@ mod tests {
         assert!(with_two_holes > 80 && with_a_walk > 40 && with_three > 20);
     }
 
-    /// Ears against joins (both exact) on faces too large for exhaustive search: convex
-    /// polygons with small triangles and segments of sites inside, the shape on which
-    /// joins alone take exponential time.
+    /// Ears and the region DP against joins (all exact) on faces too large for
+    /// exhaustive search: convex polygons with small triangles and segments of sites
+    /// inside, the shape on which joins alone take exponential time.
     #[test]
-    fn ear_branching_matches_join_branching() {
+    fn ears_and_region_dp_match_join_branching() {
         let mut rng = Rng::new(8);
         let mut checked = 0;
         for case in 0..40 {
@@ -691,5 +716,83 @@ mod tests {
             checked += 1;
         }
         assert!(checked > 30, "{checked}");
+    }
+
+    /// The region DP against joins on star-shaped (non-convex) faces with two to four
+    /// isolated sites, and in some a segment or a path of sites, inside: every segment
+    /// between sites through no site and across no side or fixed edge is usable (the
+    /// DP's wedge tests keep out those outside the face).
+    #[test]
+    fn region_dp_matches_join_branching_in_star_polygons() {
+        let mut rng = Rng::new(77);
+        let (mut checked, mut with_a_walk) = (0, 0);
+        for case in 0..60 {
+            let m = 7 + rng.below(6);
+            let mut pts: Vec<Point2> = (0..m)
+                .map(|i| {
+                    let a = std::f64::consts::TAU * (i as f64 + 0.4 * rng.unit()) / m as f64;
+                    let r = if i % 2 == 0 {
+                        30.0
+                    } else {
+                        12.0 + 14.0 * rng.unit()
+                    };
+                    [(r * a.cos()).round(), (r * a.sin()).round()]
+                })
+                .collect();
+            let p = |pts: &[Point2], i: usize| pts[i % m];
+            let inside = |pts: &[Point2], s: &Point2| {
+                (0..m).any(|i| {
+                    let (a, b) = (p(pts, i), p(pts, i + 1));
+                    orient2d(&[0.0, 0.0], &a, s) > 0
+                        && orient2d(&a, &b, s) > 0
+                        && orient2d(&b, &[0.0, 0.0], s) > 0
+                })
+            };
+            let k = 2 + rng.below(3);
+            while pts.len() < m + k {
+                let s = [rng.below(41) as f64 - 20.0, rng.below(41) as f64 - 20.0];
+                if inside(&pts, &s) && !pts.contains(&s) {
+                    pts.push(s);
+                }
+            }
+            let blocked = crate::planar::blocked_pairs(&pts);
+            let mut fixed: Vec<[u32; 2]> = (0..m)
+                .map(|i| key(i as u32, ((i + 1) % m) as u32))
+                .collect();
+            let inner: Vec<u32> = (m as u32..pts.len() as u32).collect();
+            let mut holes: Vec<Vec<u32>> = inner.iter().map(|&v| vec![v]).collect();
+            let shape = [Shape::Sites, Shape::Pair, Shape::Path][case % 3];
+            if let Some((walk, edges)) = hole_of(&pts, &inner, shape, &blocked) {
+                holes.retain(|h| !walk.contains(&h[0]));
+                holes.push(walk);
+                fixed.extend(edges);
+            }
+            let crossing = |e: &[u32; 2]| fixed.iter().any(|f| crosses(&pts, f, e));
+            if fixed.iter().any(|e| crossing(e) || blocked.contains(e)) {
+                continue;
+            }
+            let n = pts.len() as u32;
+            let chords: HashSet<[u32; 2]> = (0..n)
+                .flat_map(|a| (a + 1..n).map(move |b| [a, b]))
+                .filter(|e| !fixed.contains(e) && !blocked.contains(e) && !crossing(e))
+                .collect();
+            let face = Face {
+                outer: (0..m as u32).collect(),
+                holes,
+            };
+            let fast = solve_by(&pts, &face, &chords, true).expect("a triangulation");
+            let reference = solve_by(&pts, &face, &chords, false).expect("a triangulation");
+            assert_eq!(
+                cmp_edge_sets(&pts, &fast.edges, &reference.edges),
+                Ordering::Equal,
+                "{pts:?}"
+            );
+            // Euler: a triangulated polygon with `k` sites inside has `m - 3 + 3k`
+            // diagonals.
+            assert_eq!(fast.edges.len() + fixed.len() - m, m - 3 + 3 * k, "{pts:?}");
+            checked += 1;
+            with_a_walk += usize::from(fixed.len() > m);
+        }
+        assert!(checked > 50 && with_a_walk > 20, "{checked} {with_a_walk}");
     }
 }

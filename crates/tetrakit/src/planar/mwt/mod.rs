@@ -10,6 +10,7 @@ mod edge_grid;
 mod faces;
 mod lmt;
 mod polygon;
+mod sites;
 mod walks;
 
 pub use candidates::candidate_edges;

@@ -205,13 +205,13 @@ impl Table {
 }
 
 /// Bit rows of the pairs of walk positions joined by a side or a valid diagonal.
-struct Rows {
+pub(super) struct Rows {
     words: usize,
     bits: Vec<u64>,
 }
 
 impl Rows {
-    fn new(
+    pub(super) fn new(
         points: &[Point2],
         poly: &[u32],
         cuts: &[[u32; 2]],
@@ -254,12 +254,17 @@ impl Rows {
         Rows { words, bits }
     }
 
-    fn ok(&self, i: usize, j: usize) -> bool {
+    /// The bits of the positions joined to `i`.
+    pub(super) fn row(&self, i: usize) -> &[u64] {
+        &self.bits[i * self.words..(i + 1) * self.words]
+    }
+
+    pub(super) fn ok(&self, i: usize, j: usize) -> bool {
         self.bits[i * self.words + j / 64] >> (j % 64) & 1 == 1
     }
 
     /// Calls `f(k)` for every `i < k < j` joined to both `i` and `j`.
-    fn common(&self, i: usize, j: usize, mut f: impl FnMut(usize)) {
+    pub(super) fn common(&self, i: usize, j: usize, mut f: impl FnMut(usize)) {
         let (ri, rj) = (i * self.words, j * self.words);
         let (lo, hi) = (i + 1, j - 1);
         for w in lo / 64..=hi / 64 {
