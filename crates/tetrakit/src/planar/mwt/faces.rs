@@ -493,6 +493,24 @@ mod tests {
         (!overlap && edges.iter().all(|e| !blocked.contains(e))).then_some((walk, edges))
     }
 
+    /// Every segment between sites that is not fixed, through no site (`blocked`) and
+    /// across no fixed edge; `None` when the fixed edges themselves cross or are blocked.
+    fn free_segments(
+        pts: &[Point2],
+        fixed: &[[u32; 2]],
+        blocked: &HashSet<[u32; 2]>,
+    ) -> Option<HashSet<[u32; 2]>> {
+        let crossing = |e: &[u32; 2]| fixed.iter().any(|f| crosses(pts, f, e));
+        if fixed.iter().any(|e| crossing(e) || blocked.contains(e)) {
+            return None;
+        }
+        let n = pts.len() as u32;
+        let free = (0..n)
+            .flat_map(|a| (a + 1..n).map(move |b| [a, b]))
+            .filter(|e| !fixed.contains(e) && !blocked.contains(e) && !crossing(e));
+        Some(free.collect())
+    }
+
     /// The face of a convex polygon whose interior sites are holes: isolated sites, and
     /// the first two or three joined by `shape` when no site blocks it. Every other
     /// segment through no site and across no fixed edge is usable. Returns the optimum
@@ -517,11 +535,7 @@ mod tests {
             holes.push(walk);
             fixed.extend(edges);
         }
-        let chords: HashSet<[u32; 2]> = (0..n)
-            .flat_map(|a| (a + 1..n).map(move |b| [a, b]))
-            .filter(|e| !fixed.contains(e) && !blocked.contains(e))
-            .filter(|e| !fixed.iter().any(|f| crosses(pts, f, e)))
-            .collect();
+        let chords = free_segments(pts, &fixed, &blocked)?;
         let face = Face {
             outer: hull.vertices.clone(),
             holes,
@@ -694,16 +708,9 @@ mod tests {
                 };
                 outer = walk;
             }
-            let crossing = |e: &[u32; 2]| fixed.iter().any(|f| crosses(&pts, f, e));
-            if fixed.iter().any(|e| crossing(e) || blocked.contains(e)) {
+            let Some(chords) = free_segments(&pts, &fixed, &blocked) else {
                 continue;
-            }
-            let n = pts.len() as u32;
-            let chords: HashSet<[u32; 2]> = (0..n)
-                .flat_map(|a| (a + 1..n).map(move |b| [a, b]))
-                .filter(|e| !fixed.contains(e) && !blocked.contains(e))
-                .filter(|e| !fixed.iter().any(|f| crosses(&pts, f, e)))
-                .collect();
+            };
             let face = Face { outer, holes };
             let by_ears = solve_by(&pts, &face, &chords, true).expect("a triangulation");
             let by_joins = solve_by(&pts, &face, &chords, false).expect("a triangulation");
@@ -767,15 +774,9 @@ mod tests {
                 holes.push(walk);
                 fixed.extend(edges);
             }
-            let crossing = |e: &[u32; 2]| fixed.iter().any(|f| crosses(&pts, f, e));
-            if fixed.iter().any(|e| crossing(e) || blocked.contains(e)) {
+            let Some(chords) = free_segments(&pts, &fixed, &blocked) else {
                 continue;
-            }
-            let n = pts.len() as u32;
-            let chords: HashSet<[u32; 2]> = (0..n)
-                .flat_map(|a| (a + 1..n).map(move |b| [a, b]))
-                .filter(|e| !fixed.contains(e) && !blocked.contains(e) && !crossing(e))
-                .collect();
+            };
             let face = Face {
                 outer: (0..m as u32).collect(),
                 holes,
