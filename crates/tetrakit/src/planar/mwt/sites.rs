@@ -1,6 +1,7 @@
-//! The exact stage on a face whose holes are isolated sites: dynamic programming over
-//! the regions that cutting out triangles leaves (the scheme of Grantson, Borgelt and
-//! Levcopoulos, "Minimum weight triangulation by cutting out triangles", 2005).
+//! The exact stage on a face whose holes enclose no area (isolated sites, trees of
+//! edges): dynamic programming over the regions that cutting out triangles leaves (the
+//! scheme of Grantson, Borgelt and Levcopoulos, "Minimum weight triangulation by cutting
+//! out triangles", 2005).
 //!
 //! A *region* is bounded by a run of the face's walk, occurrences `i..=j`, followed by a
 //! path through sites, back to occurrence `i` (or by a cycle of sites alone). Every
@@ -16,6 +17,13 @@
 //! polygon DP does, plus `O(d²)` regions per site of degree `d`, instead of the
 //! `d₁·d₂·…·d_k` polygon DPs of branching over the edges that join each site.
 //!
+//! The sites of a tree hole are sites like the others and its edges are *fixed*: usable
+//! between their ends, of no weight (they are in the triangulation already), and never
+//! crossed (alive edges cross no certain edge). Each ends up a side of the triangles on
+//! it: a segment between vertices of a triangulated region that crosses no side and
+//! passes through no vertex is a side. A hole that encloses area is not for this DP,
+//! which would have to triangulate its inside; the face search splices it in first.
+//!
 //! **Why each cut is a triangle of the region, empty.** Diagonals between occurrences
 //! come from the polygon DP's rows (usable, inside the walk's wedges at both ends, across
 //! no cut); segments from a site to an occurrence are checked the same way. A usable
@@ -27,7 +35,9 @@
 //! wedge), so it lies in the region, and every site of the region ends up a vertex. On a
 //! region bounded by walk edges and one diagonal, a triangle on two more diagonals needs
 //! only its orientation and emptiness: its sides leave their ends inside the walk's
-//! wedges and cannot cross the diagonal they share an end with.
+//! wedges and cannot cross the diagonal they share an end with. Likewise, a side ending
+//! at an occurrence strictly inside the run leaves it inside the region (the walk's
+//! wedge is the region's there), so only path crossings decide whether it stays inside.
 
 use super::polygon::{Rows, Solution, cmp_edge_sets, crosses};
 use super::walks::in_wedge;
@@ -39,8 +49,9 @@ use std::cmp::Ordering;
 use std::collections::{HashMap, HashSet};
 
 /// The lightest triangulation of the face bounded by the counter-clockwise `walk` with
-/// the isolated `sites` inside, whose new edges satisfy `usable` and cross no edge of
-/// `cuts`; `None` when there is none.
+/// the `sites` of its flat holes inside (their edges `fixed`), whose new edges satisfy
+/// `usable` and cross no edge of `cuts`: the new edges and their weight; `None` when
+/// there is none.
 pub(super) fn walk_with_sites(
     points: &[Point2],
     walk: &[u32],
