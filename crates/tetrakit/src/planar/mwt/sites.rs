@@ -136,6 +136,42 @@ struct Best {
     apex: Option<Apex>,
 }
 
+/// A [`Best`] in 24 bytes for the dense table: the apex as one code (a corner's
+/// position, a site's index with the top bit set, or a sentinel).
+#[derive(Clone, Copy)]
+struct Packed {
+    w: DoubleDouble,
+    code: u32,
+}
+
+impl Packed {
+    const UNSOLVED: Packed = Packed {
+        w: DoubleDouble::ZERO,
+        code: u32::MAX,
+    };
+    const NONE: u32 = u32::MAX - 1;
+    const SITE: u32 = 1 << 31;
+
+    fn pack(b: Best) -> Packed {
+        let code = match b.apex {
+            None => Packed::NONE,
+            Some(Apex::Corner(t)) => t as u32,
+            Some(Apex::Site(q)) => Packed::SITE | q,
+        };
+        Packed { w: b.w, code }
+    }
+
+    fn unpack(self) -> Option<Best> {
+        let apex = match self.code {
+            u32::MAX => return None,
+            Packed::NONE => None,
+            c if c & Packed::SITE != 0 => Some(Apex::Site(c & !Packed::SITE)),
+            c => Some(Apex::Corner(c as usize)),
+        };
+        Some(Best { w: self.w, apex })
+    }
+}
+
 struct Dp<'a> {
     points: &'a [Point2],
     walk: &'a [u32],
@@ -154,7 +190,7 @@ struct Dp<'a> {
     terms: usize,
     /// Solved regions: bounded by a run of the walk and one diagonal (by the run's ends,
     /// in an upper triangle), and the others.
-    chains: RefCell<Vec<Option<Best>>>,
+    chains: RefCell<Vec<Packed>>,
     others: RefCell<HashMap<Region, Best, FxBuildHasher>>,
 }
 
@@ -198,7 +234,7 @@ impl<'a> Dp<'a> {
             between,
             fixed,
             terms: 3 * (m + sites.len()) + 3,
-            chains: RefCell::new(vec![None; m * (m - 1) / 2]),
+            chains: RefCell::new(vec![Packed::UNSOLVED; m * (m - 1) / 2]),
             others: Default::default(),
         }
     }
@@ -212,14 +248,14 @@ impl<'a> Dp<'a> {
 
     fn get(&self, r: &Region) -> Option<Best> {
         match self.chain_slot(r) {
-            Some(k) => self.chains.borrow()[k],
+            Some(k) => self.chains.borrow()[k].unpack(),
             None => self.others.borrow().get(r).copied(),
         }
     }
 
     fn set(&self, r: Region, best: Best) {
         match self.chain_slot(&r) {
-            Some(k) => self.chains.borrow_mut()[k] = Some(best),
+            Some(k) => self.chains.borrow_mut()[k] = Packed::pack(best),
             None => {
                 self.others.borrow_mut().insert(r, best);
             }
