@@ -369,13 +369,12 @@ impl<'a> Dp<'a> {
         if !corners_ok {
             return false;
         }
-        // Path edges: consecutive boundary positions with a site of the path at one end.
-        let path_edges = (0..n)
-            .filter(|&t| t + 1 >= c0 || r.chain.is_none())
-            .map(|t| [at(t), at(t + 1)]);
+        // Path edges: consecutive boundary positions with a site of the path at one end,
+        // from the run's last occurrence on (not over the whole run: this is per option).
+        let first = if r.chain.is_some() { c0 - 1 } else { 0 };
         let sides = [vc, cu];
-        let crossing = path_edges
-            .into_iter()
+        let crossing = (first..n)
+            .map(|t| [at(t), at(t + 1)])
             .any(|e| sides.iter().flatten().any(|s| crosses(self.points, &e, s)));
         !crossing && self.empty(r, u, v, c)
     }
@@ -512,15 +511,14 @@ impl<'a> Dp<'a> {
         let p = |x: u32| &self.points[x as usize];
         for &a in options {
             let (pieces, sides) = (self.pieces(r, a), self.sides(r, a));
-            let solved: Option<Vec<Best>> = (pieces.iter().flatten())
-                .map(|piece| self.get(piece).filter(|b| b.apex.is_some()))
-                .collect();
-            let Some(solved) = solved else {
+            // The pieces' weights include their bases: the sides, but the second side
+            // of a site apex. A piece without a triangulation rules the option out.
+            let mut weights = (pieces.iter().flatten())
+                .map(|piece| self.get(piece).filter(|b| b.apex.is_some()).map(|b| b.w));
+            let Some(mut w) = weights.try_fold(DoubleDouble::ZERO, |acc, w| Some(acc.plus(w?)))
+            else {
                 continue;
             };
-            // The pieces' weights include their bases: the sides, but the second side
-            // of a site apex.
-            let mut w = (solved.iter().map(|b| b.w)).fold(DoubleDouble::ZERO, DoubleDouble::plus);
             if let (Apex::Site(_), [_, Some(e)]) = (a, sides)
                 && !self.fixed.contains(&e)
             {
