@@ -29,7 +29,7 @@
 //! Costs are compared as certified intervals, with the exact comparison of sums of
 //! square roots when two intervals overlap (ties on grids, regular polygons).
 
-use super::polygon::{Solution, cmp_edge_sets, crosses, polygon_dp};
+use super::polygon::{Solution, clear_of, cmp_edge_sets, polygon_dp};
 use super::sites::walk_with_sites;
 use super::walks::{in_wedge, walk_area_sign};
 use crate::geom::{Interval, Point2, orient2d};
@@ -248,8 +248,7 @@ impl Search<'_> {
         if hole.iter().any(|&c| c != a && c != b && left(c)) {
             return None;
         }
-        let usable =
-            |e: [u32; 2]| chords.contains(&e) && !cuts.iter().any(|c| crosses(self.points, c, &e));
+        let usable = |e: [u32; 2]| chords.contains(&e) && clear_of(self.points, cuts, &e);
         let targets = other_walks(outer, holes, i);
         let mut out = Vec::new();
         for (target, walk) in targets {
@@ -294,7 +293,7 @@ impl Search<'_> {
             for &from in &sites {
                 for &to in &ends {
                     let e = key(from, to);
-                    if chords.contains(&e) && !cuts.iter().any(|c| crosses(self.points, c, &e)) {
+                    if chords.contains(&e) && clear_of(self.points, cuts, &e) {
                         out.push(Join { from, to, target });
                     }
                 }
@@ -431,6 +430,7 @@ fn splice_ear(target: &[u32], hole: &[u32], at: usize, occ: usize) -> Vec<u32> {
 
 #[cfg(test)]
 mod tests {
+    use super::super::polygon::crosses;
     use super::*;
     use crate::geom::Hull2;
     use crate::rng::Rng;

@@ -46,6 +46,16 @@ pub fn cmp_edge_sets(points: &[Point2], a: &[[u32; 2]], b: &[[u32; 2]]) -> Order
     compare_root_sums(&sq(&only_a), &sq(&only_b))
 }
 
+/// True when the segment `e` crosses no edge of `cuts` (edges already chosen).
+pub(super) fn clear_of(points: &[Point2], cuts: &[[u32; 2]], e: &[u32; 2]) -> bool {
+    !cuts.iter().any(|c| crosses(points, c, e))
+}
+
+/// Where the pair `i < j` of `0..m` is in an upper triangle stored row by row.
+pub(super) fn upper_index(m: usize, i: usize, j: usize) -> usize {
+    i * (2 * m - i - 1) / 2 + (j - i - 1)
+}
+
 /// True when the segments `a` and `b` share no end and cross.
 pub(super) fn crosses(points: &[Point2], a: &[u32; 2], b: &[u32; 2]) -> bool {
     let p = |i: u32| &points[i as usize];
@@ -191,7 +201,7 @@ impl Table {
     }
 
     fn index(&self, i: usize, j: usize) -> usize {
-        i * (2 * self.m - i - 1) / 2 + (j - i - 1)
+        upper_index(self.m, i, j)
     }
 
     fn get(&self, i: usize, j: usize) -> Cell {
@@ -238,7 +248,7 @@ impl Rows {
                     && usable(e)
                     && inside_at(i, j)
                     && inside_at(j, i)
-                    && !cuts.iter().any(|c| crosses(points, c, &e)))
+                    && clear_of(points, cuts, &e))
         };
         let upper: Vec<Vec<usize>> = (0..m)
             .into_par_iter()

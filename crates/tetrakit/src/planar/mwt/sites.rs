@@ -39,7 +39,7 @@
 //! at an occurrence strictly inside the run leaves it inside the region (the walk's
 //! wedge is the region's there), so only path crossings decide whether it stays inside.
 
-use super::polygon::{Rows, Solution, cmp_edge_sets, crosses};
+use super::polygon::{Rows, Solution, clear_of, cmp_edge_sets, crosses, upper_index};
 use super::walks::in_wedge;
 use crate::geom::{DoubleDouble, Point2, orient2d};
 use crate::planar::edge_key as key;
@@ -208,7 +208,7 @@ impl<'a> Dp<'a> {
         usable: &(dyn Fn([u32; 2]) -> bool + Sync),
     ) -> Dp<'a> {
         let m = walk.len();
-        let ok = |e: [u32; 2]| usable(e) && !cuts.iter().any(|c| crosses(points, c, &e));
+        let ok = |e: [u32; 2]| usable(e) && clear_of(points, cuts, &e);
         let to_walk = (sites.iter())
             .map(|&q| {
                 let mut row = vec![0u64; m.div_ceil(64)];
@@ -243,7 +243,7 @@ impl<'a> Dp<'a> {
     fn chain_slot(&self, r: &Region) -> Option<usize> {
         let (i, j) = r.chain.filter(|_| r.path.is_empty())?;
         let (i, j, m) = (i as usize, j as usize, self.walk.len());
-        Some(i * (2 * m - i - 1) / 2 + (j - i - 1))
+        Some(upper_index(m, i, j))
     }
 
     fn get(&self, r: &Region) -> Option<Best> {
