@@ -134,9 +134,15 @@ impl Search<'_> {
             }
             return;
         }
+        let view = View {
+            outer: &outer,
+            holes: &holes,
+            cuts,
+            chords,
+        };
         let (hi, options) = (0..holes.len())
             .filter(|&i| !flat(&holes[i]))
-            .map(|i| (i, self.steps(&outer, &holes, i, cuts, chords)))
+            .map(|i| (i, self.steps(&view, i)))
             .min_by_key(|(_, o)| o.len())
             .expect("holes");
         // Light steps first (a float order, only a heuristic: every step is tried): a
@@ -190,38 +196,21 @@ impl Search<'_> {
     /// triangulation takes: the triangles on one side of one of its walk edges (the edge
     /// with the fewest), or, when no edge qualifies (an isolated site, or a walk that may
     /// hold a triangle's apex itself), the edges joining it to another walk.
-    fn steps(
-        &self,
-        outer: &[u32],
-        holes: &[Vec<u32>],
-        i: usize,
-        cuts: &[[u32; 2]],
-        chords: &HashSet<[u32; 2]>,
-    ) -> Vec<Step> {
+    fn steps(&self, f: &View, i: usize) -> Vec<Step> {
         let ears = self.fast.then(|| {
-            (0..holes[i].len())
-                .filter_map(|at| self.ears(outer, holes, i, at, cuts, chords))
+            (0..f.holes[i].len())
+                .filter_map(|at| self.ears(f, i, at))
                 .min_by_key(|o| o.len())
         });
-        ears.flatten().unwrap_or_else(|| {
-            (self.joins(outer, holes, i, cuts, chords).into_iter())
-                .map(Step::Join)
-                .collect()
-        })
+        ears.flatten()
+            .unwrap_or_else(|| (self.joins(f, i).into_iter()).map(Step::Join).collect())
     }
 
     /// The triangles on the face side of the edge from entry `at` of hole `i` to the
     /// next (every triangulation has one), each with its apex on another walk; `None`
     /// for an isolated site, or when a site of the hole itself could be the apex.
-    fn ears(
-        &self,
-        outer: &[u32],
-        holes: &[Vec<u32>],
-        i: usize,
-        at: usize,
-        cuts: &[[u32; 2]],
-        chords: &HashSet<[u32; 2]>,
-    ) -> Option<Vec<Step>> {
+    fn ears(&self, f: &View, i: usize, at: usize) -> Option<Vec<Step>> {
+        let (outer, holes) = (f.outer, f.holes);
         let hole = &holes[i];
         let k = hole.len();
         if k < 2 {
@@ -248,7 +237,7 @@ impl Search<'_> {
         if hole.iter().any(|&c| c != a && c != b && left(c)) {
             return None;
         }
-        let usable = |e: [u32; 2]| chords.contains(&e) && clear_of(self.points, cuts, &e);
+        let usable = |e: [u32; 2]| f.usable(self.points, e);
         let targets = other_walks(outer, holes, i);
         let mut out = Vec::new();
         for (target, walk) in targets {
@@ -277,14 +266,8 @@ impl Search<'_> {
 
     /// The usable edges from hole `i` to the outer walk (`target` `None`) or to another
     /// hole, crossing no cut.
-    fn joins(
-        &self,
-        outer: &[u32],
-        holes: &[Vec<u32>],
-        i: usize,
-        cuts: &[[u32; 2]],
-        chords: &HashSet<[u32; 2]>,
-    ) -> Vec<Join> {
+    fn joins(&self, f: &View, i: usize) -> Vec<Join> {
+        let (outer, holes) = (f.outer, f.holes);
         let mut out = Vec::new();
         let targets = other_walks(outer, holes, i);
         let sites = dedup(&holes[i]);
@@ -293,7 +276,7 @@ impl Search<'_> {
             for &from in &sites {
                 for &to in &ends {
                     let e = key(from, to);
-                    if chords.contains(&e) && clear_of(self.points, cuts, &e) {
+                    if f.usable(self.points, e) {
                         out.push(Join { from, to, target });
                     }
                 }
@@ -319,6 +302,22 @@ impl Search<'_> {
         if better {
             self.best = Some(sol);
         }
+    }
+}
+
+/// A state of the search: the outer walk, the holes left, the edges chosen so far
+/// (`cuts`) and the alive edges still free (`chords`).
+struct View<'v> {
+    outer: &'v [u32],
+    holes: &'v [Vec<u32>],
+    cuts: &'v [[u32; 2]],
+    chords: &'v HashSet<[u32; 2]>,
+}
+
+impl View<'_> {
+    /// A free alive edge across no chosen one.
+    fn usable(&self, points: &[Point2], e: [u32; 2]) -> bool {
+        self.chords.contains(&e) && clear_of(points, self.cuts, &e)
     }
 }
 
