@@ -795,4 +795,43 @@ mod tests {
         }
         assert!(checked > 50 && with_a_walk > 20, "{checked} {with_a_walk}");
     }
+
+    /// A face whose region DP reaches a run of one walk occurrence followed by a path:
+    /// the occurrence after it on the walk is no corner of that region. Taking it for
+    /// one put the path's first site at the apex without testing the side from there to
+    /// the path's end, and a side through site 7 (on the segment 6–10) made a lighter
+    /// "triangulation" in which site 7 hung on its hole edge alone.
+    #[test]
+    fn a_run_of_one_occurrence_has_no_next_corner() {
+        let pts: Vec<Point2> = vec![
+            [20.0, 1.0],
+            [7.0, 19.0],
+            [-14.0, 14.0],
+            [-20.0, -4.0],
+            [-6.0, -19.0],
+            [12.0, -16.0],
+            [-5.0, 2.0],
+            [-3.0, 2.0],
+            [4.0, 0.0],
+            [6.0, 0.0],
+            [5.0, 2.0],
+            [15.0, 1.0],
+        ];
+        // The hexagon 0..6 with site 11 dangling from 0, the pair 6–7 and the sites 8, 9
+        // and 10 inside.
+        let mut fixed: Vec<[u32; 2]> = (0..6).map(|i| key(i, (i + 1) % 6)).collect();
+        fixed.extend([[0, 11], [6, 7]]);
+        let blocked = crate::planar::blocked_pairs(&pts);
+        let chords = free_segments(&pts, &fixed, &blocked).expect("fixed edges apart");
+        let face = Face {
+            outer: vec![3, 4, 5, 0, 11, 0, 1, 2],
+            holes: vec![vec![6, 7], vec![8], vec![9], vec![10]],
+        };
+        let fast = solve_by(&pts, &face, &chords, true).expect("a triangulation");
+        let joins = solve_by(&pts, &face, &chords, false).expect("a triangulation");
+        assert_eq!(fast.edges.len() + fixed.len(), 3 * pts.len() - 3 - 6);
+        assert!(fast.edges.iter().all(|e| chords.contains(e)));
+        let cmp = cmp_edge_sets(&pts, &fast.edges, &joins.edges);
+        assert_eq!(cmp, Ordering::Equal);
+    }
 }

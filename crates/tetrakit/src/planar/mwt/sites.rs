@@ -421,7 +421,8 @@ impl<'a> Dp<'a> {
                         }
                     }
                 }
-                let ends = [i + 1, j].into_iter().filter(|&k| k > i);
+                // (With a run of one occurrence there is none: position 1 is the path's.)
+                let ends = [i + 1, j].into_iter().filter(|&k| k > i && k <= j);
                 for k in ends {
                     let side_u = (k == j && r.path.len() == 1) || bit(to_last, k);
                     let side_v = k == i + 1 || self.rows.ok(i, k);
