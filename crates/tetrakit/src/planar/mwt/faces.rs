@@ -725,13 +725,15 @@ mod tests {
     }
 
     /// The region DP against joins on star-shaped (non-convex) faces with two to four
-    /// isolated sites, and in some a segment or a path of sites, inside: every segment
-    /// between sites through no site and across no side or fixed edge is usable (the
-    /// DP's wedge tests keep out those outside the face).
+    /// isolated sites, and in some a segment, a path or a triangle of sites, inside, and
+    /// in half of them a site hanging from the boundary by a fixed edge (the outer walk
+    /// visits its end twice): every segment between sites through no site and across no
+    /// side or fixed edge is usable (the DP's wedge tests keep out those outside the
+    /// face).
     #[test]
     fn region_dp_matches_join_branching_in_star_polygons() {
         let mut rng = Rng::new(77);
-        let (mut checked, mut with_a_walk) = (0, 0);
+        let (mut checked, mut with_a_walk, mut hanging) = (0, 0, 0);
         for case in 0..60 {
             let m = 7 + rng.below(6);
             let mut pts: Vec<Point2> = (0..m)
@@ -761,13 +763,23 @@ mod tests {
                     pts.push(s);
                 }
             }
+            // In half the cases a site hangs from site 0 by a fixed edge.
+            let hang = [(pts[0][0] * 0.7).round(), (pts[0][1] * 0.7).round()];
+            let dangling =
+                (case % 2 == 1 && inside(&pts, &hang) && !pts.contains(&hang)).then(|| {
+                    pts.push(hang);
+                    pts.len() as u32 - 1
+                });
             let blocked = crate::planar::blocked_pairs(&pts);
             let mut fixed: Vec<[u32; 2]> = (0..m)
                 .map(|i| key(i as u32, ((i + 1) % m) as u32))
                 .collect();
-            let inner: Vec<u32> = (m as u32..pts.len() as u32).collect();
+            fixed.extend(dangling.map(|d| key(0, d)));
+            let inner: Vec<u32> = (m as u32..pts.len() as u32)
+                .filter(|&v| Some(v) != dangling)
+                .collect();
             let mut holes: Vec<Vec<u32>> = inner.iter().map(|&v| vec![v]).collect();
-            let shape = [Shape::Sites, Shape::Pair, Shape::Path][case % 3];
+            let shape = [Shape::Sites, Shape::Pair, Shape::Path, Shape::Triangle][case % 4];
             if let Some((walk, edges)) = hole_of(&pts, &inner, shape, &blocked) {
                 holes.retain(|h| !walk.contains(&h[0]));
                 holes.push(walk);
@@ -776,10 +788,15 @@ mod tests {
             let Some(chords) = free_segments(&pts, &fixed, &blocked) else {
                 continue;
             };
-            let face = Face {
-                outer: (0..m as u32).collect(),
-                holes,
-            };
+            let mut outer: Vec<u32> = (0..m as u32).collect();
+            if let Some(d) = dangling {
+                let Some(walk) = splice(&pts, &outer, &[d], 0, d) else {
+                    continue;
+                };
+                outer = walk;
+            }
+            let k = pts.len() - m;
+            let face = Face { outer, holes };
             let fast = solve_by(&pts, &face, &chords, true).expect("a triangulation");
             let reference = solve_by(&pts, &face, &chords, false).expect("a triangulation");
             assert_eq!(
@@ -791,9 +808,13 @@ mod tests {
             // diagonals.
             assert_eq!(fast.edges.len() + fixed.len() - m, m - 3 + 3 * k, "{pts:?}");
             checked += 1;
-            with_a_walk += usize::from(fixed.len() > m);
+            with_a_walk += usize::from(fixed.len() > m + usize::from(dangling.is_some()));
+            hanging += usize::from(dangling.is_some());
         }
-        assert!(checked > 50 && with_a_walk > 20, "{checked} {with_a_walk}");
+        assert!(
+            checked > 50 && with_a_walk > 20 && hanging > 15,
+            "{checked} {with_a_walk} {hanging}"
+        );
     }
 
     /// A face whose region DP reaches a run of one walk occurrence followed by a path:
