@@ -21,10 +21,12 @@
 //!
 //! Each level removes one hole, so the minimum over the branches is exact. The hole and
 //! edge with the fewest branches are taken, and a branch whose new edges already
-//! outweigh the best solution found is dropped. A small hole inside a large convex
-//! face has few ears (triangles on a short edge that hold no other site) but many joins:
-//! a 100-gon with three triangles of sites inside takes 0.4 s by ears, 645 s by joins.
-//! Joins alone, every hole included, are the slow exact reference of the tests.
+//! outweigh the best solution found is dropped. Branches run in parallel; ties between
+//! leaves go to the lesser sorted edge list, so the answer is the same on any number of
+//! threads. A small hole inside a large convex face has few ears (triangles on a short
+//! edge that hold no other site) but many joins: a 100-gon with three triangles of sites
+//! inside takes 0.4 s by ears, 645 s by joins. Joins alone, every hole included, are the
+//! slow exact reference of the tests.
 //!
 //! Costs are compared as certified intervals, with the exact comparison of sums of
 //! square roots when two intervals overlap (ties on grids, regular polygons).
@@ -34,8 +36,10 @@ use super::sites::walk_with_sites;
 use super::walks::{in_wedge, walk_area_sign};
 use crate::geom::{Interval, Point2, orient2d};
 use crate::planar::edge_key as key;
+use rayon::prelude::*;
 use std::cmp::Ordering;
 use std::collections::HashSet;
+use std::sync::Mutex;
 
 /// A face to triangulate.
 pub struct Face {
@@ -64,27 +68,30 @@ fn solve_by(
     chords: &HashSet<[u32; 2]>,
     fast: bool,
 ) -> Option<Solution> {
-    let mut search = Search {
+    let search = Search {
         points,
-        best: None,
+        best: Mutex::new(None),
         fast,
     };
-    let mut cuts = Vec::new();
     search.branch(
         face.outer.clone(),
         face.holes.clone(),
-        &mut cuts,
+        Vec::new(),
         Interval::ZERO,
         chords,
     );
-    search.best
+    search.best.into_inner().unwrap_or_else(|e| e.into_inner())
 }
 
-/// Branch and bound over the ways holes meet the rest of the face.
+/// Branch and bound over the ways holes meet the rest of the face. The branches of a
+/// level run in parallel; the answer does not depend on their timing. It is the least
+/// of the leaves' solutions (each leaf's DP is deterministic) by weight and then by
+/// sorted edge list ([`Search::offer`]), and a branch is dropped only when it is
+/// certainly heavier than a solution found, so that least solution is never dropped.
 struct Search<'a> {
     points: &'a [Point2],
-    /// The lightest complete solution so far (cut edges included).
-    best: Option<Solution>,
+    /// The least complete solution so far (cut edges included, sorted).
+    best: Mutex<Option<Solution>>,
     /// Whether holes with edges branch by ears and isolated sites go to the region DP
     /// (otherwise everything branches by joins).
     fast: bool,
@@ -97,10 +104,10 @@ impl Search<'_> {
     /// so every triangulation is reached. `spent` is the length of `cuts`; a branch
     /// already heavier than the best solution is dropped.
     fn branch(
-        &mut self,
+        &self,
         outer: Vec<u32>,
         holes: Vec<Vec<u32>>,
-        cuts: &mut Vec<[u32; 2]>,
+        cuts: Vec<[u32; 2]>,
         spent: Interval,
         chords: &HashSet<[u32; 2]>,
     ) {
@@ -113,7 +120,7 @@ impl Search<'_> {
         if holes.iter().all(flat) {
             let usable = |e| chords.contains(&e);
             let sol = if holes.is_empty() {
-                polygon_dp(self.points, &outer, cuts, &usable)
+                polygon_dp(self.points, &outer, &cuts, &usable)
             } else {
                 let mut sites: Vec<u32> = holes.concat();
                 sites.sort_unstable();
@@ -122,11 +129,11 @@ impl Search<'_> {
                     .flat_map(|h| (0..h.len()).map(|i| key(h[i], h[(i + 1) % h.len()])))
                     .filter(|e| e[0] != e[1])
                     .collect();
-                walk_with_sites(self.points, &outer, &sites, &fixed, cuts, &usable)
+                walk_with_sites(self.points, &outer, &sites, &fixed, &cuts, &usable)
             };
             if let Some(sol) = sol {
                 let mut edges = sol.edges;
-                edges.extend_from_slice(cuts);
+                edges.extend_from_slice(&cuts);
                 self.offer(Solution {
                     edges,
                     weight: sol.weight.plus(spent),
@@ -137,7 +144,7 @@ impl Search<'_> {
         let view = View {
             outer: &outer,
             holes: &holes,
-            cuts,
+            cuts: &cuts,
             chords,
         };
         let (hi, options) = (0..holes.len())
@@ -145,8 +152,9 @@ impl Search<'_> {
             .map(|i| (i, self.steps(&view, i)))
             .min_by_key(|(_, o)| o.len())
             .expect("holes");
-        // Light steps first (a float order, only a heuristic: every step is tried): a
-        // light solution early prunes more. Each step's cost is computed once.
+        // Light steps first (a float order, only a heuristic: every step is tried; each
+        // thread takes its share in this order): a light solution early prunes more.
+        // Each step's cost is computed once.
         let points = self.points;
         let len = |a: u32, b: u32| {
             let (a, b) = (&points[a as usize], &points[b as usize]);
@@ -155,7 +163,7 @@ impl Search<'_> {
         let cost = |s: &Step| s.new_edges().iter().map(|e| len(e[0], e[1])).sum::<f64>();
         let mut order: Vec<(f64, Step)> = options.into_iter().map(|s| (cost(&s), s)).collect();
         order.sort_by(|a, b| a.0.total_cmp(&b.0));
-        for (_, step) in order {
+        order.into_par_iter().for_each(|(_, step)| {
             let mut rest = holes.clone();
             let hole = rest.remove(hi);
             let walk = |target: &[u32]| match step {
@@ -166,30 +174,27 @@ impl Search<'_> {
                 None => walk(&outer),
                 Some(t) => {
                     let t = t - usize::from(t > hi);
-                    let Some(merged) = walk(&rest[t]) else {
-                        continue;
-                    };
-                    rest[t] = merged;
-                    Some(outer.clone())
+                    walk(&rest[t]).map(|merged| {
+                        rest[t] = merged;
+                        outer.clone()
+                    })
                 }
             };
             let Some(outer2) = outer2 else {
-                continue;
+                return;
             };
             let mut chords2 = chords.clone();
-            let mut spent2 = spent;
-            let added = step.new_edges();
-            for e in &added {
-                chords2.remove(e);
-                cuts.push(*e);
+            let (mut cuts2, mut spent2) = (cuts.clone(), spent);
+            for e in step.new_edges() {
+                chords2.remove(&e);
+                cuts2.push(e);
                 spent2 = spent2.plus(Interval::length(
                     &points[e[0] as usize],
                     &points[e[1] as usize],
                 ));
             }
-            self.branch(outer2, rest, cuts, spent2, &chords2);
-            cuts.truncate(cuts.len() - added.len());
-        }
+            self.branch(outer2, rest, cuts2, spent2, &chords2);
+        });
     }
 
     /// The ways to connect hole `i` to the rest of the face, one of which every
@@ -287,20 +292,26 @@ impl Search<'_> {
 
     /// True when `w` is certainly heavier than the best solution so far.
     fn heavier(&self, w: Interval) -> bool {
-        (self.best.as_ref()).is_some_and(|b| w.certain_cmp(b.weight) == Some(Ordering::Greater))
+        let best = self.best.lock().unwrap_or_else(|e| e.into_inner());
+        (best.as_ref()).is_some_and(|b| w.certain_cmp(b.weight) == Some(Ordering::Greater))
     }
 
-    /// Keeps `sol` if it is lighter than the best so far (exactly).
-    fn offer(&mut self, sol: Solution) {
-        let better = match &self.best {
+    /// Keeps `sol` if it is less than the best so far: lighter (exactly), or as light
+    /// with a lexicographically smaller sorted edge list.
+    fn offer(&self, mut sol: Solution) {
+        sol.edges.sort_unstable();
+        let mut best = self.best.lock().unwrap_or_else(|e| e.into_inner());
+        let less = match best.as_ref() {
             None => true,
             Some(b) => match sol.weight.certain_cmp(b.weight) {
                 Some(o) => o == Ordering::Less,
-                None => cmp_edge_sets(self.points, &sol.edges, &b.edges) == Ordering::Less,
+                None => cmp_edge_sets(self.points, &sol.edges, &b.edges)
+                    .then_with(|| sol.edges.cmp(&b.edges))
+                    .is_lt(),
             },
         };
-        if better {
-            self.best = Some(sol);
+        if less {
+            *best = Some(sol);
         }
     }
 }
@@ -854,5 +865,79 @@ mod tests {
         assert!(fast.edges.iter().all(|e| chords.contains(e)));
         let cmp = cmp_edge_sets(&pts, &fast.edges, &joins.edges);
         assert_eq!(cmp, Ordering::Equal);
+    }
+
+    /// The ring between two concentric squares: each of its four isosceles trapezoids
+    /// takes either of two diagonals of the same length, so the face has 16 optima of
+    /// the same exact weight. The branches run in parallel, yet the answer is the same
+    /// on any number of threads.
+    #[test]
+    fn ties_give_the_same_answer_on_any_number_of_threads() {
+        let pts: Vec<Point2> = vec![
+            [-4.0, -4.0],
+            [4.0, -4.0],
+            [4.0, 4.0],
+            [-4.0, 4.0],
+            [-1.0, -1.0],
+            [-1.0, 1.0],
+            [1.0, 1.0],
+            [1.0, -1.0],
+        ];
+        let ring = |v: &[u32]| -> Vec<[u32; 2]> {
+            (0..v.len())
+                .map(|i| key(v[i], v[(i + 1) % v.len()]))
+                .collect()
+        };
+        let (outer, hole): (Vec<u32>, Vec<u32>) = ((0..4).collect(), (4..8).collect());
+        let fixed: Vec<[u32; 2]> = ring(&outer).into_iter().chain(ring(&hole)).collect();
+        let blocked = crate::planar::blocked_pairs(&pts);
+        let mut chords = free_segments(&pts, &fixed, &blocked).expect("fixed edges apart");
+        chords.retain(|e| e[0] < 4); // not inside the hole
+        let face = Face {
+            outer,
+            holes: vec![hole],
+        };
+        let on = |threads: usize| {
+            let pool = rayon::ThreadPoolBuilder::new().num_threads(threads);
+            let sol = pool
+                .build()
+                .unwrap()
+                .install(|| solve(&pts, &face, &chords));
+            let mut edges = sol.expect("a triangulation").edges;
+            edges.sort_unstable();
+            edges
+        };
+        let one = on(1);
+        assert_eq!(one, on(2));
+        assert_eq!(one, on(4));
+        let joins = solve_by(&pts, &face, &chords, false).expect("a triangulation");
+        assert_eq!(cmp_edge_sets(&pts, &one, &joins.edges), Ordering::Equal);
+        // Four corner edges and one diagonal per trapezoid.
+        assert_eq!(one.len(), 8);
+        // The tie-break itself: the mirror image (x -> -x) is another optimum, and
+        // offers in either order keep the lesser edge list.
+        let mirror = |v: u32| [1, 0, 3, 2, 7, 6, 5, 4][v as usize];
+        let mut other: Vec<[u32; 2]> = (one.iter())
+            .map(|e| key(mirror(e[0]), mirror(e[1])))
+            .collect();
+        other.sort_unstable();
+        assert_ne!(other, one);
+        let least = one.clone().min(other.clone());
+        for offers in [[&one, &other], [&other, &one]] {
+            let search = Search {
+                points: &pts,
+                best: Mutex::new(None),
+                fast: true,
+            };
+            for edges in offers {
+                let weight = super::super::weight_of(&pts, edges);
+                search.offer(Solution {
+                    edges: edges.clone(),
+                    weight,
+                });
+            }
+            let best = search.best.into_inner().unwrap().expect("offered");
+            assert_eq!(best.edges, least);
+        }
     }
 }
