@@ -249,10 +249,15 @@ fn solve(
             .map(|(f, _)| f.outer.len())
             .max()
             .unwrap_or(0);
-        let solved: Vec<Option<Solution>> = problems
-            .par_iter()
-            .map(|(face, chords)| faces::solve(points, face, chords))
-            .collect();
+        // Inside the pool even for a single face, which `par_iter` would run on this
+        // thread: the DPs' parallel loops are cheap from a worker, and from outside the
+        // pool each one waits for a worker to take it (a ring-hole face, whose leaves'
+        // DPs ran there one after another, spent half its time so).
+        let solved: Vec<Option<Solution>> = rayon::scope(|_| {
+            (problems.par_iter())
+                .map(|(face, chords)| faces::solve(points, face, chords))
+                .collect()
+        });
         for s in solved {
             let s = s.ok_or_else(|| {
                 PlanarError::new(
