@@ -118,7 +118,7 @@ impl Search<'_> {
         // DP; the others are spliced into the outer walk first.
         let flat = |h: &Vec<u32>| self.fast && walk_area_sign(self.points, h) == 0;
         if holes.iter().all(flat) {
-            let usable = |e| chords.contains(&e);
+            let usable = |e| free(chords, &cuts, e);
             let sol = if holes.is_empty() {
                 polygon_dp(self.points, &outer, &cuts, &usable)
             } else {
@@ -183,17 +183,15 @@ impl Search<'_> {
             let Some(outer2) = outer2 else {
                 return;
             };
-            let mut chords2 = chords.clone();
             let (mut cuts2, mut spent2) = (cuts.clone(), spent);
             for e in step.new_edges() {
-                chords2.remove(&e);
                 cuts2.push(e);
                 spent2 = spent2.plus(Interval::length(
                     &points[e[0] as usize],
                     &points[e[1] as usize],
                 ));
             }
-            self.branch(outer2, rest, cuts2, spent2, &chords2);
+            self.branch(outer2, rest, cuts2, spent2, chords);
         });
     }
 
@@ -317,7 +315,7 @@ impl Search<'_> {
 }
 
 /// A state of the search: the outer walk, the holes left, the edges chosen so far
-/// (`cuts`) and the alive edges still free (`chords`).
+/// (`cuts`) and the face's alive edges (`chords`; those not in `cuts` are free).
 struct View<'v> {
     outer: &'v [u32],
     holes: &'v [Vec<u32>],
@@ -328,8 +326,13 @@ struct View<'v> {
 impl View<'_> {
     /// A free alive edge across no chosen one.
     fn usable(&self, points: &[Point2], e: [u32; 2]) -> bool {
-        self.chords.contains(&e) && clear_of(points, self.cuts, &e)
+        free(self.chords, self.cuts, e) && clear_of(points, self.cuts, &e)
     }
+}
+
+/// An alive edge of the face not chosen yet (`cuts`, a few edges, are the chosen ones).
+fn free(chords: &HashSet<[u32; 2]>, cuts: &[[u32; 2]], e: [u32; 2]) -> bool {
+    chords.contains(&e) && !cuts.contains(&e)
 }
 
 /// The walks other than hole `i`: the outer one (`None`) and the other holes.
