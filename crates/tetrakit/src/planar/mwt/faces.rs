@@ -576,6 +576,17 @@ mod tests {
         .expect("a triangulation with the fixed edges")
     }
 
+    /// `m` sites at integer coordinates near a circle of `radius`, counter-clockwise,
+    /// each turned by up to 0.3 of the step between them.
+    fn jittered_polygon(rng: &mut Rng, m: usize, radius: f64) -> Vec<Point2> {
+        (0..m)
+            .map(|i| {
+                let a = std::f64::consts::TAU * (i as f64 + 0.3 * rng.unit()) / m as f64;
+                [(radius * a.cos()).round(), (radius * a.sin()).round()]
+            })
+            .collect()
+    }
+
     /// Faces with up to four holes (isolated sites, edges, paths and triangles) against
     /// exhaustive search, including sites that an optimum joins only to other holes (a
     /// ring around a centre site).
@@ -585,12 +596,7 @@ mod tests {
         let mut cases: Vec<Vec<Point2>> = Vec::new();
         for _ in 0..240 {
             let m = 4 + rng.below(4);
-            let mut pts: Vec<Point2> = (0..m)
-                .map(|i| {
-                    let a = std::f64::consts::TAU * (i as f64 + 0.3 * rng.unit()) / m as f64;
-                    [(8.0 * a.cos()).round(), (8.0 * a.sin()).round()]
-                })
-                .collect();
+            let mut pts = jittered_polygon(&mut rng, m, 8.0);
             for _ in 0..1 + rng.below(4) {
                 pts.push([rng.below(7) as f64 - 3.0, rng.below(7) as f64 - 3.0]);
             }
@@ -658,12 +664,7 @@ mod tests {
         let mut checked = 0;
         for case in 0..40 {
             let m = 6 + rng.below(4);
-            let mut pts: Vec<Point2> = (0..m)
-                .map(|i| {
-                    let a = std::f64::consts::TAU * (i as f64 + 0.3 * rng.unit()) / m as f64;
-                    [(20.0 * a.cos()).round(), (20.0 * a.sin()).round()]
-                })
-                .collect();
+            let mut pts = jittered_polygon(&mut rng, m, 20.0);
             let clusters = 2 + usize::from(case % 4 == 0);
             for c in 0..clusters {
                 let (x, y) = (rng.below(17) as f64 - 8.0, rng.below(17) as f64 - 8.0);
