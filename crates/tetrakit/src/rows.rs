@@ -65,15 +65,15 @@ pub(crate) fn buckets<T: Copy + Default>(
     (start, items)
 }
 
-/// Groups the pairs `(key, value)` that `emit(i)` gives for every item `i < items` into
+/// Groups the pairs `(key, value)` that `emit(i)` yields for every item `i < items` into
 /// rows by key: `start` (`keys + 1` offsets) and the values, each row in item order. Keys
 /// at or beyond `keys` are skipped. Each thread counts and fills the rows of its own range
 /// of keys while reading every item: reads are sequential and cheap, the scattered writes
 /// are what costs, and they are split between the threads without contention.
-pub(crate) fn group<V: Copy + Default + Send + Sync, const K: usize>(
+pub(crate) fn group<V: Copy + Default + Send + Sync, I: IntoIterator<Item = (usize, V)>>(
     keys: usize,
     items: usize,
-    emit: impl Fn(usize) -> [(usize, V); K] + Sync,
+    emit: impl Fn(usize) -> I + Sync,
 ) -> (Vec<usize>, Vec<V>) {
     let parts = rayon::current_num_threads().clamp(1, keys.max(1));
     let bounds: Vec<usize> = (0..=parts).map(|p| keys * p / parts).collect();

@@ -38,14 +38,15 @@ impl EdgeGrid {
             start: Vec::new(),
             items: Vec::new(),
         };
-        let ranges: Vec<(usize, usize, usize, usize)> = ids
-            .iter()
-            .map(|&e| g.range(points, &edges[e as usize]))
-            .collect();
-        let entries = ids.iter().zip(&ranges).flat_map(|(&e, &(x0, x1, y0, y1))| {
-            (y0..=y1).flat_map(move |y| (x0..=x1).map(move |x| (y * nx + x, e)))
-        });
-        (g.start, g.items) = crate::rows::buckets(nx * ny, entries);
+        (g.start, g.items) = {
+            let g = &g;
+            let (start, items) = crate::rows::group(nx * ny, ids.len(), |i| {
+                let e = ids[i];
+                let (x0, x1, y0, y1) = g.range(points, &edges[e as usize]);
+                (y0..=y1).flat_map(move |y| (x0..=x1).map(move |x| (y * nx + x, e)))
+            });
+            (start.into_iter().map(|s| s as u32).collect(), items)
+        };
         g
     }
 

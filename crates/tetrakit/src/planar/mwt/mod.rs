@@ -26,7 +26,7 @@ use faces::Face;
 use lmt::{ALIVE, CERTAIN};
 use polygon::Solution;
 use rayon::prelude::*;
-use std::collections::{HashMap, HashSet};
+use std::collections::HashSet;
 use std::time::Instant;
 use walks::Rotation;
 
@@ -232,7 +232,7 @@ fn solve(
     stats.seconds[0] = t0.elapsed().as_secs_f64();
     progress(MwtStage::Skeleton);
     let t1 = Instant::now();
-    let (sk, lstats) = lmt::lmt_skeleton(points, cands, &forced, &forbidden);
+    let (sk, lstats) = lmt::lmt_skeleton(points, &hull, cands, &forced, &forbidden);
     stats.skeleton_edges = lstats.certain;
     stats.undecided_edges = lstats.undecided;
     stats.seconds[1] = t1.elapsed().as_secs_f64();
@@ -337,26 +337,14 @@ fn all_segments(points: &[Point2]) -> Vec<[u32; 2]> {
 
 /// Counter-clockwise triangles of a plane graph whose bounded faces are triangles.
 fn triangles_of(points: &[Point2], edges: &[[u32; 2]]) -> Vec<[u32; 3]> {
-    let rot = Rotation::new(points, edges);
-    let (walks, _) = rot.walks();
-    walks
-        .into_iter()
-        .filter(|w| {
-            w.len() == 3
-                && orient2d(
-                    &points[w[0] as usize],
-                    &points[w[1] as usize],
-                    &points[w[2] as usize],
-                ) > 0
-        })
-        .map(|w| [w[0], w[1], w[2]])
-        .collect()
+    Rotation::new(points, edges).triangles(points)
 }
 
 /// A face to solve and the alive edges usable inside it.
 type FaceProblem = (Face, HashSet<[u32; 2]>);
 
-/// Groups the alive edges by the face of the certain edges they lie in.
+/// Groups the alive edges by the face of the certain edges they lie in. The faces come
+/// in a fixed order (by their first walk or lone site).
 fn undecided_faces(
     points: &[Point2],
     certain: &[[u32; 2]],
@@ -364,50 +352,78 @@ fn undecided_faces(
 ) -> Result<Vec<FaceProblem>, PlanarError> {
     let rot = Rotation::new(points, certain);
     let (walks, walk_of) = rot.walks();
+    // Elements: the walks, then the sites (a site on no certain edge is a face's hole).
     let w = walks.len() as u32;
-    let mut parent: Vec<u32> = (0..w + points.len() as u32).collect();
+    let elems = w as usize + points.len();
     let elem = |v: u32, d: u32| rot.face_toward(points, &walk_of, v, d).unwrap_or(w + v);
-    let mut first = Vec::with_capacity(alive.len());
-    for e in alive {
-        let (a, b) = (elem(e[0], e[1]), elem(e[1], e[0]));
+    let ends: Vec<[u32; 2]> = (alive.par_iter())
+        .map(|e| [elem(e[0], e[1]), elem(e[1], e[0])])
+        .collect();
+    let mut parent: Vec<u32> = (0..elems as u32).collect();
+    for &[a, b] in &ends {
         let (ra, rb) = (find(&mut parent, a), find(&mut parent, b));
-        parent[ra as usize] = rb;
-        first.push(a);
+        parent[ra as usize] = ra.min(rb);
+        parent[rb as usize] = ra.min(rb);
     }
-    let mut groups: HashMap<u32, (Vec<u32>, HashSet<[u32; 2]>)> = HashMap::new();
-    for (e, &a) in alive.iter().zip(&first) {
-        let root = find(&mut parent, a);
-        groups.entry(root).or_default().1.insert(*e);
+    let root: Vec<u32> = (0..elems as u32).map(|x| find(&mut parent, x)).collect();
+    // Alive edges and member elements, each grouped by root (the least element of a face).
+    let mut chords: Vec<(u32, [u32; 2])> = (ends.par_iter().zip(alive))
+        .map(|(ab, e)| (root[ab[0] as usize], *e))
+        .collect();
+    chords.par_sort_unstable();
+    let mut with_chords = vec![false; elems];
+    for c in &chords {
+        with_chords[c.0 as usize] = true;
     }
-    for x in 0..w + points.len() as u32 {
-        let root = find(&mut parent, x);
-        if let Some(g) = groups.get_mut(&root) {
-            g.0.push(x);
-        }
-    }
-    let mut out = Vec::new();
-    for (_, (members, chords)) in groups {
-        let mut outer = None;
-        let mut holes = Vec::new();
-        // A face's one walk bounds it (alive edges lie in bounded faces); with several,
-        // the outer one runs counter-clockwise and the holes clockwise or flat.
-        let alone = members.len() == 1;
-        for x in members {
-            if x >= w {
-                holes.push(vec![x - w]);
-            } else if alone || walk_area_sign(points, &walks[x as usize]) > 0 {
-                if outer.replace(walks[x as usize].clone()).is_some() {
-                    return Err(PlanarError::new("internal: a face with two outer walks"));
-                }
-            } else {
-                holes.push(walks[x as usize].clone());
+    let members: Vec<u32> = (0..elems as u32)
+        .filter(|&x| with_chords[root[x as usize] as usize])
+        .collect();
+    let mut members_by_root: Vec<(u32, u32)> =
+        members.iter().map(|&x| (root[x as usize], x)).collect();
+    members_by_root.par_sort_unstable();
+    let groups: Vec<_> = chords
+        .chunk_by(|a, b| a.0 == b.0)
+        .zip(members_by_root.chunk_by(|a, b| a.0 == b.0))
+        .collect();
+    groups
+        .into_par_iter()
+        .map(|(chords, members)| {
+            debug_assert_eq!(
+                chords[0].0, members[0].0,
+                "the same roots in the same order"
+            );
+            let face = face_of(points, &walks, w, members.iter().map(|m| m.1))?;
+            Ok((face, chords.iter().map(|c| c.1).collect()))
+        })
+        .collect()
+}
+
+/// The face bounded by the walks and lone sites `members` (elements `w + v` are sites).
+/// A face's one walk bounds it (alive edges lie in bounded faces); with several, the
+/// outer one runs counter-clockwise and the holes clockwise or flat.
+fn face_of(
+    points: &[Point2],
+    walks: &[Vec<u32>],
+    w: u32,
+    members: impl ExactSizeIterator<Item = u32>,
+) -> Result<Face, PlanarError> {
+    let alone = members.len() == 1;
+    let mut outer = None;
+    let mut holes = Vec::new();
+    for x in members {
+        if x >= w {
+            holes.push(vec![x - w]);
+        } else if alone || walk_area_sign(points, &walks[x as usize]) > 0 {
+            if outer.replace(walks[x as usize].clone()).is_some() {
+                return Err(PlanarError::new("internal: a face with two outer walks"));
             }
+        } else {
+            holes.push(walks[x as usize].clone());
         }
-        let outer = outer
-            .ok_or_else(|| PlanarError::new("internal: undecided edges outside every face"))?;
-        out.push((Face { outer, holes }, chords));
     }
-    Ok(out)
+    let outer =
+        outer.ok_or_else(|| PlanarError::new("internal: undecided edges outside every face"))?;
+    Ok(Face { outer, holes })
 }
 
 #[cfg(test)]

@@ -176,6 +176,25 @@ impl Rotation {
         (walks, walk_of)
     }
 
+    /// The counter-clockwise triangles that are faces (walks of three half-edges), each
+    /// from its least vertex, in the order of [`Rotation::walks`]; vertices in parallel.
+    pub fn triangles(&self, points: &[Point2]) -> Vec<[u32; 3]> {
+        (0..self.start.len() as u32 - 1)
+            .into_par_iter()
+            .flat_map_iter(|v| {
+                let row = self.start[v as usize] as usize..self.start[v as usize + 1] as usize;
+                row.filter_map(move |h| {
+                    let h2 = self.next_half(h);
+                    let h3 = self.next_half(h2);
+                    let (a, b) = (self.nbr[h], self.nbr[h2]);
+                    let pt = |x: u32| &points[x as usize];
+                    (self.next_half(h3) == h && v < a && v < b && orient2d(pt(v), pt(a), pt(b)) > 0)
+                        .then_some([v, a, b])
+                })
+            })
+            .collect()
+    }
+
     /// The walk id of the face containing direction `d - v` next to `v` (`None` when
     /// `v` has no neighbours).
     pub fn face_toward(&self, points: &[Point2], walk_of: &[u32], v: u32, d: u32) -> Option<u32> {
