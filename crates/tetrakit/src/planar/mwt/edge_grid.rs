@@ -4,6 +4,7 @@
 //! itself is decided exactly.
 
 use crate::geom::Point2;
+use rayon::prelude::*;
 
 pub(crate) struct EdgeGrid {
     origin: Point2,
@@ -38,15 +39,16 @@ impl EdgeGrid {
             start: Vec::new(),
             items: Vec::new(),
         };
-        (g.start, g.items) = {
-            let g = &g;
-            let (start, items) = crate::rows::group(nx * ny, ids.len(), |i| {
-                let e = ids[i];
-                let (x0, x1, y0, y1) = g.range(points, &edges[e as usize]);
-                (y0..=y1).flat_map(move |y| (x0..=x1).map(move |x| (y * nx + x, e)))
-            });
-            (start.into_iter().map(|s| s as u32).collect(), items)
-        };
+        // Each edge's cells once (random reads of its ends), then the rows from them.
+        let ranges: Vec<[u32; 4]> = (ids.par_iter())
+            .map(|&e| g.range(points, &edges[e as usize]).map(|c| c as u32))
+            .collect();
+        let (start, items) = crate::rows::group(nx * ny, ids.len(), |i| {
+            let ([x0, x1, y0, y1], e) = (ranges[i].map(|c| c as usize), ids[i]);
+            (y0..=y1).flat_map(move |y| (x0..=x1).map(move |x| (y * nx + x, e)))
+        });
+        g.start = start.into_iter().map(|s| s as u32).collect();
+        g.items = items;
         g
     }
 
@@ -55,19 +57,19 @@ impl EdgeGrid {
         if c <= 0.0 { 0 } else { (c as usize).min(n - 1) }
     }
 
-    fn range(&self, points: &[Point2], e: &[u32; 2]) -> (usize, usize, usize, usize) {
+    fn range(&self, points: &[Point2], e: &[u32; 2]) -> [usize; 4] {
         let (a, b) = (points[e[0] as usize], points[e[1] as usize]);
         let x0 = self.coord(a[0].min(b[0]), 0, self.nx);
         let x1 = self.coord(a[0].max(b[0]), 0, self.nx);
         let y0 = self.coord(a[1].min(b[1]), 1, self.ny);
         let y1 = self.coord(a[1].max(b[1]), 1, self.ny);
-        (x0, x1, y0, y1)
+        [x0, x1, y0, y1]
     }
 
     /// True when some stored edge crosses edge `e` properly.
     pub fn crossed(&self, points: &[Point2], edges: &[[u32; 2]], e: u32) -> bool {
         let [a, b] = edges[e as usize];
-        let (x0, x1, y0, y1) = self.range(points, &edges[e as usize]);
+        let [x0, x1, y0, y1] = self.range(points, &edges[e as usize]);
         let p = |i: u32| &points[i as usize];
         for y in y0..=y1 {
             for x in x0..=x1 {
