@@ -276,7 +276,7 @@ fn eliminate(points: &[Point2], sk: &Skeleton, status: &[AtomicU8], mut queue: V
 }
 
 /// A round in which more than one edge in this many died checks every certificate
-/// for dead edges (a pass in edge order, at 10^6 sites 40 ms) rather than the edges
+/// for dead edges (a pass in edge order, at 10^6 sites 35–120 ms) rather than the edges
 /// around each dead one (46 random reads per dead edge; ten times slower in the first
 /// rounds, faster once few edges die).
 const FULL_SCAN_RATIO: usize = 256;

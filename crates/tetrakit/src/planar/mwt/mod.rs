@@ -375,15 +375,14 @@ fn undecided_faces(
     for c in &chords {
         with_chords[c.0 as usize] = true;
     }
-    let members: Vec<u32> = (0..elems as u32)
-        .filter(|&x| with_chords[root[x as usize] as usize])
+    let mut members: Vec<(u32, u32)> = (0..elems as u32)
+        .map(|x| (root[x as usize], x))
+        .filter(|m| with_chords[m.0 as usize])
         .collect();
-    let mut members_by_root: Vec<(u32, u32)> =
-        members.iter().map(|&x| (root[x as usize], x)).collect();
-    members_by_root.par_sort_unstable();
+    members.par_sort_unstable();
     let groups: Vec<_> = chords
         .chunk_by(|a, b| a.0 == b.0)
-        .zip(members_by_root.chunk_by(|a, b| a.0 == b.0))
+        .zip(members.chunk_by(|a, b| a.0 == b.0))
         .collect();
     groups
         .into_par_iter()
