@@ -447,6 +447,68 @@ mod tests {
         assert_eq!(on(1), on(8));
     }
 
+    /// Alive edges are grouped by the face of the certain edges they lie in: two faces
+    /// split by a certain edge, one with a triangle and a lone site as holes, the other
+    /// with a lone site; the unbounded face and faces without alive edges are not listed.
+    #[test]
+    fn undecided_edges_are_grouped_by_face() {
+        let pts: Vec<Point2> = vec![
+            [0.0, 0.0],
+            [20.0, 0.0],
+            [20.0, 10.0],
+            [0.0, 10.0],
+            [3.0, 3.0],
+            [6.0, 3.0],
+            [4.0, 6.0],
+            [7.0, 7.0],
+            [10.0, 0.0],
+            [10.0, 10.0],
+            [15.0, 5.0],
+        ];
+        let mut certain = vec![
+            [0, 8],
+            [1, 8],
+            [1, 2],
+            [2, 9],
+            [3, 9],
+            [0, 3],
+            [8, 9],
+            [4, 5],
+            [5, 6],
+            [4, 6],
+        ];
+        certain.sort_unstable();
+        let alive = [[0, 4], [6, 7], [7, 9], [1, 10], [9, 10]];
+        let mut faces: Vec<_> = undecided_faces(&pts, &certain, &alive)
+            .unwrap()
+            .into_iter()
+            .map(|(f, chords)| {
+                // Walks from their least site, holes and chords sorted.
+                let least = |w: &[u32]| {
+                    let i = (0..w.len()).min_by_key(|&i| w[i]).unwrap();
+                    [&w[i..], &w[..i]].concat()
+                };
+                let mut holes: Vec<Vec<u32>> = f.holes.iter().map(|h| least(h)).collect();
+                holes.sort();
+                let mut chords: Vec<[u32; 2]> = chords.into_iter().collect();
+                chords.sort_unstable();
+                (least(&f.outer), holes, chords)
+            })
+            .collect();
+        faces.sort();
+        assert_eq!(
+            faces,
+            vec![
+                (
+                    vec![0, 8, 9, 3],
+                    vec![vec![4, 6, 5], vec![7]],
+                    vec![[0, 4], [6, 7], [7, 9]]
+                ),
+                (vec![1, 2, 9, 8], vec![vec![10]], vec![[1, 10], [9, 10]]),
+            ]
+        );
+    }
+
     /// The solver works on sites in grid order; its answer must be in the caller's.
     #[test]
     fn answer_is_in_the_callers_site_order() {
