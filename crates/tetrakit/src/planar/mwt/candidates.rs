@@ -270,7 +270,8 @@ impl Scratch {
 }
 
 /// All candidate edges `[p, q]` (`p < q`) of distinct sites, sorted: the pairs with an
-/// empty diamond and no site on the open segment (a few more may be kept, never fewer).
+/// empty diamond and no site on the open segment (a few more pairs with both diamonds
+/// occupied may be kept, never fewer; never a pair with a site on its open segment).
 /// An error names coinciding sites or a coordinate outside the exact range.
 ///
 /// ```
@@ -370,16 +371,18 @@ fn open(pp: &Point2, pq: &Point2, coords: &[Point2], around: &[Seen], x: &Seen) 
     let mut hits = (false, false);
     // Counter-clockwise: the sites within `θ` of `q`'s direction (and those within the
     // margin clockwise of it): the only ones that can be in the left diamond. Past the
-    // first hit, the rest are left of `pq` (or a margin's width right of it, whose test
-    // is skipped: keeping a pair is always safe).
+    // first hit outside the margins around `q`'s direction, the rest are left of `pq`
+    // (whose test is skipped: keeping a pair is always safe). Inside the margins the
+    // scan goes on: a site on the open segment may sort after one just left of it.
     for k in start..start + n {
-        if ccw_from(x.pa - EPS, around[k % n].pa) > x.fwd + 2.0 * EPS {
+        let from = ccw_from(x.pa - EPS, around[k % n].pa);
+        if from > x.fwd + 2.0 * EPS {
             break;
         }
         if blocked(k, &mut hits) {
             return false;
         }
-        if hits.0 {
+        if hits.0 && from > 2.0 * EPS {
             break;
         }
     }
@@ -658,6 +661,33 @@ mod tests {
             .collect();
         for (name, pts) in [("strip", strip), ("slanted", slanted), ("rim", rim)] {
             assert_eq!(missing_candidates(&pts), 0, "{name}");
+        }
+    }
+
+    /// Sites on the rays of a floating-point polar grid tie in pseudo-angle with sites
+    /// just off their ray (a site on `pq` sorted after one in its left diamond): no
+    /// candidate may pass through a site, and none may be missed.
+    #[test]
+    fn no_candidate_passes_through_a_site_on_polar_grids() {
+        for (rings, rays) in [(5, 20), (10, 40), (6, 30)] {
+            let pts: Vec<Point2> = (1..=rings)
+                .flat_map(|r| {
+                    (0..rays).map(move |k| {
+                        let a = std::f64::consts::TAU * k as f64 / rays as f64;
+                        [r as f64 * a.cos(), r as f64 * a.sin()]
+                    })
+                })
+                .collect();
+            assert_eq!(missing_candidates(&pts), 0, "{rings} x {rays}");
+            let through = |e: &&[u32; 2]| {
+                let (p, q) = (&pts[e[0] as usize], &pts[e[1] as usize]);
+                pts.iter().any(|r| diamond_hit(p, q, r).on_segment)
+            };
+            assert_eq!(
+                search(&pts).iter().filter(through).count(),
+                0,
+                "{rings} x {rays}"
+            );
         }
     }
 

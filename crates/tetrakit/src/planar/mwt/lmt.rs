@@ -80,6 +80,20 @@ fn positions(start: &[u32], adj: &[(u32, u32)], edges: &[[u32; 2]]) -> Vec<[u32;
         .collect()
 }
 
+/// A site `v` with two candidate neighbours `a`, `b` in one direction, if any: then one
+/// of `va`, `vb` passes through a site, which the candidate filter excludes and the
+/// angular sweeps assume (rows in parallel; adjacent entries of a sorted row).
+fn overlapping(points: &[Point2], start: &[u32], adj: &[(u32, u32)]) -> Option<[u32; 3]> {
+    (0..start.len() as u32 - 1)
+        .into_par_iter()
+        .find_map_any(|v| {
+            let row = &adj[start[v as usize] as usize..start[v as usize + 1] as usize];
+            (row.windows(2))
+                .find(|w| super::walks::angle_cmp(points, v, w[0].0, w[1].0).is_eq())
+                .map(|w| [v, w[0].0, w[1].0])
+        })
+}
+
 /// Hull edges (consecutive boundary sites, collinear ones included), as `[p, q]`, `p < q`.
 fn hull_edges(points: &[Point2], hull: &Hull2) -> Vec<[u32; 2]> {
     hull.boundary_chains(points)
@@ -313,9 +327,12 @@ pub fn lmt_skeleton(
     candidates: Vec<[u32; 2]>,
     forced: &[[u32; 2]],
     forbidden: &[[u32; 2]],
-) -> (Skeleton, LmtStats) {
+) -> Result<(Skeleton, LmtStats), [u32; 3]> {
     let n = points.len();
     let (start, adj) = super::walks::ccw_rows(points, &candidates);
+    if let Some(v_a_b) = overlapping(points, &start, &adj) {
+        return Err(v_a_b);
+    }
     let pos = positions(&start, &adj, &candidates);
     let mut sk = Skeleton {
         status: vec![ALIVE; candidates.len()],
@@ -363,7 +380,7 @@ pub fn lmt_skeleton(
     let certain = sk.status.iter().filter(|&&s| s == CERTAIN).count();
     let undecided = sk.status.iter().filter(|&&s| s == ALIVE).count();
     let stats = LmtStats { certain, undecided };
-    (sk, stats)
+    Ok((sk, stats))
 }
 
 #[cfg(test)]
@@ -439,7 +456,8 @@ mod tests {
                     status[e as usize].store(IMPOSSIBLE, Relaxed);
                 }
             }
-            let (sk, _) = lmt_skeleton(&pts, &Hull2::new(&pts), plain.edges.clone(), &[], &[]);
+            let (sk, _) =
+                lmt_skeleton(&pts, &Hull2::new(&pts), plain.edges.clone(), &[], &[]).unwrap();
             let kept = |s: &[u8]| -> Vec<bool> { s.iter().map(|&s| s != IMPOSSIBLE).collect() };
             let plain_status: Vec<u8> = status.iter().map(|s| s.load(Relaxed)).collect();
             assert_eq!(kept(&sk.status), kept(&plain_status), "{dist:?}");

@@ -232,7 +232,13 @@ fn solve(
     stats.seconds[0] = t0.elapsed().as_secs_f64();
     progress(MwtStage::Skeleton);
     let t1 = Instant::now();
-    let (sk, lstats) = lmt::lmt_skeleton(points, &hull, cands, &forced, &forbidden);
+    let (sk, lstats) =
+        lmt::lmt_skeleton(points, &hull, cands, &forced, &forbidden).map_err(|[v, a, b]| {
+            PlanarError::new(format!(
+                "internal: candidate edges {0}-{1} and {0}-{2} overlap (one passes through a site)",
+                global[v as usize], global[a as usize], global[b as usize]
+            ))
+        })?;
     stats.skeleton_edges = lstats.certain;
     stats.undecided_edges = lstats.undecided;
     stats.seconds[1] = t1.elapsed().as_secs_f64();
