@@ -319,6 +319,9 @@ pub struct LmtStats {
 /// Merge steps (`Σ deg²` over the sites) allowed beyond `1000·n` for the elimination.
 const WORK_BUDGET: usize = 100_000_000;
 
+/// Sites inside the hull allowed when the elimination is skipped.
+const SKIP_MAX_INSIDE: usize = 64;
+
 /// Computes the LMT-skeleton of `candidates` (sorted `[p, q]`, `p < q`, containing every
 /// MWT edge), with `forced` edges taken as certain (their crossers impossible).
 pub fn lmt_skeleton(
@@ -344,9 +347,12 @@ pub fn lmt_skeleton(
     };
     // Sites in (near) convex position have Θ(n) candidates each and make no LMT
     // progress; past the budget the elimination is skipped (every candidate stays
-    // alive, which is sound) and the exact stage gets the whole face.
+    // alive, which is sound) and the exact stage gets the whole face, with the sites
+    // inside the hull as holes. With more of those than it can take, the elimination
+    // runs whatever its cost (dense rows of collinear sites, a polygon round a cluster).
     let work: usize = (0..n as u32).map(|v| sk.around(v).len().pow(2)).sum();
-    let eliminating = work <= WORK_BUDGET + 1000 * n;
+    let inside = hull.on_boundary.iter().filter(|&&b| !b).count();
+    let eliminating = work <= WORK_BUDGET + 1000 * n || inside > SKIP_MAX_INSIDE;
     let find = |sk: &Skeleton, e: &[u32; 2]| sk.edges.binary_search(e).ok();
     for e in hull_edges(points, hull).iter().chain(forced) {
         if let Some(id) = find(&sk, e) {
@@ -462,6 +468,21 @@ mod tests {
             let plain_status: Vec<u8> = status.iter().map(|s| s.load(Relaxed)).collect();
             assert_eq!(kept(&sk.status), kept(&plain_status), "{dist:?}");
         }
+    }
+
+    /// Past the work budget the elimination is skipped only for sites in (near) convex
+    /// position. With many sites inside the hull it runs: dense rows of collinear sites
+    /// (long candidate rows) once went whole to the exact stage, as one face.
+    #[test]
+    fn the_elimination_runs_past_the_budget_with_many_sites_inside() {
+        let pts = points2d(Distribution::Uniform, 600, 5);
+        // Every segment a candidate: Σ deg² = 600 · 599², past the budget.
+        let n = pts.len() as u32;
+        let all: Vec<[u32; 2]> = (0..n)
+            .flat_map(|a| (a + 1..n).map(move |b| [a, b]))
+            .collect();
+        let (_, stats) = lmt_skeleton(&pts, &Hull2::new(&pts), all, &[], &[]).unwrap();
+        assert!(stats.certain > 2 * pts.len(), "{} certain", stats.certain);
     }
 
     #[test]
