@@ -271,8 +271,10 @@ pub fn diamond_hit(p: &Point2, q: &Point2, r: &Point2) -> DiamondHit {
             (exact_cross(&d, &w), exact_dot(&d, &w), exact_dot(&d, &d))
         })
     };
+    // Near-collinear sites (rows of a rotated grid) fail the filter often; Shewchuk's
+    // adaptive orientation decides them without building expansions.
     let c_sign = filtered(dx * wy - dy * wx, (dx * wy).abs() + (dy * wx).abs())
-        .unwrap_or_else(|| ex().0.sign());
+        .unwrap_or_else(|| super::orient2d(p, q, r));
     let t_mag = (dx * wx).abs() + (dy * wy).abs();
     let c_mag = (dx * wy).abs() + (dy * wx).abs();
     let n = dx * dx + dy * dy;
@@ -391,6 +393,58 @@ mod tests {
         let (p, q) = ([0.0, 0.0], [32.0, 0.0]);
         assert!(!diamond_hit(&p, &q, &[16.0, 13.0]).left);
         assert!(diamond_hit(&p, &q, &[16.0, 12.999999]).left);
+    }
+
+    /// [`diamond_hit`] from exact expansions alone (no filter).
+    fn diamond_exact(p: &Point2, q: &Point2, r: &Point2) -> DiamondHit {
+        let (d, w) = (exact_vec(p, q), exact_vec(p, r));
+        let (c, t, n) = (exact_cross(&d, &w), exact_dot(&d, &w), exact_dot(&d, &d));
+        let s = c.sign();
+        if s == 0 {
+            let on = t.sign() > 0 && n.sub(&t).sign() > 0;
+            return DiamondHit {
+                on_segment: on,
+                ..Default::default()
+            };
+        }
+        let abs_c = c.scale(s as f64);
+        let inside = t.scale(13.0).sub(&abs_c.scale(16.0)).sign() > 0
+            && n.sub(&t).scale(13.0).sub(&abs_c.scale(16.0)).sign() > 0;
+        DiamondHit {
+            left: inside && s > 0,
+            right: inside && s < 0,
+            on_segment: false,
+        }
+    }
+
+    /// Sites on the rows of a rotated grid are collinear up to rounding, where the
+    /// filter cannot decide the side: the adaptive fallback agrees with expansions.
+    #[test]
+    fn diamond_on_rotated_rows_matches_exact_expansions() {
+        let mut rng = Rng::new(7);
+        let mut undecided = 0;
+        for _ in 0..20000 {
+            let a = rng.unit() * std::f64::consts::TAU;
+            let (c, s) = (a.cos(), a.sin());
+            let mut pt = || {
+                let (x, y) = (rng.unit() * 8.0, rng.below(3) as f64 * 0.5);
+                [c * x - s * y, s * x + c * y]
+            };
+            let (p, q, r) = (pt(), pt(), pt());
+            if p == q || p == r || q == r {
+                continue;
+            }
+            let (dx, dy, wx, wy) = (q[0] - p[0], q[1] - p[1], r[0] - p[0], r[1] - p[1]);
+            undecided += usize::from(
+                filtered(dx * wy - dy * wx, (dx * wy).abs() + (dy * wx).abs()).is_none(),
+            );
+            assert_eq!(
+                diamond_hit(&p, &q, &r),
+                diamond_exact(&p, &q, &r),
+                "{p:?} {q:?} {r:?}"
+            );
+        }
+        assert!(undecided > 1000, "{undecided} triples past the filter");
     }
 
     #[test]
