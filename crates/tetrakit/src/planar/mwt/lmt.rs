@@ -324,6 +324,8 @@ const SKIP_MAX_INSIDE: usize = 64;
 
 /// Computes the LMT-skeleton of `candidates` (sorted `[p, q]`, `p < q`, containing every
 /// MWT edge), with `forced` edges taken as certain (their crossers impossible).
+/// `Err([v, a, b])` when candidates `va` and `vb` share a direction (one of them passes
+/// through a site): the sweeps' premise, so nothing is decided.
 pub fn lmt_skeleton(
     points: &[Point2],
     hull: &Hull2,
