@@ -48,11 +48,12 @@ fn skeleton_matches_brute_force_on_random_grid_and_cocircular_sets() {
     let mut rng = Rng::new(11);
     let betas = ["0.5", "0.9", "1", "1.05", "1.1547", "1.16", "1.2", "2", "3"];
     let mut cases = 0;
-    for round in 0..600 {
+    for round in 0..800 {
         let n = 3 + rng.below(22);
-        let pts = match round % 3 {
+        let pts = match round % 4 {
             0 => random_points(&mut rng, n, 1000),
             1 => random_points(&mut rng, n, 6), // grid: many cocircular quadruples
+            2 => polar_points(&mut rng, n),     // near-collinear and cocircular floats
             _ => {
                 // a regular octagon-ish cocircular set on integers plus some points
                 let mut v: Vec<Point2> = [
@@ -83,7 +84,7 @@ fn skeleton_matches_brute_force_on_random_grid_and_cocircular_sets() {
             }
         }
     }
-    assert!(cases > 5000);
+    assert!(cases > 7000);
 }
 /// Sites of a polar grid in floating point, `r (cos a, sin a)`, most on one to three
 /// rays: sites on a ray are exactly collinear or off the line by a rounding error, so
