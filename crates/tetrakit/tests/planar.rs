@@ -153,6 +153,72 @@ fn mwt_matches_exhaustive_search_and_skeleton_is_in_every_optimum() {
     assert!(checked > 450);
 }
 
+/// Degenerate sets of 20–120 sites: a float polar grid, rotated rows (on a lattice and
+/// at random along the row), a float lattice of step 0.1, staggered concentric polygons.
+fn degenerate_points(rng: &mut Rng, kind: usize, n: usize) -> Vec<Point2> {
+    let rays = [12, 20, 24, 36][rng.below(4)];
+    let a = rng.unit();
+    let (c, s) = (a.cos(), a.sin());
+    let rotate = |x: f64, y: f64| [c * x - s * y, s * x + c * y];
+    let mut out: Vec<Point2> = Vec::new();
+    for _ in 0..100 * n {
+        let p = match kind {
+            0 => {
+                let a = std::f64::consts::TAU * rng.below(rays) as f64 / rays as f64;
+                let r = (1 + rng.below(12)) as f64 * 0.7;
+                [r * a.cos(), r * a.sin()]
+            }
+            1 => rotate(rng.below(30) as f64 * 0.37, rng.below(5) as f64),
+            2 => rotate(rng.unit() * 10.0, rng.below(6) as f64),
+            3 => [rng.below(12) as f64 * 0.1, rng.below(12) as f64 * 0.1],
+            _ => {
+                let (m, r) = ([5, 6, 8][rng.below(3)], 1 + rng.below(6));
+                let k = rng.below(m) as f64 + 0.5 * (r % 2) as f64;
+                let a = std::f64::consts::TAU * k / m as f64;
+                [r as f64 * a.cos(), r as f64 * a.sin()]
+            }
+        };
+        if !out.contains(&p) {
+            out.push(p);
+        }
+        if out.len() == n {
+            break;
+        }
+    }
+    out
+}
+
+/// The diamond filter and the LMT-skeleton lose nothing on degenerate sets too large for
+/// exhaustive search: forcing a hull edge (in every triangulation) makes every segment a
+/// candidate, and the optimum must weigh the same.
+#[test]
+fn mwt_is_the_same_with_every_segment_a_candidate_on_degenerate_sets() {
+    let mut rng = Rng::new(4242);
+    for round in 0..150 {
+        let n = 20 + rng.below(100);
+        let pts = degenerate_points(&mut rng, round % 5, n);
+        let hull = tetrakit::geom::Hull2::new(&pts);
+        let Some(side) = hull.boundary_chains(&pts).first().map(|c| [c[0], c[1]]) else {
+            continue;
+        };
+        let forced = vec![[side[0].min(side[1]), side[0].max(side[1])]];
+        let plain = mwt(&pts).unwrap();
+        let every = mwt_with(
+            &pts,
+            &MwtOptions {
+                forced,
+                forbidden: Vec::new(),
+            },
+        )
+        .unwrap();
+        assert_eq!(
+            cmp_edge_sets(&pts, &plain.edges, &every.edges),
+            Ordering::Equal,
+            "round {round}: {pts:?}"
+        );
+    }
+}
+
 #[test]
 fn keil_construction_is_exact_and_consistent() {
     // The split along L (Lemma 5.6) against the general solver: the MWT, and the best
