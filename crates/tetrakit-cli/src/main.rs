@@ -132,8 +132,12 @@ struct TetrahedralizeArgs {
 
 #[derive(Args)]
 struct SkeletonArgs {
-    /// Planar points: .xyz/.txt (x y per line), .node, .json or .obj (z = 0).
+    /// Planar points: .xyz/.txt (x y per line), .node, .json or .obj (z = 0 unless --xy).
     input: PathBuf,
+    /// Use the points' projection to the xy-plane (3D points, such as terrain samples);
+    /// without it a point with z ≠ 0 is an error.
+    #[arg(long)]
+    xy: bool,
     /// β as a decimal (at most 15 significant digits) or a fraction a/b.
     #[arg(long)]
     beta: String,
@@ -150,12 +154,18 @@ struct SkeletonArgs {
 
 #[derive(Args)]
 struct MwtArgs {
-    /// Planar points: .xyz/.txt (x y per line), .node, .json or .obj (z = 0).
+    /// Planar points: .xyz/.txt (x y per line), .node, .json or .obj (z = 0 unless --xy).
     input: PathBuf,
+    /// Triangulate the points' projection to the xy-plane and keep each point's z in
+    /// .off/.obj output (a TIN of terrain samples); without it a point with z ≠ 0 is an
+    /// error.
+    #[arg(long)]
+    xy: bool,
     /// Print one JSON object on stdout.
     #[arg(long)]
     json: bool,
-    /// Write the triangulation's edges: .json, .edge (with .node) or .svg.
+    /// Write the triangulation: its triangles as .off or .obj, or its edges as .json,
+    /// .edge (with .node) or .svg.
     #[arg(long)]
     output: Option<PathBuf>,
 }
@@ -349,9 +359,9 @@ fn main() -> ExitCode {
             output: a.output.as_deref(),
         }),
         Cmd::Skeleton(a) => {
-            planar::skeleton(&a.input, &a.beta, a.lune, a.json, a.output.as_deref())
+            planar::skeleton(&a.input, a.xy, &a.beta, a.lune, a.json, a.output.as_deref())
         }
-        Cmd::Mwt(a) => planar::mwt(&a.input, a.json, a.output.as_deref()),
+        Cmd::Mwt(a) => planar::mwt(&a.input, a.xy, a.json, a.output.as_deref()),
         Cmd::Keil(a) => planar::keil(planar::KeilArgs {
             beta: &a.beta,
             n: a.n,

@@ -8,19 +8,34 @@ use tetrakit::geom::{Point2, Ratio};
 use tetrakit::io;
 use tetrakit::planar::{self, Distribution, Region};
 
-/// Reads planar points (z must be 0 in 3D formats).
-pub fn read_points(path: &Path) -> Result<Vec<Point2>, u8> {
+/// Reads planar points and their heights. Without `xy` every z must be 0; with it the
+/// points are projected to the xy-plane and their z kept.
+pub fn read_points(path: &Path, xy: bool) -> Result<(Vec<Point2>, Vec<f64>), u8> {
     let input = io::read_input(path).map_err(fail)?;
-    if let Some(i) = input.points.iter().position(|p| p[2] != 0.0) {
+    if !xy && let Some(i) = input.points.iter().position(|p| p[2] != 0.0) {
         let line = input.point_lines.get(i).copied().unwrap_or(0);
         return Err(fail(format!(
-            "{}:{line}: point {} has z = {}; planar commands need 2D points",
+            "{}:{line}: point {} has z = {}; planar commands need 2D points (--xy uses their projection)",
             path.display(),
             i as u32 + input.index_base,
             input.points[i][2]
         )));
     }
-    Ok(input.points.iter().map(|p| [p[0], p[1]]).collect())
+    let plane: Vec<Point2> = input.points.iter().map(|p| [p[0], p[1]]).collect();
+    // Coinciding points are refused on reading; projected ones only here.
+    if let Some([a, b]) = xy.then(|| planar::coincident_sites(&plane)).flatten() {
+        let line = |i: u32| input.point_lines.get(i as usize).copied().unwrap_or(0);
+        return Err(fail(format!(
+            "{}:{}: points {} and {} coincide in the xy-plane at {:?} (line {})",
+            path.display(),
+            line(b),
+            a + input.index_base,
+            b + input.index_base,
+            plane[a as usize],
+            line(a)
+        )));
+    }
+    Ok((plane, input.points.iter().map(|p| p[2]).collect()))
 }
 
 pub fn parse_beta(text: &str) -> Result<Ratio, u8> {
@@ -28,14 +43,21 @@ pub fn parse_beta(text: &str) -> Result<Ratio, u8> {
         .map_err(|e| fail(format!("--beta: {e}")))
 }
 
-pub fn skeleton(path: &Path, beta: &str, lune: bool, as_json: bool, output: Option<&Path>) -> u8 {
+pub fn skeleton(
+    path: &Path,
+    xy: bool,
+    beta: &str,
+    lune: bool,
+    as_json: bool,
+    output: Option<&Path>,
+) -> u8 {
     let start = Instant::now();
     let beta = match parse_beta(beta) {
         Ok(b) => b,
         Err(c) => return c,
     };
-    let points = match read_points(path) {
-        Ok(p) => p,
+    let points = match read_points(path, xy) {
+        Ok((p, _)) => p,
         Err(c) => return c,
     };
     let parsed = start.elapsed().as_secs_f64();
@@ -79,10 +101,10 @@ pub fn skeleton(path: &Path, beta: &str, lune: bool, as_json: bool, output: Opti
     0
 }
 
-pub fn mwt(path: &Path, as_json: bool, output: Option<&Path>) -> u8 {
+pub fn mwt(path: &Path, xy: bool, as_json: bool, output: Option<&Path>) -> u8 {
     let start = Instant::now();
-    let points = match read_points(path) {
-        Ok(p) => p,
+    let (points, z) = match read_points(path, xy) {
+        Ok(pz) => pz,
         Err(c) => return c,
     };
     let parsed = start.elapsed().as_secs_f64();
@@ -103,7 +125,7 @@ pub fn mwt(path: &Path, as_json: bool, output: Option<&Path>) -> u8 {
     };
     let algorithm = t.elapsed().as_secs_f64();
     if let Some(out) = output
-        && let Err(e) = io::write_planar_edges(out, &points, &m.edges)
+        && let Err(e) = io::write_planar_triangulation(out, &points, &z, &m.edges, &m.triangles)
     {
         return fail(format!("{}: {e}", out.display()));
     }

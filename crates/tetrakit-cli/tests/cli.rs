@@ -477,7 +477,47 @@ fn planar_commands_json_fields_outputs_and_bad_input() {
     std::fs::write(&bad, "0 0 0\n1 0 0\n0 1 5\n").unwrap();
     let o = run(&["mwt", s(&bad)]);
     assert_eq!(o.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&o.stderr).contains("z.xyz:3"));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("z.xyz:3") && err.contains("--xy"), "{err}");
+    // --xy: the projection is triangulated and each z kept in the mesh (a TIN).
+    std::fs::write(&bad, "0 0 0\n1 0 0\n0 1 5\n1 1 2\n0.4 0.5 7\n").unwrap();
+    let tin = d.join("tin.obj");
+    let o = run(&["mwt", s(&bad), "--xy", "--json", "--output", s(&tin)]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = std::fs::read_to_string(&tin).unwrap();
+    let faces = text.lines().filter(|l| l.starts_with("f ")).count();
+    assert_eq!(faces as u64, json(&o)["triangles"].as_u64().unwrap());
+    assert!(
+        text.contains("v 0 1 5") && text.contains("v 0.4 0.5 7"),
+        "{text}"
+    );
+    let off = d.join("tin.off");
+    assert!(
+        run(&["mwt", s(&bad), "--xy", "--output", s(&off)])
+            .status
+            .success()
+    );
+    assert!(
+        std::fs::read_to_string(&off)
+            .unwrap()
+            .starts_with("OFF\n5 4 0\n")
+    );
+    std::fs::write(&bad, "0 0 1\n1 0 2\n0 0 3\n").unwrap();
+    for args in [
+        vec!["mwt", s(&bad), "--xy"],
+        vec!["skeleton", s(&bad), "--xy", "--beta", "1"],
+    ] {
+        let o = run(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(
+            err.contains("z.xyz:3") && err.contains("xy-plane") && err.lines().count() == 1,
+            "{err}"
+        );
+    }
+    let o = run(&["mwt", s(&pts), "--output", s(&d.join("t.ply"))]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains(".off or .obj"));
     let dup = d.join("d.xyz");
     std::fs::write(&dup, "0 0\n1 0\n0 0\n").unwrap();
     assert_eq!(

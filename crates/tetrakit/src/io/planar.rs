@@ -69,6 +69,37 @@ pub fn write_planar_edges(path: &Path, points: &[Point2], edges: &[[u32; 2]]) ->
     }
 }
 
+/// Writes a planar triangulation: its triangles as `.off` or `.obj` (counter-clockwise
+/// seen from above, site `i` at height `z[i]`, or 0 when `z` is empty: a TIN of terrain
+/// points), or its edges as `.edge`, `.json` or `.svg` ([`write_planar_edges`]).
+///
+/// ```
+/// let path = std::env::temp_dir().join("tetrakit-doc-tin.obj");
+/// let pts = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]];
+/// tetrakit::io::write_planar_triangulation(&path, &pts, &[1.0, 2.0, 3.0], &[], &[[0, 1, 2]])
+///     .unwrap();
+/// let text = std::fs::read_to_string(&path).unwrap();
+/// assert!(text.contains("v 0 1 3") && text.contains("f 1 2 3"));
+/// ```
+pub fn write_planar_triangulation(
+    path: &Path,
+    points: &[Point2],
+    z: &[f64],
+    edges: &[[u32; 2]],
+    triangles: &[[u32; 3]],
+) -> io::Result<()> {
+    match ext(path).as_str() {
+        "off" | "obj" => {
+            let lifted: Vec<crate::geom::Point3> = (points.iter().enumerate())
+                .map(|(i, p)| [p[0], p[1], z.get(i).copied().unwrap_or(0.0)])
+                .collect();
+            super::write_surface(path, &lifted, triangles, 1)
+        }
+        "edge" | "json" | "svg" => write_planar_edges(path, points, edges),
+        other => Err(unsupported(other, ".edge, .json, .svg, .off or .obj")),
+    }
+}
+
 /// A minimal SVG drawing in data coordinates (y up), scaled to about 900 pixels.
 pub struct Svg {
     lo: Point2,

@@ -68,6 +68,24 @@ pub(crate) fn check_coordinates(points: &[Point2]) -> Result<(), PlanarError> {
 /// Checks the coordinates ([`check_coordinates`]) and that no two sites coincide.
 pub(crate) fn check_sites(points: &[Point2]) -> Result<(), PlanarError> {
     check_coordinates(points)?;
+    match coincident_sites(points) {
+        None => Ok(()),
+        Some([a, b]) => Err(PlanarError::new(format!(
+            "sites {a} and {b} coincide at {:?}",
+            points[a as usize]
+        ))),
+    }
+}
+
+/// Two sites at the same position, the lower index first, if there are any
+/// (`O(n log n)`).
+///
+/// ```
+/// use tetrakit::planar::coincident_sites;
+/// assert_eq!(coincident_sites(&[[0.0, 1.0], [2.0, 0.0], [0.0, 1.0]]), Some([0, 2]));
+/// assert_eq!(coincident_sites(&[[0.0, 0.0], [-0.0, 1.0]]), None);
+/// ```
+pub fn coincident_sites(points: &[Point2]) -> Option<[u32; 2]> {
     // `+ 0.0` maps -0 to +0, so the total order agrees with equality of points.
     let key = |i: u32| points[i as usize].map(|x| x + 0.0);
     let mut order: Vec<u32> = (0..points.len() as u32).collect();
@@ -75,15 +93,9 @@ pub(crate) fn check_sites(points: &[Point2]) -> Result<(), PlanarError> {
         let (p, q) = (key(a), key(b));
         p[0].total_cmp(&q[0]).then(p[1].total_cmp(&q[1]))
     });
-    match order.windows(2).find(|w| key(w[0]) == key(w[1])) {
-        None => Ok(()),
-        Some(w) => Err(PlanarError::new(format!(
-            "sites {} and {} coincide at {:?}",
-            w[0].min(w[1]),
-            w[0].max(w[1]),
-            points[w[0] as usize]
-        ))),
-    }
+    (order.windows(2))
+        .find(|w| key(w[0]) == key(w[1]))
+        .map(|w| [w[0].min(w[1]), w[0].max(w[1])])
 }
 
 /// An error of a planar computation (bad parameters or an internal inconsistency).
