@@ -219,6 +219,18 @@ fn mwt_is_the_same_with_every_segment_a_candidate_on_degenerate_sets() {
     }
 }
 
+/// Sites in convex position go straight to one polygon DP; one too large for it is
+/// refused with a message, before any allocation of its size.
+#[test]
+fn convex_position_beyond_the_dp_budget_is_refused() {
+    let parabola: Vec<Point2> = (0..40_000).map(|i| [i as f64, (i * i) as f64]).collect();
+    let err = mwt(&parabola).unwrap_err();
+    assert!(err.0.contains("40000 sites in convex position"), "{err}");
+    let small: Vec<Point2> = (0..60).map(|i| [i as f64, (i * i) as f64]).collect();
+    let got = mwt(&small).unwrap();
+    assert_eq!((got.edges.len(), got.stats.faces_left), (2 * 60 - 3, 1));
+}
+
 #[test]
 fn keil_construction_is_exact_and_consistent() {
     // The split along L (Lemma 5.6) against the general solver: the MWT, and the best

@@ -1,9 +1,10 @@
 //! Exact minimum weight triangulations (thesis §5.1; the pipeline of Beirouti–Snoeyink
 //! and Haas): the diamond test ([`candidates`]), the LMT-skeleton ([`lmt`]), and an
 //! exact stage on the faces the skeleton leaves ([`faces`]): dynamic programming on
-//! simple faces, branching over connecting edges for faces with holes. The result is
-//! verified as a triangulation and its weight is a certified interval; every weight
-//! comparison is exact.
+//! simple faces, branching over connecting edges for faces with holes. Sites in strictly
+//! convex position skip the first two stages: one polygon DP over the hull decides them.
+//! The result is verified as a triangulation and its weight is a certified interval;
+//! every weight comparison is exact.
 
 mod candidates;
 mod edge_grid;
@@ -73,7 +74,8 @@ impl std::fmt::Display for MwtStage {
 /// Statistics of an MWT computation.
 #[derive(Clone, Debug, Default)]
 pub struct MwtStats {
-    /// Candidate edges after the diamond test.
+    /// Candidate edges after the diamond test (every pair for sites in strictly convex
+    /// position, which go straight to one polygon DP).
     pub candidates: usize,
     /// Edges fixed by the LMT-skeleton (hull edges included).
     pub skeleton_edges: usize,
@@ -204,10 +206,14 @@ fn solve(
     if hull.vertices.len() < 3 {
         return Ok(collinear(points));
     }
+    let constrained = !opts.forced.is_empty() || !opts.forbidden.is_empty();
+    if hull.vertices.len() == points.len() && !constrained {
+        progress(MwtStage::Faces);
+        return convex_position(points, &hull);
+    }
     let mut stats = MwtStats::default();
     progress(MwtStage::Candidates);
     let t0 = Instant::now();
-    let constrained = !opts.forced.is_empty() || !opts.forbidden.is_empty();
     let sorted = |v: &[[u32; 2]]| -> Vec<[u32; 2]> {
         let mut v: Vec<[u32; 2]> = v.iter().map(|e| super::edge_key(e[0], e[1])).collect();
         v.sort_unstable();
@@ -284,6 +290,56 @@ fn solve(
         triangles,
         weight,
         skeleton: certain,
+        stats,
+    })
+}
+
+/// Bytes per pair of sites that the polygon DP of a convex polygon may use, and the most
+/// it may use in all: past that an error says so before anything is allocated.
+const DP_BYTES_PER_PAIR: usize = 24;
+const DP_MAX_BYTES: usize = 16 << 30;
+
+/// Sites in strictly convex position: every triangulation is one of the hull polygon and
+/// every diagonal is usable, so one polygon DP over the hull decides the MWT. The diamond
+/// test would keep `Θ(n²)` candidates at cubic cost, and the LMT decides nothing here.
+fn convex_position(points: &[Point2], hull: &Hull2) -> Result<Mwt, PlanarError> {
+    let n = points.len();
+    let t = Instant::now();
+    let bytes = DP_BYTES_PER_PAIR * n * n / 2;
+    if bytes > DP_MAX_BYTES {
+        return Err(PlanarError::new(format!(
+            "{n} sites in convex position: the exact dynamic program over them needs about \
+             {} GB and n³/6 steps (at most {} GB allowed)",
+            bytes >> 30,
+            DP_MAX_BYTES >> 30
+        )));
+    }
+    let dp = polygon_dp(points, &hull.vertices, &[], &|_| true)
+        .ok_or_else(|| PlanarError::new("internal: a convex polygon has no triangulation"))?;
+    let sides: Vec<[u32; 2]> = (0..n)
+        .map(|i| super::edge_key(hull.vertices[i], hull.vertices[(i + 1) % n]))
+        .collect();
+    let mut skeleton = sides.clone();
+    skeleton.sort_unstable();
+    let mut edges: Vec<[u32; 2]> = sides.into_iter().chain(dp.edges).collect();
+    edges.par_sort_unstable();
+    edges.dedup();
+    let stats = MwtStats {
+        candidates: n * (n - 1) / 2,
+        skeleton_edges: n,
+        undecided_edges: n * (n - 1) / 2 - n,
+        faces_left: usize::from(n > 3),
+        largest_face: if n > 3 { n } else { 0 },
+        seconds: [0.0, 0.0, t.elapsed().as_secs_f64()],
+        ..MwtStats::default()
+    };
+    let triangles = certified_triangles(points, hull, &edges)?;
+    let weight = weight_of(points, &edges);
+    Ok(Mwt {
+        edges,
+        triangles,
+        weight,
+        skeleton,
         stats,
     })
 }
