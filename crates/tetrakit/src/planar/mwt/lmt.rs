@@ -476,12 +476,14 @@ mod tests {
     /// candidate rows) once went whole to the exact stage, as one face.
     #[test]
     fn the_elimination_runs_past_the_budget_with_sites_inside() {
+        let every_segment = |n: u32| -> Vec<[u32; 2]> {
+            (0..n)
+                .flat_map(|a| (a + 1..n).map(move |b| [a, b]))
+                .collect()
+        };
         let pts = points2d(Distribution::Uniform, 600, 5);
         // Every segment a candidate: Σ deg² = 600 · 599², past the budget.
-        let n = pts.len() as u32;
-        let all: Vec<[u32; 2]> = (0..n)
-            .flat_map(|a| (a + 1..n).map(move |b| [a, b]))
-            .collect();
+        let all = every_segment(pts.len() as u32);
         let (_, stats) = lmt_skeleton(&pts, &Hull2::new(&pts), all, &[], &[]).unwrap();
         assert!(stats.certain > 2 * pts.len(), "{} certain", stats.certain);
         // A 480-gon round five sites (Σ deg² = 485 · 484², past the budget): it runs too.
@@ -493,10 +495,7 @@ mod tests {
             [0.5, 0.5],
             [-0.6, -0.2],
         ]);
-        let n = pts.len() as u32;
-        let all: Vec<[u32; 2]> = (0..n)
-            .flat_map(|a| (a + 1..n).map(move |b| [a, b]))
-            .collect();
+        let all = every_segment(pts.len() as u32);
         let (sk, _) = lmt_skeleton(&pts, &Hull2::new(&pts), all, &[], &[]).unwrap();
         let dead = sk.status.iter().filter(|&&s| s == IMPOSSIBLE).count();
         assert!(dead > 1000, "{dead} edges eliminated");
