@@ -219,10 +219,33 @@ fn mwt_is_the_same_with_every_segment_a_candidate_on_degenerate_sets() {
     }
 }
 
-/// Sites in convex position go straight to one polygon DP; one too large for it is
-/// refused with a message, before any allocation of its size.
+/// Sites in convex position (collinear boundary sites included) go straight to one
+/// polygon DP: the same optimum as with every segment a candidate through the general
+/// path. A set too large for the DP is refused with a message, before any allocation.
 #[test]
-fn convex_position_beyond_the_dp_budget_is_refused() {
+fn sites_in_convex_position_take_one_polygon_dp() {
+    for k in [1, 2, 5] {
+        let side: Vec<f64> = (0..4 * k).map(|i| i as f64 / (4 * k) as f64).collect();
+        let mut square: Vec<Point2> = side.iter().map(|&t| [t, 0.0]).collect();
+        square.extend(side.iter().map(|&t| [1.0, t]));
+        square.extend(side.iter().map(|&t| [1.0 - t, 1.0]));
+        square.extend(side.iter().map(|&t| [0.0, 1.0 - t]));
+        let direct = mwt(&square).unwrap();
+        let forced = vec![[0, 1]];
+        let general = mwt_with(
+            &square,
+            &MwtOptions {
+                forced,
+                forbidden: Vec::new(),
+            },
+        )
+        .unwrap();
+        assert_eq!(direct.stats.faces_left, 1, "the direct path");
+        assert_eq!(
+            cmp_edge_sets(&square, &direct.edges, &general.edges),
+            Ordering::Equal
+        );
+    }
     let parabola: Vec<Point2> = (0..40_000).map(|i| [i as f64, (i * i) as f64]).collect();
     let err = mwt(&parabola).unwrap_err();
     assert!(err.0.contains("40000 sites in convex position"), "{err}");

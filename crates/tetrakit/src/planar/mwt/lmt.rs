@@ -345,7 +345,7 @@ pub fn lmt_skeleton(
         forbidden: forbidden.iter().copied().collect(),
     };
     // Sites in convex position have Θ(n) candidates each and make no LMT progress. When
-    // every site is on the hull's boundary (strictly convex sets never get here), past
+    // every site is on the hull's boundary (only constrained calls get here so), past
     // the budget the elimination is skipped (every candidate stays alive, which is
     // sound) and the exact stage gets the hull polygon, a simple face. With any site
     // inside, the elimination runs whatever its cost: the exact stage would get a face

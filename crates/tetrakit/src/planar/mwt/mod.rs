@@ -1,8 +1,8 @@
 //! Exact minimum weight triangulations (thesis §5.1; the pipeline of Beirouti–Snoeyink
 //! and Haas): the diamond test ([`candidates`]), the LMT-skeleton ([`lmt`]), and an
 //! exact stage on the faces the skeleton leaves ([`faces`]): dynamic programming on
-//! simple faces, branching over connecting edges for faces with holes. Sites in strictly
-//! convex position skip the first two stages: one polygon DP over the hull decides them.
+//! simple faces, branching over connecting edges for faces with holes. Sites all on the
+//! hull's boundary skip the first two stages: one polygon DP over the hull decides them.
 //! The result is verified as a triangulation and its weight is a certified interval;
 //! every weight comparison is exact.
 
@@ -74,8 +74,8 @@ impl std::fmt::Display for MwtStage {
 /// Statistics of an MWT computation.
 #[derive(Clone, Debug, Default)]
 pub struct MwtStats {
-    /// Candidate edges after the diamond test (every pair for sites in strictly convex
-    /// position, which go straight to one polygon DP).
+    /// Candidate edges after the diamond test (every pair for sites in convex position,
+    /// which go straight to one polygon DP).
     pub candidates: usize,
     /// Edges fixed by the LMT-skeleton (hull edges included).
     pub skeleton_edges: usize,
@@ -207,7 +207,7 @@ fn solve(
         return Ok(collinear(points));
     }
     let constrained = !opts.forced.is_empty() || !opts.forbidden.is_empty();
-    if hull.vertices.len() == points.len() && !constrained {
+    if hull.on_boundary.iter().all(|&b| b) && !constrained {
         progress(MwtStage::Faces);
         return convex_position(points, &hull);
     }
@@ -300,9 +300,11 @@ fn solve(
 const DP_BYTES_PER_PAIR: usize = 32;
 const DP_MAX_BYTES: usize = 16 << 30;
 
-/// Sites in strictly convex position: every triangulation is one of the hull polygon and
-/// every diagonal is usable, so one polygon DP over the hull decides the MWT. The diamond
-/// test would keep `Θ(n²)` candidates at cubic cost, and the LMT decides nothing here.
+/// Sites all on the hull's boundary: every triangulation is one of the hull polygon (its
+/// walk through every boundary site), so one polygon DP over it decides the MWT. Every
+/// segment between two sites lies in the polygon, and the DP's wedge test drops those
+/// along a side. The diamond test would keep `Θ(n²)` candidates at cubic cost, and the
+/// LMT decides nothing here.
 fn convex_position(points: &[Point2], hull: &Hull2) -> Result<Mwt, PlanarError> {
     let n = points.len();
     let t = Instant::now();
@@ -315,10 +317,13 @@ fn convex_position(points: &[Point2], hull: &Hull2) -> Result<Mwt, PlanarError> 
             DP_MAX_BYTES >> 30
         )));
     }
-    let dp = polygon_dp(points, &hull.vertices, &[], &|_| true)
+    let walk: Vec<u32> = (hull.boundary_chains(points).iter())
+        .flat_map(|c| c[..c.len() - 1].iter().copied())
+        .collect();
+    let dp = polygon_dp(points, &walk, &[], &|_| true)
         .ok_or_else(|| PlanarError::new("internal: a convex polygon has no triangulation"))?;
     let sides: Vec<[u32; 2]> = (0..n)
-        .map(|i| super::edge_key(hull.vertices[i], hull.vertices[(i + 1) % n]))
+        .map(|i| super::edge_key(walk[i], walk[(i + 1) % n]))
         .collect();
     let mut skeleton = sides.clone();
     skeleton.sort_unstable();
