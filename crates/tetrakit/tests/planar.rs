@@ -363,7 +363,7 @@ fn mwt_of_convex_polygons_matches_the_convex_dp() {
                 .collect(),
         );
     }
-    // Past the LMT triangle budget: the whole polygon goes to the exact stage.
+    // A regular polygon: ties everywhere, one polygon DP over the hull.
     sets.push(points2d(Distribution::Regular, 600, 1));
     let mut checked = 0;
     for pts in sets {

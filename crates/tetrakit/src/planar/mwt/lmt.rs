@@ -95,7 +95,7 @@ fn overlapping(points: &[Point2], start: &[u32], adj: &[(u32, u32)]) -> Option<[
 }
 
 /// Hull edges (consecutive boundary sites, collinear ones included), as `[p, q]`, `p < q`.
-fn hull_edges(points: &[Point2], hull: &Hull2) -> Vec<[u32; 2]> {
+pub(super) fn hull_edges(points: &[Point2], hull: &Hull2) -> Vec<[u32; 2]> {
     hull.boundary_chains(points)
         .iter()
         .flat_map(|c| {
@@ -316,9 +316,6 @@ pub struct LmtStats {
     pub undecided: usize,
 }
 
-/// Merge steps (`Σ deg²` over the sites) allowed beyond `1000·n` for the elimination.
-const WORK_BUDGET: usize = 100_000_000;
-
 /// Computes the LMT-skeleton of `candidates` (sorted `[p, q]`, `p < q`, containing every
 /// MWT edge), with `forced` edges taken as certain (their crossers impossible).
 /// `Err([v, a, b])` when candidates `va` and `vb` share a direction (one of them passes
@@ -330,7 +327,6 @@ pub fn lmt_skeleton(
     forced: &[[u32; 2]],
     forbidden: &[[u32; 2]],
 ) -> Result<(Skeleton, LmtStats), [u32; 3]> {
-    let n = points.len();
     let (start, adj) = super::walks::ccw_rows(points, &candidates);
     if let Some(v_a_b) = overlapping(points, &start, &adj) {
         return Err(v_a_b);
@@ -344,16 +340,6 @@ pub fn lmt_skeleton(
         pos,
         forbidden: forbidden.iter().copied().collect(),
     };
-    // Sites in convex position have Θ(n) candidates each and make no LMT progress. When
-    // every site is on the hull's boundary (only constrained calls get here so), past
-    // the budget the elimination is skipped (every candidate stays alive, which is
-    // sound) and the exact stage gets the hull polygon, a simple face. With any site
-    // inside, the elimination runs whatever its cost: the exact stage would get a face
-    // with holes, far slower (a 1000-gon round 5 sites: 14 s with the elimination, over
-    // 300 s without; rows of collinear sites: one face with every site a hole).
-    let work: usize = (0..n as u32).map(|v| sk.around(v).len().pow(2)).sum();
-    let all_on_boundary = hull.on_boundary.iter().all(|&b| b);
-    let eliminating = work <= WORK_BUDGET + 1000 * n || !all_on_boundary;
     let find = |sk: &Skeleton, e: &[u32; 2]| sk.edges.binary_search(e).ok();
     for e in hull_edges(points, hull).iter().chain(forced) {
         if let Some(id) = find(&sk, e) {
@@ -374,9 +360,7 @@ pub fn lmt_skeleton(
     let queue: Vec<u32> = (0..sk.edges.len() as u32)
         .filter(|&e| sk.status[e as usize] == ALIVE)
         .collect();
-    if eliminating {
-        eliminate(points, &sk, &status, queue);
-    }
+    eliminate(points, &sk, &status, queue);
     sk.status = status.into_iter().map(|s| s.into_inner()).collect();
     // An alive edge that no alive edge crosses is in every MWT (fact 2). Promotion
     // changes no LMT test, so one pass suffices.
@@ -471,34 +455,18 @@ mod tests {
         }
     }
 
-    /// Past the work budget the elimination is skipped only when every site is on the
-    /// hull's boundary. With sites inside it runs: dense rows of collinear sites (long
-    /// candidate rows) once went whole to the exact stage, as one face.
+    /// With every segment a candidate (as for constrained optima), the elimination still
+    /// fixes most of the MWT. It once was skipped past a work budget (`Σ deg²`), and dense
+    /// rows of collinear sites went whole to the exact stage, as one face.
     #[test]
-    fn the_elimination_runs_past_the_budget_with_sites_inside() {
-        let every_segment = |n: u32| -> Vec<[u32; 2]> {
-            (0..n)
-                .flat_map(|a| (a + 1..n).map(move |b| [a, b]))
-                .collect()
-        };
+    fn the_elimination_runs_with_every_segment_a_candidate() {
         let pts = points2d(Distribution::Uniform, 600, 5);
-        // Every segment a candidate: Σ deg² = 600 · 599², past the budget.
-        let all = every_segment(pts.len() as u32);
+        let n = pts.len() as u32;
+        let all: Vec<[u32; 2]> = (0..n)
+            .flat_map(|a| (a + 1..n).map(move |b| [a, b]))
+            .collect();
         let (_, stats) = lmt_skeleton(&pts, &Hull2::new(&pts), all, &[], &[]).unwrap();
         assert!(stats.certain > 2 * pts.len(), "{} certain", stats.certain);
-        // A 480-gon round five sites (Σ deg² = 485 · 484², past the budget): it runs too.
-        let mut pts = points2d(Distribution::Regular, 480, 1);
-        pts.extend([
-            [0.1, 0.2],
-            [-0.3, 0.1],
-            [0.2, -0.4],
-            [0.5, 0.5],
-            [-0.6, -0.2],
-        ]);
-        let all = every_segment(pts.len() as u32);
-        let (sk, _) = lmt_skeleton(&pts, &Hull2::new(&pts), all, &[], &[]).unwrap();
-        let dead = sk.status.iter().filter(|&&s| s == IMPOSSIBLE).count();
-        assert!(dead > 1000, "{dead} edges eliminated");
     }
 
     #[test]

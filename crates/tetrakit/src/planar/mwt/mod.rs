@@ -322,12 +322,9 @@ fn convex_position(points: &[Point2], hull: &Hull2) -> Result<Mwt, PlanarError> 
         .collect();
     let dp = polygon_dp(points, &walk, &[], &|_| true)
         .ok_or_else(|| PlanarError::new("internal: a convex polygon has no triangulation"))?;
-    let sides: Vec<[u32; 2]> = (0..n)
-        .map(|i| super::edge_key(walk[i], walk[(i + 1) % n]))
-        .collect();
-    let mut skeleton = sides.clone();
+    let mut skeleton = lmt::hull_edges(points, hull);
     skeleton.sort_unstable();
-    let mut edges: Vec<[u32; 2]> = sides.into_iter().chain(dp.edges).collect();
+    let mut edges: Vec<[u32; 2]> = skeleton.iter().copied().chain(dp.edges).collect();
     edges.par_sort_unstable();
     edges.dedup();
     let stats = MwtStats {
