@@ -79,8 +79,44 @@ impl PointGrid {
     }
 
     /// Grid dimensions in cells.
+    #[cfg(test)]
     pub fn dims(&self) -> (usize, usize) {
         (self.nx, self.ny)
+    }
+
+    /// Calls `f` on the cells at Chebyshev distance `r` from cell `(cx, cy)`: the bottom
+    /// and top rows of the ring, then its two sides (plain loops: this is the inner walk
+    /// of the searches that visit rings of cells around a site).
+    pub fn for_ring(&self, (cx, cy): (usize, usize), r: usize, mut f: impl FnMut(usize, usize)) {
+        let (nx, ny) = (self.nx, self.ny);
+        let (x0, x1) = (cx.saturating_sub(r), (cx + r).min(nx - 1));
+        if r == 0 {
+            return f(cx, cy);
+        }
+        for y in [cy.checked_sub(r), Some(cy + r).filter(|&y| y < ny)]
+            .into_iter()
+            .flatten()
+        {
+            for x in x0..=x1 {
+                f(x, y);
+            }
+        }
+        // Rows strictly inside the ring.
+        let (y0, y1) = ((cy + 1).saturating_sub(r), (cy + r - 1).min(ny - 1));
+        for x in [cx.checked_sub(r), Some(cx + r).filter(|&x| x < nx)]
+            .into_iter()
+            .flatten()
+        {
+            for y in y0..=y1 {
+                f(x, y);
+            }
+        }
+    }
+
+    /// Whether ring `r` around cell `(cx, cy)` reaches every edge of the grid (the rings
+    /// up to it cover all cells).
+    pub fn ring_covers_all(&self, (cx, cy): (usize, usize), r: usize) -> bool {
+        r >= cx && r >= cy && cx + r >= self.nx - 1 && cy + r >= self.ny - 1
     }
 
     /// The slots of cell `(x, y)`: positions in [`Self::slots`].
@@ -125,5 +161,33 @@ impl PointGrid {
             }
         }
         false
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every cell of the grid is in exactly one ring around any cell, and the rings cover
+    /// all cells exactly from the first that reaches every edge.
+    #[test]
+    fn rings_partition_the_grid() {
+        let pts: Vec<Point2> = (0..70)
+            .map(|i| [(i % 10) as f64, (i / 10) as f64 * 0.7])
+            .collect();
+        let grid = PointGrid::new(&pts, 1.0);
+        let (nx, ny) = grid.dims();
+        for c in [(0, 0), (nx / 2, ny / 2), (nx - 1, 0), (nx - 1, ny - 1)] {
+            let mut seen = vec![0; nx * ny];
+            for r in 0..nx.max(ny) {
+                let far = [c.0, c.1, nx - 1 - c.0, ny - 1 - c.1];
+                assert_eq!(grid.ring_covers_all(c, r), far.iter().all(|&f| f <= r));
+                grid.for_ring(c, r, |x, y| {
+                    assert_eq!(x.abs_diff(c.0).max(y.abs_diff(c.1)), r);
+                    seen[y * nx + x] += 1;
+                });
+            }
+            assert!(seen.iter().all(|&k| k == 1), "{c:?}: {seen:?}");
+        }
     }
 }

@@ -15,6 +15,7 @@ mod forced;
 mod generate;
 mod grid;
 mod keil;
+mod lens;
 mod mwt;
 mod oracle;
 mod skeleton;

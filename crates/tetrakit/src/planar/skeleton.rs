@@ -26,8 +26,10 @@
 //! against the sites in a bounding box of its lune (a grid query).
 //!
 //! **β < 1.** The region shrinks to a lens inside the diametral disk and the skeleton
-//! is no longer planar (it tends to the complete graph); every pair is checked against
-//! the sites in the lens's bounding box: `O(n²)` pairs, expected `O(1)` sites each.
+//! is no longer planar (it tends to the complete graph as β → 0). Each site searches the
+//! sites around it, nearest rings of grid cells first, until every direction further
+//! out is blocked by a site already seen ([`super::lens`]); every decision is an exact
+//! region test. On uniform sites at β = 0.9 that is about 60 pairs per site.
 
 use super::delaunay::{Delaunay, EdgeView, delaunay, delaunay_edges_where};
 use super::grid::PointGrid;
@@ -81,7 +83,7 @@ pub fn beta_skeleton(
     }
     if beta.cmp_one() == Ordering::Less {
         super::check_sites(points)?;
-        return Ok(small_beta(points, beta));
+        return super::lens::lens_skeleton(points, beta);
     }
     let lune = region == Region::Lune && beta.cmp_one() == Ordering::Greater;
     let grid = lune.then(|| PointGrid::new(points, 2.0));
@@ -144,7 +146,7 @@ pub fn beta_skeleton(
 /// relative (`4u`), and `factor` (a square root, for lunes) by one more. The margin is
 /// `10^-9` relative plus `10^-9·(|m_x| + |m_y|)`, more than `10^6` times that; the grid
 /// query widens the box by a further cell. So every site in the disk is tested exactly.
-fn disk_box(a: &Point2, b: &Point2, factor: f64) -> (Point2, Point2) {
+pub(super) fn disk_box(a: &Point2, b: &Point2, factor: f64) -> (Point2, Point2) {
     let m = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
     let len = (b[0] - a[0]).hypot(b[1] - a[1]);
     let r = factor * len * (1.0 + 1e-9) + 1e-9 * (m[0].abs() + m[1].abs());
@@ -160,32 +162,6 @@ fn lune_occupied(points: &[Point2], grid: &PointGrid, a: u32, b: u32, beta: Rati
     grid.any_in_box(lo, hi, |r| {
         r != a && r != b && in_lune(pa, pb, &points[r as usize], beta)
     })
-}
-
-/// β < 1: every pair against the sites in the bounding box of its lens (which lies in
-/// the diametral disk).
-fn small_beta(points: &[Point2], beta: Ratio) -> Skeleton {
-    let grid = PointGrid::new(points, 2.0);
-    let n = points.len() as u32;
-    let edges: Vec<[u32; 2]> = (0..n)
-        .into_par_iter()
-        .flat_map_iter(|a| {
-            let grid = &grid;
-            (a + 1..n).filter_map(move |b| {
-                let (pa, pb) = (&points[a as usize], &points[b as usize]);
-                let (lo, hi) = disk_box(pa, pb, 0.5);
-                let hit = grid.any_in_box(lo, hi, |r| {
-                    r != a && r != b && in_beta_region(pa, pb, &points[r as usize], beta)
-                });
-                (!hit).then_some([a, b])
-            })
-        })
-        .collect();
-    Skeleton {
-        edges,
-        candidates: (n as usize) * (n as usize - 1) / 2,
-        cell_diameters: 0,
-    }
 }
 
 /// Antipodal vertex pairs of the cocircular Delaunay cells with four or more vertices
