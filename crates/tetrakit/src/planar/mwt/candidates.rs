@@ -60,6 +60,7 @@ use crate::planar::{PlanarError, check_sites, edge_key};
 use rayon::prelude::*;
 use std::cmp::Reverse;
 use std::collections::{BinaryHeap, VecDeque};
+use std::sync::atomic::{AtomicUsize, Ordering::Relaxed};
 
 /// A monotone stand-in for the angle of `(dx, dy)`, in `[0, 4)`.
 fn pseudo_angle(dx: f64, dy: f64) -> f64 {
@@ -284,24 +285,32 @@ impl Scratch {
 /// ```
 pub fn candidate_edges(points: &[Point2]) -> Result<Vec<[u32; 2]>, PlanarError> {
     check_sites(points)?;
-    Ok(search(points))
+    search(points, super::MAX_CANDIDATES).ok_or_else(|| super::too_many_candidates(points.len()))
 }
 
-/// [`candidate_edges`] for checked sites.
-pub(super) fn search(points: &[Point2]) -> Vec<[u32; 2]> {
+/// [`candidate_edges`] for checked sites; `None` once there are more than `limit` (the
+/// search stops there, before the list outgrows memory).
+pub(super) fn search(points: &[Point2], limit: usize) -> Option<Vec<[u32; 2]>> {
     let grid = PointGrid::new(points, 2.0);
+    let found = AtomicUsize::new(0);
     // Sites in cell order, so that consecutive searches share cached cells.
     let mut edges: Vec<[u32; 2]> = (0..points.len())
         .into_par_iter()
         .map_init(Scratch::default, |s, slot| {
             let mut out = Vec::new();
-            candidates_of(slot, &grid, s, &mut out);
+            if found.load(Relaxed) <= limit {
+                candidates_of(slot, &grid, s, &mut out);
+                found.fetch_add(out.len(), Relaxed);
+            }
             out
         })
         .flatten_iter()
         .collect();
+    if found.into_inner() > limit {
+        return None;
+    }
     edges.par_sort_unstable();
-    edges
+    Some(edges)
 }
 
 /// The candidates of the site in grid slot `slot` with lexicographically larger sites.
@@ -630,7 +639,11 @@ mod tests {
                 pts.iter().any(|r| diamond_hit(p, q, r).on_segment)
             };
             assert_eq!(
-                search(&pts).iter().filter(through).count(),
+                search(&pts, usize::MAX)
+                    .unwrap()
+                    .iter()
+                    .filter(through)
+                    .count(),
                 0,
                 "{rings} x {rays}"
             );
@@ -666,7 +679,7 @@ mod tests {
 
     /// How many brute-force candidates the search misses.
     fn missing_candidates(pts: &[Point2]) -> usize {
-        let (got, want) = (search(pts), brute(pts));
+        let (got, want) = (search(pts, usize::MAX).unwrap(), brute(pts));
         want.iter()
             .filter(|e| got.binary_search(e).is_err())
             .count()
@@ -723,7 +736,7 @@ mod tests {
             (Distribution::Grid, 400),
         ] {
             let pts = points2d(dist, n, 3);
-            let got = search(&pts);
+            let got = search(&pts, usize::MAX).unwrap();
             let want = brute(&pts);
             let missing: Vec<_> = want
                 .iter()

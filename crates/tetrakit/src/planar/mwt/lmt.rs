@@ -404,7 +404,7 @@ mod tests {
 
     /// The candidate graph of `pts`, every edge alive.
     fn all_alive(pts: &[Point2]) -> Skeleton {
-        let cands = super::super::candidates::search(pts);
+        let cands = super::super::candidates::search(pts, usize::MAX).unwrap();
         let (start, adj) = super::super::walks::ccw_rows(pts, &cands);
         let pos = positions(&start, &adj, &cands);
         Skeleton {

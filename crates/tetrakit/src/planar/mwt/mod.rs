@@ -220,11 +220,13 @@ fn solve(
         v
     };
     let (forced, forbidden) = (sorted(&opts.forced), sorted(&opts.forbidden));
-    let mut cands = if constrained {
-        all_segments(points)
+    let n = points.len();
+    let cands = if constrained {
+        (n * (n - 1) / 2 <= MAX_CANDIDATES).then(|| all_segments(points))
     } else {
-        candidates::search(points)
+        candidates::search(points, MAX_CANDIDATES)
     };
+    let mut cands = cands.ok_or_else(|| too_many_candidates(n))?;
     cands.retain(|e| forbidden.binary_search(e).is_err());
     for f in &forced {
         if cands.binary_search(f).is_err() {
@@ -261,6 +263,11 @@ fn solve(
             .map(|(f, _)| f.outer.len())
             .max()
             .unwrap_or(0);
+        for (f, _) in &problems {
+            // Splicing a hole into the outer walk walks its joining edge twice.
+            let m = f.outer.len() + f.holes.iter().map(|h| h.len() + 2).sum::<usize>();
+            dp_fits(m, || "a face left by the LMT-skeleton".into())?;
+        }
         // Inside the pool even for a single face, which `par_iter` would run on this
         // thread: the DPs' parallel loops are cheap from a worker, and from outside the
         // pool each one waits for a worker to take it (a ring-hole face, whose leaves'
@@ -294,11 +301,43 @@ fn solve(
     })
 }
 
-/// Bytes per pair of sites that the polygon DP of a convex polygon uses (table and rows;
-/// 63 MB measured at 2000 sites), and the most it may use in all: past that an error
-/// says so before anything is allocated.
+/// The most memory the solver plans to use: past it an error says so before the
+/// allocation (never an abort for want of memory).
+const MEMORY_LIMIT: usize = 16 << 30;
+
+/// Bytes per pair of walk occurrences that a face's polygon DP uses (table and rows;
+/// 63 MB measured on a convex polygon of 2000 sites).
 const DP_BYTES_PER_PAIR: usize = 32;
-const DP_MAX_BYTES: usize = 16 << 30;
+
+/// Peak bytes per candidate edge of the whole solver (69 measured on 10^6 uniform sites,
+/// 64 on 10^7), and so the most candidates it takes.
+const BYTES_PER_CANDIDATE: usize = 64;
+const MAX_CANDIDATES: usize = MEMORY_LIMIT / BYTES_PER_CANDIDATE;
+
+/// The error for a set with more than [`MAX_CANDIDATES`] candidate edges.
+fn too_many_candidates(n: usize) -> PlanarError {
+    PlanarError::new(format!(
+        "{n} sites have more than {MAX_CANDIDATES} candidate edges (sites in or near convex \
+         position keep most pairs): the LMT-skeleton would need more than {} GB",
+        MEMORY_LIMIT >> 30
+    ))
+}
+
+/// An error when the polygon DP over a walk of `m` occurrences would pass the memory
+/// limit; `what` names the walk.
+fn dp_fits(m: usize, what: impl FnOnce() -> String) -> Result<(), PlanarError> {
+    let bytes = DP_BYTES_PER_PAIR.saturating_mul(m).saturating_mul(m) / 2;
+    if bytes <= MEMORY_LIMIT {
+        return Ok(());
+    }
+    Err(PlanarError::new(format!(
+        "{}: the exact dynamic program over its {m} vertices needs about {} GB and \
+         m³/6 steps (at most {} GB allowed)",
+        what(),
+        bytes >> 30,
+        MEMORY_LIMIT >> 30
+    )))
+}
 
 /// Sites all on the hull's boundary: every triangulation is one of the hull polygon (its
 /// walk through every boundary site), so one polygon DP over it decides the MWT. Every
@@ -308,15 +347,7 @@ const DP_MAX_BYTES: usize = 16 << 30;
 fn convex_position(points: &[Point2], hull: &Hull2) -> Result<Mwt, PlanarError> {
     let n = points.len();
     let t = Instant::now();
-    let bytes = DP_BYTES_PER_PAIR * n * n / 2;
-    if bytes > DP_MAX_BYTES {
-        return Err(PlanarError::new(format!(
-            "{n} sites in convex position: the exact dynamic program over them needs about \
-             {} GB and n³/6 steps (at most {} GB allowed)",
-            bytes >> 30,
-            DP_MAX_BYTES >> 30
-        )));
-    }
+    dp_fits(n, || format!("{n} sites in convex position"))?;
     let walk: Vec<u32> = (hull.boundary_chains(points).iter())
         .flat_map(|c| c[..c.len() - 1].iter().copied())
         .collect();
@@ -611,5 +642,34 @@ mod tests {
             forbidden: vec![],
         };
         assert!(mwt_with(&pts, &bad).unwrap_err().0.contains("3-3"));
+    }
+
+    /// The memory guards refuse before allocating: the candidate search stops past its
+    /// limit, the constrained path (every segment a candidate) checks `n²/2`, and the
+    /// polygon DP checks `m²`.
+    #[test]
+    fn memory_guards_refuse_before_allocating() {
+        let pts = points2d(Distribution::Uniform, 300, 3);
+        let all = candidates::search(&pts, usize::MAX).unwrap();
+        assert!(candidates::search(&pts, all.len()).is_some());
+        assert!(candidates::search(&pts, all.len() / 2).is_none());
+
+        let n = 23_200; // n (n - 1) / 2 just over MAX_CANDIDATES
+        assert!(n * (n - 1) / 2 > MAX_CANDIDATES && 23_100 * 23_099 / 2 <= MAX_CANDIDATES);
+        let pts = points2d(Distribution::Uniform, n, 4);
+        let hull = Hull2::new(&pts);
+        let opts = MwtOptions {
+            forced: vec![[hull.vertices[0], hull.vertices[1]]],
+            forbidden: Vec::new(),
+        };
+        let err = mwt_with(&pts, &opts).unwrap_err();
+        assert!(err.0.contains("candidate edges"), "{err}");
+
+        assert!(dp_fits(32_000, String::new).is_ok());
+        let err = dp_fits(33_000, || "a face".into()).unwrap_err();
+        assert!(
+            err.0.starts_with("a face: ") && err.0.contains("16 GB"),
+            "{err}"
+        );
     }
 }
