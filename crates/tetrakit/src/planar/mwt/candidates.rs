@@ -139,14 +139,40 @@ fn through(r: &Seen, x: &Seen, l: &Seen) -> Option<(f64, f64)> {
 /// skipped, so that the direction of a whole collinear run can die.
 fn distinct_neighbours(around: &[Seen], i: usize) -> Option<(Seen, Seen)> {
     let (n, x) = (around.len(), around[i].pa);
-    let apart = 3.0 * EPS;
-    let cw = (1..n)
-        .map(|k| around[(i + n - k) % n])
-        .find(|s| ccw_from(s.pa, x) > apart)?;
-    let ccw = (1..n)
-        .map(|k| around[(i + k) % n])
-        .find(|s| ccw_from(x, s.pa) > apart)?;
-    Some((cw, ccw))
+    let (cw, ccw) = (around[(i + n - 1) % n], around[(i + 1) % n]);
+    if ccw_from(cw.pa, x) > 3.0 * EPS && ccw_from(x, ccw.pa) > 3.0 * EPS {
+        return Some((cw, ccw));
+    }
+    Some((
+        first_apart(around, i, false)?,
+        first_apart(around, i, true)?,
+    ))
+}
+
+/// The first entry from `i` (counter-clockwise or clockwise) whose direction is more than
+/// `3 EPS` from entry `i`'s. Walking away from `i` the gap grows, except that the entries
+/// sharing `i`'s pseudo-angle met after going round come last (gap 0): they are left
+/// out, and the rest is bisected (a scan would walk whole runs of one direction, such as
+/// a scan line's row).
+#[cold]
+fn first_apart(around: &[Seen], i: usize, ccw: bool) -> Option<Seen> {
+    let (n, x) = (around.len(), around[i].pa);
+    let at = |k: usize| around[if ccw { (i + k) % n } else { (i + n - k) % n }];
+    let apart = |k: usize| {
+        let s = at(k).pa;
+        (if ccw { ccw_from(x, s) } else { ccw_from(s, x) }) > 3.0 * EPS
+    };
+    let same = if ccw {
+        i - around[..i].partition_point(|s| s.pa < x)
+    } else {
+        around[i + 1..].partition_point(|s| s.pa <= x)
+    };
+    let (mut a, mut b) = (1, n - same);
+    while a < b {
+        let m = (a + b) / 2;
+        if apart(m) { b = m } else { a = m + 1 }
+    }
+    (a < n - same).then(|| at(a))
 }
 
 /// Closed pseudo-angle intervals, disjoint and sorted, within `[0, 4]`.
@@ -482,6 +508,50 @@ fn gather_ring(grid: &PointGrid, slot: usize, c: (usize, usize), r: usize, pendi
 mod tests {
     use super::*;
     use crate::planar::{Distribution, points2d};
+
+    /// The bisection in `distinct_neighbours` finds what a scan from the entry finds, on
+    /// sorted lists with runs of one direction, across the wrap at pseudo-angle 4.
+    #[test]
+    fn distinct_neighbours_match_a_scan() {
+        let scan = |around: &[Seen], i: usize| {
+            let (n, x, apart) = (around.len(), around[i].pa, 3.0 * EPS);
+            let cw = (1..n)
+                .map(|k| around[(i + n - k) % n])
+                .find(|s| ccw_from(s.pa, x) > apart)?;
+            let ccw = (1..n)
+                .map(|k| around[(i + k) % n])
+                .find(|s| ccw_from(x, s.pa) > apart)?;
+            Some((cw.slot, ccw.slot))
+        };
+        let mut rng = crate::rng::Rng::new(8);
+        let mut runs = 0;
+        for _ in 0..3000 {
+            // A few directions (near 0, near 4, anywhere), each a run of entries at most
+            // a margin apart.
+            let dirs: Vec<f64> = (0..1 + rng.below(4))
+                .map(|_| match rng.below(3) {
+                    0 => rng.below(3) as f64 * EPS,
+                    1 => 4.0 - (1 + rng.below(3)) as f64 * EPS,
+                    _ => rng.unit() * 4.0,
+                })
+                .collect();
+            let mut around: Vec<Seen> = (0..1 + rng.below(12))
+                .map(|k| Seen {
+                    pa: (dirs[rng.below(dirs.len())] + rng.below(3) as f64 * EPS).min(4.0 - EPS),
+                    back: 0.0,
+                    fwd: 0.0,
+                    slot: k as u32,
+                })
+                .collect();
+            around.sort_by(|a, b| a.pa.total_cmp(&b.pa));
+            for i in 0..around.len() {
+                let got = distinct_neighbours(&around, i).map(|(a, b)| (a.slot, b.slot));
+                assert_eq!(got, scan(&around, i), "{i} in {:?}", around);
+                runs += usize::from(got.is_some());
+            }
+        }
+        assert!(runs > 3000, "{runs}");
+    }
 
     #[test]
     fn directions_merge_and_wrap() {
