@@ -139,7 +139,7 @@ fn left_triangles(
     status: &[AtomicU8],
     (p, ip): (u32, u32),
     (q, iq): (u32, u32),
-    near: &mut Vec<(u32, u32, bool)>,
+    near: &mut Seen,
     mut found: impl FnMut(Apex) -> bool,
 ) -> bool {
     near.clear();
@@ -155,11 +155,12 @@ fn left_triangles(
             break;
         }
         let o = least.map_or(1, |m| orient2d(pp, pt(u), pt(m)));
-        near.push((u, f, o < 0));
+        near.list.push((u, f, o < 0));
         if o > 0 {
             least = Some(u);
         }
     }
+    near.index();
     // Neighbours of p by α, against the least γ so far.
     let alive = |f: u32| status[f as usize].load(Relaxed) != IMPOSSIBLE;
     let mut least: Option<u32> = None;
@@ -169,7 +170,7 @@ fn left_triangles(
         }
         let o = least.map_or(-1, |m| orient2d(pq, pt(t), pt(m)));
         if o <= 0
-            && let Some(&(_, f, hidden)) = near.iter().find(|b| b.0 == t)
+            && let Some((_, f, hidden)) = near.find(t)
             && !hidden
             && alive(f)
             && alive(g)
@@ -185,7 +186,63 @@ fn left_triangles(
 }
 
 /// Per-thread buffers: the triangles left of an edge, and a sweep's neighbours.
-type Buffers = (Vec<Apex>, Vec<(u32, u32, bool)>);
+type Buffers = (Vec<Apex>, Seen);
+
+/// The neighbours of `q` a sweep of [`left_triangles`] has seen: site, edge to it, and
+/// whether one seen before lies inside its triangle. Looked up by site; past 16 (rows of
+/// anisotropic sets run to hundreds) through an open-addressing table, not a scan.
+#[derive(Default)]
+struct Seen {
+    list: Vec<(u32, u32, bool)>,
+    /// Positions in `list` by hashed site (`u32::MAX`: empty), when indexed.
+    table: Vec<u32>,
+}
+
+impl Seen {
+    const SCAN: usize = 16;
+
+    fn clear(&mut self) {
+        self.list.clear();
+    }
+
+    fn slot(&self, v: u32) -> usize {
+        ((v as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 32) as usize & (self.table.len() - 1)
+    }
+
+    /// Builds the table once the list is complete (when it is long).
+    fn index(&mut self) {
+        if self.list.len() <= Self::SCAN {
+            return;
+        }
+        self.table.clear();
+        self.table
+            .resize((2 * self.list.len()).next_power_of_two(), u32::MAX);
+        for k in 0..self.list.len() {
+            let mut h = self.slot(self.list[k].0);
+            while self.table[h] != u32::MAX {
+                h = (h + 1) & (self.table.len() - 1);
+            }
+            self.table[h] = k as u32;
+        }
+    }
+
+    fn find(&self, v: u32) -> Option<(u32, u32, bool)> {
+        if self.list.len() <= Self::SCAN {
+            return self.list.iter().find(|b| b.0 == v).copied();
+        }
+        let mut h = self.slot(v);
+        loop {
+            let k = *self.table.get(h)?;
+            if k == u32::MAX {
+                return None;
+            }
+            if self.list[k as usize].0 == v {
+                return Some(self.list[k as usize]);
+            }
+            h = (h + 1) & (self.table.len() - 1);
+        }
+    }
+}
 
 /// A pair of alive triangles on `e` that makes it locally minimal, as the four other
 /// edges (left pair, right pair), if there is one.
@@ -484,7 +541,7 @@ mod tests {
             let status: Vec<AtomicU8> = (alive.iter())
                 .map(|&a| AtomicU8::new(if a { ALIVE } else { IMPOSSIBLE }))
                 .collect();
-            let mut near = Vec::new();
+            let mut near = Seen::default();
             for (e, &[p, q]) in sk.edges.iter().enumerate() {
                 let [ip, iq] = sk.pos[e];
                 for ((a, ia), (b, ib)) in [((p, ip), (q, iq)), ((q, iq), (p, ip))] {
