@@ -50,6 +50,7 @@ SETS = [
     ("scanlines 100 x 1000", lambda: scanlines(100, 1000, 100.0)),
     ("scanlines, jittered", lambda: scanlines(100, 1000, 100.0, jitter=0.01)),
     ("scanlines, rotated", lambda: scanlines(30, 200, 30.0, angle=0.5)),
+    ("10 scan lines x 4000 (dense rows)", lambda: scanlines(10, 4000, 100.0)),
     ("polar grid 50 x 200", lambda: polar(50, 200)),
     ("DEM grid 300^2, step 0.1", lambda: [(i * 0.1, j * 0.1) for i in range(300) for j in range(300)]),
     ("1000-gon round 100 sites", lambda: polygon_round_cluster(1000, 100)),
