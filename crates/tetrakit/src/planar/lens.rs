@@ -44,6 +44,11 @@ const MAX_EDGES: usize = 2 << 30;
 
 /// The β-skeleton for `0 < β < 1` of checked, distinct sites.
 pub(super) fn lens_skeleton(points: &[Point2], beta: Ratio) -> Result<Skeleton, PlanarError> {
+    at_most(points, beta, MAX_EDGES)
+}
+
+/// [`lens_skeleton`], refused once it has more than `limit` edges.
+fn at_most(points: &[Point2], beta: Ratio, limit: usize) -> Result<Skeleton, PlanarError> {
     let grid = PointGrid::new(points, 2.0);
     let cones = Cones::new(beta, crate::geom::bounding_box(points));
     let (edges, decided) = (AtomicUsize::new(0), AtomicUsize::new(0));
@@ -52,7 +57,7 @@ pub(super) fn lens_skeleton(points: &[Point2], beta: Ratio) -> Result<Skeleton, 
         .map_init(
             || Search::new(cones.sectors),
             |s, slot| {
-                if edges.load(AtomicOrdering::Relaxed) > MAX_EDGES {
+                if edges.load(AtomicOrdering::Relaxed) > limit {
                     return Vec::new();
                 }
                 let out = s.neighbours(&grid, &cones, beta, slot);
@@ -62,10 +67,10 @@ pub(super) fn lens_skeleton(points: &[Point2], beta: Ratio) -> Result<Skeleton, 
             },
         )
         .collect();
-    if edges.into_inner() > MAX_EDGES {
+    if edges.into_inner() > limit {
         return Err(PlanarError::new(format!(
-            "the β-skeleton of these {} sites has more than {MAX_EDGES} edges (β = {beta} is \
-             small for their density); at most that many are written",
+            "the β-skeleton of these {} sites has more than {limit} edges (β = {beta} is \
+             small for their density): the list would not fit in memory",
             points.len()
         )));
     }
@@ -456,6 +461,18 @@ mod tests {
             edges += want.len();
         }
         assert!(edges > 50_000, "{edges}");
+    }
+
+    /// Past its limit the search stops with an error instead of growing the list.
+    #[test]
+    fn too_many_edges_are_refused() {
+        let mut rng = Rng::new(7);
+        let pts: Vec<Point2> = (0..2000).map(|_| [rng.unit(), rng.unit()]).collect();
+        let beta: Ratio = "0.2".parse().unwrap();
+        let all = lens_skeleton(&pts, beta).unwrap().edges.len();
+        assert!(at_most(&pts, beta, all).is_ok());
+        let err = at_most(&pts, beta, all / 2).unwrap_err();
+        assert!(err.0.contains("would not fit in memory"), "{err}");
     }
 
     /// On uniform sites the search decides a bounded number of pairs per site.
