@@ -139,7 +139,7 @@ fn left_triangles(
     status: &[AtomicU8],
     (p, ip): (u32, u32),
     (q, iq): (u32, u32),
-    near: &mut Seen,
+    near: &mut Swept,
     mut found: impl FnMut(Apex) -> bool,
 ) -> bool {
     near.clear();
@@ -155,12 +155,12 @@ fn left_triangles(
             break;
         }
         let o = least.map_or(1, |m| orient2d(pp, pt(u), pt(m)));
-        near.list.push((u, f, o < 0));
+        near.push((u, f, o < 0));
         if o > 0 {
             least = Some(u);
         }
     }
-    near.index();
+    let near = near.index();
     // Neighbours of p by α, against the least γ so far.
     let alive = |f: u32| status[f as usize].load(Relaxed) != IMPOSSIBLE;
     let mut least: Option<u32> = None;
@@ -186,60 +186,82 @@ fn left_triangles(
 }
 
 /// Per-thread buffers: the triangles left of an edge, and a sweep's neighbours.
-type Buffers = (Vec<Apex>, Seen);
+type Buffers = (Vec<Apex>, Swept);
 
 /// The neighbours of `q` a sweep of [`left_triangles`] has seen: site, edge to it, and
-/// whether one seen before lies inside its triangle. Looked up by site; past 16 (rows of
-/// anisotropic sets run to hundreds) through an open-addressing table, not a scan.
+/// whether one seen before lies inside its triangle. Looked up by site through
+/// [`Swept::index`] once complete; past 16 (rows of anisotropic sets run to hundreds)
+/// through an open-addressing table, not a scan.
 #[derive(Default)]
-struct Seen {
+struct Swept {
     list: Vec<(u32, u32, bool)>,
-    /// Positions in `list` by hashed site (`u32::MAX`: empty), when indexed.
+    /// Positions in `list` by hashed site (`u32::MAX`: empty).
     table: Vec<u32>,
 }
 
-impl Seen {
-    const SCAN: usize = 16;
+/// A complete [`Swept`], looked up by site.
+struct Lookup<'a> {
+    list: &'a [(u32, u32, bool)],
+    /// The table, for a long list.
+    table: Option<&'a [u32]>,
+}
 
+/// Lists up to this long are scanned.
+const SCAN: usize = 16;
+
+fn slot(v: u32, size: usize) -> usize {
+    ((v as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 32) as usize & (size - 1)
+}
+
+impl Swept {
     fn clear(&mut self) {
         self.list.clear();
     }
 
-    fn slot(&self, v: u32) -> usize {
-        ((v as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 32) as usize & (self.table.len() - 1)
+    fn push(&mut self, x: (u32, u32, bool)) {
+        self.list.push(x);
     }
 
-    /// Builds the table once the list is complete (when it is long).
-    fn index(&mut self) {
-        if self.list.len() <= Self::SCAN {
-            return;
+    /// The list, indexed by site (the only way to look it up, so no stale table is read).
+    fn index(&mut self) -> Lookup<'_> {
+        if self.list.len() <= SCAN {
+            return Lookup {
+                list: &self.list,
+                table: None,
+            };
         }
+        let size = (2 * self.list.len()).next_power_of_two();
         self.table.clear();
-        self.table
-            .resize((2 * self.list.len()).next_power_of_two(), u32::MAX);
-        for k in 0..self.list.len() {
-            let mut h = self.slot(self.list[k].0);
+        self.table.resize(size, u32::MAX);
+        for (k, e) in self.list.iter().enumerate() {
+            let mut h = slot(e.0, size);
             while self.table[h] != u32::MAX {
-                h = (h + 1) & (self.table.len() - 1);
+                h = (h + 1) & (size - 1);
             }
             self.table[h] = k as u32;
         }
-    }
-
-    fn find(&self, v: u32) -> Option<(u32, u32, bool)> {
-        if self.list.len() <= Self::SCAN {
-            return self.list.iter().find(|b| b.0 == v).copied();
+        Lookup {
+            list: &self.list,
+            table: Some(&self.table),
         }
-        let mut h = self.slot(v);
+    }
+}
+
+impl Lookup<'_> {
+    fn find(&self, v: u32) -> Option<(u32, u32, bool)> {
+        let Some(table) = self.table else {
+            return self.list.iter().find(|b| b.0 == v).copied();
+        };
+        let mut h = slot(v, table.len());
         loop {
-            let k = *self.table.get(h)?;
+            let k = table[h];
             if k == u32::MAX {
                 return None;
             }
             if self.list[k as usize].0 == v {
                 return Some(self.list[k as usize]);
             }
-            h = (h + 1) & (self.table.len() - 1);
+            h = (h + 1) & (table.len() - 1);
         }
     }
 }
@@ -541,7 +563,7 @@ mod tests {
             let status: Vec<AtomicU8> = (alive.iter())
                 .map(|&a| AtomicU8::new(if a { ALIVE } else { IMPOSSIBLE }))
                 .collect();
-            let mut near = Seen::default();
+            let mut near = Swept::default();
             for (e, &[p, q]) in sk.edges.iter().enumerate() {
                 let [ip, iq] = sk.pos[e];
                 for ((a, ia), (b, ib)) in [((p, ip), (q, iq)), ((q, iq), (p, ip))] {
