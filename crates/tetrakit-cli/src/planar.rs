@@ -63,7 +63,20 @@ pub fn skeleton(
     let parsed = start.elapsed().as_secs_f64();
     let region = if lune { Region::Lune } else { Region::Circle };
     let t = Instant::now();
-    let sk = match planar::beta_skeleton(&points, beta, region) {
+    // Below β = 1 each site's search may reach far: a bar from a few thousand sites.
+    let bar = (beta.cmp_one() == std::cmp::Ordering::Less)
+        .then(|| crate::run::progress_bar(points.len() as u64, 5_000, "β-skeleton sites"))
+        .flatten();
+    let report = |done: u64, _all: u64| {
+        if let Some(b) = &bar {
+            b.set_position(done);
+        }
+    };
+    let sk = planar::beta_skeleton_with_progress(&points, beta, region, &report);
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
+    let sk = match sk {
         Ok(s) => s,
         Err(e) => return fail(e),
     };

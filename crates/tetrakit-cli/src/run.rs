@@ -10,16 +10,17 @@ use tetrakit::geom::Hull3;
 use tetrakit::io::{self, Input};
 use tetrakit::mesh::{self, Tetrahedralization};
 
-/// Work on `len` items is long enough to show progress (at least `50_000`), and stderr
-/// is a terminal to show it on.
-fn shows_progress(len: usize) -> bool {
+/// Work on `len` items is long enough to show progress (at least `min`), and stderr is
+/// a terminal to show it on.
+fn shows_progress(len: usize, min: usize) -> bool {
     use std::io::IsTerminal;
-    len >= 50_000 && std::io::stderr().is_terminal()
+    len >= min && std::io::stderr().is_terminal()
 }
 
-/// A progress bar on stderr for long work, only when stderr is a terminal.
-fn progress_bar(len: u64, what: &str) -> Option<indicatif::ProgressBar> {
-    if !shows_progress(len as usize) {
+/// A progress bar on stderr for work on at least `min` items, only when stderr is a
+/// terminal.
+pub fn progress_bar(len: u64, min: usize, what: &str) -> Option<indicatif::ProgressBar> {
+    if !shows_progress(len as usize, min) {
         return None;
     }
     let bar = indicatif::ProgressBar::new(len);
@@ -32,9 +33,10 @@ fn progress_bar(len: u64, what: &str) -> Option<indicatif::ProgressBar> {
     Some(bar)
 }
 
-/// A spinner on stderr naming the current stage of long work ([`shows_progress`]).
+/// A spinner on stderr naming the current stage of work on at least `50_000` items
+/// ([`shows_progress`]).
 pub fn stage_spinner(len: usize) -> Option<indicatif::ProgressBar> {
-    if !shows_progress(len) {
+    if !shows_progress(len, 50_000) {
         return None;
     }
     let bar = indicatif::ProgressBar::new_spinner();
@@ -79,7 +81,7 @@ pub fn detect(path: &Path, as_json: bool, output: Option<&Path>, opts: Options) 
             path.display()
         ));
     };
-    let bar = progress_bar(input.points.len() as u64, "vertex links");
+    let bar = progress_bar(input.points.len() as u64, 50_000, "vertex links");
     let report = |done: u64, _all: u64| {
         if let Some(b) = &bar {
             b.set_position(done);

@@ -32,7 +32,7 @@ pub use mwt::{
     mwt_with_progress, weight_of,
 };
 pub use oracle::triangulations;
-pub use skeleton::{Region, Skeleton, beta_skeleton};
+pub use skeleton::{Region, Skeleton, beta_skeleton, beta_skeleton_with_progress};
 
 /// Union-find root with path halving (cells of cocircular Delaunay triangles, faces of
 /// the certain edges).

@@ -77,13 +77,39 @@ pub fn beta_skeleton(
     beta: Ratio,
     region: Region,
 ) -> Result<Skeleton, PlanarError> {
+    beta_skeleton_with_progress(points, beta, region, &|_, _| {})
+}
+
+/// [`beta_skeleton`], reporting `(sites searched, sites)` now and then while it searches
+/// for β < 1 (which may take minutes for small β); for β ≥ 1 it reports nothing.
+///
+/// ```
+/// use std::sync::atomic::{AtomicU64, Ordering};
+/// use tetrakit::planar::{Region, beta_skeleton_with_progress};
+/// let pts: Vec<[f64; 2]> = (0..3000).map(|i| [(i % 60) as f64, (i / 60) as f64]).collect();
+/// let last = AtomicU64::new(0);
+/// let report = |done: u64, all: u64| {
+///     assert!(done <= all);
+///     last.fetch_max(done, Ordering::Relaxed);
+/// };
+/// let b = "0.5".parse().unwrap();
+/// let sk = beta_skeleton_with_progress(&pts, b, Region::Circle, &report).unwrap();
+/// assert!(!sk.edges.is_empty());
+/// assert!(last.into_inner() > 0);
+/// ```
+pub fn beta_skeleton_with_progress(
+    points: &[Point2],
+    beta: Ratio,
+    region: Region,
+    progress: &(dyn Fn(u64, u64) + Sync),
+) -> Result<Skeleton, PlanarError> {
     super::check_coordinates(points)?;
     if points.len() < 2 {
         return Ok(Skeleton::default());
     }
     if beta.cmp_one() == Ordering::Less {
         super::check_sites(points)?;
-        return super::lens::lens_skeleton(points, beta);
+        return super::lens::lens_skeleton(points, beta, progress);
     }
     let lune = region == Region::Lune && beta.cmp_one() == Ordering::Greater;
     let grid = lune.then(|| PointGrid::new(points, 2.0));
