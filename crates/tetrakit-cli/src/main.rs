@@ -18,6 +18,7 @@ mod run;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
 use std::process::ExitCode;
+use std::time::Duration;
 
 #[derive(Parser)]
 #[command(
@@ -120,8 +121,8 @@ struct TetrahedralizeArgs {
     #[arg(long)]
     unique: bool,
     /// Give up after this many seconds (exit 3 with the best bounds).
-    #[arg(long)]
-    time_limit: Option<f64>,
+    #[arg(long, value_parser = seconds)]
+    time_limit: Option<Duration>,
     /// Print one JSON object on stdout.
     #[arg(long)]
     json: bool,
@@ -334,6 +335,16 @@ enum CorruptKind {
     /// Add a segment overlapping a collinear one (and, in .ele output, a tetrahedron
     /// overlapping two others).
     AddOverlap,
+}
+
+/// A time limit: a finite, non-negative number of seconds (a usage error otherwise,
+/// never a panic).
+fn seconds(text: &str) -> Result<Duration, String> {
+    let x: f64 = text
+        .parse()
+        .map_err(|_| format!("'{text}' is not a number of seconds"))?;
+    Duration::try_from_secs_f64(x)
+        .map_err(|_| format!("'{text}' is not a finite, non-negative number of seconds"))
 }
 
 fn main() -> ExitCode {

@@ -169,7 +169,7 @@ pub struct TetraArgs<'a> {
     pub input: &'a Path,
     pub minimal: bool,
     pub unique: bool,
-    pub time_limit: Option<f64>,
+    pub time_limit: Option<Duration>,
     pub as_json: bool,
     pub output: Option<&'a Path>,
 }
@@ -199,7 +199,7 @@ pub fn tetrahedralize(a: TetraArgs) -> u8 {
     let opts = Options {
         unique: a.unique,
         any: !a.minimal,
-        time_limit: a.time_limit.map(Duration::from_secs_f64),
+        time_limit: a.time_limit,
     };
     let (outcome, stats) = match exact::minimal_tetrahedralization(domain, &opts) {
         Ok(x) => x,

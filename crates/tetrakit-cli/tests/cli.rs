@@ -410,6 +410,24 @@ fn time_limit_gives_exit_3_with_bounds() {
     assert!(v["lower_bound"].as_u64().unwrap() >= 13);
 }
 
+/// A time limit that is not a finite, non-negative number of seconds is a usage error
+/// (exit 2, naming the value), never a panic.
+#[test]
+fn bad_time_limits_are_usage_errors() {
+    let d = dir("badlimit");
+    let p = d.join("pts.xyz");
+    std::fs::write(&p, "0 0 0\n1 0 0\n0 1 0\n0 0 1\n").unwrap();
+    for bad in ["nan", "inf", "1e300", "-1", "soon"] {
+        let o = run(&["tetrahedralize", s(&p), &format!("--time-limit={bad}")]);
+        assert_eq!(o.status.code(), Some(2), "{bad}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(
+            err.contains(&format!("'{bad}'")) && !err.contains("panicked"),
+            "{err}"
+        );
+    }
+}
+
 #[test]
 fn planar_commands_json_fields_outputs_and_bad_input() {
     let d = dir("planar");
