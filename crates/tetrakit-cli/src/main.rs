@@ -169,6 +169,11 @@ struct MwtArgs {
     /// .edge (with .node) or .svg.
     #[arg(long)]
     output: Option<PathBuf>,
+    /// Give up after this many seconds: exit 3 with certified bounds on the minimum
+    /// weight (minimum spanning tree, Delaunay triangulation), writing the Delaunay
+    /// triangulation to --output.
+    #[arg(long, value_parser = seconds)]
+    time_limit: Option<Duration>,
 }
 
 #[derive(Args)]
@@ -372,7 +377,13 @@ fn main() -> ExitCode {
         Cmd::Skeleton(a) => {
             planar::skeleton(&a.input, a.xy, &a.beta, a.lune, a.json, a.output.as_deref())
         }
-        Cmd::Mwt(a) => planar::mwt(&a.input, a.xy, a.json, a.output.as_deref()),
+        Cmd::Mwt(a) => planar::mwt(planar::MwtArgs {
+            input: &a.input,
+            xy: a.xy,
+            as_json: a.json,
+            output: a.output.as_deref(),
+            time_limit: a.time_limit,
+        }),
         Cmd::Keil(a) => planar::keil(planar::KeilArgs {
             beta: &a.beta,
             n: a.n,

@@ -1,12 +1,14 @@
 //! Chapter 5 commands: `skeleton`, `mwt`, `keil`, and `generate points2d`.
 
 use crate::run::fail;
+use indicatif::ProgressBar;
 use serde_json::json;
 use std::path::Path;
-use std::time::Instant;
+use std::sync::mpsc::{self, RecvTimeoutError};
+use std::time::{Duration, Instant};
 use tetrakit::geom::{Point2, Ratio};
 use tetrakit::io;
-use tetrakit::planar::{self, Distribution, Region};
+use tetrakit::planar::{self, Distribution, MwtOptions, Region};
 
 /// Reads planar points and their heights. Without `xy` every z must be 0; with it the
 /// points are projected to the xy-plane and their z kept.
@@ -114,24 +116,44 @@ pub fn skeleton(
     0
 }
 
-pub fn mwt(path: &Path, xy: bool, as_json: bool, output: Option<&Path>) -> u8 {
+/// What `tetrakit mwt` was asked.
+pub struct MwtArgs<'a> {
+    pub input: &'a Path,
+    pub xy: bool,
+    pub as_json: bool,
+    pub output: Option<&'a Path>,
+    pub time_limit: Option<Duration>,
+}
+
+pub fn mwt(a: MwtArgs) -> u8 {
     let start = Instant::now();
-    let (points, z) = match read_points(path, xy) {
+    let (points, z) = match read_points(a.input, a.xy) {
         Ok(pz) => pz,
         Err(c) => return c,
     };
     let parsed = start.elapsed().as_secs_f64();
     let t = Instant::now();
     let spinner = crate::run::stage_spinner(points.len());
-    let stage = |s: planar::MwtStage| {
-        if let Some(b) = &spinner {
-            b.set_message(format!("mwt: {s}"));
-        }
+    let m = match a.time_limit {
+        None => planar::mwt_with_progress(&points, &MwtOptions::default(), &stage(&spinner)),
+        Some(limit) => match solve_within(&points, limit, spinner.clone()) {
+            Some(m) => m,
+            None => {
+                if let Some(b) = &spinner {
+                    b.set_message("mwt: out of time, bounds");
+                }
+                let code = undecided(&a, &points, &z, start);
+                if let Some(b) = spinner {
+                    b.finish_and_clear();
+                }
+                return code;
+            }
+        },
     };
-    let m = planar::mwt_with_progress(&points, &planar::MwtOptions::default(), &stage);
     if let Some(b) = spinner {
         b.finish_and_clear();
     }
+    let (as_json, output) = (a.as_json, a.output);
     let m = match m {
         Ok(m) => m,
         Err(e) => return fail(e),
@@ -186,6 +208,77 @@ pub fn mwt(path: &Path, xy: bool, as_json: bool, output: Option<&Path>) -> u8 {
         );
     }
     0
+}
+
+/// Names the solver's stage on the spinner.
+fn stage(spinner: &Option<ProgressBar>) -> impl Fn(planar::MwtStage) + '_ {
+    move |s| {
+        if let Some(b) = spinner {
+            b.set_message(format!("mwt: {s}"));
+        }
+    }
+}
+
+/// The exact solver on a thread of its own; `None` when it has not answered within
+/// `limit`. It is then left running: the process ends when the command returns.
+fn solve_within(
+    points: &[Point2],
+    limit: Duration,
+    spinner: Option<ProgressBar>,
+) -> Option<Result<planar::Mwt, planar::PlanarError>> {
+    let (tx, rx) = mpsc::channel();
+    let points = points.to_vec();
+    std::thread::spawn(move || {
+        let m = planar::mwt_with_progress(&points, &MwtOptions::default(), &stage(&spinner));
+        // The receiver is gone once the time is up; nothing waits for this answer then.
+        let _ = tx.send(m);
+    });
+    match rx.recv_timeout(limit) {
+        Ok(m) => Some(m),
+        Err(RecvTimeoutError::Timeout) => None,
+        Err(RecvTimeoutError::Disconnected) => Some(Err(planar::PlanarError::new(
+            "internal error, please report: the solver stopped without an answer",
+        ))),
+    }
+}
+
+/// Out of time: exit 3 with certified bounds on the minimum weight (the minimum
+/// spanning tree's and the Delaunay triangulation's), writing that triangulation.
+fn undecided(a: &MwtArgs, points: &[Point2], z: &[f64], start: Instant) -> u8 {
+    let b = match planar::mwt_bounds(points) {
+        Ok(b) => b,
+        Err(e) => return fail(e),
+    };
+    if let Some(out) = a.output
+        && let Err(e) = io::write_planar_triangulation(out, points, z, &b.edges, &b.triangles)
+    {
+        return fail(format!("{}: {e}", out.display()));
+    }
+    let limit = a.time_limit.unwrap_or_default().as_secs_f64();
+    if a.as_json {
+        out!(
+            "{}",
+            json!({
+                "verdict": "undecided",
+                "vertices": points.len(),
+                "time_limit": limit,
+                "lower_bound": b.lower.lo,
+                "upper_bound": b.upper.hi,
+                "edges": b.edges.len(),
+                "triangles": b.triangles.len(),
+                "seconds": start.elapsed().as_secs_f64(),
+            })
+        );
+    } else {
+        out!(
+            "undecided within the time limit ({limit} s): the minimum weight of a triangulation of {} sites is between {:.17e} (minimum spanning tree) and {:.17e} (Delaunay triangulation{})",
+            points.len(),
+            b.lower.lo,
+            b.upper.hi,
+            if a.output.is_some() { ", written" } else { "" }
+        );
+    }
+    3
 }
 
 pub fn generate_points(dist: Distribution, n: usize, seed: u64, output: &Path) -> u8 {

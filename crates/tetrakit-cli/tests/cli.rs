@@ -410,6 +410,59 @@ fn time_limit_gives_exit_3_with_bounds() {
     assert!(v["lower_bound"].as_u64().unwrap() >= 13);
 }
 
+/// `mwt --time-limit`: out of time, exit 3 with certified bounds around the optimum and
+/// the Delaunay triangulation written; in time, the same answer as without a limit.
+#[test]
+fn mwt_time_limit_gives_exit_3_with_bounds() {
+    let d = dir("mwtlimit");
+    let p = d.join("ring.xyz");
+    // A 400-gon round one site: about a second of exact work, far beyond a zero limit.
+    let mut text = String::new();
+    for i in 0..400 {
+        let a = i as f64 * std::f64::consts::TAU / 400.0;
+        text += &format!("{} {} 0\n", a.cos(), a.sin());
+    }
+    text += "0.1 0.2 0\n";
+    std::fs::write(&p, text).unwrap();
+    let off = d.join("t.off");
+    let o = run(&[
+        "mwt",
+        s(&p),
+        "--time-limit",
+        "0",
+        "--json",
+        "--output",
+        s(&off),
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(3),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let v = json(&o);
+    assert_eq!(v["verdict"], "undecided");
+    assert_eq!(v["triangles"], 2 * 401 - 2 - 400);
+    let (lo, hi) = (
+        v["lower_bound"].as_f64().unwrap(),
+        v["upper_bound"].as_f64().unwrap(),
+    );
+    let o = run(&["mwt", s(&p), "--json"]);
+    assert_eq!(o.status.code(), Some(0));
+    let w = json(&o)["weight"].as_f64().unwrap();
+    assert!(lo < w && w < hi, "{lo} {w} {hi}");
+    let written = std::fs::read_to_string(&off).unwrap();
+    assert!(
+        written.starts_with("OFF") && written.contains("401 400 0"),
+        "{written:.40}"
+    );
+    let small = d.join("small.xyz");
+    std::fs::write(&small, "0 0 0\n4 0 0\n4 3 0\n0 3 0\n1 1.5 0\n").unwrap();
+    let o = run(&["mwt", s(&small), "--time-limit", "600", "--json"]);
+    assert_eq!(o.status.code(), Some(0));
+    assert_eq!(json(&o)["edges"], 8);
+}
+
 /// A time limit that is not a finite, non-negative number of seconds is a usage error
 /// (exit 2, naming the value), never a panic.
 #[test]

@@ -6,6 +6,7 @@
 //! The result is verified as a triangulation and its weight is a certified interval;
 //! every weight comparison is exact.
 
+mod bounds;
 mod candidates;
 mod edge_grid;
 mod faces;
@@ -14,6 +15,7 @@ mod polygon;
 mod sites;
 mod walks;
 
+pub use bounds::{MwtBounds, mwt_bounds};
 pub use candidates::candidate_edges;
 pub use polygon::cmp_edge_sets;
 pub(crate) use polygon::polygon_dp;
