@@ -170,8 +170,8 @@ struct MwtArgs {
     #[arg(long)]
     output: Option<PathBuf>,
     /// Give up after this many seconds: exit 3 with certified bounds on the minimum
-    /// weight (minimum spanning tree, Delaunay triangulation), writing the Delaunay
-    /// triangulation to --output.
+    /// weight (a minimum spanning tree below; above, the Delaunay triangulation after
+    /// flips that shorten it, which is written to --output).
     #[arg(long, value_parser = seconds)]
     time_limit: Option<Duration>,
 }

@@ -243,7 +243,8 @@ fn solve_within(
 }
 
 /// Out of time: exit 3 with certified bounds on the minimum weight (the minimum
-/// spanning tree's and the Delaunay triangulation's), writing that triangulation.
+/// spanning tree's and a triangulation's: Delaunay, flipped shorter), writing that
+/// triangulation.
 fn undecided(a: &MwtArgs, points: &[Point2], z: &[f64], start: Instant) -> u8 {
     let b = match planar::mwt_bounds(points) {
         Ok(b) => b,
@@ -271,7 +272,7 @@ fn undecided(a: &MwtArgs, points: &[Point2], z: &[f64], start: Instant) -> u8 {
         );
     } else {
         out!(
-            "undecided within the time limit ({limit} s): the minimum weight of a triangulation of {} sites is between {:.17e} (minimum spanning tree) and {:.17e} (Delaunay triangulation{})",
+            "undecided within the time limit ({limit} s): the minimum weight of a triangulation of {} sites is between {:.17e} (minimum spanning tree) and {:.17e} (Delaunay triangulation flipped shorter{})",
             points.len(),
             b.lower.lo,
             b.upper.hi,

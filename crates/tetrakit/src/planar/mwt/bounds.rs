@@ -1,15 +1,19 @@
 //! Certified bounds on the minimum weight without solving, for a caller who cannot wait
 //! for the exact solver (`tetrakit mwt --time-limit`). Every triangulation contains a
 //! spanning tree, so the minimum spanning tree's weight is a lower bound; every
-//! triangulation's weight is an upper bound, and the Delaunay triangulation's is close
-//! to the optimum on most sets. Both take `O(n log n)`: some minimum spanning tree lies
-//! in the Delaunay triangulation (with ties too), and Kruskal's order compares lengths
-//! exactly.
+//! triangulation's weight is an upper bound. The triangulation offered is the Delaunay
+//! one after exact flips that shorten it (Lawson's flips with length as the criterion):
+//! close to the optimum on uniform sets, and far closer than Delaunay on sets in or near
+//! convex position. Some minimum spanning tree lies in the Delaunay triangulation (ties
+//! too), and Kruskal's order compares lengths exactly. The work is a few Delaunay
+//! triangulations' worth (0.5 s at 10^5 uniform sites).
 
 use super::{certified_triangles, collinear, weight_of};
-use crate::geom::{Hull2, Interval, Point2, cmp_length};
+use crate::geom::{Hull2, Interval, Point2, cmp_length, orient2d};
 use crate::planar::{PlanarError, delaunay, edge_key, find};
 use rayon::prelude::*;
+use std::cmp::Ordering;
+use std::collections::HashMap;
 
 /// Bounds on the weight of a minimum weight triangulation, with the triangulation that
 /// gives the upper one.
@@ -17,9 +21,10 @@ use rayon::prelude::*;
 pub struct MwtBounds {
     /// The minimum spanning tree's weight: `lower.lo` is at most the minimum weight.
     pub lower: Interval,
-    /// The Delaunay triangulation's weight: `upper.hi` is at least the minimum weight.
+    /// The weight of a triangulation: `upper.hi` is at least the minimum weight.
     pub upper: Interval,
-    /// The Delaunay triangulation's edges, sorted (certified a triangulation).
+    /// That triangulation's edges, sorted (certified a triangulation): the Delaunay
+    /// triangulation after flips that shorten it.
     pub edges: Vec<[u32; 2]>,
     /// Its triangles, counter-clockwise.
     pub triangles: Vec<[u32; 3]>,
@@ -50,16 +55,79 @@ pub fn mwt_bounds(points: &[Point2]) -> Result<MwtBounds, PlanarError> {
         });
     }
     let dt = delaunay(points)?;
-    let mut edges: Vec<[u32; 2]> = dt.edges.iter().map(|e| edge_key(e.p, e.q)).collect();
+    let mut tree: Vec<[u32; 2]> = dt.edges.iter().map(|e| edge_key(e.p, e.q)).collect();
+    tree.par_sort_unstable();
+    let tree = spanning_tree(points, &tree);
+    let shorter = flip_shorter(points, dt.triangles, FLIPS_PER_SITE * points.len());
+    let mut edges: Vec<[u32; 2]> = shorter
+        .iter()
+        .flat_map(|t| [0, 1, 2].map(|k| edge_key(t[k], t[(k + 1) % 3])))
+        .collect();
     edges.par_sort_unstable();
+    edges.dedup();
     let triangles = certified_triangles(points, &hull, &edges)?;
-    let tree = spanning_tree(points, &edges);
     Ok(MwtBounds {
         lower: weight_of(points, &tree),
         upper: weight_of(points, &edges),
         edges,
         triangles,
     })
+}
+
+/// Flips allowed per site in [`flip_shorter`] (its work stays linear whatever the set).
+const FLIPS_PER_SITE: usize = 20;
+
+/// Lawson's flips towards weight: while some edge `pq` of two triangles `pqr`, `qps`
+/// has `prqs` strictly convex and `|rs| < |pq|` (exactly), it becomes `rs`, at most
+/// `budget` times. Each flip lowers the weight, so a triangulation comes out, lighter
+/// than the one that went in (the Delaunay one is far from optimal on sets in or near
+/// convex position, whose many cocircular sites leave it long diagonals).
+fn flip_shorter(points: &[Point2], mut tris: Vec<[u32; 3]>, budget: usize) -> Vec<[u32; 3]> {
+    let p = |v: u32| &points[v as usize];
+    // Directed edge `a → b` to the counter-clockwise triangle that has it.
+    let mut owner: HashMap<(u32, u32), u32> = HashMap::with_capacity(3 * tris.len());
+    for (i, t) in tris.iter().enumerate() {
+        for k in 0..3 {
+            owner.insert((t[k], t[(k + 1) % 3]), i as u32);
+        }
+    }
+    let apex = |t: &[u32; 3], a: u32, b: u32| t.iter().copied().find(|&v| v != a && v != b);
+    let mut todo: Vec<(u32, u32)> = owner.keys().copied().filter(|&(a, b)| a < b).collect();
+    todo.sort_unstable();
+    let mut flips = 0;
+    while let Some((a, b)) = todo.pop() {
+        let (Some(&i), Some(&j)) = (owner.get(&(a, b)), owner.get(&(b, a))) else {
+            continue;
+        };
+        let (Some(r), Some(s)) = (apex(&tris[i as usize], a, b), apex(&tris[j as usize], a, b))
+        else {
+            continue;
+        };
+        // `r` is left of `a → b` and `s` right of it; the quadrilateral `a s b r` is
+        // strictly convex when `a` and `b` are strictly on opposite sides of `rs`.
+        let convex = orient2d(p(r), p(s), p(a)) * orient2d(p(r), p(s), p(b)) < 0;
+        if !convex || cmp_length(p(r), p(s), p(a), p(b)) != Ordering::Less {
+            continue;
+        }
+        if flips == budget {
+            break;
+        }
+        flips += 1;
+        for t in [tris[i as usize], tris[j as usize]] {
+            for k in 0..3 {
+                owner.remove(&(t[k], t[(k + 1) % 3]));
+            }
+        }
+        tris[i as usize] = [r, a, s];
+        tris[j as usize] = [s, b, r];
+        for (idx, t) in [(i, tris[i as usize]), (j, tris[j as usize])] {
+            for k in 0..3 {
+                owner.insert((t[k], t[(k + 1) % 3]), idx);
+            }
+        }
+        todo.extend([(a, s), (s, b), (b, r), (r, a)].map(|(x, y)| (x.min(y), x.max(y))));
+    }
+    tris
 }
 
 /// A minimum spanning tree among `edges` (Kruskal, lengths compared exactly).
@@ -137,6 +205,14 @@ mod tests {
                 );
                 let w = mwt(&pts).unwrap().weight;
                 assert!(b.lower.lo <= w.hi && w.lo <= b.upper.hi, "{dist:?} {seed}");
+                // The flips only shorten; on cocircular sites they shorten by much.
+                let dt = delaunay(&pts).unwrap();
+                let dt_edges: Vec<[u32; 2]> = dt.edges.iter().map(|e| edge_key(e.p, e.q)).collect();
+                let dt_weight = weight_of(&pts, &dt_edges);
+                assert!(b.upper.lo <= dt_weight.hi, "{dist:?} {seed}");
+                if dist == Distribution::Regular {
+                    assert!(b.upper.hi < dt_weight.lo, "{dist:?} {seed}");
+                }
                 assert_eq!(b.edges.len(), mwt(&pts).unwrap().edges.len());
             }
         }
