@@ -6,14 +6,13 @@
 //! close to the optimum on uniform sets, and far closer than Delaunay on sets in or near
 //! convex position. Some minimum spanning tree lies in the Delaunay triangulation (ties
 //! too), and Kruskal's order compares lengths exactly. The work is a few Delaunay
-//! triangulations' worth (0.5 s at 10^5 uniform sites).
+//! triangulations' worth (3.4 s at 10^6 uniform sites).
 
-use super::{certified_triangles, collinear, weight_of};
+use super::{certify, collinear, weight_of};
 use crate::geom::{Hull2, Interval, Point2, cmp_length, orient2d};
-use crate::planar::{PlanarError, delaunay, edge_key, find};
+use crate::planar::{Delaunay, PlanarError, delaunay, edge_key, find};
 use rayon::prelude::*;
 use std::cmp::Ordering;
-use std::collections::HashMap;
 
 /// Bounds on the weight of a minimum weight triangulation, with the triangulation that
 /// gives the upper one.
@@ -58,14 +57,14 @@ pub fn mwt_bounds(points: &[Point2]) -> Result<MwtBounds, PlanarError> {
     let mut tree: Vec<[u32; 2]> = dt.edges.iter().map(|e| edge_key(e.p, e.q)).collect();
     tree.par_sort_unstable();
     let tree = spanning_tree(points, &tree);
-    let shorter = flip_shorter(points, dt.triangles, FLIPS_PER_SITE * points.len());
-    let mut edges: Vec<[u32; 2]> = shorter
+    let triangles = flip_shorter(points, &dt, FLIPS_PER_SITE * points.len());
+    let mut edges: Vec<[u32; 2]> = triangles
         .iter()
         .flat_map(|t| [0, 1, 2].map(|k| edge_key(t[k], t[(k + 1) % 3])))
         .collect();
     edges.par_sort_unstable();
     edges.dedup();
-    let triangles = certified_triangles(points, &hull, &edges)?;
+    certify(points, &hull, &edges, &triangles)?;
     Ok(MwtBounds {
         lower: weight_of(points, &tree),
         upper: weight_of(points, &edges),
@@ -77,32 +76,29 @@ pub fn mwt_bounds(points: &[Point2]) -> Result<MwtBounds, PlanarError> {
 /// Flips allowed per site in [`flip_shorter`] (its work stays linear whatever the set).
 const FLIPS_PER_SITE: usize = 20;
 
-/// Lawson's flips towards weight: while some edge `pq` of two triangles `pqr`, `qps`
-/// has `prqs` strictly convex and `|rs| < |pq|` (exactly), it becomes `rs`, at most
+/// Lawson's flips towards weight: while some edge `ab` of two triangles `abr`, `bas`
+/// has `asbr` strictly convex and `|rs| < |ab|` (exactly), it becomes `rs`, at most
 /// `budget` times. Each flip lowers the weight, so a triangulation comes out, lighter
-/// than the one that went in (the Delaunay one is far from optimal on sets in or near
-/// convex position, whose many cocircular sites leave it long diagonals).
-fn flip_shorter(points: &[Point2], mut tris: Vec<[u32; 3]>, budget: usize) -> Vec<[u32; 3]> {
+/// than the Delaunay one that went in (which is far from optimal on sets in or near
+/// convex position: their many cocircular sites leave it long diagonals).
+fn flip_shorter(points: &[Point2], dt: &Delaunay, budget: usize) -> Vec<[u32; 3]> {
     let p = |v: u32| &points[v as usize];
-    // Directed edge `a → b` to the counter-clockwise triangle that has it.
-    let mut owner: HashMap<(u32, u32), u32> = HashMap::with_capacity(3 * tris.len());
-    for (i, t) in tris.iter().enumerate() {
-        for k in 0..3 {
-            owner.insert((t[k], t[(k + 1) % 3]), i as u32);
-        }
-    }
-    let apex = |t: &[u32; 3], a: u32, b: u32| t.iter().copied().find(|&v| v != a && v != b);
-    let mut todo: Vec<(u32, u32)> = owner.keys().copied().filter(|&(a, b)| a < b).collect();
-    todo.sort_unstable();
+    let mut tris = dt.triangles.clone();
+    let mut across = neighbours(dt);
+    // Edge `k` of triangle `t` runs from `t[k]` to `t[k + 1]`; each interior edge once.
+    let mut todo: Vec<(u32, usize)> = (0..tris.len() as u32)
+        .flat_map(|t| (0..3).map(move |k| (t, k)))
+        .filter(|&(t, k)| across[t as usize][k] != NONE && t < across[t as usize][k])
+        .collect();
     let mut flips = 0;
-    while let Some((a, b)) = todo.pop() {
-        let (Some(&i), Some(&j)) = (owner.get(&(a, b)), owner.get(&(b, a))) else {
+    while let Some((i, k)) = todo.pop() {
+        let j = across[i as usize][k];
+        if j == NONE {
             continue;
-        };
-        let (Some(r), Some(s)) = (apex(&tris[i as usize], a, b), apex(&tris[j as usize], a, b))
-        else {
-            continue;
-        };
+        }
+        let [a, b, r] = rotated(tris[i as usize], k);
+        let l = slot_of(&across[j as usize], i);
+        let s = tris[j as usize][(l + 2) % 3];
         // `r` is left of `a → b` and `s` right of it; the quadrilateral `a s b r` is
         // strictly convex when `a` and `b` are strictly on opposite sides of `rs`.
         let convex = orient2d(p(r), p(s), p(a)) * orient2d(p(r), p(s), p(b)) < 0;
@@ -113,21 +109,64 @@ fn flip_shorter(points: &[Point2], mut tris: Vec<[u32; 3]>, budget: usize) -> Ve
             break;
         }
         flips += 1;
-        for t in [tris[i as usize], tris[j as usize]] {
-            for k in 0..3 {
-                owner.remove(&(t[k], t[(k + 1) % 3]));
-            }
-        }
+        // Outer neighbours: across `b r` and `r a` in `i`, across `a s` and `s b` in `j`.
+        let (br, ra) = (
+            across[i as usize][(k + 1) % 3],
+            across[i as usize][(k + 2) % 3],
+        );
+        let (as_, sb) = (
+            across[j as usize][(l + 1) % 3],
+            across[j as usize][(l + 2) % 3],
+        );
         tris[i as usize] = [r, a, s];
+        across[i as usize] = [ra, as_, j];
         tris[j as usize] = [s, b, r];
-        for (idx, t) in [(i, tris[i as usize]), (j, tris[j as usize])] {
-            for k in 0..3 {
-                owner.insert((t[k], t[(k + 1) % 3]), idx);
-            }
+        across[j as usize] = [sb, br, i];
+        // `b r` now belongs to `j`, `a s` to `i`.
+        if br != NONE {
+            let m = slot_of(&across[br as usize], i);
+            across[br as usize][m] = j;
         }
-        todo.extend([(a, s), (s, b), (b, r), (r, a)].map(|(x, y)| (x.min(y), x.max(y))));
+        if as_ != NONE {
+            let m = slot_of(&across[as_ as usize], j);
+            across[as_ as usize][m] = i;
+        }
+        todo.extend([(i, 0), (i, 1), (j, 0), (j, 1)]);
     }
     tris
+}
+
+/// No triangle (across a hull edge).
+const NONE: u32 = u32::MAX;
+
+/// `t` rotated to start at its corner `k`.
+fn rotated(t: [u32; 3], k: usize) -> [u32; 3] {
+    [t[k], t[(k + 1) % 3], t[(k + 2) % 3]]
+}
+
+/// Where `row` holds `t`.
+fn slot_of(row: &[u32; 3], t: u32) -> usize {
+    row.iter()
+        .position(|&x| x == t)
+        .expect("neighbours are mutual")
+}
+
+/// Per triangle of `dt`, the triangle across each edge (edge `k` from corner `k`).
+fn neighbours(dt: &Delaunay) -> Vec<[u32; 3]> {
+    let mut across = vec![[NONE; 3]; dt.triangles.len()];
+    let edge_of = |t: [u32; 3], a: u32, b: u32| {
+        (0..3)
+            .find(|&k| t[k] == a && t[(k + 1) % 3] == b)
+            .expect("a triangle has its edge")
+    };
+    for e in &dt.edges {
+        if let (Some(l), Some(r)) = (e.left_face, e.right_face) {
+            // `p → q` runs counter-clockwise in the left triangle, `q → p` in the right.
+            across[l as usize][edge_of(dt.triangles[l as usize], e.p, e.q)] = r;
+            across[r as usize][edge_of(dt.triangles[r as usize], e.q, e.p)] = l;
+        }
+    }
+    across
 }
 
 /// A minimum spanning tree among `edges` (Kruskal, lengths compared exactly).

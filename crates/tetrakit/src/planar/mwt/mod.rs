@@ -381,15 +381,27 @@ fn convex_position(points: &[Point2], hull: &Hull2) -> Result<Mwt, PlanarError> 
 }
 
 /// The counter-clockwise triangles of `edges` (sorted, distinct), after checking that
-/// they triangulate the hull of `points`: [`verify_triangulation`] and `3n - 3 - h` edges.
+/// they triangulate the hull of `points` ([`certify`]).
 pub(crate) fn certified_triangles(
     points: &[Point2],
     hull: &Hull2,
     edges: &[[u32; 2]],
 ) -> Result<Vec<[u32; 3]>, PlanarError> {
     let triangles = triangles_of(points, edges);
+    certify(points, hull, edges, &triangles)?;
+    Ok(triangles)
+}
+
+/// Checks that `triangles`, with edge set `edges`, triangulate the hull of `points`:
+/// [`verify_triangulation`] and `3n - 3 - h` edges.
+pub(crate) fn certify(
+    points: &[Point2],
+    hull: &Hull2,
+    edges: &[[u32; 2]],
+    triangles: &[[u32; 3]],
+) -> Result<(), PlanarError> {
     let h = hull.on_boundary.iter().filter(|&&b| b).count();
-    if !verify_triangulation(points, &triangles).is_valid()
+    if !verify_triangulation(points, triangles).is_valid()
         || edges.len() != 3 * points.len() - 3 - h
     {
         return Err(PlanarError::new(format!(
@@ -398,7 +410,7 @@ pub(crate) fn certified_triangles(
             triangles.len()
         )));
     }
-    Ok(triangles)
+    Ok(())
 }
 
 fn collinear(points: &[Point2]) -> Mwt {
