@@ -4,6 +4,8 @@ use crate::run::fail;
 use indicatif::ProgressBar;
 use serde_json::json;
 use std::path::Path;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::{self, RecvTimeoutError};
 use std::time::{Duration, Instant};
 use tetrakit::geom::{Point2, Ratio};
@@ -220,22 +222,28 @@ fn stage(spinner: &Option<ProgressBar>) -> impl Fn(planar::MwtStage) + '_ {
 }
 
 /// The exact solver on a thread of its own; `None` when it has not answered within
-/// `limit`. It is then left running: the process ends when the command returns.
+/// `limit`. It is then told to stop, and winds down at its next check (between sites,
+/// edges or faces) while the caller computes bounds.
 fn solve_within(
     points: &[Point2],
     limit: Duration,
     spinner: Option<ProgressBar>,
 ) -> Option<Result<planar::Mwt, planar::PlanarError>> {
     let (tx, rx) = mpsc::channel();
-    let points = points.to_vec();
+    let stop = Arc::new(AtomicBool::new(false));
+    let (points, told) = (points.to_vec(), Arc::clone(&stop));
     std::thread::spawn(move || {
-        let m = planar::mwt_with_progress(&points, &MwtOptions::default(), &stage(&spinner));
+        let opts = MwtOptions::default();
+        let m = planar::mwt_with_stop(&points, &opts, &stage(&spinner), &told);
         // The receiver is gone once the time is up; nothing waits for this answer then.
         let _ = tx.send(m);
     });
     match rx.recv_timeout(limit) {
         Ok(m) => Some(m),
-        Err(RecvTimeoutError::Timeout) => None,
+        Err(RecvTimeoutError::Timeout) => {
+            stop.store(true, Ordering::Relaxed);
+            None
+        }
         Err(RecvTimeoutError::Disconnected) => Some(Err(planar::PlanarError::new(
             "internal error, please report: the solver stopped without an answer",
         ))),

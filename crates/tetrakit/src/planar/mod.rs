@@ -29,7 +29,7 @@ pub use generate::{Distribution, points2d};
 pub use keil::{KeilResult, above_cheng_xu, check_random, in_keil_interval, keil, keil_sites};
 pub use mwt::{
     Mwt, MwtBounds, MwtOptions, MwtStage, MwtStats, candidate_edges, cmp_edge_sets, mwt,
-    mwt_bounds, mwt_with, mwt_with_progress, weight_of,
+    mwt_bounds, mwt_with, mwt_with_progress, mwt_with_stop, weight_of,
 };
 pub use oracle::triangulations;
 pub use skeleton::{Region, Skeleton, beta_skeleton, beta_skeleton_with_progress};

@@ -60,7 +60,7 @@ use crate::planar::{PlanarError, check_sites, edge_key};
 use rayon::prelude::*;
 use std::cmp::Reverse;
 use std::collections::{BinaryHeap, VecDeque};
-use std::sync::atomic::{AtomicUsize, Ordering::Relaxed};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering::Relaxed};
 
 /// A monotone stand-in for the angle of `(dx, dy)`, in `[0, 4)`.
 fn pseudo_angle(dx: f64, dy: f64) -> f64 {
@@ -311,12 +311,13 @@ impl Scratch {
 /// ```
 pub fn candidate_edges(points: &[Point2]) -> Result<Vec<[u32; 2]>, PlanarError> {
     check_sites(points)?;
-    search(points, super::MAX_CANDIDATES).ok_or_else(|| super::too_many_candidates(points.len()))
+    search(points, super::MAX_CANDIDATES, &AtomicBool::new(false))
+        .ok_or_else(|| super::too_many_candidates(points.len()))
 }
 
 /// [`candidate_edges`] for checked sites; `None` once there are more than `limit` (the
-/// search stops there, before the list outgrows memory).
-pub(super) fn search(points: &[Point2], limit: usize) -> Option<Vec<[u32; 2]>> {
+/// search stops there, before the list outgrows memory) or once `stop` is set.
+pub(super) fn search(points: &[Point2], limit: usize, stop: &AtomicBool) -> Option<Vec<[u32; 2]>> {
     let grid = PointGrid::new(points, 2.0);
     let found = AtomicUsize::new(0);
     // Sites in cell order, so that consecutive searches share cached cells.
@@ -324,7 +325,7 @@ pub(super) fn search(points: &[Point2], limit: usize) -> Option<Vec<[u32; 2]>> {
         .into_par_iter()
         .map_init(Scratch::default, |s, slot| {
             let mut out = Vec::new();
-            if found.load(Relaxed) <= limit {
+            if found.load(Relaxed) <= limit && !stop.load(Relaxed) {
                 candidates_of(slot, &grid, s, &mut out);
                 found.fetch_add(out.len(), Relaxed);
             }
@@ -332,7 +333,7 @@ pub(super) fn search(points: &[Point2], limit: usize) -> Option<Vec<[u32; 2]>> {
         })
         .flatten_iter()
         .collect();
-    if found.into_inner() > limit {
+    if found.into_inner() > limit || stop.load(Relaxed) {
         return None;
     }
     edges.par_sort_unstable();
@@ -709,7 +710,7 @@ mod tests {
                 pts.iter().any(|r| diamond_hit(p, q, r).on_segment)
             };
             assert_eq!(
-                search(&pts, usize::MAX)
+                search(&pts, usize::MAX, &AtomicBool::new(false))
                     .unwrap()
                     .iter()
                     .filter(through)
@@ -749,7 +750,10 @@ mod tests {
 
     /// How many brute-force candidates the search misses.
     fn missing_candidates(pts: &[Point2]) -> usize {
-        let (got, want) = (search(pts, usize::MAX).unwrap(), brute(pts));
+        let (got, want) = (
+            search(pts, usize::MAX, &AtomicBool::new(false)).unwrap(),
+            brute(pts),
+        );
         want.iter()
             .filter(|e| got.binary_search(e).is_err())
             .count()
@@ -806,7 +810,7 @@ mod tests {
             (Distribution::Grid, 400),
         ] {
             let pts = points2d(dist, n, 3);
-            let got = search(&pts, usize::MAX).unwrap();
+            let got = search(&pts, usize::MAX, &AtomicBool::new(false)).unwrap();
             let want = brute(&pts);
             let missing: Vec<_> = want
                 .iter()

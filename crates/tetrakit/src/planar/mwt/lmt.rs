@@ -305,15 +305,22 @@ fn certificate(
 /// Edges per task in a round: a task owns the certificates of one block of edge ids.
 const BLOCK: usize = 4096;
 
-/// Runs the LMT rounds from `queue` (sorted) to a fixpoint.
-fn eliminate(points: &[Point2], sk: &Skeleton, status: &[AtomicU8], mut queue: Vec<u32>) {
+/// Runs the LMT rounds from `queue` (sorted) to a fixpoint, or until `stop` is set
+/// (every status set by then is sound; more edges stay alive).
+fn eliminate(
+    points: &[Point2],
+    sk: &Skeleton,
+    status: &[AtomicU8],
+    mut queue: Vec<u32>,
+    stop: &AtomicBool,
+) {
     let m = sk.edges.len();
     let queued: Vec<AtomicBool> = (0..m).map(|_| AtomicBool::new(false)).collect();
     // Zeroed, so its pages are untouched until written. Every alive edge is examined in
     // the first round and holds a certificate from then on: only alive edges' entries
     // are read.
     let mut certs = vec![[0u32; 4]; m];
-    while !queue.is_empty() {
+    while !queue.is_empty() && !stop.load(Relaxed) {
         let dead: Vec<u32> = (certs.par_chunks_mut(BLOCK).enumerate())
             .map_init(Buffers::default, |bufs, (b, block)| {
                 let ids = (b * BLOCK) as u32..(b * BLOCK + block.len()) as u32;
@@ -321,6 +328,9 @@ fn eliminate(points: &[Point2], sk: &Skeleton, status: &[AtomicU8], mut queue: V
                 let hi = queue.partition_point(|e| *e < ids.end);
                 let mut dead = Vec::new();
                 for &e in &queue[lo..hi] {
+                    if stop.load(Relaxed) {
+                        break;
+                    }
                     queued[e as usize].store(false, Relaxed);
                     if status[e as usize].load(Relaxed) != ALIVE {
                         continue;
@@ -405,6 +415,7 @@ pub fn lmt_skeleton(
     candidates: Vec<[u32; 2]>,
     forced: &[[u32; 2]],
     forbidden: &[[u32; 2]],
+    stop: &AtomicBool,
 ) -> Result<(Skeleton, LmtStats), [u32; 3]> {
     let (start, adj) = super::walks::ccw_rows(points, &candidates);
     if let Some(v_a_b) = overlapping(points, &start, &adj) {
@@ -439,7 +450,7 @@ pub fn lmt_skeleton(
     let queue: Vec<u32> = (0..sk.edges.len() as u32)
         .filter(|&e| sk.status[e as usize] == ALIVE)
         .collect();
-    eliminate(points, &sk, &status, queue);
+    eliminate(points, &sk, &status, queue, stop);
     sk.status = status.into_iter().map(|s| s.into_inner()).collect();
     // An alive edge that no alive edge crosses is in every MWT (fact 2). Promotion
     // changes no LMT test, so one pass suffices.
@@ -457,6 +468,11 @@ pub fn lmt_skeleton(
 mod tests {
     use super::*;
     use crate::planar::{Distribution, points2d};
+
+    /// A stop flag never set.
+    fn go() -> AtomicBool {
+        AtomicBool::new(false)
+    }
 
     /// The triangles left of `p → q` by definition: common neighbours with both edges
     /// alive, and no neighbour of `p` or `q` strictly inside.
@@ -483,7 +499,7 @@ mod tests {
 
     /// The candidate graph of `pts`, every edge alive.
     fn all_alive(pts: &[Point2]) -> Skeleton {
-        let cands = super::super::candidates::search(pts, usize::MAX).unwrap();
+        let cands = super::super::candidates::search(pts, usize::MAX, &go()).unwrap();
         let (start, adj) = super::super::walks::ccw_rows(pts, &cands);
         let pos = positions(&start, &adj, &cands);
         Skeleton {
@@ -526,8 +542,15 @@ mod tests {
                     status[e as usize].store(IMPOSSIBLE, Relaxed);
                 }
             }
-            let (sk, _) =
-                lmt_skeleton(&pts, &Hull2::new(&pts), plain.edges.clone(), &[], &[]).unwrap();
+            let (sk, _) = lmt_skeleton(
+                &pts,
+                &Hull2::new(&pts),
+                plain.edges.clone(),
+                &[],
+                &[],
+                &go(),
+            )
+            .unwrap();
             let kept = |s: &[u8]| -> Vec<bool> { s.iter().map(|&s| s != IMPOSSIBLE).collect() };
             let plain_status: Vec<u8> = status.iter().map(|s| s.load(Relaxed)).collect();
             assert_eq!(kept(&sk.status), kept(&plain_status), "{dist:?}");
@@ -544,7 +567,7 @@ mod tests {
         let all: Vec<[u32; 2]> = (0..n)
             .flat_map(|a| (a + 1..n).map(move |b| [a, b]))
             .collect();
-        let (_, stats) = lmt_skeleton(&pts, &Hull2::new(&pts), all, &[], &[]).unwrap();
+        let (_, stats) = lmt_skeleton(&pts, &Hull2::new(&pts), all, &[], &[], &go()).unwrap();
         assert!(stats.certain > 2 * pts.len(), "{} certain", stats.certain);
     }
 

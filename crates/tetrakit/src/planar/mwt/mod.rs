@@ -30,6 +30,7 @@ use lmt::{ALIVE, CERTAIN};
 use polygon::Solution;
 use rayon::prelude::*;
 use std::collections::HashSet;
+use std::sync::atomic::{AtomicBool, Ordering::Relaxed};
 use std::time::Instant;
 use walks::Rotation;
 
@@ -153,6 +154,28 @@ pub fn mwt_with_progress(
     opts: &MwtOptions,
     progress: &dyn Fn(MwtStage),
 ) -> Result<Mwt, PlanarError> {
+    mwt_with_stop(points, opts, progress, &AtomicBool::new(false))
+}
+
+/// [`mwt_with_progress`], giving up with an error once `stop` is set (another thread
+/// sets it, at a time limit for instance). The solver looks at it between sites,
+/// between edges and between faces; a face's DP already under way runs to its end.
+///
+/// ```
+/// use std::sync::atomic::AtomicBool;
+/// use tetrakit::planar::{MwtOptions, mwt_with_stop};
+/// let pts: Vec<[f64; 2]> = (0..50).map(|i| [(i * 7 % 50) as f64, (i * i % 47) as f64]).collect();
+/// let stopped = mwt_with_stop(&pts, &MwtOptions::default(), &|_| {}, &AtomicBool::new(true));
+/// assert!(stopped.unwrap_err().to_string().contains("stopped"));
+/// let go = AtomicBool::new(false);
+/// assert!(mwt_with_stop(&pts, &MwtOptions::default(), &|_| {}, &go).is_ok());
+/// ```
+pub fn mwt_with_stop(
+    points: &[Point2],
+    opts: &MwtOptions,
+    progress: &dyn Fn(MwtStage),
+    stop: &AtomicBool,
+) -> Result<Mwt, PlanarError> {
     super::check_sites(points)?;
     let n = points.len() as u32;
     let constraints = opts.forced.iter().chain(&opts.forbidden);
@@ -185,7 +208,7 @@ pub fn mwt_with_progress(
         forced: relabel(&opts.forced, &rank),
         forbidden: relabel(&opts.forbidden, &rank),
     };
-    let m = solve(&local, &local_opts, &order, progress)?;
+    let m = solve(&local, &local_opts, &order, progress, stop)?;
     Ok(Mwt {
         edges: relabel(&m.edges, &order),
         triangles: (m.triangles.iter())
@@ -203,7 +226,15 @@ fn solve(
     opts: &MwtOptions,
     global: &[u32],
     progress: &dyn Fn(MwtStage),
+    stop: &AtomicBool,
 ) -> Result<Mwt, PlanarError> {
+    let stopped = || {
+        stop.load(Relaxed)
+            .then(|| PlanarError::new("stopped before the minimum weight triangulation was found"))
+    };
+    if let Some(e) = stopped() {
+        return Err(e);
+    }
     let hull = Hull2::new(points);
     if hull.vertices.len() < 3 {
         return Ok(collinear(points));
@@ -226,8 +257,11 @@ fn solve(
     let cands = if constrained {
         (n * (n - 1) / 2 <= MAX_CANDIDATES).then(|| all_segments(points))
     } else {
-        candidates::search(points, MAX_CANDIDATES)
+        candidates::search(points, MAX_CANDIDATES, stop)
     };
+    if let Some(e) = stopped() {
+        return Err(e);
+    }
     let mut cands = cands.ok_or_else(|| too_many_candidates(n))?;
     cands.retain(|e| forbidden.binary_search(e).is_err());
     for f in &forced {
@@ -242,13 +276,17 @@ fn solve(
     stats.seconds[0] = t0.elapsed().as_secs_f64();
     progress(MwtStage::Skeleton);
     let t1 = Instant::now();
-    let (sk, lstats) =
-        lmt::lmt_skeleton(points, &hull, cands, &forced, &forbidden).map_err(|[v, a, b]| {
+    let (sk, lstats) = lmt::lmt_skeleton(points, &hull, cands, &forced, &forbidden, stop).map_err(
+        |[v, a, b]| {
             PlanarError::new(format!(
                 "internal: candidate edges {0}-{1} and {0}-{2} overlap (one passes through a site)",
                 global[v as usize], global[a as usize], global[b as usize]
             ))
-        })?;
+        },
+    )?;
+    if let Some(e) = stopped() {
+        return Err(e);
+    }
     stats.skeleton_edges = lstats.certain;
     stats.undecided_edges = lstats.undecided;
     stats.seconds[1] = t1.elapsed().as_secs_f64();
@@ -276,9 +314,16 @@ fn solve(
         // DPs ran there one after another, spent half its time so).
         let solved: Vec<Option<Solution>> = rayon::scope(|_| {
             (problems.par_iter())
-                .map(|(face, chords)| faces::solve(points, face, chords))
+                .map(|(face, chords)| {
+                    (!stop.load(Relaxed))
+                        .then(|| faces::solve(points, face, chords))
+                        .flatten()
+                })
                 .collect()
         });
+        if let Some(e) = stopped() {
+            return Err(e);
+        }
         for s in solved {
             let s = s.ok_or_else(|| {
                 PlanarError::new(
@@ -664,9 +709,10 @@ mod tests {
     #[test]
     fn memory_guards_refuse_before_allocating() {
         let pts = points2d(Distribution::Uniform, 300, 3);
-        let all = candidates::search(&pts, usize::MAX).unwrap();
-        assert!(candidates::search(&pts, all.len()).is_some());
-        assert!(candidates::search(&pts, all.len() / 2).is_none());
+        let go = AtomicBool::new(false);
+        let all = candidates::search(&pts, usize::MAX, &go).unwrap();
+        assert!(candidates::search(&pts, all.len(), &go).is_some());
+        assert!(candidates::search(&pts, all.len() / 2, &go).is_none());
 
         let n = 23_200; // n (n - 1) / 2 just over MAX_CANDIDATES
         assert!(n * (n - 1) / 2 > MAX_CANDIDATES && 23_100 * 23_099 / 2 <= MAX_CANDIDATES);
