@@ -54,9 +54,8 @@ pub fn mwt_bounds(points: &[Point2]) -> Result<MwtBounds, PlanarError> {
         });
     }
     let dt = delaunay(points)?;
-    let mut tree: Vec<[u32; 2]> = dt.edges.iter().map(|e| edge_key(e.p, e.q)).collect();
-    tree.par_sort_unstable();
-    let tree = spanning_tree(points, &tree);
+    let dt_edges: Vec<[u32; 2]> = dt.edges.iter().map(|e| edge_key(e.p, e.q)).collect();
+    let tree = spanning_tree(points, &dt_edges);
     let triangles = flip_shorter(points, &dt, FLIPS_PER_SITE * points.len());
     let mut edges: Vec<[u32; 2]> = triangles
         .iter()
