@@ -1,13 +1,16 @@
 //! `tetrakit demo`: a newcomer's tour on built-in examples, a few seconds, no arguments.
 
+use crate::exit::{CmdResult, Verdict};
 use std::time::Instant;
-use tetrakit::detect::{Cells, Route, detect};
+use tetrakit::control::Control;
+use tetrakit::detect::{Cells, Options, Route, detect};
 use tetrakit::generate::{self, Corruption};
 use tetrakit::mesh::Tetrahedralization;
 
 fn verdict(name: &str, t: &Tetrahedralization, edges: &[(u32, u32)]) {
     let start = Instant::now();
-    let d = detect(&t.points, edges).expect("generated input is well-formed");
+    let d = detect(&t.points, edges, &Options::default(), &Control::new())
+        .expect("generated input is well-formed");
     let ms = start.elapsed().as_secs_f64() * 1e3;
     match &d.result {
         Ok(Cells::Tetrahedra(tets)) => out!(
@@ -33,7 +36,7 @@ fn verdict(name: &str, t: &Tetrahedralization, edges: &[(u32, u32)]) {
     }
 }
 
-pub fn run() -> u8 {
+pub fn run() -> CmdResult {
     out!("tetrakit demo — is a set of segments exactly the edge set of a tetrahedralization?");
     out!(
         "(thesis ch. 2, TETRAHEDRALIZATION-DETECTION, exact and without the general-position assumption)\n"
@@ -89,7 +92,7 @@ pub fn run() -> u8 {
     out!(
         "     tetrakit generate two-level -o /tmp/p.off && tetrakit mintetra /tmp/p.off --confirm"
     );
-    0
+    Ok(Verdict::Yes)
 }
 
 /// Chapter 3: MINTETRA against the lower bound and the exact solver.
@@ -113,7 +116,7 @@ fn minimal_tetrahedralizations() {
     let start = Instant::now();
     let m = polyhedra::mintetra(&p);
     let ms = start.elapsed().as_secs_f64() * 1e3;
-    let certified = polyhedra::certify(&p, &m.tets).is_ok();
+    let certified = tetrakit::mesh::certify_polyhedron(&p, &m.tets).is_ok();
     out!(
         "  MINTETRA: {} tetrahedra for {} vertices (lower bound n - 3 = {}), polar edges {:?}, certified: {certified} [{ms:.1} ms]",
         m.tets.len(),
@@ -126,7 +129,8 @@ fn minimal_tetrahedralizations() {
         unique: true,
         ..Options::default()
     };
-    match minimal_tetrahedralization(Domain::Polyhedron(&p), &opts) {
+    let ctl = Control::new();
+    match minimal_tetrahedralization(Domain::Polyhedron(&p), &opts, &ctl) {
         Ok((Outcome::Optimal { tets, unique, .. }, stats)) => out!(
             "  exact SAT solver: minimum {} over {} candidate tetrahedra, unique: {} [{:.1} ms]",
             tets.len(),
@@ -137,10 +141,11 @@ fn minimal_tetrahedralizations() {
         other => out!("  exact SAT solver: {other:?}"),
     }
     let s = generate::schonhardt();
-    let verdict = match minimal_tetrahedralization(Domain::Polyhedron(&s), &Options::default()) {
-        Ok((Outcome::Infeasible, _)) => "no tetrahedralization exists (proved)",
-        _ => "unexpected",
-    };
+    let verdict =
+        match minimal_tetrahedralization(Domain::Polyhedron(&s), &Options::default(), &ctl) {
+            Ok((Outcome::Infeasible, _)) => "no tetrahedralization exists (proved)",
+            _ => "unexpected",
+        };
     out!("  Schönhardt's twisted prism: {verdict}");
     let sbp = generate::schonhardt_bp();
     let m = polyhedra::mintetra(&sbp);
@@ -153,15 +158,16 @@ fn minimal_tetrahedralizations() {
 
 /// Chapter 5: β-skeleton, exact MWT with ties, and the Keil construction.
 fn planar_section() {
-    use tetrakit::planar::{self, Distribution, Region};
+    use tetrakit::planar::{self, Distribution, MwtOptions, Region};
+    let (ctl, opts) = (Control::new(), MwtOptions::default());
     out!(
         "\n6. Planar proximity (thesis ch. 5): β-skeleton and exact minimum weight triangulation."
     );
     let pts = planar::points2d(Distribution::Uniform, 2000, 7);
     let start = Instant::now();
     let beta = "1.16".parse().expect("a ratio");
-    let sk = planar::beta_skeleton(&pts, beta, Region::Circle).expect("valid points");
-    let m = planar::mwt(&pts).expect("valid points");
+    let sk = planar::beta_skeleton(&pts, beta, Region::Circle, &ctl).expect("valid points");
+    let m = planar::mwt(&pts, &opts, &ctl).expect("valid points");
     let inside = sk
         .edges
         .iter()
@@ -177,7 +183,7 @@ fn planar_section() {
         start.elapsed().as_secs_f64() * 1e3
     );
     let grid = planar::points2d(Distribution::Grid, 36, 1);
-    let g = planar::mwt(&grid).expect("valid points");
+    let g = planar::mwt(&grid, &opts, &ctl).expect("valid points");
     out!(
         "  a 6x6 integer grid (every square a tie): MWT weight {:.9}, {} faces left to the exact stage, ties decided exactly",
         g.weight.mid(),
@@ -187,10 +193,10 @@ fn planar_section() {
     // (tests pin 400 and 420); `tetrakit keil --beta 1.16` uses Lemma 5.8's n instead.
     for (b, n) in [("1.1548", None), ("1.16", Some(420))] {
         let start = Instant::now();
-        match planar::keil(b.parse().expect("a ratio"), n) {
+        match planar::keil(b.parse().expect("a ratio"), n, &ctl) {
             Ok(k) => {
                 let svg = std::env::temp_dir().join(format!("tetrakit-keil-{b}.svg"));
-                let picture = match std::fs::write(&svg, crate::planar::keil_svg(&k)) {
+                let picture = match std::fs::write(&svg, tetrakit::io::keil_svg(&k)) {
                     Ok(()) => format!("picture: {}", svg.display()),
                     Err(e) => format!("no picture ({e})"),
                 };

@@ -1,5 +1,7 @@
 //! The `tetrakit` command-line tool: a thin layer that parses arguments, calls the
-//! library, and prints results. Exit codes: 0 yes, 1 no, 2 bad input or usage.
+//! library, and prints results. Every command returns an [`exit::Verdict`] or an [`exit::CliError`];
+//! [`main`] alone turns them into exit codes: 0 yes, 1 no, 3 undecided within the time
+//! limit, 2 bad input or usage (clap's own usage errors exit 2 as well).
 #![forbid(unsafe_code)]
 
 /// `println!` that ignores write errors: output to a closed pipe (`| head`) must not panic.
@@ -11,11 +13,14 @@ macro_rules! out {
 }
 
 mod demo;
+mod exit;
 mod planar;
 mod poly;
+mod progress;
 mod run;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
+use exit::CmdResult;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Duration;
@@ -353,8 +358,18 @@ fn seconds(text: &str) -> Result<Duration, String> {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
-    let code = match cli.cmd {
+    match run(Cli::parse().cmd) {
+        Ok(verdict) => ExitCode::from(verdict.code()),
+        Err(e) => {
+            eprintln!("tetrakit: {e}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+/// Runs one command.
+fn run(cmd: Cmd) -> CmdResult {
+    match cmd {
         Cmd::Detect(a) => run::detect(
             &a.input,
             a.json,
@@ -405,8 +420,7 @@ fn main() -> ExitCode {
             Err(kind) => run::generate(kind),
         },
         Cmd::Demo => demo::run(),
-    };
-    ExitCode::from(code)
+    }
 }
 
 /// Splits the polyhedron generators from the mesh generators.

@@ -1,24 +1,22 @@
 //! Chapter 5 commands: `skeleton`, `mwt`, `keil`, and `generate points2d`.
 
-use crate::run::fail;
-use indicatif::ProgressBar;
+use crate::exit::{CliError, CmdResult, Verdict, WriteContext};
+use crate::progress::Run;
 use serde_json::json;
 use std::path::Path;
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::mpsc::{self, RecvTimeoutError};
 use std::time::{Duration, Instant};
+use tetrakit::control::Control;
 use tetrakit::geom::{Point2, Ratio};
 use tetrakit::io;
-use tetrakit::planar::{self, Distribution, MwtOptions, Region};
+use tetrakit::planar::{self, Distribution, MwtOptions, PlanarError, Region};
 
 /// Reads planar points and their heights. Without `xy` every z must be 0; with it the
 /// points are projected to the xy-plane and their z kept.
-pub fn read_points(path: &Path, xy: bool) -> Result<(Vec<Point2>, Vec<f64>), u8> {
-    let input = io::read_input(path).map_err(fail)?;
+pub fn read_points(path: &Path, xy: bool) -> Result<(Vec<Point2>, Vec<f64>), CliError> {
+    let input = io::read_input(path)?;
     if !xy && let Some(i) = input.points.iter().position(|p| p[2] != 0.0) {
         let line = input.point_lines.get(i).copied().unwrap_or(0);
-        return Err(fail(format!(
+        return Err(CliError::new(format!(
             "{}:{line}: point {} has z = {}; planar commands need 2D points (--xy uses their projection)",
             path.display(),
             i as u32 + input.index_base,
@@ -29,7 +27,7 @@ pub fn read_points(path: &Path, xy: bool) -> Result<(Vec<Point2>, Vec<f64>), u8>
     // Coinciding points are refused on reading; projected ones only here.
     if let Some([a, b]) = xy.then(|| planar::coincident_sites(&plane)).flatten() {
         let line = |i: u32| input.point_lines.get(i as usize).copied().unwrap_or(0);
-        return Err(fail(format!(
+        return Err(CliError::new(format!(
             "{}:{}: points {} and {} coincide in the xy-plane at {:?} (line {})",
             path.display(),
             line(b),
@@ -42,9 +40,9 @@ pub fn read_points(path: &Path, xy: bool) -> Result<(Vec<Point2>, Vec<f64>), u8>
     Ok((plane, input.points.iter().map(|p| p[2]).collect()))
 }
 
-pub fn parse_beta(text: &str) -> Result<Ratio, u8> {
+pub fn parse_beta(text: &str) -> Result<Ratio, CliError> {
     text.parse::<Ratio>()
-        .map_err(|e| fail(format!("--beta: {e}")))
+        .map_err(|e| CliError::new(format!("--beta: {e}")))
 }
 
 pub fn skeleton(
@@ -54,41 +52,26 @@ pub fn skeleton(
     lune: bool,
     as_json: bool,
     output: Option<&Path>,
-) -> u8 {
+) -> CmdResult {
     let start = Instant::now();
-    let beta = match parse_beta(beta) {
-        Ok(b) => b,
-        Err(c) => return c,
-    };
-    let points = match read_points(path, xy) {
-        Ok((p, _)) => p,
-        Err(c) => return c,
-    };
+    let beta = parse_beta(beta)?;
+    let (points, _) = read_points(path, xy)?;
     let parsed = start.elapsed().as_secs_f64();
     let region = if lune { Region::Lune } else { Region::Circle };
     let t = Instant::now();
     // Below β = 1 each site's search may reach far: a bar from a few thousand sites.
-    let bar = (beta.cmp_one() == std::cmp::Ordering::Less)
-        .then(|| crate::run::progress_bar(points.len() as u64, 5_000, "β-skeleton sites"))
-        .flatten();
-    let report = |done: u64, _all: u64| {
-        if let Some(b) = &bar {
-            b.set_position(done);
-        }
-    };
-    let sk = planar::beta_skeleton_with_progress(&points, beta, region, &report);
-    if let Some(b) = bar {
-        b.finish_and_clear();
-    }
-    let sk = match sk {
-        Ok(s) => s,
-        Err(e) => return fail(e),
-    };
+    let below_one = beta.cmp_one() == std::cmp::Ordering::Less;
+    let run = Run::new(
+        None,
+        points.len(),
+        if below_one { 5_000 } else { usize::MAX },
+    );
+    run.stage("β-skeleton sites");
+    let sk = planar::beta_skeleton(&points, beta, region, &run.ctl).map_err(CliError::new)?;
+    drop(run);
     let algorithm = t.elapsed().as_secs_f64();
-    if let Some(out) = output
-        && let Err(e) = io::write_planar_edges(out, &points, &sk.edges)
-    {
-        return fail(format!("{}: {e}", out.display()));
+    if let Some(out) = output {
+        io::write_planar_edges(out, &points, &sk.edges).written(out)?;
     }
     let region_name = if lune { "lune" } else { "circle" };
     if as_json {
@@ -115,7 +98,7 @@ pub fn skeleton(
             algorithm
         );
     }
-    0
+    Ok(Verdict::Yes)
 }
 
 /// What `tetrakit mwt` was asked.
@@ -127,44 +110,25 @@ pub struct MwtArgs<'a> {
     pub time_limit: Option<Duration>,
 }
 
-pub fn mwt(a: MwtArgs) -> u8 {
+pub fn mwt(a: MwtArgs) -> CmdResult {
     let start = Instant::now();
-    let (points, z) = match read_points(a.input, a.xy) {
-        Ok(pz) => pz,
-        Err(c) => return c,
-    };
+    let (points, z) = read_points(a.input, a.xy)?;
     let parsed = start.elapsed().as_secs_f64();
     let t = Instant::now();
-    let spinner = crate::run::stage_spinner(points.len());
-    let m = match a.time_limit {
-        None => planar::mwt_with_progress(&points, &MwtOptions::default(), &stage(&spinner)),
-        Some(limit) => match solve_within(&points, limit, spinner.clone()) {
-            Some(m) => m,
-            None => {
-                if let Some(b) = &spinner {
-                    b.set_message("mwt: out of time, bounds");
-                }
-                let code = undecided(&a, &points, &z, start);
-                if let Some(b) = spinner {
-                    b.finish_and_clear();
-                }
-                return code;
-            }
-        },
-    };
-    if let Some(b) = spinner {
-        b.finish_and_clear();
-    }
-    let (as_json, output) = (a.as_json, a.output);
-    let m = match m {
+    let run = Run::new(a.time_limit, points.len(), 50_000);
+    let m = match planar::mwt(&points, &MwtOptions::default(), &run.ctl) {
         Ok(m) => m,
-        Err(e) => return fail(e),
+        Err(PlanarError::Stopped) => {
+            run.stage("out of time: bounds");
+            return undecided(&a, &points, &z, start);
+        }
+        Err(e) => return Err(CliError::new(e)),
     };
+    drop(run);
+    let (as_json, output) = (a.as_json, a.output);
     let algorithm = t.elapsed().as_secs_f64();
-    if let Some(out) = output
-        && let Err(e) = io::write_planar_triangulation(out, &points, &z, &m.edges, &m.triangles)
-    {
-        return fail(format!("{}: {e}", out.display()));
+    if let Some(out) = output {
+        io::write_planar_triangulation(out, &points, &z, &m.edges, &m.triangles).written(out)?;
     }
     let s = &m.stats;
     if as_json {
@@ -209,59 +173,16 @@ pub fn mwt(a: MwtArgs) -> u8 {
             algorithm
         );
     }
-    0
-}
-
-/// Names the solver's stage on the spinner.
-fn stage(spinner: &Option<ProgressBar>) -> impl Fn(planar::MwtStage) + '_ {
-    move |s| {
-        if let Some(b) = spinner {
-            b.set_message(format!("mwt: {s}"));
-        }
-    }
-}
-
-/// The exact solver on a thread of its own; `None` when it has not answered within
-/// `limit`. It is then told to stop, and winds down at its next check (between sites,
-/// edges or faces) while the caller computes bounds.
-fn solve_within(
-    points: &[Point2],
-    limit: Duration,
-    spinner: Option<ProgressBar>,
-) -> Option<Result<planar::Mwt, planar::PlanarError>> {
-    let (tx, rx) = mpsc::channel();
-    let stop = Arc::new(AtomicBool::new(false));
-    let (points, told) = (points.to_vec(), Arc::clone(&stop));
-    std::thread::spawn(move || {
-        let opts = MwtOptions::default();
-        let m = planar::mwt_with_stop(&points, &opts, &stage(&spinner), &told);
-        // The receiver is gone once the time is up; nothing waits for this answer then.
-        let _ = tx.send(m);
-    });
-    match rx.recv_timeout(limit) {
-        Ok(m) => Some(m),
-        Err(RecvTimeoutError::Timeout) => {
-            stop.store(true, Ordering::Relaxed);
-            None
-        }
-        Err(RecvTimeoutError::Disconnected) => Some(Err(planar::PlanarError::new(
-            "internal error, please report: the solver stopped without an answer",
-        ))),
-    }
+    Ok(Verdict::Yes)
 }
 
 /// Out of time: exit 3 with certified bounds on the minimum weight (the minimum
 /// spanning tree's and a triangulation's: Delaunay, flipped shorter), writing that
 /// triangulation.
-fn undecided(a: &MwtArgs, points: &[Point2], z: &[f64], start: Instant) -> u8 {
-    let b = match planar::mwt_bounds(points) {
-        Ok(b) => b,
-        Err(e) => return fail(e),
-    };
-    if let Some(out) = a.output
-        && let Err(e) = io::write_planar_triangulation(out, points, z, &b.edges, &b.triangles)
-    {
-        return fail(format!("{}: {e}", out.display()));
+fn undecided(a: &MwtArgs, points: &[Point2], z: &[f64], start: Instant) -> CmdResult {
+    let b = planar::mwt_bounds(points).map_err(CliError::new)?;
+    if let Some(out) = a.output {
+        io::write_planar_triangulation(out, points, z, &b.edges, &b.triangles).written(out)?;
     }
     let limit = a.time_limit.unwrap_or_default().as_secs_f64();
     if a.as_json {
@@ -287,23 +208,21 @@ fn undecided(a: &MwtArgs, points: &[Point2], z: &[f64], start: Instant) -> u8 {
             if a.output.is_some() { ", written" } else { "" }
         );
     }
-    3
+    Ok(Verdict::Undecided)
 }
 
-pub fn generate_points(dist: Distribution, n: usize, seed: u64, output: &Path) -> u8 {
+pub fn generate_points(dist: Distribution, n: usize, seed: u64, output: &Path) -> CmdResult {
     if !(1..=50_000_000).contains(&n) {
-        return fail("--n must be between 1 and 50000000");
+        return Err(CliError::new("--n must be between 1 and 50000000"));
     }
     let pts = planar::points2d(dist, n, seed);
-    if let Err(e) = io::write_points2d(output, &pts) {
-        return fail(format!("{}: {e}", output.display()));
-    }
+    io::write_points2d(output, &pts).written(output)?;
     out!(
         "wrote {} {dist:?} points to {}",
         pts.len(),
         output.display()
     );
-    0
+    Ok(Verdict::Yes)
 }
 
 pub struct KeilArgs<'a> {
@@ -314,23 +233,15 @@ pub struct KeilArgs<'a> {
     pub check_random: Option<usize>,
 }
 
-pub fn keil(a: KeilArgs) -> u8 {
+pub fn keil(a: KeilArgs) -> CmdResult {
     let start = Instant::now();
-    let beta = match parse_beta(a.beta) {
-        Ok(b) => b,
-        Err(c) => return c,
-    };
+    let beta = parse_beta(a.beta)?;
     if let Some(sets) = a.check_random {
         return check_random(beta, sets, a.n.unwrap_or(200), a.as_json, start);
     }
-    let k = match planar::keil(beta, a.n) {
-        Ok(k) => k,
-        Err(e) => return fail(e),
-    };
-    if let Some(path) = a.svg
-        && let Err(e) = std::fs::write(path, keil_svg(&k))
-    {
-        return fail(format!("{}: {e}", path.display()));
+    let k = planar::keil(beta, a.n, &Control::new()).map_err(CliError::new)?;
+    if let Some(path) = a.svg {
+        std::fs::write(path, io::keil_svg(&k)).written(path)?;
     }
     let iv = |w: &tetrakit::geom::Interval| [w.lo, w.hi];
     let refuted = k.xy_in_skeleton && !k.xy_in_mwt;
@@ -388,19 +299,19 @@ pub fn keil(a: KeilArgs) -> u8 {
             out!("  picture: {}", p.display());
         }
     }
-    0
+    Ok(Verdict::Yes)
 }
 
-fn check_random(beta: Ratio, sets: usize, n: usize, as_json: bool, start: Instant) -> u8 {
+fn check_random(beta: Ratio, sets: usize, n: usize, as_json: bool, start: Instant) -> CmdResult {
     if !planar::above_cheng_xu(beta) {
-        return fail(format!(
+        return Err(CliError::new(format!(
             "--check-random needs β above the Cheng–Xu bound √(2√3+9)/3 ≈ 1.176823 (got {beta})"
-        ));
+        )));
     }
-    let (checked, bad) = match planar::check_random(beta, sets, n, 1) {
-        Ok(x) => x,
-        Err(e) => return fail(e),
-    };
+    let run = Run::new(None, sets, 20);
+    run.stage("random sets");
+    let (checked, bad) = planar::check_random(beta, sets, n, 1, &run.ctl).map_err(CliError::new)?;
+    drop(run);
     if as_json {
         let v: Vec<_> = bad
             .iter()
@@ -419,7 +330,7 @@ fn check_random(beta: Ratio, sets: usize, n: usize, as_json: bool, start: Instan
             out!("  violation: set {k} (seed {s}), edge {}-{}", e[0], e[1]);
         }
     }
-    if bad.is_empty() { 0 } else { 1 }
+    Ok(Verdict::from_bool(bad.is_empty()))
 }
 
 /// How the two optima were found.
@@ -429,32 +340,4 @@ fn method(k: &planar::KeilResult) -> &'static str {
     } else {
         "general exact MWT solver"
     }
-}
-
-/// The picture: sites, the β-disks through x and y, the MWT, and xy.
-pub(crate) fn keil_svg(k: &planar::KeilResult) -> String {
-    let (x, y) = (k.sites[k.xy[0] as usize], k.sites[k.xy[1] as usize]);
-    let mut view = k.sites.clone();
-    let b = k.beta.to_f64();
-    let h = (b * b - 1.0).sqrt();
-    view.extend([[-b, h + b], [b, -h - b]]);
-    let mut svg = io::Svg::new(&view);
-    for c in [[0.0, h], [0.0, -h]] {
-        svg.circle(&c, b, "disk");
-    }
-    for e in &k.mwt {
-        svg.line(&k.sites[e[0] as usize], &k.sites[e[1] as usize], "mwt");
-    }
-    svg.line(&x, &y, "xy");
-    for p in &k.sites {
-        svg.site(p);
-    }
-    svg.label(&x, "x");
-    svg.label(&y, "y");
-    svg.finish(&format!(
-        "β = {}: xy (dashed red) {} the β-skeleton, {} the MWT (blue); disks: the β-region of xy",
-        k.beta,
-        if k.xy_in_skeleton { "in" } else { "not in" },
-        if k.xy_in_mwt { "in" } else { "not in" }
-    ))
 }

@@ -1,13 +1,13 @@
 //! Chapter 3 commands: `mintetra`, `tetrahedralize`, and the polyhedron generators.
 
-use crate::run::fail;
+use crate::exit::{CliError, CmdResult, Verdict, WriteContext};
 use serde_json::{Value, json};
 use std::path::Path;
 use std::time::{Duration, Instant};
+use tetrakit::control::Control;
 use tetrakit::exact::{self, Domain, Options, Outcome};
-use tetrakit::geom::Hull3;
-use tetrakit::io::{self, Input};
-use tetrakit::mesh::{self, Polyhedron};
+use tetrakit::io;
+use tetrakit::mesh::{Polyhedron, certify_polyhedron};
 use tetrakit::polyhedra::{self, Checks, Mintetra, generate};
 
 fn shift<const N: usize>(v: &[[u32; N]], base: u32) -> Vec<[u32; N]> {
@@ -23,12 +23,9 @@ fn minimality(p: &Polyhedron, m: &Mintetra) -> &'static str {
     }
 }
 
-pub fn mintetra(path: &Path, as_json: bool, output: Option<&Path>, confirm: bool) -> u8 {
+pub fn mintetra(path: &Path, as_json: bool, output: Option<&Path>, confirm: bool) -> CmdResult {
     let start = Instant::now();
-    let (input, poly) = match io::read_polyhedron(path) {
-        Ok(x) => x,
-        Err(e) => return fail(e),
-    };
+    let (input, poly) = io::read_polyhedron(path)?;
     let parsed = start.elapsed().as_secs_f64();
     // Fast trimming (orientation checks only) whose YES the certificate below confirms;
     // on NO, or if the certificate fails, the careful shelling mode decides.
@@ -39,7 +36,7 @@ pub fn mintetra(path: &Path, as_json: bool, output: Option<&Path>, confirm: bool
     let mut certified = false;
     if m.yes {
         let t1 = Instant::now();
-        certified = polyhedra::certify(&poly, &m.tets).is_ok();
+        certified = certify_polyhedron(&poly, &m.tets).is_ok();
         verify_seconds = t1.elapsed().as_secs_f64();
     }
     if !certified {
@@ -63,11 +60,9 @@ pub fn mintetra(path: &Path, as_json: bool, output: Option<&Path>, confirm: bool
     if m.yes {
         if !certified {
             let t1 = Instant::now();
-            if let Err(e) = polyhedra::certify(&poly, &m.tets) {
-                return fail(format!(
-                    "internal error, please report: MINTETRA's tetrahedra fail the certificate: {e}"
-                ));
-            }
+            certify_polyhedron(&poly, &m.tets).map_err(|e| {
+                CliError::internal(format!("MINTETRA's tetrahedra fail the certificate: {e}"))
+            })?;
             verify_seconds += t1.elapsed().as_secs_f64();
         }
         v["verify_seconds"] = json!(verify_seconds);
@@ -88,10 +83,8 @@ pub fn mintetra(path: &Path, as_json: bool, output: Option<&Path>, confirm: bool
         }
         v["minimality"] = json!(status);
         v["conjectured_minimal"] = json!(status == "conjectured");
-        if let Some(out) = output
-            && let Err(e) = io::write_mesh(out, &poly.points, &m.tets, base)
-        {
-            return fail(format!("{}: {e}", out.display()));
+        if let Some(out) = output {
+            io::write_mesh(out, &poly.points, &m.tets, base).written(out)?;
         }
     } else {
         v["reason"] = json!(m.reason);
@@ -107,7 +100,7 @@ pub fn mintetra(path: &Path, as_json: bool, output: Option<&Path>, confirm: bool
     } else {
         print_mintetra(&v, m.yes);
     }
-    if m.yes { 0 } else { 1 }
+    Ok(Verdict::from_bool(m.yes))
 }
 
 /// Runs the exact solver: `(mintetra count is minimum, unique)`, `None` on time-out.
@@ -117,10 +110,10 @@ fn confirm_with_solver(
 ) -> Result<Option<(bool, Option<bool>)>, String> {
     let opts = Options {
         unique: true,
-        time_limit: Some(Duration::from_secs(60)),
         any: false,
     };
-    match exact::minimal_tetrahedralization(Domain::Polyhedron(poly), &opts) {
+    let ctl = Control::new().with_time_limit(Duration::from_secs(60));
+    match exact::minimal_tetrahedralization(Domain::Polyhedron(poly), &opts, &ctl) {
         Ok((Outcome::Optimal { tets, unique, .. }, _)) => Ok(Some((tets.len() == count, unique))),
         Ok((Outcome::Undecided { .. }, _)) => Ok(None),
         Ok((other, _)) => Err(format!("solver answered {other:?}")),
@@ -174,37 +167,29 @@ pub struct TetraArgs<'a> {
     pub output: Option<&'a Path>,
 }
 
-pub fn tetrahedralize(a: TetraArgs) -> u8 {
+pub fn tetrahedralize(a: TetraArgs) -> CmdResult {
     let start = Instant::now();
-    let input = match io::read_input(a.input) {
-        Ok(i) => i,
-        Err(e) => return fail(e),
-    };
+    let input = io::read_input(a.input)?;
     let poly;
     let domain = if input.faces.is_empty() {
         Domain::Points(&input.points)
     } else {
-        poly = match Polyhedron::new(input.points.clone(), input.faces.clone()) {
-            Ok(p) => p,
-            Err(e) => {
-                return fail(format!(
-                    "{}: not a simple polyhedron: {}",
-                    a.input.display(),
-                    e.describe(input.index_base)
-                ));
-            }
-        };
+        poly = Polyhedron::new(input.points.clone(), input.faces.clone()).map_err(|e| {
+            let why = e.describe(input.index_base);
+            CliError::at(a.input, format!("not a simple polyhedron: {why}"))
+        })?;
         Domain::Polyhedron(&poly)
     };
     let opts = Options {
         unique: a.unique,
         any: !a.minimal,
-        time_limit: a.time_limit,
     };
-    let (outcome, stats) = match exact::minimal_tetrahedralization(domain, &opts) {
-        Ok(x) => x,
-        Err(e) => return fail(format!("{}: {e}", a.input.display())),
-    };
+    let mut ctl = Control::new();
+    if let Some(limit) = a.time_limit {
+        ctl = ctl.with_time_limit(limit);
+    }
+    let (outcome, stats) = exact::minimal_tetrahedralization(domain, &opts, &ctl)
+        .map_err(|e| CliError::at(a.input, e))?;
     let n = input.points.len();
     let mut v = json!({
         "vertices": n,
@@ -213,7 +198,7 @@ pub fn tetrahedralize(a: TetraArgs) -> u8 {
         "sat_calls": stats.calls,
     });
     let base = input.index_base;
-    let (code, tets) = match &outcome {
+    let (verdict, tets) = match &outcome {
         Outcome::Optimal {
             tets,
             unique,
@@ -227,11 +212,11 @@ pub fn tetrahedralize(a: TetraArgs) -> u8 {
             if let Some(alt) = alternative {
                 v["alternative"] = json!(shift(alt, base));
             }
-            (0, Some(tets))
+            (Verdict::Yes, Some(tets))
         }
         Outcome::Found { tets } => {
             v["verdict"] = json!("yes");
-            (0, Some(tets))
+            (Verdict::Yes, Some(tets))
         }
         Outcome::Infeasible => {
             v["verdict"] = json!("no");
@@ -239,7 +224,7 @@ pub fn tetrahedralize(a: TetraArgs) -> u8 {
                 "kind": "unsatisfiable",
                 "detail": "no set of candidate tetrahedra (no other vertex inside, on the inner side of the boundary) satisfies the face-pairing clauses: no tetrahedralization without Steiner points exists",
             });
-            (1, None)
+            (Verdict::No, None)
         }
         Outcome::Undecided { best, lower } => {
             v["verdict"] = json!("undecided");
@@ -247,22 +232,18 @@ pub fn tetrahedralize(a: TetraArgs) -> u8 {
             if let Some(b) = best {
                 v["upper_bound"] = json!(b.len());
             }
-            (3, best.as_ref())
+            (Verdict::Undecided, best.as_ref())
         }
     };
     if let Some(tets) = tets {
-        if let Err(e) = certify(&domain, &input, tets) {
-            return fail(format!(
-                "internal error, please report: the solver's tetrahedra fail the certificate: {e}"
-            ));
-        }
+        domain.certify(tets).map_err(|e| {
+            CliError::internal(format!("the solver's tetrahedra fail the certificate: {e}"))
+        })?;
         v["tetrahedra"] = json!(tets.len());
         v["tets"] = json!(shift(tets, base));
         v["certified"] = json!(true);
-        if let Some(out) = a.output
-            && let Err(e) = io::write_mesh(out, &input.points, tets, base)
-        {
-            return fail(format!("{}: {e}", out.display()));
+        if let Some(out) = a.output {
+            io::write_mesh(out, &input.points, tets, base).written(out)?;
         }
     }
     v["seconds"] = json!(start.elapsed().as_secs_f64());
@@ -271,28 +252,7 @@ pub fn tetrahedralize(a: TetraArgs) -> u8 {
     } else {
         print_tetrahedralize(&v);
     }
-    code
-}
-
-fn certify(domain: &Domain, input: &Input, tets: &[[u32; 4]]) -> Result<(), String> {
-    match domain {
-        Domain::Polyhedron(p) => polyhedra::certify(p, tets),
-        Domain::Points(pts) => {
-            let hull = Hull3::new(pts);
-            let r = mesh::verify(pts, tets, Some(&hull));
-            match r.problems.first() {
-                None if used_all(input, tets) => Ok(()),
-                None => Err("a point is not a vertex of any tetrahedron".into()),
-                Some(p) => Err(format!("{:?}: {}", p.kind, p.detail)),
-            }
-        }
-    }
-}
-
-fn used_all(input: &Input, tets: &[[u32; 4]]) -> bool {
-    let mut used = vec![false; input.points.len()];
-    tets.iter().flatten().for_each(|&v| used[v as usize] = true);
-    used.iter().all(|&u| u)
+    Ok(verdict)
 }
 
 fn print_tetrahedralize(v: &Value) {
@@ -348,13 +308,17 @@ pub enum PolyGen {
     SchonhardtBp,
 }
 
-pub fn generate(kind: PolyGen, seed: u64, output: &Path) -> u8 {
+pub fn generate(kind: PolyGen, seed: u64, output: &Path) -> CmdResult {
     if let PolyGen::Bp(params) = &kind {
         if !(1..=12).contains(&params.levels) {
-            return fail("--levels must be between 1 and 12 (each level can double the nets)");
+            return Err(CliError::new(
+                "--levels must be between 1 and 12 (each level can double the nets)",
+            ));
         }
         if params.core > 50_000_000 || params.nets > params.core.max(4) {
-            return fail("--core must be at most 5e7 and --nets at most --core");
+            return Err(CliError::new(
+                "--core must be at most 5e7 and --nets at most --core",
+            ));
         }
     }
     let (p, note) = match kind {
@@ -367,14 +331,12 @@ pub fn generate(kind: PolyGen, seed: u64, output: &Path) -> u8 {
         PolyGen::Schonhardt => (generate::schonhardt(), String::new()),
         PolyGen::SchonhardtBp => (generate::schonhardt_bp(), String::new()),
     };
-    if let Err(e) = io::write_surface(output, &p.points, &p.faces, 1) {
-        return fail(format!("{}: {e}", output.display()));
-    }
+    io::write_surface(output, &p.points, &p.faces, 1).written(output)?;
     out!(
         "wrote {}: {} vertices, {} faces{note}",
         output.display(),
         p.points.len(),
         p.faces.len()
     );
-    0
+    Ok(Verdict::Yes)
 }

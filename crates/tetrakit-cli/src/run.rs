@@ -1,105 +1,43 @@
 //! The commands: read, call the library, print.
 
+use crate::exit::{CliError, CmdResult, Verdict, WriteContext};
+use crate::progress::Run;
 use crate::{CorruptKind, GenCommon, GenKind};
 use serde_json::json;
 use std::path::Path;
 use std::time::Instant;
-use tetrakit::detect::{Cells, Detection, Options, detect_with};
+use tetrakit::detect::{Cells, Detection, Options};
 use tetrakit::generate::{self, Corruption};
 use tetrakit::geom::Hull3;
-use tetrakit::io::{self, Input};
+use tetrakit::io;
 use tetrakit::mesh::{self, Tetrahedralization};
 
-/// Work on `len` items is long enough to show progress (at least `min`), and stderr is
-/// a terminal to show it on.
-fn shows_progress(len: usize, min: usize) -> bool {
-    use std::io::IsTerminal;
-    len >= min && std::io::stderr().is_terminal()
-}
-
-/// A progress bar on stderr for work on at least `min` items, only when stderr is a
-/// terminal.
-pub fn progress_bar(len: u64, min: usize, what: &str) -> Option<indicatif::ProgressBar> {
-    if !shows_progress(len as usize, min) {
-        return None;
-    }
-    let bar = indicatif::ProgressBar::new(len);
-    if let Ok(style) =
-        indicatif::ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} ({eta})")
-    {
-        bar.set_style(style.progress_chars("=> "));
-    }
-    bar.set_message(what.to_string());
-    Some(bar)
-}
-
-/// A spinner on stderr naming the current stage of work on at least `50_000` items
-/// ([`shows_progress`]).
-pub fn stage_spinner(len: usize) -> Option<indicatif::ProgressBar> {
-    if !shows_progress(len, 50_000) {
-        return None;
-    }
-    let bar = indicatif::ProgressBar::new_spinner();
-    if let Ok(style) = indicatif::ProgressStyle::with_template("{spinner} {msg} ({elapsed})") {
-        bar.set_style(style);
-    }
-    bar.enable_steady_tick(std::time::Duration::from_millis(120));
-    Some(bar)
-}
-
-/// Prints one line for a bad input or usage and returns exit code 2.
-pub fn fail(msg: impl std::fmt::Display) -> u8 {
-    eprintln!("tetrakit: {msg}");
-    2
-}
-
-fn read(path: &Path) -> Result<Input, u8> {
-    io::read_input(path).map_err(fail)
-}
-
-pub fn detect(path: &Path, as_json: bool, output: Option<&Path>, opts: Options) -> u8 {
+pub fn detect(path: &Path, as_json: bool, output: Option<&Path>, opts: Options) -> CmdResult {
     let start = Instant::now();
-    let input = match read(path) {
-        Ok(i) => i,
-        Err(c) => return c,
-    };
+    let input = io::read_input(path)?;
     let parsed = start.elapsed().as_secs_f64();
     let (segments, from_tets) = if !input.segments.is_empty() {
-        (
-            input
-                .segments
-                .iter()
-                .map(|s| (s[0], s[1]))
-                .collect::<Vec<_>>(),
-            false,
-        )
+        let s: Vec<(u32, u32)> = input.segments.iter().map(|s| (s[0], s[1])).collect();
+        (s, false)
     } else if !input.tets.is_empty() {
         (mesh::edges_of(&input.tets), true)
     } else {
-        return fail(format!(
-            "{}: no segments to test (give an .edge file, OBJ 'l' lines or JSON \"segments\")",
-            path.display()
+        return Err(CliError::at(
+            path,
+            "no segments to test (give an .edge file, OBJ 'l' lines or JSON \"segments\")",
         ));
     };
-    let bar = progress_bar(input.points.len() as u64, 50_000, "vertex links");
-    let report = |done: u64, _all: u64| {
-        if let Some(b) = &bar {
-            b.set_position(done);
-        }
-    };
-    let d = detect_with(&input.points, &segments, opts, &report);
-    if let Some(b) = bar {
-        b.finish_and_clear();
-    }
-    let d = match d {
-        Ok(d) => d,
-        Err(e) => return fail(format!("{}: {e}", path.display())),
-    };
+    let run = Run::new(None, input.points.len(), 50_000);
+    let d = tetrakit::detect::detect(&input.points, &segments, &opts, &run.ctl)
+        .map_err(|e| CliError::at(path, e))?;
+    drop(run);
     let seconds = start.elapsed().as_secs_f64();
-    if let (Some(out), Ok(cells)) = (output, &d.result)
-        && let Err(e) = write_cells(out, &input, cells)
-    {
-        return fail(format!("{}: {e}", out.display()));
+    if let (Some(out), Ok(cells)) = (output, &d.result) {
+        match cells {
+            Cells::Tetrahedra(t) => io::write_mesh(out, &input.points, t, input.index_base),
+            Cells::Triangles(t) => io::write_triangulation(out, &input.points, t),
+        }
+        .written(out)?;
     }
     let base = input.index_base;
     if as_json {
@@ -107,23 +45,7 @@ pub fn detect(path: &Path, as_json: bool, output: Option<&Path>, opts: Options) 
     } else {
         print_detection(&d, base, from_tets, seconds);
     }
-    if d.is_yes() { 0 } else { 1 }
-}
-
-fn write_cells(out: &Path, input: &Input, cells: &Cells) -> std::io::Result<()> {
-    match cells {
-        Cells::Tetrahedra(t) => io::write_mesh(out, &input.points, t, input.index_base),
-        Cells::Triangles(t) => {
-            let v = json!({ "points": input.points, "triangles": t });
-            if out.extension().and_then(|e| e.to_str()) == Some("json") {
-                std::fs::write(out, v.to_string())
-            } else {
-                Err(std::io::Error::other(
-                    "a triangulation can only be written as .json",
-                ))
-            }
-        }
-    }
+    Ok(Verdict::from_bool(d.is_yes()))
 }
 
 fn detection_json(d: &Detection, base: u32, seconds: f64, parsed: f64) -> serde_json::Value {
@@ -196,16 +118,13 @@ fn print_detection(d: &Detection, base: u32, from_tets: bool, seconds: f64) {
     }
 }
 
-pub fn check(path: &Path, convex: bool, as_json: bool) -> u8 {
+pub fn check(path: &Path, convex: bool, as_json: bool) -> CmdResult {
     let start = Instant::now();
-    let input = match read(path) {
-        Ok(i) => i,
-        Err(c) => return c,
-    };
+    let input = io::read_input(path)?;
     if input.tets.is_empty() {
-        return fail(format!(
-            "{}: no tetrahedra to check (give an .ele file or JSON \"tets\")",
-            path.display()
+        return Err(CliError::at(
+            path,
+            "no tetrahedra to check (give an .ele file or JSON \"tets\")",
         ));
     }
     let hull = convex.then(|| Hull3::new(&input.points));
@@ -252,14 +171,14 @@ pub fn check(path: &Path, convex: bool, as_json: bool) -> u8 {
             );
         }
     }
-    if report.is_valid() { 0 } else { 1 }
+    Ok(Verdict::from_bool(report.is_valid()))
 }
 
-pub fn generate(kind: GenKind) -> u8 {
+pub fn generate(kind: GenKind) -> CmdResult {
     let (name, mesh, common) = match kind {
         GenKind::Kuhn { size, common } => {
             if size == 0 || size > 200 {
-                return fail("--size must be between 1 and 200");
+                return Err(CliError::new("--size must be between 1 and 200"));
             }
             (format!("kuhn --size {size}"), generate::kuhn(size), common)
         }
@@ -270,13 +189,15 @@ pub fn generate(kind: GenKind) -> u8 {
             common,
         } => {
             if !(4..=10_000).contains(&points) {
-                return fail(
+                return Err(CliError::new(
                     "--points must be between 4 and 10000 (the generator locates points by brute force; use TetGen for larger meshes)",
-                );
+                ));
             }
             let t = generate::random_tetrahedralization(points, flips, common.seed, grid);
             if t.tets.is_empty() {
-                return fail("the random points are coplanar; use more points or a larger --grid");
+                return Err(CliError::new(
+                    "the random points are coplanar; use more points or a larger --grid",
+                ));
             }
             (
                 format!("random-tetrahedralization --points {points} --flips {flips}"),
@@ -286,7 +207,7 @@ pub fn generate(kind: GenKind) -> u8 {
         }
         GenKind::SkewLines { points, common } => {
             if !(4..=20_000).contains(&points) {
-                return fail("--points must be between 4 and 20000");
+                return Err(CliError::new("--points must be between 4 and 20000"));
             }
             (
                 format!("skew-lines --points {points}"),
@@ -294,12 +215,16 @@ pub fn generate(kind: GenKind) -> u8 {
                 common,
             )
         }
-        _ => return fail("internal error: a polyhedron generator reached the mesh writer"),
+        _ => {
+            return Err(CliError::internal(
+                "a polyhedron generator reached the mesh writer",
+            ));
+        }
     };
     write_generated(&name, mesh, &common)
 }
 
-fn write_generated(name: &str, mut mesh: Tetrahedralization, c: &GenCommon) -> u8 {
+fn write_generated(name: &str, mut mesh: Tetrahedralization, c: &GenCommon) -> CmdResult {
     let mut edges = mesh.edges();
     if let Some(k) = c.corrupt {
         let kind = match k {
@@ -310,9 +235,9 @@ fn write_generated(name: &str, mut mesh: Tetrahedralization, c: &GenCommon) -> u
         match generate::corrupt_edges(&mesh.points, &edges, kind, c.seed) {
             Some(e) => edges = e,
             None => {
-                return fail(format!(
+                return Err(CliError::new(format!(
                     "cannot apply {k:?} to this instance: no segment can cross or overlap another (points in general position); try --grid or drop-edge"
-                ));
+                )));
             }
         }
         if matches!(k, CorruptKind::AddOverlap)
@@ -322,27 +247,7 @@ fn write_generated(name: &str, mut mesh: Tetrahedralization, c: &GenCommon) -> u
         }
     }
     let out = &c.output;
-    let ext = out
-        .extension()
-        .and_then(|e| e.to_str())
-        .unwrap_or("")
-        .to_ascii_lowercase();
-    let result = match ext.as_str() {
-        "ele" => io::write_mesh(out, &mesh.points, &mesh.tets, 1)
-            .and_then(|_| io::write_edges(&out.with_extension("edge"), &mesh.points, &edges, 1)),
-        "vtk" => io::write_mesh(out, &mesh.points, &mesh.tets, 0),
-        "json" => {
-            let segs: Vec<[u32; 2]> = edges.iter().map(|&(a, b)| [a, b]).collect();
-            std::fs::write(
-                out,
-                json!({ "points": mesh.points, "segments": segs, "tets": mesh.tets }).to_string(),
-            )
-        }
-        _ => io::write_edges(out, &mesh.points, &edges, 1),
-    };
-    if let Err(e) = result {
-        return fail(format!("{}: {e}", out.display()));
-    }
+    io::write_instance(out, &mesh.points, &mesh.tets, &edges).written(out)?;
     let corrupted = c
         .corrupt
         .map(|k| format!(", corrupted by {k:?}"))
@@ -354,5 +259,5 @@ fn write_generated(name: &str, mut mesh: Tetrahedralization, c: &GenCommon) -> u
         mesh.tets.len(),
         out.display()
     );
-    0
+    Ok(Verdict::Yes)
 }

@@ -4,6 +4,8 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
+use tetrakit::control::Control;
+use tetrakit::detect::Options;
 use tetrakit::detect::detect;
 use tetrakit::generate;
 use tetrakit::geom::Hull3;
@@ -19,13 +21,34 @@ fn benches(c: &mut Criterion) {
     let mut g = c.benchmark_group("detect");
     g.sample_size(10);
     g.bench_function("kuhn 12 (2197 points)", |b| {
-        b.iter(|| detect(black_box(&grid.points), black_box(&grid_edges)))
+        b.iter(|| {
+            detect(
+                black_box(&grid.points),
+                black_box(&grid_edges),
+                &Options::default(),
+                &Control::new(),
+            )
+        })
     });
     g.bench_function("random 3000 points", |b| {
-        b.iter(|| detect(black_box(&random.points), black_box(&random_edges)))
+        b.iter(|| {
+            detect(
+                black_box(&random.points),
+                black_box(&random_edges),
+                &Options::default(),
+                &Control::new(),
+            )
+        })
     });
     g.bench_function("skew lines 200 points", |b| {
-        b.iter(|| detect(black_box(&skew.points), black_box(&skew_edges)))
+        b.iter(|| {
+            detect(
+                black_box(&skew.points),
+                black_box(&skew_edges),
+                &Options::default(),
+                &Control::new(),
+            )
+        })
     });
     g.finish();
     let mut g = c.benchmark_group("verify");

@@ -13,21 +13,25 @@
 //! tetrahedralization returned has passed [`mesh::verify`].
 //!
 //! ```
-//! use tetrakit::{detect::detect, generate};
+//! use tetrakit::control::Control;
+//! use tetrakit::detect::{Options, detect};
+//! use tetrakit::generate;
 //! let mesh = generate::kuhn(2);
 //! let edges = mesh.edges();
-//! let outcome = detect(&mesh.points, &edges).unwrap();
+//! let outcome = detect(&mesh.points, &edges, &Options::default(), &Control::new()).unwrap();
 //! assert!(outcome.is_yes());
 //! ```
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod control;
 pub mod detect;
 pub mod exact;
 pub mod generate;
 pub mod geom;
 pub mod io;
 pub mod mesh;
+pub mod numbering;
 pub mod planar;
 pub mod polyhedra;
 pub mod rng;

@@ -3,8 +3,9 @@
 //! Every crossing witness is checked independently, and every YES pins Euler's count
 //! t = |L| − n − n_b + 3 (Theorem 2.3, condition 3, with n_b the points on the hull).
 
+use tetrakit::control::Control;
 use tetrakit::detect::{
-    Cells, LinkMethod, Options, WitnessKind, detect_with, oracle::forms_tetrahedralization,
+    Cells, LinkMethod, Options, WitnessKind, detect, oracle::forms_tetrahedralization,
 };
 use tetrakit::generate::{cospherical_points, random_flips, random_points, tetrahedralize_points};
 use tetrakit::geom::{Hull3, Point3, orient2d, point_in_segment_interior, segments_meet};
@@ -46,7 +47,7 @@ fn check_method(
     opts: Options,
     what: &str,
 ) {
-    let d = detect_with(points, edges, opts, &|_, _| {}).expect("well-formed input");
+    let d = detect(points, edges, &opts, &Control::new()).expect("well-formed input");
     assert_eq!(
         d.is_yes(),
         expected,
@@ -377,7 +378,7 @@ fn delaunay_route_on_delaunay_edge_sets() {
             continue;
         };
         let edges = tetrakit::mesh::edges_of(&tets);
-        let d = detect_with(&points, &edges, Options::default(), &|_, _| {}).unwrap();
+        let d = detect(&points, &edges, &Options::default(), &Control::new()).unwrap();
         let Ok(Cells::Tetrahedra(mut found)) = d.result else {
             panic!("case {case}: the Delaunay edge set is rejected");
         };
@@ -416,7 +417,7 @@ fn delaunay_route_falls_back_to_links() {
         instances.extend(tet_instance(random_points(12, seed, None), 30, seed));
     }
     for t in &instances {
-        let d = detect_with(&t.points, &t.edges(), Options::default(), &|_, _| {}).unwrap();
+        let d = detect(&t.points, &t.edges(), &Options::default(), &Control::new()).unwrap();
         assert!(d.is_yes());
         links += usize::from(d.route == Route::Links);
     }

@@ -2,6 +2,7 @@
 //! an input or an `InputError` naming the file, and `detect` on whatever parses answers.
 
 use proptest::prelude::*;
+use tetrakit::control::Control;
 use tetrakit::io::read_input;
 
 const NODE: &str = "5 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 1 1\n";
@@ -63,7 +64,7 @@ proptest! {
             Ok(input) => {
                 let segs: Vec<(u32, u32)> = input.segments.iter().map(|s| (s[0], s[1])).collect();
                 // Whatever parses is well-formed, so detect answers without error.
-                prop_assert!(tetrakit::detect::detect(&input.points, &segs).is_ok());
+                prop_assert!(tetrakit::detect::detect(&input.points, &segs, &Default::default(), &Control::new()).is_ok());
             }
             Err(e) => prop_assert!(e.file.ends_with(".node") || e.file.ends_with(".edge")),
         }

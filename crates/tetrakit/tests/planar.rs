@@ -2,10 +2,10 @@
 
 use std::cmp::Ordering;
 use std::collections::HashSet;
+use tetrakit::control::Control;
 use tetrakit::geom::{Point2, Ratio, in_beta_region, in_lune};
-use tetrakit::planar::{
-    MwtOptions, Region, beta_skeleton, cmp_edge_sets, mwt, mwt_with, triangulations,
-};
+use tetrakit::planar::PlanarError;
+use tetrakit::planar::{MwtOptions, Region, beta_skeleton, cmp_edge_sets, mwt, triangulations};
 use tetrakit::rng::Rng;
 
 fn random_points(rng: &mut Rng, n: usize, grid: usize) -> Vec<Point2> {
@@ -77,7 +77,9 @@ fn skeleton_matches_brute_force_on_random_grid_and_cocircular_sets() {
         for b in betas {
             let beta: Ratio = b.parse().unwrap();
             for region in [Region::Circle, Region::Lune] {
-                let got = beta_skeleton(&pts, beta, region).unwrap().edges;
+                let got = beta_skeleton(&pts, beta, region, &Control::new())
+                    .unwrap()
+                    .edges;
                 let want = skeleton_oracle(&pts, beta, region);
                 assert_eq!(got, want, "β={b} {region:?} points {pts:?}");
                 cases += 1;
@@ -125,7 +127,7 @@ fn mwt_matches_exhaustive_search_and_skeleton_is_in_every_optimum() {
         if all.is_empty() {
             continue; // collinear
         }
-        let got = mwt(&pts).unwrap();
+        let got = mwt(&pts, &MwtOptions::default(), &Control::new()).unwrap();
         let mut optima = Vec::new();
         for t in &all {
             match cmp_edge_sets(&pts, &got.edges, t) {
@@ -202,13 +204,14 @@ fn mwt_is_the_same_with_every_segment_a_candidate_on_degenerate_sets() {
             continue;
         };
         let forced = vec![[side[0].min(side[1]), side[0].max(side[1])]];
-        let plain = mwt(&pts).unwrap();
-        let every = mwt_with(
+        let plain = mwt(&pts, &MwtOptions::default(), &Control::new()).unwrap();
+        let every = mwt(
             &pts,
             &MwtOptions {
                 forced,
                 forbidden: Vec::new(),
             },
+            &Control::new(),
         )
         .unwrap();
         assert_eq!(
@@ -230,14 +233,15 @@ fn sites_in_convex_position_take_one_polygon_dp() {
         square.extend(side.iter().map(|&t| [1.0, t]));
         square.extend(side.iter().map(|&t| [1.0 - t, 1.0]));
         square.extend(side.iter().map(|&t| [0.0, 1.0 - t]));
-        let direct = mwt(&square).unwrap();
+        let direct = mwt(&square, &MwtOptions::default(), &Control::new()).unwrap();
         let forced = vec![[0, 1]];
-        let general = mwt_with(
+        let general = mwt(
             &square,
             &MwtOptions {
                 forced,
                 forbidden: Vec::new(),
             },
+            &Control::new(),
         )
         .unwrap();
         assert_eq!(direct.stats.faces_left, 1, "the direct path");
@@ -247,10 +251,20 @@ fn sites_in_convex_position_take_one_polygon_dp() {
         );
     }
     let parabola: Vec<Point2> = (0..40_000).map(|i| [i as f64, (i * i) as f64]).collect();
-    let err = mwt(&parabola).unwrap_err();
-    assert!(err.0.contains("40000 sites in convex position"), "{err}");
+    let err = mwt(&parabola, &MwtOptions::default(), &Control::new()).unwrap_err();
+    assert!(
+        matches!(
+            err,
+            PlanarError::DynamicProgramTooLarge {
+                vertices: 40_000,
+                convex_position: true,
+                ..
+            }
+        ),
+        "{err}"
+    );
     let small: Vec<Point2> = (0..60).map(|i| [i as f64, (i * i) as f64]).collect();
-    let got = mwt(&small).unwrap();
+    let got = mwt(&small, &MwtOptions::default(), &Control::new()).unwrap();
     assert_eq!((got.edges.len(), got.stats.faces_left), (2 * 60 - 3, 1));
 }
 
@@ -261,15 +275,23 @@ fn keil_construction_is_exact_and_consistent() {
     for b in ["1.16", "1.155", "1.1548"] {
         let beta: Ratio = b.parse().unwrap();
         for n in [1, 2, 5, 9] {
-            let k = tetrakit::planar::keil(beta, Some(n)).unwrap();
+            let k = tetrakit::planar::keil(beta, Some(n), &Control::new()).unwrap();
             assert!(k.xy_in_skeleton && k.split, "β={b} n={n}");
             let same = |a: &[[u32; 2]], b: &[[u32; 2]]| cmp_edge_sets(&k.sites, a, b);
             let constrained = |forced: Vec<[u32; 2]>, forbidden: Vec<[u32; 2]>| {
-                mwt_with(&k.sites, &MwtOptions { forced, forbidden })
+                mwt(&k.sites, &MwtOptions { forced, forbidden }, &Control::new())
                     .unwrap()
                     .edges
             };
-            assert_eq!(same(&mwt(&k.sites).unwrap().edges, &k.mwt), Ordering::Equal);
+            assert_eq!(
+                same(
+                    &mwt(&k.sites, &MwtOptions::default(), &Control::new())
+                        .unwrap()
+                        .edges,
+                    &k.mwt
+                ),
+                Ordering::Equal
+            );
             assert_eq!(
                 same(&constrained(vec![k.xy], vec![]), &k.with_xy.1),
                 Ordering::Equal
@@ -290,7 +312,7 @@ fn keil_construction_is_exact_and_consistent() {
         ("1.16", Some(420)),
         ("1.16", None),
     ] {
-        let k = tetrakit::planar::keil(b.parse().unwrap(), n).unwrap();
+        let k = tetrakit::planar::keil(b.parse().unwrap(), n, &Control::new()).unwrap();
         assert!(k.n as f64 > k.lemma_bound || n.is_some());
         assert!(k.xy_in_skeleton && !k.xy_in_mwt, "β={b} n={}", k.n);
         assert_eq!(k.with_vs_without, Ordering::Greater, "β={b}");
@@ -300,10 +322,10 @@ fn keil_construction_is_exact_and_consistent() {
             Ordering::Equal
         );
     }
-    let k = tetrakit::planar::keil("1.16".parse().unwrap(), Some(400)).unwrap();
+    let k = tetrakit::planar::keil("1.16".parse().unwrap(), Some(400), &Control::new()).unwrap();
     assert!(k.xy_in_mwt);
-    assert!(tetrakit::planar::keil("1.17".parse().unwrap(), None).is_err());
-    assert!(tetrakit::planar::keil("1.15".parse().unwrap(), None).is_err());
+    assert!(tetrakit::planar::keil("1.17".parse().unwrap(), None, &Control::new()).is_err());
+    assert!(tetrakit::planar::keil("1.15".parse().unwrap(), None, &Control::new()).is_err());
 }
 
 /// The textbook `O(n³)` dynamic program over a convex polygon given in counter-clockwise
@@ -371,7 +393,7 @@ fn mwt_of_convex_polygons_matches_the_convex_dp() {
         if hull.vertices.len() != pts.len() {
             continue; // a point fell inside or on an edge
         }
-        let got = mwt(&pts).unwrap();
+        let got = mwt(&pts, &MwtOptions::default(), &Control::new()).unwrap();
         let oracle = convex_dp(&pts, &hull.vertices);
         let w: f64 = oracle
             .iter()

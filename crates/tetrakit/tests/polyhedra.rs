@@ -2,11 +2,12 @@
 //! augmented BP-polyhedra (Theorem 3.5, Corollaries 3.6–3.7), the §3.5 non-members, and
 //! the thesis's counting lemma t = e_i + n − 3.
 
+use tetrakit::control::Control;
 use tetrakit::exact::{Domain, Options, Outcome, minimal_tetrahedralization};
 use tetrakit::polyhedra::generate::BpParams;
 use tetrakit::polyhedra::{
-    Checks, Polyhedron, SurfaceGraph, bp_nets, certify, generate, is_proper, mintetra,
-    mintetra_with, proper_nets_disjoint,
+    Checks, Polyhedron, SurfaceGraph, bp_nets, certify_polyhedron as certify, generate, is_proper,
+    mintetra, mintetra_with, proper_nets_disjoint,
 };
 
 fn exact(p: &Polyhedron, unique: bool) -> Outcome {
@@ -16,6 +17,7 @@ fn exact(p: &Polyhedron, unique: bool) -> Outcome {
             unique,
             ..Options::default()
         },
+        &Control::new(),
     )
     .expect("small input")
     .0
@@ -174,8 +176,12 @@ fn convex_points_minimum_obeys_euler() {
     // minimum is at least n - 3.
     for m in 4..8 {
         let p = generate::bipyramid(m, m as u64);
-        let (out, stats) =
-            minimal_tetrahedralization(Domain::Points(&p.points), &Options::default()).unwrap();
+        let (out, stats) = minimal_tetrahedralization(
+            Domain::Points(&p.points),
+            &Options::default(),
+            &Control::new(),
+        )
+        .unwrap();
         let Outcome::Optimal { tets, .. } = out else {
             panic!()
         };
@@ -340,7 +346,8 @@ fn exact_minimum_matches_brute_force_on_tiny_point_sets() {
             continue;
         }
         let (out, _) =
-            minimal_tetrahedralization(Domain::Points(&pts), &Options::default()).unwrap();
+            minimal_tetrahedralization(Domain::Points(&pts), &Options::default(), &Control::new())
+                .unwrap();
         let Outcome::Optimal { tets, .. } = out else {
             panic!("points always triangulate")
         };

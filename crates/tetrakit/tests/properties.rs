@@ -3,6 +3,8 @@
 //! the brute-force oracle (with shrinking to a minimal counterexample), and exact I/O.
 
 use proptest::prelude::*;
+use tetrakit::control::Control;
+use tetrakit::detect::Options;
 use tetrakit::detect::{detect, oracle::forms_tetrahedralization};
 use tetrakit::generate::{random_flips, tetrahedralize_points};
 use tetrakit::geom::{Frame, Point3, cones_overlap, orient3d, segments_meet};
@@ -98,7 +100,7 @@ proptest! {
                 e.push(key);
             }
         }
-        let d = detect(&t.points, &e).unwrap();
+        let d = detect(&t.points, &e, &Options::default(), &Control::new()).unwrap();
         prop_assert_eq!(d.is_yes(), forms_tetrahedralization(&t.points, &e), "{:?}", d.result.err());
     }
 

@@ -2,6 +2,56 @@
 
 use rayon::prelude::*;
 
+/// A segment list that is not a simple graph on the points.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum SegmentError {
+    /// Segment `segment` (0-based position in the list) names a vertex beyond the points.
+    VertexOutOfRange {
+        /// Position of the segment in the list.
+        segment: usize,
+        /// Its two ends, as given.
+        ends: [u32; 2],
+        /// Number of points.
+        vertices: usize,
+    },
+    /// Segment `segment` joins `vertex` to itself.
+    SelfLoop {
+        /// Position of the segment in the list.
+        segment: usize,
+        /// The vertex.
+        vertex: u32,
+    },
+    /// The segment `ends` is listed more than once.
+    Repeated {
+        /// Its two ends, the smaller first.
+        ends: [u32; 2],
+    },
+}
+
+impl std::fmt::Display for SegmentError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            SegmentError::VertexOutOfRange {
+                segment,
+                ends,
+                vertices,
+            } => write!(
+                f,
+                "segment {segment} ({}, {}) names a vertex beyond the {vertices} points",
+                ends[0], ends[1]
+            ),
+            SegmentError::SelfLoop { segment, vertex } => {
+                write!(f, "segment {segment} joins vertex {vertex} to itself")
+            }
+            SegmentError::Repeated { ends } => {
+                write!(f, "segment ({}, {}) is listed twice", ends[0], ends[1])
+            }
+        }
+    }
+}
+
+impl std::error::Error for SegmentError {}
+
 /// An undirected simple graph on `n` vertices with sorted adjacency lists.
 #[derive(Clone, Debug)]
 pub struct Graph {
@@ -19,19 +69,23 @@ impl Graph {
     /// assert!(g.has_edge(2, 1) && !g.has_edge(0, 2));
     /// assert!(Graph::new(3, &[[0, 1], [1, 0]]).is_err());
     /// ```
-    pub fn new(n: usize, segments: &[[u32; 2]]) -> Result<Graph, String> {
+    pub fn new(n: usize, segments: &[[u32; 2]]) -> Result<Graph, SegmentError> {
         if let Some((k, s)) = segments
             .par_iter()
             .enumerate()
             .find_first(|(_, s)| s[0] as usize >= n || s[1] as usize >= n || s[0] == s[1])
         {
             return Err(if s[0] as usize >= n || s[1] as usize >= n {
-                format!(
-                    "segment {k} ({}, {}) names a vertex beyond the {n} points",
-                    s[0], s[1]
-                )
+                SegmentError::VertexOutOfRange {
+                    segment: k,
+                    ends: *s,
+                    vertices: n,
+                }
             } else {
-                format!("segment {k} joins vertex {} to itself", s[0])
+                SegmentError::SelfLoop {
+                    segment: k,
+                    vertex: s[0],
+                }
             });
         }
         let (deg, mut nbrs) = crate::rows::group(n, segments.len(), |k| {
@@ -47,7 +101,7 @@ impl Graph {
                 .map(|w| (v, w[0]))
         });
         match repeat {
-            Some((v, w)) => Err(format!("segment ({v}, {w}) is listed twice")),
+            Some((v, w)) => Err(SegmentError::Repeated { ends: [v, w] }),
             None => Ok(g),
         }
     }

@@ -27,22 +27,22 @@
 //! edge set of a tetrahedralization), so a failed check is a correct NO; crossing segments
 //! and vertices inside segments are reported as such whenever they are met.
 
+mod coplanar;
 mod delaunay;
 mod graph;
 mod link;
 pub mod oracle;
-mod planar;
 mod rotation;
-mod sweep;
 mod witness;
 
-pub use graph::Graph;
+pub use graph::{Graph, SegmentError};
 pub use link::LinkMethod;
 pub use witness::{Witness, WitnessKind};
-pub use witness::{ids, renumber_text};
 
+use crate::control::{Control, Stopped};
 use crate::geom::{Hull3, Point3};
 use crate::mesh;
+use crate::numbering::ids;
 use link::Ctx;
 use rayon::prelude::*;
 
@@ -110,62 +110,72 @@ impl Detection {
     }
 }
 
+/// Why [`detect`] gave no answer: the segments are malformed, or it was stopped.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum DetectError {
+    /// The segments are not a simple graph on the points (named in the caller's
+    /// numbering).
+    Segments(SegmentError),
+    /// The control was stopped first.
+    Stopped,
+}
+
+impl std::fmt::Display for DetectError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            DetectError::Segments(e) => e.fmt(f),
+            DetectError::Stopped => Stopped.fmt(f),
+        }
+    }
+}
+
+impl std::error::Error for DetectError {}
+
+impl From<SegmentError> for DetectError {
+    fn from(e: SegmentError) -> Self {
+        DetectError::Segments(e)
+    }
+}
+
+impl From<Stopped> for DetectError {
+    fn from(_: Stopped) -> Self {
+        DetectError::Stopped
+    }
+}
+
 /// Decides whether `segments` is exactly the edge set of a tetrahedralization of `points`
 /// (or, when the points are coplanar, of a triangulation). Fails only on malformed
-/// arguments (index out of range, self-loop, repeated segment).
+/// segments (index out of range, self-loop, repeated segment) or when `ctl` stops it.
+/// All [`Options`] give the same verdict; they differ only in work. Progress: the stage
+/// `"vertex links"` and its vertices done, when the thesis's per-vertex algorithm runs.
 ///
 /// ```
-/// use tetrakit::detect::{detect, WitnessKind};
+/// use tetrakit::control::Control;
+/// use tetrakit::detect::{Options, WitnessKind, detect};
 /// let pts = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
 /// let all = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)];
-/// assert!(detect(&pts, &all).unwrap().is_yes());
-/// let no = detect(&pts, &all[..5]).unwrap();
+/// let (opts, ctl) = (Options::default(), Control::new());
+/// assert!(detect(&pts, &all, &opts, &ctl).unwrap().is_yes());
+/// let no = detect(&pts, &all[..5], &opts, &ctl).unwrap();
 /// assert_eq!(no.result.unwrap_err().kind, WitnessKind::MissingHullEdge);
 /// ```
-pub fn detect(points: &[Point3], segments: &[(u32, u32)]) -> Result<Detection, String> {
-    detect_with_progress(points, segments, &|_, _| {})
-}
-
-/// Progress callback: `(vertices done, vertices in all)` during the per-vertex phase.
-pub type Progress<'a> = &'a (dyn Fn(u64, u64) + Sync);
-
-/// [`detect`], reporting progress through the per-vertex phase (called every few thousand
-/// vertices, from any thread).
+///
+/// The thesis's per-vertex route alone, with the sign-table link method:
 ///
 /// ```
-/// use std::sync::atomic::{AtomicU64, Ordering};
-/// let t = tetrakit::generate::kuhn(2);
-/// let last = AtomicU64::new(0);
-/// let d = tetrakit::detect::detect_with_progress(&t.points, &t.edges(), &|done, _| {
-///     last.fetch_max(done, Ordering::Relaxed);
-/// })
-/// .unwrap();
-/// assert!(d.is_yes() && last.load(Ordering::Relaxed) == 27);
-/// ```
-pub fn detect_with_progress(
-    points: &[Point3],
-    segments: &[(u32, u32)],
-    progress: Progress,
-) -> Result<Detection, String> {
-    detect_with(points, segments, Options::default(), progress)
-}
-
-/// [`detect_with_progress`] with a choice of route and of how links are computed. All
-/// choices give the same verdict; they differ only in work.
-///
-/// ```
-/// use tetrakit::detect::{detect_with, LinkMethod, Options, Route};
+/// use tetrakit::control::Control;
+/// use tetrakit::detect::{LinkMethod, Options, Route, detect};
 /// let t = tetrakit::generate::skew_lines(12);
 /// let links_only = Options { delaunay_first: false, links: LinkMethod::SignTable };
-/// let d = detect_with(&t.points, &t.edges(), links_only, &|_, _| {}).unwrap();
+/// let d = detect(&t.points, &t.edges(), &links_only, &Control::new()).unwrap();
 /// assert!(d.is_yes() && d.route == Route::Links);
 /// ```
-pub fn detect_with(
+pub fn detect(
     points: &[Point3],
     segments: &[(u32, u32)],
-    opts: Options,
-    progress: Progress,
-) -> Result<Detection, String> {
+    opts: &Options,
+    ctl: &Control,
+) -> Result<Detection, DetectError> {
     let n = points.len();
     if let Some(k) = segments
         .par_iter()
@@ -185,12 +195,16 @@ pub fn detect_with(
         .par_iter()
         .map(|&(a, b)| [rank[a as usize], rank[b as usize]])
         .collect();
-    let Ok(mut d) = detect_ordered(&pts, &segs, opts, progress) else {
-        // Only a repeated segment gets here: name it in the caller's numbering.
-        let orig: Vec<[u32; 2]> = segments.iter().map(|&(a, b)| [a, b]).collect();
-        return Err(Graph::new(n, &orig)
-            .err()
-            .unwrap_or_else(|| "invalid segments".into()));
+    let mut d = match detect_ordered(&pts, &segs, opts, ctl) {
+        Err(DetectError::Segments(_)) => {
+            // Only a repeated segment gets here: name it in the caller's numbering.
+            let orig: Vec<[u32; 2]> = segments.iter().map(|&(a, b)| [a, b]).collect();
+            return Err(match Graph::new(n, &orig) {
+                Err(e) => e.into(),
+                Ok(_) => unreachable_repeat(),
+            });
+        }
+        other => other?,
     };
     let back = |v: u32| order[v as usize];
     d.result = match d.result {
@@ -201,6 +215,13 @@ pub fn detect_with(
         Err(w) => Err(w.mapped(back)),
     };
     Ok(d)
+}
+
+/// The reordered segments were rejected but the caller's were not: impossible, since
+/// reordering is a bijection of the points. Reported as a repeated segment rather than
+/// a panic.
+fn unreachable_repeat() -> DetectError {
+    DetectError::Segments(SegmentError::Repeated { ends: [0, 0] })
 }
 
 /// Point indices sorted along a Morton (Z-order) curve of the bounding box (a heuristic
@@ -235,9 +256,9 @@ fn spatial_order(points: &[Point3]) -> Vec<u32> {
 fn detect_ordered(
     points: &[Point3],
     segs: &[[u32; 2]],
-    opts: Options,
-    progress: Progress,
-) -> Result<Detection, String> {
+    opts: &Options,
+    ctl: &Control,
+) -> Result<Detection, DetectError> {
     let mut phases = Phases::new();
     let g = Graph::new(points.len(), segs)?;
     phases.mark("graph");
@@ -257,7 +278,7 @@ fn detect_ordered(
         route: Route::Links,
     };
     if hull.dimension == 2 {
-        let (hv, result) = planar::detect(points, &g);
+        let (hv, result) = coplanar::detect(points, &g);
         out.hull_vertices = hv;
         out.result = result;
         return Ok(out);
@@ -276,7 +297,7 @@ fn detect_ordered(
         return Ok(out);
     }
     out.hull_vertices = (0..points.len()).filter(|&i| hull.on_boundary(i)).count();
-    (out.route, out.result) = detect3(points, &g, &hull, out.hull_vertices, opts, progress);
+    (out.route, out.result) = detect3(points, &g, &hull, out.hull_vertices, opts, ctl)?;
     Ok(out)
 }
 
@@ -300,9 +321,9 @@ fn detect3(
     g: &Graph,
     hull: &Hull3,
     hull_vertices: usize,
-    opts: Options,
-    progress: Progress,
-) -> (Route, Result<Cells, Witness>) {
+    opts: &Options,
+    ctl: &Control,
+) -> Result<(Route, Result<Cells, Witness>), Stopped> {
     let mut phases = Phases::new();
     if opts.delaunay_first {
         let proposed = delaunay::propose(points, g);
@@ -315,14 +336,12 @@ fn detect3(
             && certify(points, g, hull, &tets).is_ok()
         {
             phases.mark("verify");
-            return (Route::Delaunay, Ok(Cells::Tetrahedra(tets)));
+            return Ok((Route::Delaunay, Ok(Cells::Tetrahedra(tets))));
         }
         phases.mark("verify");
+        ctl.check()?;
     }
-    (
-        Route::Links,
-        links_route(points, g, hull, opts.links, progress),
-    )
+    Ok((Route::Links, links_route(points, g, hull, opts.links, ctl)?))
 }
 
 /// `T` is a tetrahedralization of the hull of the points ([`mesh::verify`]) and
@@ -347,11 +366,15 @@ fn links_route(
     g: &Graph,
     hull: &Hull3,
     method: LinkMethod,
-    progress: Progress,
-) -> Result<Cells, Witness> {
+    ctl: &Control,
+) -> Result<Result<Cells, Witness>, Stopped> {
     let mut phases = Phases::new();
-    connectivity(g)?;
-    rotation::check_chains(hull.polytope_edges(points), g)?;
+    if let Err(w) =
+        connectivity(g).and_then(|_| rotation::check_chains(hull.polytope_edges(points), g))
+    {
+        return Ok(Err(w));
+    }
+    ctl.stage("vertex links");
     phases.mark("connectivity and hull edges");
     let counter = std::sync::atomic::AtomicU64::new(0);
     let ctx = Ctx {
@@ -380,7 +403,10 @@ fn links_route(
             |(mut chunk, mut worst): (LinkChunk, Option<(u32, Witness)>), v| {
                 let done = counter.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
                 if done.is_multiple_of(8192) || done == n as u64 {
-                    progress(done, n as u64);
+                    ctl.items(done, n as u64);
+                }
+                if ctl.is_stopped() {
+                    return (chunk, worst);
                 }
                 if chunk.first == u32::MAX {
                     chunk.first = v;
@@ -397,13 +423,14 @@ fn links_route(
             },
         )
         .collect();
+    ctl.check()?;
     let witness = pieces
         .iter()
         .filter_map(|(_, w)| w.as_ref())
         .min_by_key(|(v, w)| (w.rank(), *v))
         .map(|(_, w)| w.clone());
     if let Some(w) = witness {
-        return Err(sharpen(points, g, w));
+        return Ok(Err(sharpen(points, g, w)));
     }
     let mut links = Links::new(
         pieces
@@ -413,11 +440,14 @@ fn links_route(
             .collect(),
     );
     phases.mark("links");
-    let tets = confirm(&mut links).map_err(|w| sharpen(points, g, w))?;
+    let tets = match confirm(&mut links) {
+        Ok(t) => t,
+        Err(w) => return Ok(Err(sharpen(points, g, w))),
+    };
     phases.mark("confirm");
-    certify(points, g, hull, &tets)?;
+    let certified = certify(points, g, hull, &tets);
     phases.mark("verify");
-    Ok(Cells::Tetrahedra(tets))
+    Ok(certified.map(|_| Cells::Tetrahedra(tets)))
 }
 
 /// Replaces a witness that rests on a failed check by two crossing segments or a vertex
@@ -693,7 +723,10 @@ mod tests {
         ];
         let tet = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)];
         pts.push([0.2, 0.2, 0.2]);
-        let w = detect(&pts, &tet).unwrap().result.unwrap_err();
+        let w = detect(&pts, &tet, &Options::default(), &Control::new())
+            .unwrap()
+            .result
+            .unwrap_err();
         assert_eq!(w.kind, WitnessKind::Disconnected);
         assert!(w.detail.contains("#4 is on no segment"), "{}", w.detail);
         // Two tetrahedra, far apart, not joined.
@@ -701,14 +734,23 @@ mod tests {
         two.extend(pts[..4].iter().map(|p| [p[0] + 5.0, p[1], p[2]]));
         let mut e = tet.to_vec();
         e.extend(tet.iter().map(|&(a, b)| (a + 4, b + 4)));
-        let w = detect(&two, &e).unwrap().result.unwrap_err();
+        let w = detect(&two, &e, &Options::default(), &Control::new())
+            .unwrap()
+            .result
+            .unwrap_err();
         assert_eq!(w.kind, WitnessKind::Disconnected);
     }
 
     #[test]
     fn collinear_points_are_degenerate() {
         let pts = [[0.0, 0.0, 0.0], [1.0, 1.0, 1.0], [2.0, 2.0, 2.0]];
-        let d = detect(&pts, &[(0, 1), (1, 2)]).unwrap();
+        let d = detect(
+            &pts,
+            &[(0, 1), (1, 2)],
+            &Options::default(),
+            &Control::new(),
+        )
+        .unwrap();
         assert_eq!(d.result.unwrap_err().kind, WitnessKind::Degenerate);
     }
 }

@@ -1,5 +1,6 @@
 //! Certificates of a NO answer.
 
+use crate::numbering::map_text;
 use serde::Serialize;
 use std::fmt;
 
@@ -107,34 +108,4 @@ impl Witness {
             _ => 1,
         }
     }
-}
-
-/// Adds `base` to every `#<digits>` vertex number in `text`.
-pub fn renumber_text(text: &str, base: u32) -> String {
-    map_text(text, |v| v + base)
-}
-
-/// Renames every `#<digits>` vertex number `v` in `text` to `f(v)`.
-fn map_text(text: &str, f: impl Fn(u32) -> u32) -> String {
-    let mut out = String::with_capacity(text.len());
-    let mut rest = text;
-    while let Some(i) = rest.find('#') {
-        out.push_str(&rest[..=i]);
-        rest = &rest[i + 1..];
-        let digits = rest.bytes().take_while(u8::is_ascii_digit).count();
-        if let Ok(x) = rest[..digits].parse::<u32>() {
-            out.push_str(&f(x).to_string());
-        } else {
-            out.push_str(&rest[..digits]);
-        }
-        rest = &rest[digits..];
-    }
-    out.push_str(rest);
-    out
-}
-
-/// Formats vertex numbers as `[#1, #2, #3]`.
-pub fn ids(v: &[u32]) -> String {
-    let parts: Vec<String> = v.iter().map(|x| format!("#{x}")).collect();
-    format!("[{}]", parts.join(", "))
 }

@@ -37,18 +37,17 @@ mod encode;
 
 pub use encode::Domain;
 
+use crate::control::Control;
+use crate::mesh;
 use encode::{Candidates, anchor, candidates};
 use rustsat::encodings::card::{BoundUpper, BoundUpperIncremental, Totalizer};
 use rustsat::instances::{BasicVarManager, ManageVars};
 use rustsat::solvers::{Solve, SolveIncremental, SolverResult};
 use rustsat::types::{Clause, Lit, TernaryVal};
-use std::time::{Duration, Instant};
 
 /// Options of [`minimal_tetrahedralization`].
 #[derive(Clone, Debug, Default)]
 pub struct Options {
-    /// Stop after this long (answer [`Outcome::Undecided`]).
-    pub time_limit: Option<Duration>,
     /// Also decide whether the minimum is attained by only one tetrahedralization.
     pub unique: bool,
     /// Stop at the first tetrahedralization found (decides existence only; the answer
@@ -76,7 +75,8 @@ pub enum Outcome {
     },
     /// No tetrahedralization exists (the formula is unsatisfiable).
     Infeasible,
-    /// The time limit was hit; the best bounds on the minimum number of tetrahedra.
+    /// The control was stopped (a time limit) first: the best bounds on the minimum
+    /// number of tetrahedra.
     Undecided {
         /// The best tetrahedralization found, if any.
         best: Option<Vec<[u32; 4]>>,
@@ -126,42 +126,64 @@ impl std::fmt::Display for ExactError {
 
 impl std::error::Error for ExactError {}
 
-/// The largest input the candidate enumeration accepts.
-pub const MAX_VERTICES: usize = 60;
-
-/// Deadline for the SAT solver's periodic stop check.
-#[derive(Default)]
-struct Deadline(Option<Instant>);
-
-impl batsat::Callbacks for Deadline {
-    fn stop(&self) -> bool {
-        self.0.is_some_and(|d| Instant::now() >= d)
+impl Domain<'_> {
+    /// Certifies that `tets` tetrahedralize this domain: the convex hull with every point
+    /// a vertex ([`mesh::certify_hull`]), or the polyhedron
+    /// ([`mesh::certify_polyhedron`]). Returns the first problem found.
+    ///
+    /// ```
+    /// use tetrakit::exact::Domain;
+    /// let pts = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    /// assert!(Domain::Points(&pts).certify(&[[0, 1, 2, 3]]).is_ok());
+    /// ```
+    pub fn certify(&self, tets: &[[u32; 4]]) -> Result<(), mesh::Problem> {
+        match self {
+            Domain::Points(p) => mesh::certify_hull(p, tets),
+            Domain::Polyhedron(p) => mesh::certify_polyhedron(p, tets),
+        }
     }
 }
 
-type Solver = rustsat_batsat::Solver<Deadline>;
+/// The largest input the candidate enumeration accepts.
+pub const MAX_VERTICES: usize = 60;
+
+/// The run-control, asked by the SAT solver at its periodic stop check.
+#[derive(Default)]
+struct Stop(Control);
+
+impl batsat::Callbacks for Stop {
+    fn stop(&self) -> bool {
+        self.0.is_stopped()
+    }
+}
+
+type Solver = rustsat_batsat::Solver<Stop>;
 
 /// The minimum number of tetrahedra over all tetrahedralizations of `domain` without
-/// Steiner points, with one that attains it, or a proof that none exists.
+/// Steiner points, with one that attains it, or a proof that none exists. Once `ctl`
+/// is stopped (the SAT solver asks it at its periodic checks) the answer is
+/// [`Outcome::Undecided`] with the best bounds found.
 ///
 /// ```
+/// use tetrakit::control::Control;
 /// use tetrakit::exact::{Domain, Options, Outcome, minimal_tetrahedralization};
 /// use tetrakit::polyhedra::generate;
+/// let (opts, ctl) = (Options::default(), Control::new());
 /// // Schönhardt's polyhedron has no tetrahedralization.
 /// let s = generate::schonhardt();
-/// let (out, _) = minimal_tetrahedralization(Domain::Polyhedron(&s), &Options::default()).unwrap();
+/// let (out, _) = minimal_tetrahedralization(Domain::Polyhedron(&s), &opts, &ctl).unwrap();
 /// assert_eq!(out, Outcome::Infeasible);
 /// // A cube's corners: 5 tetrahedra at least.
 /// let cube: Vec<[f64; 3]> = (0..8).map(|i| [(i & 1) as f64, ((i >> 1) & 1) as f64, (i >> 2) as f64]).collect();
-/// let (out, _) = minimal_tetrahedralization(Domain::Points(&cube), &Options::default()).unwrap();
+/// let (out, _) = minimal_tetrahedralization(Domain::Points(&cube), &opts, &ctl).unwrap();
 /// let Outcome::Optimal { tets, .. } = out else { panic!() };
 /// assert_eq!(tets.len(), 5);
 /// ```
 pub fn minimal_tetrahedralization(
     domain: Domain,
     options: &Options,
+    ctl: &Control,
 ) -> Result<(Outcome, Stats), ExactError> {
-    let start = Instant::now();
     let pts = domain.points();
     if pts.len() > MAX_VERTICES {
         return Err(ExactError::TooLarge(pts.len()));
@@ -180,9 +202,7 @@ pub fn minimal_tetrahedralization(
         calls: 0,
     };
     let mut solver = Solver::default();
-    if let Some(limit) = options.time_limit {
-        solver.batsat_mut().cb_mut().0 = Some(start + limit);
-    }
+    solver.batsat_mut().cb_mut().0 = ctl.clone();
     let mut vars = BasicVarManager::default();
     let tet_lits: Vec<Lit> = (0..cand.tets.len()).map(|_| vars.new_lit()).collect();
     let anchor = match domain {

@@ -278,10 +278,12 @@ pub enum Corruption {
 /// added segment crosses, overlaps or passes through something.
 ///
 /// ```
+/// use tetrakit::control::Control;
+/// use tetrakit::detect::{Options, detect};
 /// use tetrakit::generate::{Corruption, corrupt_edges, kuhn};
 /// let t = kuhn(2);
 /// let e = corrupt_edges(&t.points, &t.edges(), Corruption::AddCrossing, 1).unwrap();
-/// assert!(!tetrakit::detect::detect(&t.points, &e).unwrap().is_yes());
+/// assert!(!detect(&t.points, &e, &Options::default(), &Control::new()).unwrap().is_yes());
 /// ```
 pub fn corrupt_edges(
     points: &[Point3],

@@ -15,8 +15,10 @@ mod planar;
 mod tetgen;
 mod write;
 
-pub use planar::{Svg, write_planar_edges, write_planar_triangulation, write_points2d};
-pub use write::{write_edges, write_mesh, write_surface, write_vtk};
+pub use planar::{Svg, keil_svg, write_planar_edges, write_planar_triangulation, write_points2d};
+pub use write::{
+    write_edges, write_instance, write_mesh, write_surface, write_triangulation, write_vtk,
+};
 
 use crate::geom::{Point3, coordinate_in_range, lex_cmp};
 use rayon::prelude::*;

@@ -197,3 +197,32 @@ text {{ font: 14px sans-serif; fill: #111 }}
         )
     }
 }
+
+/// The picture of the Keil construction (thesis §5.2): the sites, the β-disks through
+/// `x` and `y`, the MWT, and `xy`, as SVG text.
+pub fn keil_svg(k: &crate::planar::KeilResult) -> String {
+    let (x, y) = (k.sites[k.xy[0] as usize], k.sites[k.xy[1] as usize]);
+    let mut view = k.sites.clone();
+    let b = k.beta.to_f64();
+    let h = (b * b - 1.0).sqrt();
+    view.extend([[-b, h + b], [b, -h - b]]);
+    let mut svg = Svg::new(&view);
+    for c in [[0.0, h], [0.0, -h]] {
+        svg.circle(&c, b, "disk");
+    }
+    for e in &k.mwt {
+        svg.line(&k.sites[e[0] as usize], &k.sites[e[1] as usize], "mwt");
+    }
+    svg.line(&x, &y, "xy");
+    for p in &k.sites {
+        svg.site(p);
+    }
+    svg.label(&x, "x");
+    svg.label(&y, "y");
+    svg.finish(&format!(
+        "β = {}: xy (dashed red) {} the β-skeleton, {} the MWT (blue); disks: the β-region of xy",
+        k.beta,
+        if k.xy_in_skeleton { "in" } else { "not in" },
+        if k.xy_in_mwt { "in" } else { "not in" }
+    ))
+}

@@ -194,3 +194,50 @@ pub fn write_surface(
         ))),
     }
 }
+
+/// Writes a triangulation of coplanar points in space (`detect` on planar input):
+/// `.json` (`points` and `triangles`), or `.off` / `.obj` as a surface.
+///
+/// ```
+/// let path = std::env::temp_dir().join("tetrakit-doc-triangulation.json");
+/// let pts = [[0.0, 0.0, 1.0], [1.0, 0.0, 1.0], [0.0, 1.0, 1.0]];
+/// tetrakit::io::write_triangulation(&path, &pts, &[[0, 1, 2]]).unwrap();
+/// assert!(std::fs::read_to_string(&path).unwrap().contains("\"triangles\":[[0,1,2]]"));
+/// ```
+pub fn write_triangulation(
+    path: &Path,
+    points: &[Point3],
+    triangles: &[[u32; 3]],
+) -> io::Result<()> {
+    match ext(path).as_str() {
+        "json" => save(
+            path,
+            serde_json::json!({ "points": points, "triangles": triangles }).to_string(),
+        ),
+        "off" | "obj" => write_surface(path, points, triangles, 1),
+        other => Err(unsupported(other, ".json, .off or .obj")),
+    }
+}
+
+/// Writes a generated instance (points, the segments to test, the tetrahedra they came
+/// from), the format chosen by the extension: `.ele` (`.node`, `.ele` and `.edge`, from
+/// 1), `.vtk` (the tetrahedra), `.json` (`points`, `segments`, `tets`), otherwise the
+/// segments ([`write_edges`]: `.edge`, `.obj`).
+pub fn write_instance(
+    path: &Path,
+    points: &[Point3],
+    tets: &[[u32; 4]],
+    segments: &[(u32, u32)],
+) -> io::Result<()> {
+    match ext(path).as_str() {
+        "ele" => write_mesh(path, points, tets, 1)
+            .and_then(|_| write_edges(&path.with_extension("edge"), points, segments, 1)),
+        "vtk" => write_mesh(path, points, tets, 0),
+        "json" => {
+            let segs: Vec<[u32; 2]> = segments.iter().map(|&(a, b)| [a, b]).collect();
+            let v = serde_json::json!({ "points": points, "segments": segs, "tets": tets });
+            save(path, v.to_string())
+        }
+        _ => write_edges(path, points, segments, 1),
+    }
+}

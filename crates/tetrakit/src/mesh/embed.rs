@@ -20,9 +20,9 @@
 //! component against every tetrahedron near it, exactly.
 
 use super::grid::{Aabb, TriangleGrid, aabb, boxes_meet};
-use super::verify::{Problem, ProblemKind};
-use crate::detect::ids;
+use super::report::{Problem, ProblemKind};
 use crate::geom::{Point3, cones_overlap, point_in_closed_tetrahedron};
+use crate::numbering::ids;
 use rayon::prelude::*;
 
 /// Overlaps near vertices. `tets` are positively oriented (degenerate ones are skipped by
@@ -77,7 +77,7 @@ pub(super) fn vertex_overlaps(
                     if cones_overlap(&points[v], &ct, &cone(u)) {
                         return Some(Problem {
                             kind: ProblemKind::Overlap,
-                            tets: vec![t, u],
+                            cells: vec![t, u],
                             vertices: vec![v as u32],
                             detail: format!(
                                 "tetrahedra #{t} and #{u} overlap near their common vertex #{v}"
@@ -160,7 +160,7 @@ pub(super) fn boundary_self_intersections(
             let (fi, fj) = (&faces[i], &faces[j]);
             Problem {
                 kind: ProblemKind::BoundarySelfIntersection,
-                tets: vec![fi.1, fj.1],
+                cells: vec![fi.1, fj.1],
                 vertices: fi.0.iter().chain(&fj.0).copied().collect(),
                 detail: format!(
                     "boundary faces {} (of tetrahedron #{}) and {} (of tetrahedron #{}) intersect",
@@ -215,7 +215,7 @@ pub(super) fn nested_overlaps(
             });
             found.map(|t| Problem {
                 kind: ProblemKind::Overlap,
-                tets: vec![t, own],
+                cells: vec![t, own],
                 vertices: vec![v],
                 detail: format!(
                     "vertex {v} of a boundary component lies in tetrahedron {t} ({}): a separate piece of mesh overlaps another",

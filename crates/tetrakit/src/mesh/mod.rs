@@ -1,18 +1,22 @@
 //! Tetrahedral meshes and their independent certificate check.
 //!
 //! [`verify`] is the check that every tetrahedralization tetrakit prints must pass
-//! (DESIGN.md, non-negotiable 3). It shares no code with the algorithms that produce
+//! (ARCHITECTURE.md, "Invariants"). It shares no code with the algorithms that produce
 //! tetrahedra, only the exact predicates of [`crate::geom`].
 
+mod certify;
 mod embed;
 pub(crate) mod grid;
+mod report;
 pub(crate) mod surface;
 mod verify;
-mod verify2;
+mod verify_planar;
 
+pub use certify::{certify_hull, certify_polyhedron};
+pub use report::{Problem, ProblemKind, Report};
 pub use surface::{Polyhedron, SurfaceError};
-pub use verify::{Problem, ProblemKind, Report, verify};
-pub use verify2::verify_triangulation;
+pub use verify::verify;
+pub use verify_planar::verify_triangulation;
 
 use crate::geom::{Point3, orient3d};
 

@@ -19,102 +19,11 @@
 //! cover the hull, and pairing excludes hanging vertices.
 
 use super::embed;
-use crate::detect::ids;
+use super::report::{Problem, ProblemKind, Report};
 use crate::geom::{Hull3, Point3, coplanar_triangles_overlap, orient3d};
+use crate::numbering::ids;
 use crate::rows::split_at_offsets;
 use rayon::prelude::*;
-use serde::Serialize;
-use std::fmt;
-
-/// What is wrong with a mesh.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum ProblemKind {
-    /// A vertex index is out of range.
-    BadIndex,
-    /// A tetrahedron repeats a vertex.
-    RepeatedVertex,
-    /// A tetrahedron has zero volume.
-    Degenerate,
-    /// A tetrahedron is negatively oriented.
-    Inverted,
-    /// A triangle is a face of three or more tetrahedra.
-    FaceSharedByMore,
-    /// Two tetrahedra sharing a face lie on the same side of it (they overlap).
-    SameSide,
-    /// The boundary faces do not form a closed surface.
-    OpenBoundary,
-    /// A boundary face does not lie on the convex hull.
-    BoundaryNotOnHull,
-    /// Tetrahedra overlap (the mesh covers part of the hull more than once).
-    Overlap,
-    /// A point is not a vertex of any tetrahedron.
-    UnusedVertex,
-    /// Two boundary faces intersect: the boundary surface is not embedded.
-    BoundarySelfIntersection,
-}
-
-impl fmt::Display for ProblemKind {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let s = serde_json::to_value(self).ok();
-        write!(
-            f,
-            "{}",
-            s.as_ref().and_then(|v| v.as_str()).unwrap_or("problem")
-        )
-    }
-}
-
-/// One problem, naming the tetrahedra (indices into the tet list) and vertices involved.
-#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
-pub struct Problem {
-    /// What is wrong.
-    pub kind: ProblemKind,
-    /// Offending tetrahedra.
-    pub tets: Vec<u32>,
-    /// Vertices involved (e.g. the shared face).
-    pub vertices: Vec<u32>,
-    /// A sentence for a person.
-    pub detail: String,
-}
-
-/// The result of [`verify`].
-#[derive(Clone, Debug, Default, Serialize)]
-pub struct Report {
-    /// Problems found (at most [`Report::LIMIT`] are kept).
-    pub problems: Vec<Problem>,
-    /// Total number of problems found, kept or not.
-    pub problem_count: usize,
-    /// Number of boundary (unpaired) faces.
-    pub boundary_faces: usize,
-}
-
-impl Report {
-    /// How many problems are kept in detail.
-    pub const LIMIT: usize = 1000;
-
-    /// Shifts tetrahedron and vertex numbers by `base` (fields and `#12` numbers in the text).
-    pub fn renumbered(mut self, base: u32) -> Self {
-        for p in &mut self.problems {
-            p.tets.iter_mut().for_each(|t| *t += base);
-            p.vertices.iter_mut().for_each(|v| *v += base);
-            p.detail = crate::detect::renumber_text(&p.detail, base);
-        }
-        self
-    }
-
-    /// True when no problem was found: the mesh is certified.
-    pub fn is_valid(&self) -> bool {
-        self.problem_count == 0
-    }
-
-    pub(crate) fn push(&mut self, p: Problem) {
-        self.problem_count += 1;
-        if self.problems.len() < Self::LIMIT {
-            self.problems.push(p);
-        }
-    }
-}
 
 /// Verifies `tets` over `points`. With `hull` given, also certifies that the tetrahedra
 /// tetrahedralize the convex hull of *all* points (see the module docs for why the
@@ -184,15 +93,6 @@ fn check_embedding(
     }
 }
 
-fn problem(kind: ProblemKind, tets: Vec<u32>, vertices: Vec<u32>, detail: String) -> Problem {
-    Problem {
-        kind,
-        tets,
-        vertices,
-        detail,
-    }
-}
-
 /// Index, repeated-vertex and orientation problems, and the orientation of every
 /// tetrahedron (0 when it is degenerate or malformed), computed once for the face pairing.
 /// The orientations are computed first and problems only for the tetrahedra whose sign
@@ -228,11 +128,11 @@ fn repeats(t: &[u32; 4]) -> bool {
 fn tet_problem(i: u32, t: &[u32; 4], sign: i8, n: u32) -> Problem {
     if let Some(&v) = t.iter().find(|&&v| v >= n) {
         let d = format!("tetrahedron #{i} names vertex #{v}, but there are {n} points");
-        return problem(ProblemKind::BadIndex, vec![i], vec![v], d);
+        return Problem::new(ProblemKind::BadIndex, vec![i], vec![v], d);
     }
     if repeats(t) {
         let d = format!("tetrahedron #{i} repeats a vertex: {}", ids(t));
-        return problem(ProblemKind::RepeatedVertex, vec![i], t.to_vec(), d);
+        return Problem::new(ProblemKind::RepeatedVertex, vec![i], t.to_vec(), d);
     }
     let (kind, what) = if sign == 0 {
         (
@@ -243,7 +143,7 @@ fn tet_problem(i: u32, t: &[u32; 4], sign: i8, n: u32) -> Problem {
         (ProblemKind::Inverted, "is negatively oriented")
     };
     let d = format!("tetrahedron #{i} {} {what}", ids(t));
-    problem(kind, vec![i], t.to_vec(), d)
+    Problem::new(kind, vec![i], t.to_vec(), d)
 }
 
 /// A boundary face, oriented outward, with its tetrahedron.
@@ -340,7 +240,12 @@ fn pair_bucket(a: u32, recs: &mut [[u32; 3]]) -> (Vec<BoundaryFace>, Vec<Problem
                     tets[1],
                     ids(&face)
                 );
-                problems.push(problem(ProblemKind::SameSide, tets, face.to_vec(), detail));
+                problems.push(Problem::new(
+                    ProblemKind::SameSide,
+                    tets,
+                    face.to_vec(),
+                    detail,
+                ));
             }
             k => {
                 let tets = tets();
@@ -350,7 +255,7 @@ fn pair_bucket(a: u32, recs: &mut [[u32; 3]]) -> (Vec<BoundaryFace>, Vec<Problem
                     ids(&tets)
                 );
                 let kind = ProblemKind::FaceSharedByMore;
-                problems.push(problem(kind, tets, face.to_vec(), detail));
+                problems.push(Problem::new(kind, tets, face.to_vec(), detail));
             }
         }
         i = j;
@@ -376,7 +281,7 @@ fn check_closed(boundary: &[BoundaryFace]) -> Vec<Problem> {
         }
         let (fw, bw) = (count(a, b), count(b, a));
         if fw != 1 || bw != 1 {
-            problems.push(problem(
+            problems.push(Problem::new(
                 ProblemKind::OpenBoundary,
                 vec![t],
                 vec![a, b],
@@ -402,7 +307,7 @@ fn check_hull(
     }
     for (v, _) in used.iter().enumerate().filter(|(_, u)| !**u) {
         let v = v as u32;
-        problems.push(problem(
+        problems.push(Problem::new(
             ProblemKind::UnusedVertex,
             vec![],
             vec![v],
@@ -415,7 +320,7 @@ fn check_hull(
         .collect();
     for (f, facet) in boundary.iter().zip(&facets) {
         if facet.is_none() {
-            problems.push(problem(
+            problems.push(Problem::new(
                 ProblemKind::BoundaryNotOnHull,
                 vec![f.tet],
                 f.v.to_vec(),
@@ -431,7 +336,7 @@ fn check_hull(
     let tri = |f: &BoundaryFace| f.v.map(|i| points[i as usize]);
     for (g, facet) in boundary.iter().zip(&facets).skip(1) {
         if *facet == facets[0] && coplanar_triangles_overlap(&tri(f0), &tri(g)) {
-            problems.push(problem(
+            problems.push(Problem::new(
                 ProblemKind::Overlap,
                 vec![f0.tet, g.tet],
                 f0.v.iter().chain(&g.v).copied().collect(),
@@ -557,7 +462,7 @@ mod tests {
             r.problems
                 .iter()
                 .filter(|p| p.kind == kind)
-                .map(|p| (p.tets.clone(), p.vertices.clone()))
+                .map(|p| (p.cells.clone(), p.vertices.clone()))
                 .collect()
         };
         let r = run(&[[0, 1, 2, 3]]);
@@ -617,7 +522,7 @@ mod tests {
         assert!(
             r.problems
                 .iter()
-                .any(|p| p.tets.contains(&(tets.len() as u32 - 1)))
+                .any(|p| p.cells.contains(&(tets.len() as u32 - 1)))
         );
     }
 

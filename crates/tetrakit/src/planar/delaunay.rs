@@ -101,7 +101,10 @@ pub fn delaunay(points: &[Point2]) -> Result<Delaunay, PlanarError> {
     Ok(Delaunay { triangles, edges })
 }
 
+/// spade's triangulation of checked coordinates; coinciding sites are an error naming
+/// two of them.
 fn triangulate(points: &[Point2]) -> Result<DelaunayTriangulation<Site>, PlanarError> {
+    super::check_coordinates(points)?;
     let sites: Vec<Site> = points
         .iter()
         .enumerate()
@@ -110,10 +113,17 @@ fn triangulate(points: &[Point2]) -> Result<DelaunayTriangulation<Site>, PlanarE
             index: i as u32,
         })
         .collect();
-    let dt = DelaunayTriangulation::<Site>::bulk_load(sites)
-        .map_err(|e| PlanarError::new(format!("Delaunay triangulation failed: {e:?}")))?;
+    let dt = DelaunayTriangulation::<Site>::bulk_load(sites).map_err(|e| {
+        PlanarError::internal(format!("spade's Delaunay triangulation failed: {e:?}"))
+    })?;
     if dt.num_vertices() != points.len() {
-        return Err(PlanarError::new("duplicate points"));
+        return Err(match super::coincident_sites(points) {
+            Some(sites) => PlanarError::CoincidentSites {
+                sites,
+                point: points[sites[0] as usize],
+            },
+            None => PlanarError::internal("spade merged distinct sites"),
+        });
     }
     Ok(dt)
 }
@@ -131,8 +141,8 @@ fn locally_delaunay(points: &[Point2], p: u32, q: u32, l: Option<u32>, r: Option
 }
 
 fn not_delaunay(p: u32, q: u32) -> PlanarError {
-    PlanarError::new(format!(
-        "internal: the Delaunay triangulation fails the empty-circle test at edge {p}-{q}"
+    PlanarError::internal(format!(
+        "the Delaunay triangulation fails the empty-circle test at edge {p}-{q}"
     ))
 }
 

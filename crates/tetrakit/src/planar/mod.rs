@@ -11,11 +11,11 @@
 //! oracle the exact stages are tested against.
 
 mod delaunay;
+mod error;
 mod forced;
 mod generate;
 mod grid;
 mod keil;
-mod lens;
 mod mwt;
 mod oracle;
 mod skeleton;
@@ -24,15 +24,16 @@ use crate::geom::Point2;
 use rayon::prelude::*;
 
 pub use delaunay::{Delaunay, DelaunayEdge, delaunay};
+pub use error::PlanarError;
 pub use forced::{Blocker, blocked_pairs, edge_blocker};
 pub use generate::{Distribution, points2d};
 pub use keil::{KeilResult, above_cheng_xu, check_random, in_keil_interval, keil, keil_sites};
 pub use mwt::{
-    Mwt, MwtBounds, MwtOptions, MwtStage, MwtStats, candidate_edges, cmp_edge_sets, mwt,
-    mwt_bounds, mwt_with, mwt_with_progress, mwt_with_stop, weight_of,
+    Mwt, MwtBounds, MwtOptions, MwtStats, candidate_edges, cmp_edge_sets, mwt, mwt_bounds,
+    mwt_stage, weight_of,
 };
 pub use oracle::triangulations;
-pub use skeleton::{Region, Skeleton, beta_skeleton, beta_skeleton_with_progress};
+pub use skeleton::{Region, Skeleton, beta_skeleton};
 
 /// Union-find root with path halving (cells of cocircular Delaunay triangles, faces of
 /// the certain edges).
@@ -59,10 +60,10 @@ pub(crate) fn check_coordinates(points: &[Point2]) -> Result<(), PlanarError> {
         .position(|p| !p.iter().all(|&x| crate::geom::coordinate_in_range(x)))
     {
         None => Ok(()),
-        Some(i) => Err(PlanarError::new(format!(
-            "site {i} ({:?}) has a coordinate that is not finite or outside the exactly supported magnitude range [2^-142, 2^201]",
-            points[i]
-        ))),
+        Some(i) => Err(PlanarError::CoordinateOutOfRange {
+            site: i as u32,
+            point: points[i],
+        }),
     }
 }
 
@@ -71,10 +72,10 @@ pub(crate) fn check_sites(points: &[Point2]) -> Result<(), PlanarError> {
     check_coordinates(points)?;
     match coincident_sites(points) {
         None => Ok(()),
-        Some([a, b]) => Err(PlanarError::new(format!(
-            "sites {a} and {b} coincide at {:?}",
-            points[a as usize]
-        ))),
+        Some(sites) => Err(PlanarError::CoincidentSites {
+            sites,
+            point: points[sites[0] as usize],
+        }),
     }
 }
 
@@ -98,22 +99,3 @@ pub fn coincident_sites(points: &[Point2]) -> Option<[u32; 2]> {
         .find(|w| key(w[0]) == key(w[1]))
         .map(|w| [w[0].min(w[1]), w[0].max(w[1])])
 }
-
-/// An error of a planar computation (bad parameters or an internal inconsistency).
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct PlanarError(pub String);
-
-impl PlanarError {
-    /// An error with a message.
-    pub fn new(message: impl Into<String>) -> Self {
-        PlanarError(message.into())
-    }
-}
-
-impl std::fmt::Display for PlanarError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&self.0)
-    }
-}
-
-impl std::error::Error for PlanarError {}

@@ -47,9 +47,7 @@ fn outside(mut pt: Point2, dir: Point2, x: &Point2, y: &Point2, beta: Ratio) -> 
 /// The site builder (sites for a given `n`) and Lemma 5.8's bound on `n`.
 pub(super) fn construction(beta: Ratio) -> Result<(Builder, f64), PlanarError> {
     if !in_keil_interval(beta) {
-        return Err(PlanarError::new(format!(
-            "β = {beta} is outside [2/√3, √(2√3+45)/6) ≈ [1.154701, 1.160274): the construction of §5.2 does not apply"
-        )));
+        return Err(PlanarError::BetaOutsideKeilInterval { beta });
     }
     let (x, y) = ([-1.0, 0.0], [1.0, 0.0]);
     let s3 = 3f64.sqrt();
@@ -92,9 +90,7 @@ pub(super) fn construction(beta: Ratio) -> Result<(Builder, f64), PlanarError> {
         .into_iter()
         .fold(f64::INFINITY, f64::min);
     if delta.is_nan() || delta <= 1e-9 {
-        return Err(PlanarError::new(format!(
-            "β = {beta} is so close to the upper end that δ = {delta:.3e} is below double precision's reach"
-        )));
+        return Err(PlanarError::BetaTooCloseToUpperEnd { beta, delta });
     }
     let alpha = pr + dist(p, y) - 2.0 * dist(p, q_prime);
     let (p1r1, xs) = (pr, dist(x, s_prime));

@@ -24,7 +24,8 @@
 mod construction;
 mod split;
 
-use super::{MwtOptions, PlanarError, cmp_edge_sets, mwt, mwt_with, weight_of};
+use super::{MwtOptions, PlanarError, cmp_edge_sets, mwt, weight_of};
+use crate::control::Control;
 use crate::geom::{Interval, Point2, Ratio, in_beta_region};
 use construction::construction;
 use num_bigint::{BigInt, Sign};
@@ -89,7 +90,11 @@ pub struct KeilResult {
 /// are those of the sites on each side plus `x` and `y`, so it is the union of two
 /// unconstrained MWTs (the diamond test applies to each). Otherwise the constrained
 /// solver over all segments.
-fn best_with_chord(sites: &[Point2], xy: [u32; 2]) -> Result<super::Mwt, PlanarError> {
+fn best_with_chord(
+    sites: &[Point2],
+    xy: [u32; 2],
+    ctl: &Control,
+) -> Result<super::Mwt, PlanarError> {
     let (x, y) = (&sites[xy[0] as usize], &sites[xy[1] as usize]);
     let hull = crate::geom::Hull2::new(sites);
     let side: Vec<i8> = sites
@@ -99,13 +104,11 @@ fn best_with_chord(sites: &[Point2], xy: [u32; 2]) -> Result<super::Mwt, PlanarE
     let on_line = (0..sites.len()).any(|i| side[i] == 0 && i as u32 != xy[0] && i as u32 != xy[1]);
     let on_hull = hull.vertices.contains(&xy[0]) && hull.vertices.contains(&xy[1]);
     if on_line || !on_hull {
-        return mwt_with(
-            sites,
-            &MwtOptions {
-                forced: vec![xy],
-                ..Default::default()
-            },
-        );
+        let forced = MwtOptions {
+            forced: vec![xy],
+            ..Default::default()
+        };
+        return mwt(sites, &forced, ctl);
     }
     let mut edges = vec![xy];
     for sign in [1i8, -1] {
@@ -116,7 +119,7 @@ fn best_with_chord(sites: &[Point2], xy: [u32; 2]) -> Result<super::Mwt, PlanarE
             continue;
         }
         let pts: Vec<Point2> = ids.iter().map(|&i| sites[i as usize]).collect();
-        for e in mwt(&pts)?.edges {
+        for e in mwt(&pts, &MwtOptions::default(), ctl)?.edges {
             let (a, b) = (ids[e[0] as usize], ids[e[1] as usize]);
             edges.push(super::edge_key(a, b));
         }
@@ -144,20 +147,23 @@ pub const MAX_N: usize = 4000;
 /// certified to be in every triangulation (`split`), else by the general MWT solver.
 ///
 /// ```
+/// use tetrakit::control::Control;
 /// use tetrakit::planar::keil;
-/// let k = keil("1.1548".parse().unwrap(), Some(20)).unwrap();
+/// let k = keil("1.1548".parse().unwrap(), Some(20), &Control::new()).unwrap();
 /// assert!(k.xy_in_skeleton && !k.xy_in_mwt);
 /// assert!(k.with_xy.0.lo > k.without_xy.0.hi);
 /// ```
-pub fn keil(beta: Ratio, n: Option<usize>) -> Result<KeilResult, PlanarError> {
+pub fn keil(beta: Ratio, n: Option<usize>, ctl: &Control) -> Result<KeilResult, PlanarError> {
     let (build, lemma_bound) = construction(beta)?;
     let n = n
         .unwrap_or(lemma_bound.max(0.0).floor() as usize + 1)
         .max(1);
     if n > MAX_N {
-        return Err(PlanarError::new(format!(
-            "n = {n} is above the limit of {MAX_N} sites per arc (Lemma 5.8 asks n > {lemma_bound:.1}); give a smaller --n"
-        )));
+        return Err(PlanarError::KeilTooLarge {
+            n,
+            limit: MAX_N,
+            lemma_bound,
+        });
     }
     let sites = build(n);
     let (x, y) = (sites[1], sites[2 * n + 2]);
@@ -168,7 +174,7 @@ pub fn keil(beta: Ratio, n: Option<usize>) -> Result<KeilResult, PlanarError> {
     let cycle: Vec<u32> = (0..sites.len() as u32).collect();
     let (optima, split) = match split::split_along(&sites, &cycle, xy)? {
         Some(s) => (s, true),
-        None => (general(&sites, xy)?, false),
+        None => (general(&sites, xy, ctl)?, false),
     };
     let Optima {
         with_xy: with,
@@ -198,9 +204,9 @@ pub fn keil(beta: Ratio, n: Option<usize>) -> Result<KeilResult, PlanarError> {
 
 /// The two optima by the general solver: the MWT, the best triangulation with `xy`,
 /// and, when the MWT contains `xy`, the best one without it (over all segments).
-fn general(sites: &[Point2], xy: [u32; 2]) -> Result<Optima, PlanarError> {
-    let best = mwt(sites)?;
-    let with = best_with_chord(sites, xy)?.edges;
+fn general(sites: &[Point2], xy: [u32; 2], ctl: &Control) -> Result<Optima, PlanarError> {
+    let best = mwt(sites, &MwtOptions::default(), ctl)?;
+    let with = best_with_chord(sites, xy, ctl)?.edges;
     if best.edges.binary_search(&xy).is_err() {
         return Ok(Optima {
             with_xy: with,
@@ -208,10 +214,10 @@ fn general(sites: &[Point2], xy: [u32; 2]) -> Result<Optima, PlanarError> {
         });
     }
     if sites.len() > CONSTRAINED_LIMIT {
-        return Err(PlanarError::new(format!(
-            "{} sites and xy is in the MWT: the best triangulation without xy is computed over all segments, limited to {CONSTRAINED_LIMIT} sites; use a smaller --n",
-            sites.len()
-        )));
+        return Err(PlanarError::KeilConstrainedTooLarge {
+            sites: sites.len(),
+            limit: CONSTRAINED_LIMIT,
+        });
     }
     let opts = MwtOptions {
         forbidden: vec![xy],
@@ -219,7 +225,7 @@ fn general(sites: &[Point2], xy: [u32; 2]) -> Result<Optima, PlanarError> {
     };
     Ok(Optima {
         with_xy: with,
-        without_xy: mwt_with(sites, &opts)?.edges,
+        without_xy: mwt(sites, &opts, ctl)?.edges,
     })
 }
 
@@ -245,18 +251,24 @@ pub type Violation = (usize, u64, [u32; 2]);
 /// Checks β-skeleton ⊆ MWT on `sets` random uniform point sets of `n` points: returns
 /// the number of skeleton edges checked and every violation `(set, seed, edge)`, in set
 /// order. The sets are checked in parallel (in the pool, where the solver's own parallel
-/// loops are cheap).
+/// loops are cheap), each reported as done to `ctl`.
 pub fn check_random(
     beta: Ratio,
     sets: usize,
     n: usize,
     seed: u64,
+    ctl: &Control,
 ) -> Result<(usize, Vec<Violation>), PlanarError> {
+    let done = std::sync::atomic::AtomicU64::new(0);
+    let quiet = Control::new();
     let one = |k: usize| -> Result<(usize, Vec<Violation>), PlanarError> {
+        ctl.check()?;
         let s = seed.wrapping_add(k as u64);
         let pts = super::points2d(super::Distribution::Uniform, n, s);
-        let sk = super::beta_skeleton(&pts, beta, super::Region::Circle)?;
-        let m = mwt(&pts)?;
+        let sk = super::beta_skeleton(&pts, beta, super::Region::Circle, &quiet)?;
+        let m = mwt(&pts, &MwtOptions::default(), &quiet)?;
+        let d = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+        ctl.items(d, sets as u64);
         let checked = sk.edges.len();
         let bad = (sk.edges.into_iter())
             .filter(|e| m.edges.binary_search(e).is_err())
@@ -284,10 +296,10 @@ mod tests {
     #[test]
     fn parallel_check_matches_one_set_at_a_time() {
         let beta: Ratio = "1".parse().unwrap();
-        let (checked, bad) = check_random(beta, 6, 40, 7).unwrap();
+        let (checked, bad) = check_random(beta, 6, 40, 7, &Control::new()).unwrap();
         let mut alone = (0, Vec::new());
         for k in 0..6 {
-            let (c, b) = check_random(beta, 1, 40, 7 + k as u64).unwrap();
+            let (c, b) = check_random(beta, 1, 40, 7 + k as u64, &Control::new()).unwrap();
             alone.0 += c;
             alone.1.extend(b.into_iter().map(|(_, s, e)| (k, s, e)));
         }

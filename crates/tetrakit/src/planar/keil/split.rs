@@ -57,7 +57,7 @@ pub(super) fn split_along(
     let mut common: Vec<[u32; 2]> = sides.iter().map(|s| key(s[0], s[1])).collect();
     for pocket in &pockets {
         let inner = polygon_dp(points, pocket, &[], &usable)
-            .ok_or_else(|| PlanarError::new("internal: a pocket of L has no triangulation"))?;
+            .ok_or_else(|| PlanarError::internal("a pocket of L has no triangulation"))?;
         common.extend(inner.edges);
         common.push(key(pocket[0], pocket[1]));
     }
@@ -66,7 +66,7 @@ pub(super) fn split_along(
     let without = polygon_dp(points, &cycle, &[], &|e| e != xy && usable(e));
     let complete = |inner: Option<Vec<[u32; 2]>>| -> Result<Vec<[u32; 2]>, PlanarError> {
         let mut edges = common.clone();
-        edges.extend(inner.ok_or_else(|| PlanarError::new("internal: L has no triangulation"))?);
+        edges.extend(inner.ok_or_else(|| PlanarError::internal("L has no triangulation"))?);
         edges.sort_unstable();
         edges.dedup();
         certified_triangles(points, &hull, &edges)?;
@@ -75,9 +75,7 @@ pub(super) fn split_along(
     let with_xy = complete(with.map(|s| s.edges))?;
     let without_xy = complete(without.map(|s| s.edges))?;
     if with_xy.binary_search(&xy).is_err() || without_xy.binary_search(&xy).is_ok() {
-        return Err(PlanarError::new(
-            "internal: the split lost the constraint on xy",
-        ));
+        return Err(PlanarError::internal("the split lost the constraint on xy"));
     }
     Ok(Some(Optima {
         with_xy,

@@ -33,10 +33,11 @@ pub struct MwtBounds {
 /// error names any two that coincide, or a coordinate outside the exact range).
 ///
 /// ```
-/// use tetrakit::planar::{mwt, mwt_bounds};
+/// use tetrakit::control::Control;
+/// use tetrakit::planar::{MwtOptions, mwt, mwt_bounds};
 /// let pts = [[0.0, 0.0], [4.0, 0.0], [4.0, 3.0], [0.0, 3.0], [1.0, 1.5]];
 /// let b = mwt_bounds(&pts).unwrap();
-/// let w = mwt(&pts).unwrap().weight;
+/// let w = mwt(&pts, &MwtOptions::default(), &Control::new()).unwrap().weight;
 /// assert!(b.lower.lo <= w.hi && w.lo <= b.upper.hi);
 /// assert_eq!(b.triangles.len(), 4);
 /// ```
@@ -185,6 +186,8 @@ fn spanning_tree(points: &[Point2], edges: &[[u32; 2]]) -> Vec<[u32; 2]> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::control::Control;
+    use crate::planar::MwtOptions;
     use crate::planar::{Distribution, mwt, points2d};
 
     /// Prim's algorithm on every pair, lengths compared exactly: the reference tree.
@@ -241,7 +244,9 @@ mod tests {
                     "{dist:?} {seed}: tree {:?}, Prim {want:?}",
                     b.lower
                 );
-                let w = mwt(&pts).unwrap().weight;
+                let w = mwt(&pts, &MwtOptions::default(), &Control::new())
+                    .unwrap()
+                    .weight;
                 assert!(b.lower.lo <= w.hi && w.lo <= b.upper.hi, "{dist:?} {seed}");
                 // The flips only shorten; on cocircular sites they shorten by much.
                 let dt = delaunay(&pts).unwrap();
@@ -251,7 +256,13 @@ mod tests {
                 if dist == Distribution::Regular {
                     assert!(b.upper.hi < dt_weight.lo, "{dist:?} {seed}");
                 }
-                assert_eq!(b.edges.len(), mwt(&pts).unwrap().edges.len());
+                assert_eq!(
+                    b.edges.len(),
+                    mwt(&pts, &MwtOptions::default(), &Control::new())
+                        .unwrap()
+                        .edges
+                        .len()
+                );
             }
         }
     }

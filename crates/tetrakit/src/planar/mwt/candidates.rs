@@ -54,13 +54,14 @@
 //!   the exact stage optimise over the candidates, a superset of the MWT's edges), so the
 //!   order in which sites are visited, by rounded distance, only affects speed.
 
+use crate::control::Control;
 use crate::geom::{Point2, diamond_hit};
 use crate::planar::grid::PointGrid;
 use crate::planar::{PlanarError, check_sites, edge_key};
 use rayon::prelude::*;
 use std::cmp::Reverse;
 use std::collections::{BinaryHeap, VecDeque};
-use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering::Relaxed};
+use std::sync::atomic::{AtomicUsize, Ordering::Relaxed};
 
 /// A monotone stand-in for the angle of `(dx, dy)`, in `[0, 4)`.
 fn pseudo_angle(dx: f64, dy: f64) -> f64 {
@@ -311,13 +312,13 @@ impl Scratch {
 /// ```
 pub fn candidate_edges(points: &[Point2]) -> Result<Vec<[u32; 2]>, PlanarError> {
     check_sites(points)?;
-    search(points, super::MAX_CANDIDATES, &AtomicBool::new(false))
+    search(points, super::MAX_CANDIDATES, &Control::new())
         .ok_or_else(|| super::too_many_candidates(points.len()))
 }
 
 /// [`candidate_edges`] for checked sites; `None` once there are more than `limit` (the
-/// search stops there, before the list outgrows memory) or once `stop` is set.
-pub(super) fn search(points: &[Point2], limit: usize, stop: &AtomicBool) -> Option<Vec<[u32; 2]>> {
+/// search stops there, before the list outgrows memory) or once `ctl` is stopped.
+pub(super) fn search(points: &[Point2], limit: usize, ctl: &Control) -> Option<Vec<[u32; 2]>> {
     let grid = PointGrid::new(points, 2.0);
     let found = AtomicUsize::new(0);
     // Sites in cell order, so that consecutive searches share cached cells.
@@ -325,7 +326,7 @@ pub(super) fn search(points: &[Point2], limit: usize, stop: &AtomicBool) -> Opti
         .into_par_iter()
         .map_init(Scratch::default, |s, slot| {
             let mut out = Vec::new();
-            if found.load(Relaxed) <= limit && !stop.load(Relaxed) {
+            if found.load(Relaxed) <= limit && !ctl.is_stopped() {
                 candidates_of(slot, &grid, s, &mut out);
                 found.fetch_add(out.len(), Relaxed);
             }
@@ -333,7 +334,7 @@ pub(super) fn search(points: &[Point2], limit: usize, stop: &AtomicBool) -> Opti
         })
         .flatten_iter()
         .collect();
-    if found.into_inner() > limit || stop.load(Relaxed) {
+    if found.into_inner() > limit || ctl.is_stopped() {
         return None;
     }
     edges.par_sort_unstable();
@@ -710,7 +711,7 @@ mod tests {
                 pts.iter().any(|r| diamond_hit(p, q, r).on_segment)
             };
             assert_eq!(
-                search(&pts, usize::MAX, &AtomicBool::new(false))
+                search(&pts, usize::MAX, &Control::new())
                     .unwrap()
                     .iter()
                     .filter(through)
@@ -751,7 +752,7 @@ mod tests {
     /// How many brute-force candidates the search misses.
     fn missing_candidates(pts: &[Point2]) -> usize {
         let (got, want) = (
-            search(pts, usize::MAX, &AtomicBool::new(false)).unwrap(),
+            search(pts, usize::MAX, &Control::new()).unwrap(),
             brute(pts),
         );
         want.iter()
@@ -796,9 +797,18 @@ mod tests {
     #[test]
     fn bad_sites_are_named() {
         let err = candidate_edges(&[[1.0, 2.0], [3.0, 4.0], [1.0, 2.0]]).unwrap_err();
-        assert!(err.0.contains("sites 0 and 2 coincide"), "{err}");
+        assert_eq!(
+            err,
+            PlanarError::CoincidentSites {
+                sites: [0, 2],
+                point: [1.0, 2.0]
+            }
+        );
         let err = candidate_edges(&[[1.0, 2.0], [1e-300, 4.0]]).unwrap_err();
-        assert!(err.0.contains("site 1"), "{err}");
+        assert!(
+            matches!(err, PlanarError::CoordinateOutOfRange { site: 1, .. }),
+            "{err}"
+        );
     }
 
     #[test]
@@ -810,7 +820,7 @@ mod tests {
             (Distribution::Grid, 400),
         ] {
             let pts = points2d(dist, n, 3);
-            let got = search(&pts, usize::MAX, &AtomicBool::new(false)).unwrap();
+            let got = search(&pts, usize::MAX, &Control::new()).unwrap();
             let want = brute(&pts);
             let missing: Vec<_> = want
                 .iter()

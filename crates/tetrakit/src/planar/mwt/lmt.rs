@@ -21,6 +21,7 @@
 //! parallel rounds: a stale "alive" read only makes a test more lenient, and the edge is
 //! examined again in the next round.
 
+use crate::control::Control;
 use crate::geom::{Hull2, Point2, cmp_length, orient2d};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicBool, AtomicU8, Ordering::Relaxed};
@@ -305,14 +306,14 @@ fn certificate(
 /// Edges per task in a round: a task owns the certificates of one block of edge ids.
 const BLOCK: usize = 4096;
 
-/// Runs the LMT rounds from `queue` (sorted) to a fixpoint, or until `stop` is set
+/// Runs the LMT rounds from `queue` (sorted) to a fixpoint, or until `ctl` is stopped
 /// (every status set by then is sound; more edges stay alive).
 fn eliminate(
     points: &[Point2],
     sk: &Skeleton,
     status: &[AtomicU8],
     mut queue: Vec<u32>,
-    stop: &AtomicBool,
+    ctl: &Control,
 ) {
     let m = sk.edges.len();
     let queued: Vec<AtomicBool> = (0..m).map(|_| AtomicBool::new(false)).collect();
@@ -320,7 +321,7 @@ fn eliminate(
     // the first round and holds a certificate from then on: only alive edges' entries
     // are read.
     let mut certs = vec![[0u32; 4]; m];
-    while !queue.is_empty() && !stop.load(Relaxed) {
+    while !queue.is_empty() && !ctl.is_stopped() {
         let dead: Vec<u32> = (certs.par_chunks_mut(BLOCK).enumerate())
             .map_init(Buffers::default, |bufs, (b, block)| {
                 let ids = (b * BLOCK) as u32..(b * BLOCK + block.len()) as u32;
@@ -328,7 +329,7 @@ fn eliminate(
                 let hi = queue.partition_point(|e| *e < ids.end);
                 let mut dead = Vec::new();
                 for &e in &queue[lo..hi] {
-                    if stop.load(Relaxed) {
+                    if ctl.is_stopped() {
                         break;
                     }
                     queued[e as usize].store(false, Relaxed);
@@ -415,7 +416,7 @@ pub fn lmt_skeleton(
     candidates: Vec<[u32; 2]>,
     forced: &[[u32; 2]],
     forbidden: &[[u32; 2]],
-    stop: &AtomicBool,
+    ctl: &Control,
 ) -> Result<(Skeleton, LmtStats), [u32; 3]> {
     let (start, adj) = super::walks::ccw_rows(points, &candidates);
     if let Some(v_a_b) = overlapping(points, &start, &adj) {
@@ -450,7 +451,7 @@ pub fn lmt_skeleton(
     let queue: Vec<u32> = (0..sk.edges.len() as u32)
         .filter(|&e| sk.status[e as usize] == ALIVE)
         .collect();
-    eliminate(points, &sk, &status, queue, stop);
+    eliminate(points, &sk, &status, queue, ctl);
     sk.status = status.into_iter().map(|s| s.into_inner()).collect();
     // An alive edge that no alive edge crosses is in every MWT (fact 2). Promotion
     // changes no LMT test, so one pass suffices.
@@ -470,8 +471,8 @@ mod tests {
     use crate::planar::{Distribution, points2d};
 
     /// A stop flag never set.
-    fn go() -> AtomicBool {
-        AtomicBool::new(false)
+    fn go() -> Control {
+        Control::new()
     }
 
     /// The triangles left of `p → q` by definition: common neighbours with both edges

@@ -22,6 +22,7 @@ pub(crate) use polygon::polygon_dp;
 pub(crate) use walks::walk_area_sign;
 
 use super::{PlanarError, find};
+use crate::control::Control;
 use crate::geom::{Hull2, Interval, Point2, orient2d};
 use crate::mesh::verify_triangulation;
 use crate::planar::grid::PointGrid;
@@ -30,7 +31,6 @@ use lmt::{ALIVE, CERTAIN};
 use polygon::Solution;
 use rayon::prelude::*;
 use std::collections::HashSet;
-use std::sync::atomic::{AtomicBool, Ordering::Relaxed};
 use std::time::Instant;
 use walks::Rotation;
 
@@ -39,7 +39,7 @@ pub(crate) fn cross(a: &Point2, b: &Point2, c: &Point2, d: &Point2) -> bool {
     orient2d(a, b, c) * orient2d(a, b, d) < 0 && orient2d(c, d, a) * orient2d(c, d, b) < 0
 }
 
-/// Options of [`mwt_with`].
+/// Options of [`mwt`].
 #[derive(Clone, Debug, Default)]
 pub struct MwtOptions {
     /// Edges every triangulation considered must contain (a constrained optimum). The
@@ -50,28 +50,17 @@ pub struct MwtOptions {
     pub forbidden: Vec<[u32; 2]>,
 }
 
-/// The stages of [`mwt_with_progress`], reported as each one starts.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum MwtStage {
-    /// The candidate filter (diamond test).
-    Candidates,
+/// The stages [`mwt`] reports ([`Progress::Stage`](crate::control::Progress::Stage)) as
+/// each one starts.
+pub mod mwt_stage {
+    /// The candidate filter.
+    pub const CANDIDATES: &str = "candidate edges (diamond test)";
     /// The LMT-skeleton.
-    Skeleton,
+    pub const SKELETON: &str = "LMT-skeleton";
     /// The exact stage on the faces left.
-    Faces,
+    pub const FACES: &str = "exact stage on the faces left";
     /// The check that the answer triangulates the hull.
-    Certify,
-}
-
-impl std::fmt::Display for MwtStage {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(match self {
-            MwtStage::Candidates => "candidate edges (diamond test)",
-            MwtStage::Skeleton => "LMT-skeleton",
-            MwtStage::Faces => "exact stage on the faces left",
-            MwtStage::Certify => "certifying the triangulation",
-        })
-    }
+    pub const CERTIFY: &str = "certifying the triangulation";
 }
 
 /// Statistics of an MWT computation.
@@ -109,73 +98,25 @@ pub struct Mwt {
     pub stats: MwtStats,
 }
 
-/// The exact minimum weight triangulation of distinct sites (an error names any two
-/// that coincide, or a coordinate outside the exact range).
+/// The exact minimum weight triangulation of distinct sites, with the constraints of
+/// `opts` (an error names any two sites that coincide, a coordinate outside the exact
+/// range, or a bad constraint). Progress: the [`mwt_stage`]s as each starts. Stopped by
+/// `ctl`, it gives up with [`PlanarError::Stopped`]; it looks between sites, between
+/// edges and between faces, and a face's DP already under way runs to its end
+/// ([`mwt_bounds`] then gives certified bounds).
 ///
 /// ```
-/// use tetrakit::planar::mwt;
+/// use tetrakit::control::Control;
+/// use tetrakit::planar::{MwtOptions, PlanarError, mwt};
 /// let pts = [[0.0, 0.0], [4.0, 0.0], [4.0, 3.0], [0.0, 3.0], [1.0, 1.5]];
-/// let t = mwt(&pts).unwrap();
+/// let t = mwt(&pts, &MwtOptions::default(), &Control::new()).unwrap();
 /// assert_eq!((t.edges.len(), t.triangles.len()), (8, 4));
 /// assert!(t.weight.lo <= t.weight.hi);
+/// let stopped = Control::new();
+/// stopped.stop();
+/// assert_eq!(mwt(&pts, &MwtOptions::default(), &stopped).unwrap_err(), PlanarError::Stopped);
 /// ```
-pub fn mwt(points: &[Point2]) -> Result<Mwt, PlanarError> {
-    mwt_with(points, &MwtOptions::default())
-}
-
-/// The total length of `edges`, certified. The same edges in the same order give the
-/// same interval to the bit: fixed blocks are summed in parallel, then in order.
-pub fn weight_of(points: &[Point2], edges: &[[u32; 2]]) -> Interval {
-    let length = |e: &[u32; 2]| Interval::length(&points[e[0] as usize], &points[e[1] as usize]);
-    let blocks: Vec<Interval> = edges
-        .par_chunks(4096)
-        .map(|b| b.iter().map(length).fold(Interval::ZERO, Interval::plus))
-        .collect();
-    blocks.into_iter().fold(Interval::ZERO, Interval::plus)
-}
-
-/// [`mwt`] with constraints.
-pub fn mwt_with(points: &[Point2], opts: &MwtOptions) -> Result<Mwt, PlanarError> {
-    mwt_with_progress(points, opts, &|_| {})
-}
-
-/// [`mwt_with`], calling `progress` as each stage starts.
-///
-/// ```
-/// use tetrakit::planar::{MwtOptions, MwtStage, mwt_with_progress};
-/// let pts = [[0.0, 0.0], [4.0, 0.0], [4.0, 3.0], [0.0, 3.0], [1.0, 1.5]];
-/// let seen = std::sync::Mutex::new(Vec::new());
-/// let t = mwt_with_progress(&pts, &MwtOptions::default(), &|s| seen.lock().unwrap().push(s));
-/// assert_eq!(t.unwrap().edges.len(), 8);
-/// assert_eq!(seen.into_inner().unwrap()[0], MwtStage::Candidates);
-/// ```
-pub fn mwt_with_progress(
-    points: &[Point2],
-    opts: &MwtOptions,
-    progress: &dyn Fn(MwtStage),
-) -> Result<Mwt, PlanarError> {
-    mwt_with_stop(points, opts, progress, &AtomicBool::new(false))
-}
-
-/// [`mwt_with_progress`], giving up with an error once `stop` is set (another thread
-/// sets it, at a time limit for instance). The solver looks at it between sites,
-/// between edges and between faces; a face's DP already under way runs to its end.
-///
-/// ```
-/// use std::sync::atomic::AtomicBool;
-/// use tetrakit::planar::{MwtOptions, mwt_with_stop};
-/// let pts: Vec<[f64; 2]> = (0..50).map(|i| [(i * 7 % 50) as f64, (i * i % 47) as f64]).collect();
-/// let stopped = mwt_with_stop(&pts, &MwtOptions::default(), &|_| {}, &AtomicBool::new(true));
-/// assert!(stopped.unwrap_err().to_string().contains("stopped"));
-/// let go = AtomicBool::new(false);
-/// assert!(mwt_with_stop(&pts, &MwtOptions::default(), &|_| {}, &go).is_ok());
-/// ```
-pub fn mwt_with_stop(
-    points: &[Point2],
-    opts: &MwtOptions,
-    progress: &dyn Fn(MwtStage),
-    stop: &AtomicBool,
-) -> Result<Mwt, PlanarError> {
+pub fn mwt(points: &[Point2], opts: &MwtOptions, ctl: &Control) -> Result<Mwt, PlanarError> {
     super::check_sites(points)?;
     let n = points.len() as u32;
     let constraints = opts.forced.iter().chain(&opts.forbidden);
@@ -183,10 +124,10 @@ pub fn mwt_with_stop(
         .into_iter()
         .find(|e| e[0].max(e[1]) >= n || e[0] == e[1])
     {
-        return Err(PlanarError::new(format!(
-            "constraint edge {}-{} does not join two distinct sites of {n}",
-            e[0], e[1]
-        )));
+        return Err(PlanarError::BadConstraint {
+            edge: *e,
+            sites: n as usize,
+        });
     }
     // Every stage reads sites by index, at random; in grid-cell order, neighbours in the
     // plane are mostly neighbours in memory (at 10^6 sites this halves the time).
@@ -208,7 +149,7 @@ pub fn mwt_with_stop(
         forced: relabel(&opts.forced, &rank),
         forbidden: relabel(&opts.forbidden, &rank),
     };
-    let m = solve(&local, &local_opts, &order, progress, stop)?;
+    let m = solve(&local, &local_opts, &order, ctl)?;
     Ok(Mwt {
         edges: relabel(&m.edges, &order),
         triangles: (m.triangles.iter())
@@ -220,32 +161,25 @@ pub fn mwt_with_stop(
     })
 }
 
-/// [`mwt_with`] on checked sites; `global` maps site indices to the caller's (messages).
+/// [`mwt`] on checked sites; `global` maps site indices to the caller's (messages).
 fn solve(
     points: &[Point2],
     opts: &MwtOptions,
     global: &[u32],
-    progress: &dyn Fn(MwtStage),
-    stop: &AtomicBool,
+    ctl: &Control,
 ) -> Result<Mwt, PlanarError> {
-    let stopped = || {
-        stop.load(Relaxed)
-            .then(|| PlanarError::new("stopped before the minimum weight triangulation was found"))
-    };
-    if let Some(e) = stopped() {
-        return Err(e);
-    }
+    ctl.check()?;
     let hull = Hull2::new(points);
     if hull.vertices.len() < 3 {
         return Ok(collinear(points));
     }
     let constrained = !opts.forced.is_empty() || !opts.forbidden.is_empty();
     if hull.on_boundary.iter().all(|&b| b) && !constrained {
-        progress(MwtStage::Faces);
+        ctl.stage(mwt_stage::FACES);
         return convex_position(points, &hull);
     }
     let mut stats = MwtStats::default();
-    progress(MwtStage::Candidates);
+    ctl.stage(mwt_stage::CANDIDATES);
     let t0 = Instant::now();
     let sorted = |v: &[[u32; 2]]| -> Vec<[u32; 2]> {
         let mut v: Vec<[u32; 2]> = v.iter().map(|e| super::edge_key(e[0], e[1])).collect();
@@ -257,40 +191,35 @@ fn solve(
     let cands = if constrained {
         (n * (n - 1) / 2 <= MAX_CANDIDATES).then(|| all_segments(points))
     } else {
-        candidates::search(points, MAX_CANDIDATES, stop)
+        candidates::search(points, MAX_CANDIDATES, ctl)
     };
-    if let Some(e) = stopped() {
-        return Err(e);
-    }
+    ctl.check()?;
     let mut cands = cands.ok_or_else(|| too_many_candidates(n))?;
     cands.retain(|e| forbidden.binary_search(e).is_err());
     for f in &forced {
         if cands.binary_search(f).is_err() {
-            return Err(PlanarError::new(format!(
-                "forced edge {}-{} passes through a site or is forbidden",
-                global[f[0] as usize], global[f[1] as usize]
-            )));
+            return Err(PlanarError::ForcedEdgeBlocked {
+                edge: [global[f[0] as usize], global[f[1] as usize]],
+            });
         }
     }
     stats.candidates = cands.len();
     stats.seconds[0] = t0.elapsed().as_secs_f64();
-    progress(MwtStage::Skeleton);
+    ctl.stage(mwt_stage::SKELETON);
     let t1 = Instant::now();
-    let (sk, lstats) = lmt::lmt_skeleton(points, &hull, cands, &forced, &forbidden, stop).map_err(
+    let (sk, lstats) = lmt::lmt_skeleton(points, &hull, cands, &forced, &forbidden, ctl).map_err(
         |[v, a, b]| {
-            PlanarError::new(format!(
-                "internal: candidate edges {0}-{1} and {0}-{2} overlap (one passes through a site)",
+            PlanarError::internal(format!(
+                "candidate edges {0}-{1} and {0}-{2} overlap (one passes through a site)",
                 global[v as usize], global[a as usize], global[b as usize]
             ))
         },
     )?;
-    if let Some(e) = stopped() {
-        return Err(e);
-    }
+    ctl.check()?;
     stats.skeleton_edges = lstats.certain;
     stats.undecided_edges = lstats.undecided;
     stats.seconds[1] = t1.elapsed().as_secs_f64();
-    progress(MwtStage::Faces);
+    ctl.stage(mwt_stage::FACES);
     let t2 = Instant::now();
     let (certain, alive) = (sk.with_status(CERTAIN), sk.with_status(ALIVE));
     let mut edges = certain.clone();
@@ -306,7 +235,7 @@ fn solve(
         for (f, _) in &problems {
             // Splicing a hole into the outer walk walks its joining edge twice.
             let m = f.outer.len() + f.holes.iter().map(|h| h.len() + 2).sum::<usize>();
-            dp_fits(m, || "a face left by the LMT-skeleton".into())?;
+            dp_fits(m, false)?;
         }
         // Inside the pool even for a single face, which `par_iter` would run on this
         // thread: the DPs' parallel loops are cheap from a worker, and from outside the
@@ -315,18 +244,16 @@ fn solve(
         let solved: Vec<Option<Solution>> = rayon::scope(|_| {
             (problems.par_iter())
                 .map(|(face, chords)| {
-                    (!stop.load(Relaxed))
+                    (!ctl.is_stopped())
                         .then(|| faces::solve(points, face, chords))
                         .flatten()
                 })
                 .collect()
         });
-        if let Some(e) = stopped() {
-            return Err(e);
-        }
+        ctl.check()?;
         for s in solved {
             let s = s.ok_or_else(|| {
-                PlanarError::new(
+                PlanarError::internal(
                     "the exact stage found no triangulation of a face with the allowed edges",
                 )
             })?;
@@ -336,7 +263,7 @@ fn solve(
     stats.seconds[2] = t2.elapsed().as_secs_f64();
     edges.par_sort_unstable();
     edges.dedup();
-    progress(MwtStage::Certify);
+    ctl.stage(mwt_stage::CERTIFY);
     let triangles = certified_triangles(points, &hull, &edges)?;
     let weight = weight_of(points, &edges);
     Ok(Mwt {
@@ -363,27 +290,27 @@ const MAX_CANDIDATES: usize = MEMORY_LIMIT / BYTES_PER_CANDIDATE;
 
 /// The error for a set with more than [`MAX_CANDIDATES`] candidate edges.
 fn too_many_candidates(n: usize) -> PlanarError {
-    PlanarError::new(format!(
-        "{n} sites have more than {MAX_CANDIDATES} candidate edges (sites in or near convex \
-         position keep most pairs): the LMT-skeleton would need more than {} GB",
-        MEMORY_LIMIT >> 30
-    ))
+    PlanarError::TooManyCandidates {
+        sites: n,
+        limit: MAX_CANDIDATES,
+        memory: MEMORY_LIMIT,
+    }
 }
 
 /// An error when the polygon DP over a walk of `m` occurrences would pass the memory
-/// limit; `what` names the walk.
-fn dp_fits(m: usize, what: impl FnOnce() -> String) -> Result<(), PlanarError> {
+/// limit; `convex_position` says whether the walk is the hull of sites in convex
+/// position (otherwise a face left by the LMT-skeleton).
+fn dp_fits(m: usize, convex_position: bool) -> Result<(), PlanarError> {
     let bytes = DP_BYTES_PER_PAIR.saturating_mul(m).saturating_mul(m) / 2;
     if bytes <= MEMORY_LIMIT {
         return Ok(());
     }
-    Err(PlanarError::new(format!(
-        "{}: the exact dynamic program over its {m} vertices needs about {} GB and \
-         m³/6 steps (at most {} GB allowed)",
-        what(),
-        bytes >> 30,
-        MEMORY_LIMIT >> 30
-    )))
+    Err(PlanarError::DynamicProgramTooLarge {
+        vertices: m,
+        convex_position,
+        bytes,
+        memory: MEMORY_LIMIT,
+    })
 }
 
 /// Sites all on the hull's boundary: every triangulation is one of the hull polygon (its
@@ -394,12 +321,12 @@ fn dp_fits(m: usize, what: impl FnOnce() -> String) -> Result<(), PlanarError> {
 fn convex_position(points: &[Point2], hull: &Hull2) -> Result<Mwt, PlanarError> {
     let n = points.len();
     let t = Instant::now();
-    dp_fits(n, || format!("{n} sites in convex position"))?;
+    dp_fits(n, true)?;
     let walk: Vec<u32> = (hull.boundary_chains(points).iter())
         .flat_map(|c| c[..c.len() - 1].iter().copied())
         .collect();
     let dp = polygon_dp(points, &walk, &[], &|_| true)
-        .ok_or_else(|| PlanarError::new("internal: a convex polygon has no triangulation"))?;
+        .ok_or_else(|| PlanarError::internal("a convex polygon has no triangulation"))?;
     let mut skeleton = lmt::hull_edges(points, hull);
     skeleton.sort_unstable();
     let mut edges: Vec<[u32; 2]> = skeleton.iter().copied().chain(dp.edges).collect();
@@ -423,6 +350,17 @@ fn convex_position(points: &[Point2], hull: &Hull2) -> Result<Mwt, PlanarError> 
         skeleton,
         stats,
     })
+}
+
+/// The total length of `edges`, certified. The same edges in the same order give the
+/// same interval to the bit: fixed blocks are summed in parallel, then in order.
+pub fn weight_of(points: &[Point2], edges: &[[u32; 2]]) -> Interval {
+    let length = |e: &[u32; 2]| Interval::length(&points[e[0] as usize], &points[e[1] as usize]);
+    let blocks: Vec<Interval> = edges
+        .par_chunks(4096)
+        .map(|b| b.iter().map(length).fold(Interval::ZERO, Interval::plus))
+        .collect();
+    blocks.into_iter().fold(Interval::ZERO, Interval::plus)
 }
 
 /// The counter-clockwise triangles of `edges` (sorted, distinct), after checking that
@@ -449,8 +387,8 @@ pub(crate) fn certify(
     if !verify_triangulation(points, triangles).is_valid()
         || edges.len() != 3 * points.len() - 3 - h
     {
-        return Err(PlanarError::new(format!(
-            "internal: the edges do not form a triangulation ({} edges, {} triangles)",
+        return Err(PlanarError::internal(format!(
+            "the edges do not form a triangulation ({} edges, {} triangles)",
             edges.len(),
             triangles.len()
         )));
@@ -569,14 +507,13 @@ fn face_of(
             holes.push(vec![x - w]);
         } else if alone || walk_area_sign(points, &walks[x as usize]) > 0 {
             if outer.replace(walks[x as usize].clone()).is_some() {
-                return Err(PlanarError::new("internal: a face with two outer walks"));
+                return Err(PlanarError::internal("a face with two outer walks"));
             }
         } else {
             holes.push(walks[x as usize].clone());
         }
     }
-    let outer =
-        outer.ok_or_else(|| PlanarError::new("internal: undecided edges outside every face"))?;
+    let outer = outer.ok_or_else(|| PlanarError::internal("undecided edges outside every face"))?;
     Ok(Face { outer, holes })
 }
 
@@ -668,7 +605,7 @@ mod tests {
     #[test]
     fn answer_is_in_the_callers_site_order() {
         let pts = points2d(Distribution::Clustered, 400, 9);
-        let m = mwt(&pts).unwrap();
+        let m = mwt(&pts, &MwtOptions::default(), &Control::new()).unwrap();
         assert!(verify_triangulation(&pts, &m.triangles).is_valid());
         let mut from_triangles: Vec<[u32; 2]> = m
             .triangles
@@ -682,7 +619,7 @@ mod tests {
         // Constraints named in the caller's indices: an edge forced (given reversed) is
         // in the answer, an interior edge forbidden is not.
         let few = &pts[..40];
-        let m = mwt(few).unwrap();
+        let m = mwt(few, &MwtOptions::default(), &Control::new()).unwrap();
         let sides = |e: &[u32; 2]| {
             let has = |t: &&[u32; 3]| t.contains(&e[0]) && t.contains(&e[1]);
             m.triangles.iter().filter(has).count()
@@ -693,14 +630,20 @@ mod tests {
             forced: vec![[forced[1], forced[0]]],
             forbidden: vec![forbidden],
         };
-        let c = mwt_with(few, &opts).unwrap();
+        let c = mwt(few, &opts, &Control::new()).unwrap();
         assert!(verify_triangulation(few, &c.triangles).is_valid());
         assert!(c.edges.contains(&forced) && !c.edges.contains(&forbidden));
         let bad = MwtOptions {
             forced: vec![[3, 3]],
             forbidden: vec![],
         };
-        assert!(mwt_with(&pts, &bad).unwrap_err().0.contains("3-3"));
+        assert_eq!(
+            mwt(&pts, &bad, &Control::new()).unwrap_err(),
+            PlanarError::BadConstraint {
+                edge: [3, 3],
+                sites: 400
+            }
+        );
     }
 
     /// The memory guards refuse before allocating: the candidate search stops past its
@@ -709,7 +652,7 @@ mod tests {
     #[test]
     fn memory_guards_refuse_before_allocating() {
         let pts = points2d(Distribution::Uniform, 300, 3);
-        let go = AtomicBool::new(false);
+        let go = Control::new();
         let all = candidates::search(&pts, usize::MAX, &go).unwrap();
         assert!(candidates::search(&pts, all.len(), &go).is_some());
         assert!(candidates::search(&pts, all.len() / 2, &go).is_none());
@@ -722,14 +665,18 @@ mod tests {
             forced: vec![[hull.vertices[0], hull.vertices[1]]],
             forbidden: Vec::new(),
         };
-        let err = mwt_with(&pts, &opts).unwrap_err();
-        assert!(err.0.contains("candidate edges"), "{err}");
-
-        assert!(dp_fits(32_000, String::new).is_ok());
-        let err = dp_fits(33_000, || "a face".into()).unwrap_err();
+        let err = mwt(&pts, &opts, &Control::new()).unwrap_err();
         assert!(
-            err.0.starts_with("a face: ") && err.0.contains("16 GB"),
+            matches!(err, PlanarError::TooManyCandidates { sites, .. } if sites == n),
             "{err}"
         );
+
+        assert!(dp_fits(32_000, false).is_ok());
+        let err = dp_fits(33_000, false).unwrap_err();
+        assert!(
+            matches!(err, PlanarError::DynamicProgramTooLarge { vertices: 33_000, convex_position: false, memory, .. } if memory == 16 << 30),
+            "{err}"
+        );
+        assert!(err.to_string().contains("16 GB"), "{err}");
     }
 }

@@ -50,8 +50,8 @@
 //! The status is a sorted vector: `O(log s)` exact comparisons per search, while the
 //! insertions and removals shift machine words (`O(s)` each, for a status of `s` arcs).
 
-use super::link::{LocalView, crossing};
-use super::witness::{Witness, WitnessKind};
+use super::{LocalView, crossing};
+use crate::detect::{Witness, WitnessKind};
 use crate::geom::{Dir, Point3, collinear3};
 use crate::rng::Rng;
 use std::cmp::Ordering;
@@ -63,7 +63,7 @@ const POLE_ATTEMPTS: u64 = 8;
 /// Runs the sweep on the segments `edges` of `L_v` (local indices, all kept on entry) and
 /// clears `keep` for the punctured ones. `Ok(false)`: no valid pole was found and `keep`
 /// is untouched (the caller uses the sign table instead).
-pub(super) fn puncture_free(
+pub(super) fn puncture_free_by_sweep(
     lv: &LocalView,
     edges: &[(u32, u32)],
     keep: &mut [bool],

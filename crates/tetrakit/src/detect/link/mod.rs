@@ -20,7 +20,7 @@
 //! every non-link edge is deleted, in any order.
 //!
 //! Finding the punctures, two ways ([`LinkMethod`]):
-//! - **The sphere sweep** (default; [`sweep`](super::sweep)), the thesis's
+//! - **The sphere sweep** (default; [`sweep`]), the thesis's
 //!   CHECK-CLOSED-TRIANGULATION made exact: a meridian rotates about a polar axis through
 //!   `v`, arcs that become adjacent are tested, and the punctured one of a crossing pair
 //!   is deleted. `O(|L_v| log |L_v|)` exact predicates, the same for hull vertices (whose
@@ -47,12 +47,15 @@
 //! connected sphere (Euler characteristic 2, so Theorem 2.4's count holds). These checks only
 //! need to be *complete*: soundness of a YES comes from the independent verifier.
 //!
+mod sweep;
+
 use super::graph::{Graph, intersect_sorted};
 use super::rotation::{connected, trace_faces};
-use super::witness::{Witness, WitnessKind, ids};
+use super::witness::{Witness, WitnessKind};
 use crate::geom::{
     Dir, Frame, Hull3, Point3, collinear3, orient2d_drop, orient3d, projection_axis, segments_meet,
 };
+use crate::numbering::ids;
 use std::cmp::Ordering;
 
 /// Shared read-only context.
@@ -102,7 +105,7 @@ struct Buffers {
     fill: Vec<u32>,
     adj: Vec<u32>,
     faces: Vec<[u32; 3]>,
-    sweep: super::sweep::Buffers,
+    sweep: sweep::Buffers,
 }
 
 thread_local! {
@@ -141,9 +144,9 @@ fn link_with(ctx: &Ctx, v: u32, b: &mut Buffers, out: &mut Vec<[u32; 3]>) -> Res
     b.keep.clear();
     b.keep.resize(b.edges.len(), true);
     let swept = ctx.method == LinkMethod::Sweep
-        && super::sweep::puncture_free(&lv, &b.edges, &mut b.keep, &mut b.sweep)?;
+        && sweep::puncture_free_by_sweep(&lv, &b.edges, &mut b.keep, &mut b.sweep)?;
     if !swept {
-        puncture_free(&lv, &b.edges, &mut b.side, &mut b.keep, &mut b.masks)?;
+        puncture_free_by_signs(&lv, &b.edges, &mut b.side, &mut b.keep, &mut b.masks)?;
     }
     let (edges, table) = (&b.edges, &b.side);
     let side = |e: usize, c: u32| {
@@ -389,7 +392,7 @@ fn local_edges(g: &Graph, nb: &[u32], edges: &mut Vec<(u32, u32)>) {
 }
 
 /// Which segments of `L_v` survive the generalized puncture rule.
-fn puncture_free(
+fn puncture_free_by_signs(
     lv: &LocalView,
     edges: &[(u32, u32)],
     side: &mut Vec<i8>,
@@ -724,10 +727,10 @@ mod tests {
             let mut edges = Vec::new();
             local_edges(&g, nb, &mut edges);
             let (mut side, mut keep, mut masks) = (Vec::new(), Vec::new(), Vec::new());
-            puncture_free(&lv, &edges, &mut side, &mut keep, &mut masks).unwrap();
+            puncture_free_by_signs(&lv, &edges, &mut side, &mut keep, &mut masks).unwrap();
             let mut swept = vec![true; edges.len()];
             let mut bufs = Default::default();
-            let swept_ok = super::super::sweep::puncture_free(&lv, &edges, &mut swept, &mut bufs);
+            let swept_ok = super::sweep::puncture_free_by_sweep(&lv, &edges, &mut swept, &mut bufs);
             assert!(swept_ok.unwrap());
             assert_eq!(swept, keep, "sweep and sign table disagree at vertex {v}");
             let mut slow = faces_from_rotation(&lv, &hull, &edges, &keep).unwrap();

@@ -3,9 +3,9 @@
 //! boundary edges overlapping on one hull edge, edges shared by two triangles on opposite
 //! sides, every point a vertex).
 
-use super::verify::{Problem, ProblemKind, Report};
-use crate::detect::ids;
+use super::report::{Problem, ProblemKind, Report};
 use crate::geom::{Hull2, Point2, orient2d};
+use crate::numbering::ids;
 use rayon::prelude::*;
 
 /// Verifies that counter-clockwise triangles `tris` triangulate the convex hull of
@@ -20,16 +20,10 @@ use rayon::prelude::*;
 pub fn verify_triangulation(points: &[Point2], tris: &[[u32; 3]]) -> Report {
     let mut r = Report::default();
     let n = points.len() as u32;
-    let pb = |kind, t: Vec<u32>, v: Vec<u32>, detail: String| Problem {
-        kind,
-        tets: t,
-        vertices: v,
-        detail,
-    };
     for (i, t) in tris.iter().enumerate() {
         let i = i as u32;
         if t.iter().any(|&v| v >= n) || t[0] == t[1] || t[1] == t[2] || t[0] == t[2] {
-            r.push(pb(
+            r.push(Problem::new(
                 ProblemKind::BadIndex,
                 vec![i],
                 t.to_vec(),
@@ -40,13 +34,13 @@ pub fn verify_triangulation(points: &[Point2], tris: &[[u32; 3]]) -> Report {
         let p = |k: usize| &points[t[k] as usize];
         match orient2d(p(0), p(1), p(2)) {
             1 => {}
-            0 => r.push(pb(
+            0 => r.push(Problem::new(
                 ProblemKind::Degenerate,
                 vec![i],
                 t.to_vec(),
                 format!("triangle #{i} {} is degenerate", ids(t)),
             )),
-            _ => r.push(pb(
+            _ => r.push(Problem::new(
                 ProblemKind::Inverted,
                 vec![i],
                 t.to_vec(),
@@ -55,7 +49,7 @@ pub fn verify_triangulation(points: &[Point2], tris: &[[u32; 3]]) -> Report {
         }
     }
     let boundary = pair_sides(tris, &mut |(a, b), [u, t]| {
-        r.push(pb(
+        r.push(Problem::new(
             ProblemKind::SameSide,
             vec![u, t],
             vec![a, b],
@@ -75,13 +69,13 @@ pub fn verify_triangulation(points: &[Point2], tris: &[[u32; 3]]) -> Report {
         .collect();
     for (&(a, b, t), s) in boundary.iter().zip(&sides) {
         if s.is_none() {
-            r.push(pb(ProblemKind::BoundaryNotOnHull, vec![t], vec![a, b], format!("edge (#{a}, #{b}) of triangle #{t} has no neighbour but is not on the convex hull")));
+            r.push(Problem::new(ProblemKind::BoundaryNotOnHull, vec![t], vec![a, b], format!("edge (#{a}, #{b}) of triangle #{t} has no neighbour but is not on the convex hull")));
         }
     }
     let mut used = vec![false; points.len()];
     tris.iter().flatten().for_each(|&v| used[v as usize] = true);
     for v in (0..n).filter(|&v| !used[v as usize]) {
-        r.push(pb(
+        r.push(Problem::new(
             ProblemKind::UnusedVertex,
             vec![],
             vec![v],
@@ -106,7 +100,7 @@ pub fn verify_triangulation(points: &[Point2], tris: &[[u32; 3]]) -> Report {
         for (&(a, b, t), s) in boundary.iter().zip(&sides).skip(1) {
             let sp = span(a, b);
             if *s == sides[0] && sp.0.max(s0.0) < sp.1.min(s0.1) {
-                r.push(pb(ProblemKind::Overlap, vec![t0, t], vec![a0, b0, a, b], format!("boundary edges (#{a0}, #{b0}) and (#{a}, #{b}) overlap, so triangles #{t0} and #{t} overlap")));
+                r.push(Problem::new(ProblemKind::Overlap, vec![t0, t], vec![a0, b0, a, b], format!("boundary edges (#{a0}, #{b0}) and (#{a}, #{b}) overlap, so triangles #{t0} and #{t} overlap")));
             }
         }
     }
@@ -172,6 +166,8 @@ fn hull_sides(points: &[Point2], hull: &Hull2) -> Vec<[u32; 2]> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::control::Control;
+    use crate::planar::MwtOptions;
     use crate::planar::{Distribution, mwt, points2d};
 
     fn has(r: &Report, kind: ProblemKind) -> bool {
@@ -185,7 +181,9 @@ mod tests {
         use Distribution::*;
         for dist in [Uniform, Grid, Convex, Regular, Clustered] {
             let pts = points2d(dist, 60, 1);
-            let t = mwt(&pts).unwrap().triangles;
+            let t = mwt(&pts, &MwtOptions::default(), &Control::new())
+                .unwrap()
+                .triangles;
             let r = verify_triangulation(&pts, &t);
             assert!(r.is_valid(), "{dist:?}");
             assert_eq!(

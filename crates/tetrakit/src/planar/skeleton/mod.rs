@@ -28,12 +28,15 @@
 //! **β < 1.** The region shrinks to a lens inside the diametral disk and the skeleton
 //! is no longer planar (it tends to the complete graph as β → 0). Each site searches the
 //! sites around it, nearest rings of grid cells first, until every direction further
-//! out is blocked by a site already seen ([`super::lens`]); every decision is an exact
+//! out is blocked by a site already seen ([`lens`]); every decision is an exact
 //! region test. On uniform sites at β = 0.9 that is about 60 pairs per site.
+
+mod lens;
 
 use super::delaunay::{Delaunay, EdgeView, delaunay, delaunay_edges_where};
 use super::grid::PointGrid;
 use super::{PlanarError, find};
+use crate::control::Control;
 use crate::geom::{Point2, Ratio, corner_dot_sign, in_beta_region, in_lune, orient2d};
 use rayon::prelude::*;
 use std::cmp::Ordering;
@@ -61,47 +64,48 @@ pub struct Skeleton {
 }
 
 /// The β-skeleton of distinct points (exact; an error names coinciding sites or a
-/// coordinate outside the exact range).
+/// coordinate outside the exact range). For β < 1 the search around each site may take
+/// minutes for small β: it reports `(sites searched, sites)` to `ctl` now and then and
+/// gives up with [`PlanarError::Stopped`] once `ctl` is stopped; for β ≥ 1 (a Delaunay
+/// triangulation and one test per edge) it reports nothing.
 ///
 /// ```
+/// use tetrakit::control::Control;
 /// use tetrakit::planar::{Region, beta_skeleton};
 /// // A unit square: for β = 1 both diagonals are Gabriel edges (cocircular).
 /// let pts = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+/// let ctl = Control::new();
 /// let one = "1".parse().unwrap();
-/// assert_eq!(beta_skeleton(&pts, one, Region::Circle).unwrap().edges.len(), 6);
+/// assert_eq!(beta_skeleton(&pts, one, Region::Circle, &ctl).unwrap().edges.len(), 6);
 /// let b = "1.1".parse().unwrap();
-/// assert_eq!(beta_skeleton(&pts, b, Region::Circle).unwrap().edges.len(), 4);
+/// assert_eq!(beta_skeleton(&pts, b, Region::Circle, &ctl).unwrap().edges.len(), 4);
+/// ```
+///
+/// Progress for β < 1:
+///
+/// ```
+/// use std::sync::Arc;
+/// use std::sync::atomic::{AtomicU64, Ordering};
+/// use tetrakit::control::{Control, Progress};
+/// use tetrakit::planar::{Region, beta_skeleton};
+/// let pts: Vec<[f64; 2]> = (0..3000).map(|i| [(i % 60) as f64, (i / 60) as f64]).collect();
+/// let last = Arc::new(AtomicU64::new(0));
+/// let seen = Arc::clone(&last);
+/// let ctl = Control::new().with_progress(move |p| {
+///     if let Progress::Items { done, total } = p {
+///         assert!(done <= total);
+///         seen.fetch_max(done, Ordering::Relaxed);
+///     }
+/// });
+/// let sk = beta_skeleton(&pts, "0.5".parse().unwrap(), Region::Circle, &ctl).unwrap();
+/// assert!(!sk.edges.is_empty());
+/// assert!(last.load(Ordering::Relaxed) > 0);
 /// ```
 pub fn beta_skeleton(
     points: &[Point2],
     beta: Ratio,
     region: Region,
-) -> Result<Skeleton, PlanarError> {
-    beta_skeleton_with_progress(points, beta, region, &|_, _| {})
-}
-
-/// [`beta_skeleton`], reporting `(sites searched, sites)` now and then while it searches
-/// for β < 1 (which may take minutes for small β); for β ≥ 1 it reports nothing.
-///
-/// ```
-/// use std::sync::atomic::{AtomicU64, Ordering};
-/// use tetrakit::planar::{Region, beta_skeleton_with_progress};
-/// let pts: Vec<[f64; 2]> = (0..3000).map(|i| [(i % 60) as f64, (i / 60) as f64]).collect();
-/// let last = AtomicU64::new(0);
-/// let report = |done: u64, all: u64| {
-///     assert!(done <= all);
-///     last.fetch_max(done, Ordering::Relaxed);
-/// };
-/// let b = "0.5".parse().unwrap();
-/// let sk = beta_skeleton_with_progress(&pts, b, Region::Circle, &report).unwrap();
-/// assert!(!sk.edges.is_empty());
-/// assert!(last.into_inner() > 0);
-/// ```
-pub fn beta_skeleton_with_progress(
-    points: &[Point2],
-    beta: Ratio,
-    region: Region,
-    progress: &(dyn Fn(u64, u64) + Sync),
+    ctl: &Control,
 ) -> Result<Skeleton, PlanarError> {
     super::check_coordinates(points)?;
     if points.len() < 2 {
@@ -109,7 +113,7 @@ pub fn beta_skeleton_with_progress(
     }
     if beta.cmp_one() == Ordering::Less {
         super::check_sites(points)?;
-        return super::lens::lens_skeleton(points, beta, progress);
+        return lens::lens_skeleton(points, beta, ctl);
     }
     let lune = region == Region::Lune && beta.cmp_one() == Ordering::Greater;
     let grid = lune.then(|| PointGrid::new(points, 2.0));

@@ -32,10 +32,11 @@
 //! sector, so this reads only the sectors that meet the window of directions. Each pair
 //! is decided from its lesser index.
 
-use super::PlanarError;
-use super::grid::PointGrid;
-use super::skeleton::Skeleton;
+use super::Skeleton;
+use crate::control::Control;
 use crate::geom::{Point2, Ratio, in_beta_region};
+use crate::planar::PlanarError;
+use crate::planar::grid::PointGrid;
 use rayon::prelude::*;
 use std::f64::consts::{FRAC_PI_2, TAU};
 use std::sync::atomic::{AtomicUsize, Ordering as AtomicOrdering};
@@ -45,13 +46,13 @@ use std::sync::atomic::{AtomicUsize, Ordering as AtomicOrdering};
 const MAX_EDGES: usize = 2 << 30;
 
 /// The β-skeleton for `0 < β < 1` of checked, distinct sites, reporting
-/// `(sites searched, sites)` every [`REPORT_EVERY`] sites.
+/// `(sites searched, sites)` to `ctl` every [`REPORT_EVERY`] sites.
 pub(super) fn lens_skeleton(
     points: &[Point2],
     beta: Ratio,
-    progress: &(dyn Fn(u64, u64) + Sync),
+    ctl: &Control,
 ) -> Result<Skeleton, PlanarError> {
-    at_most(points, beta, MAX_EDGES, progress)
+    at_most(points, beta, MAX_EDGES, ctl)
 }
 
 /// Sites searched between two progress reports.
@@ -62,7 +63,7 @@ fn at_most(
     points: &[Point2],
     beta: Ratio,
     limit: usize,
-    progress: &(dyn Fn(u64, u64) + Sync),
+    ctl: &Control,
 ) -> Result<Skeleton, PlanarError> {
     let grid = PointGrid::new(points, 2.0);
     let cones = Cones::new(beta, crate::geom::bounding_box(points));
@@ -76,7 +77,7 @@ fn at_most(
         .map_init(
             || Search::new(cones.sectors),
             |s, slot| {
-                if edges.load(AtomicOrdering::Relaxed) > limit {
+                if edges.load(AtomicOrdering::Relaxed) > limit || ctl.is_stopped() {
                     return Vec::new();
                 }
                 let out = s.neighbours(&grid, &cones, beta, slot);
@@ -84,18 +85,19 @@ fn at_most(
                 decided.fetch_add(s.decided, AtomicOrdering::Relaxed);
                 let d = done.fetch_add(1, AtomicOrdering::Relaxed) + 1;
                 if d % REPORT_EVERY == 0 {
-                    progress(d as u64, points.len() as u64);
+                    ctl.items(d as u64, points.len() as u64);
                 }
                 out
             },
         )
         .collect();
+    ctl.check()?;
     if edges.into_inner() > limit {
-        return Err(PlanarError::new(format!(
-            "the β-skeleton of these {} sites has more than {limit} edges (β = {beta} is \
-             small for their density): the list would not fit in memory",
-            points.len()
-        )));
+        return Err(PlanarError::TooManyEdges {
+            sites: points.len(),
+            limit,
+            beta,
+        });
     }
     let mut edges: Vec<[u32; 2]> = found.into_iter().flatten().collect();
     edges.par_sort_unstable();
@@ -454,7 +456,7 @@ mod tests {
         for a in 0..n {
             for b in a + 1..n {
                 let (pa, pb) = (&points[a as usize], &points[b as usize]);
-                let (lo, hi) = super::super::skeleton::disk_box(pa, pb, 0.5);
+                let (lo, hi) = super::super::disk_box(pa, pb, 0.5);
                 let hit = grid.any_in_box(lo, hi, |r| {
                     r != a && r != b && in_beta_region(pa, pb, &points[r as usize], beta)
                 });
@@ -530,7 +532,7 @@ mod tests {
             let pts = family(&mut rng, kind, n);
             let b = betas[(round / 8) % betas.len()];
             let beta: Ratio = b.parse().unwrap();
-            let got = lens_skeleton(&pts, beta, &|_, _| {}).unwrap();
+            let got = lens_skeleton(&pts, beta, &Control::new()).unwrap();
             let want = all_pairs(&pts, beta);
             assert_eq!(
                 got.edges,
@@ -549,10 +551,16 @@ mod tests {
         let mut rng = Rng::new(7);
         let pts: Vec<Point2> = (0..2000).map(|_| [rng.unit(), rng.unit()]).collect();
         let beta: Ratio = "0.2".parse().unwrap();
-        let all = lens_skeleton(&pts, beta, &|_, _| {}).unwrap().edges.len();
-        assert!(at_most(&pts, beta, all, &|_, _| {}).is_ok());
-        let err = at_most(&pts, beta, all / 2, &|_, _| {}).unwrap_err();
-        assert!(err.0.contains("would not fit in memory"), "{err}");
+        let all = lens_skeleton(&pts, beta, &Control::new())
+            .unwrap()
+            .edges
+            .len();
+        assert!(at_most(&pts, beta, all, &Control::new()).is_ok());
+        let err = at_most(&pts, beta, all / 2, &Control::new()).unwrap_err();
+        assert!(
+            matches!(err, PlanarError::TooManyEdges { sites: 2000, limit, .. } if limit == all / 2),
+            "{err}"
+        );
     }
 
     /// On uniform sites the search decides a bounded number of pairs per site (about 59
@@ -561,7 +569,7 @@ mod tests {
     fn lens_search_decides_few_pairs_per_site() {
         let mut rng = Rng::new(6);
         let pts: Vec<Point2> = (0..20_000).map(|_| [rng.unit(), rng.unit()]).collect();
-        let sk = lens_skeleton(&pts, "0.9".parse().unwrap(), &|_, _| {}).unwrap();
+        let sk = lens_skeleton(&pts, "0.9".parse().unwrap(), &Control::new()).unwrap();
         assert!(sk.candidates < 100 * pts.len(), "{}", sk.candidates);
         assert!(sk.edges.len() > 2 * pts.len());
     }

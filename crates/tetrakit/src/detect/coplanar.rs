@@ -10,9 +10,10 @@
 use super::Cells;
 use super::graph::Graph;
 use super::rotation::{check_chains, local_crossing, trace_faces};
-use super::witness::{Witness, WitnessKind, ids};
+use super::witness::{Witness, WitnessKind};
 use crate::geom::{Hull2, Point2, Point3, drop_axis, orient2d, projection_axis};
 use crate::mesh::verify_triangulation;
+use crate::numbering::ids;
 
 /// Points projected faithfully to 2D (orientation preserved for some fixed normal).
 pub(crate) fn project(points: &[Point3]) -> Option<Vec<Point2>> {

@@ -1,0 +1,123 @@
+//! What the verifiers find: [`Problem`]s of a [`ProblemKind`], gathered in a [`Report`].
+
+use serde::Serialize;
+use std::fmt;
+
+/// What is wrong with a mesh.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ProblemKind {
+    /// A vertex index is out of range.
+    BadIndex,
+    /// A tetrahedron repeats a vertex.
+    RepeatedVertex,
+    /// A tetrahedron has zero volume.
+    Degenerate,
+    /// A tetrahedron is negatively oriented.
+    Inverted,
+    /// A triangle is a face of three or more tetrahedra.
+    FaceSharedByMore,
+    /// Two tetrahedra sharing a face lie on the same side of it (they overlap).
+    SameSide,
+    /// The boundary faces do not form a closed surface.
+    OpenBoundary,
+    /// A boundary face does not lie on the convex hull.
+    BoundaryNotOnHull,
+    /// Tetrahedra overlap (the mesh covers part of the hull more than once).
+    Overlap,
+    /// A point is not a vertex of any tetrahedron.
+    UnusedVertex,
+    /// Two boundary faces intersect: the boundary surface is not embedded.
+    BoundarySelfIntersection,
+    /// The boundary of the tetrahedra is not the polyhedron's surface (a facet not
+    /// covered, or a boundary triangle that is not a facet).
+    BoundaryNotSurface,
+}
+
+impl fmt::Display for ProblemKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let s = serde_json::to_value(self).ok();
+        write!(
+            f,
+            "{}",
+            s.as_ref().and_then(|v| v.as_str()).unwrap_or("problem")
+        )
+    }
+}
+
+/// One problem, naming the tetrahedra (indices into the tet list) and vertices involved.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct Problem {
+    /// What is wrong.
+    pub kind: ProblemKind,
+    /// The offending cells, as indices into the cell list: tetrahedra for [`verify`],
+    /// triangles for [`verify_triangulation`] (written `"tets"` in JSON, the `check`
+    /// command's field).
+    ///
+    /// [`verify`]: super::verify
+    /// [`verify_triangulation`]: super::verify_triangulation
+    #[serde(rename = "tets")]
+    pub cells: Vec<u32>,
+    /// Vertices involved (e.g. the shared face).
+    pub vertices: Vec<u32>,
+    /// A sentence for a person.
+    pub detail: String,
+}
+
+impl fmt::Display for Problem {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: {}", self.kind, self.detail)
+    }
+}
+
+impl std::error::Error for Problem {}
+
+impl Problem {
+    /// A problem of `kind` naming `cells` and `vertices`, with a sentence for a person.
+    pub fn new(kind: ProblemKind, cells: Vec<u32>, vertices: Vec<u32>, detail: String) -> Self {
+        Problem {
+            kind,
+            cells,
+            vertices,
+            detail,
+        }
+    }
+}
+
+/// The result of [`verify`].
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Report {
+    /// Problems found (at most [`Report::LIMIT`] are kept).
+    pub problems: Vec<Problem>,
+    /// Total number of problems found, kept or not.
+    pub problem_count: usize,
+    /// Number of boundary (unpaired) faces.
+    pub boundary_faces: usize,
+}
+
+impl Report {
+    /// How many problems are kept in detail.
+    pub const LIMIT: usize = 1000;
+
+    /// Shifts tetrahedron and vertex numbers by `base` (fields and `#12` numbers in the text).
+    pub fn renumbered(mut self, base: u32) -> Self {
+        for p in &mut self.problems {
+            p.cells.iter_mut().for_each(|t| *t += base);
+            p.vertices.iter_mut().for_each(|v| *v += base);
+            p.detail = crate::numbering::renumber_text(&p.detail, base);
+        }
+        self
+    }
+
+    /// True when no problem was found: the mesh is certified.
+    pub fn is_valid(&self) -> bool {
+        self.problem_count == 0
+    }
+
+    pub(crate) fn push(&mut self, p: Problem) {
+        self.problem_count += 1;
+        if self.problems.len() < Self::LIMIT {
+            self.problems.push(p);
+        }
+    }
+}
