@@ -324,8 +324,11 @@ fn keil_construction_is_exact_and_consistent() {
     }
     let k = tetrakit::planar::keil("1.16".parse().unwrap(), Some(400), &Control::new()).unwrap();
     assert!(k.xy_in_mwt);
-    assert!(tetrakit::planar::keil("1.17".parse().unwrap(), None, &Control::new()).is_err());
-    assert!(tetrakit::planar::keil("1.15".parse().unwrap(), None, &Control::new()).is_err());
+    for b in ["1.17", "1.15"] {
+        let beta = b.parse().unwrap();
+        let err = tetrakit::planar::keil(beta, None, &Control::new()).unwrap_err();
+        assert_eq!(err, PlanarError::BetaOutsideKeilInterval { beta });
+    }
 }
 
 /// The textbook `O(n³)` dynamic program over a convex polygon given in counter-clockwise

@@ -651,6 +651,30 @@ fn unconfirmed_witness(t: [u32; 4], found: &dyn Fn(u32, [u32; 3]) -> bool) -> Wi
 mod tests {
     use super::*;
 
+    /// A stopped control ends both routes with `Stopped`; a live one answers.
+    #[test]
+    fn a_stopped_control_ends_detection() {
+        let t = crate::generate::kuhn(3);
+        let e = t.edges();
+        let stopped = Control::new();
+        stopped.stop();
+        for delaunay_first in [true, false] {
+            for links in [LinkMethod::Sweep, LinkMethod::SignTable] {
+                let opts = Options {
+                    delaunay_first,
+                    links,
+                };
+                assert!(
+                    detect(&t.points, &e, &opts, &Control::new())
+                        .unwrap()
+                        .is_yes()
+                );
+                let err = detect(&t.points, &e, &opts, &stopped).unwrap_err();
+                assert_eq!(err, DetectError::Stopped);
+            }
+        }
+    }
+
     /// `edges(T) = L` names a tetrahedron edge that is no segment, and a segment that is
     /// no tetrahedron edge.
     #[test]

@@ -422,3 +422,28 @@ fn chosen_indices<'a>(
 fn edge_count(tets: &[[u32; 4]], cand: &Candidates) -> usize {
     (tets.len() as i64 - cand.offset).max(0) as usize
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Stopped before the first SAT call, the solver answers `Undecided` with the
+    /// lower bound and no tetrahedralization; a live control finds the minimum.
+    #[test]
+    fn a_stopped_control_gives_undecided() {
+        let cube: Vec<[f64; 3]> = (0..8)
+            .map(|i| [(i & 1) as f64, ((i >> 1) & 1) as f64, (i >> 2) as f64])
+            .collect();
+        let opts = Options::default();
+        let stopped = Control::new();
+        stopped.stop();
+        let (out, _) = minimal_tetrahedralization(Domain::Points(&cube), &opts, &stopped).unwrap();
+        assert!(
+            matches!(out, Outcome::Undecided { best: None, .. }),
+            "{out:?}"
+        );
+        let (out, _) =
+            minimal_tetrahedralization(Domain::Points(&cube), &opts, &Control::new()).unwrap();
+        assert!(matches!(out, Outcome::Optimal { ref tets, .. } if tets.len() == 5));
+    }
+}

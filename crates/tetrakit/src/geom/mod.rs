@@ -1,10 +1,13 @@
-//! Exact geometry: predicates, intersection tests and convex hulls.
+//! Exact geometry: predicates, intersection tests and convex hulls, and the planar bucket
+//! grid the searches share.
 //!
 //! This is the narrow interface behind which every geometric decision of tetrakit is
-//! made (DESIGN.md, non-negotiable 1). Nothing here uses a tolerance: floating-point
-//! arithmetic appears only as a filter whose error bound is proven, with an exact fallback.
+//! made (ARCHITECTURE.md, "Invariants"). Nothing here uses a tolerance: floating-point
+//! arithmetic appears only as a filter whose error bound is proven, with an exact
+//! fallback, or in the bucket grid, which only proposes candidates to exact tests.
 
 mod expansion;
+mod grid;
 mod hull2;
 mod hull3;
 mod intersect;
@@ -13,6 +16,7 @@ mod proximity;
 mod radical;
 
 pub use expansion::{Expansion, det3, edge_edge_side, orient3d_value, parallel};
+pub(crate) use grid::Grid2;
 pub use hull2::Hull2;
 pub use hull3::{Hull3, affine_dimension};
 pub use intersect::{
@@ -27,7 +31,7 @@ pub use predicates::{
     orient2d, orient2d_drop, orient3d, projection_axis, strictly_between,
 };
 pub use proximity::{
-    DiamondHit, Ratio, cmp_length, corner_dot_sign, diamond_hit, in_beta_region, in_lune,
-    squared_length,
+    DiamondHit, Ratio, RatioError, cmp_length, corner_dot_sign, diamond_hit, in_beta_region,
+    in_lune, squared_length,
 };
 pub use radical::{DoubleDouble, Interval, compare_root_sums};

@@ -4,8 +4,8 @@
 //! coordinates taken as the exact dyadic rationals they are; the answers are exact
 //! provided every coordinate passes [`coordinate_in_range`].
 //!
-//! Sign conventions (DESIGN.md): [`orient3d`] is positive when `det[b−a, c−a, d−a] > 0`
-//! (TetGen/VTK's positive tetrahedron), which is the *opposite* sign of
+//! Sign conventions (ARCHITECTURE.md, "Conventions"): [`orient3d`] is positive when
+//! `det[b−a, c−a, d−a] > 0` (TetGen/VTK's positive tetrahedron), which is the *opposite* sign of
 //! `robust::orient3d`. [`orient2d`] is positive when `a, b, c` turn counter-clockwise.
 
 use robust::{Coord, Coord3D};

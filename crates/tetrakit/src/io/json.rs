@@ -1,4 +1,4 @@
-//! The JSON input of DESIGN.md: `{"points": [[x,y,z],...], "segments": [[i,j],...],
+//! The JSON input of the README ("Inputs"): `{"points": [[x,y,z],...], "segments": [[i,j],...],
 //! "tets": [[i,j,k,l],...], "faces": [[i,j,k],...]}`, 0-based.
 
 use super::{Input, InputError, check_segments, coordinate_in_range, read_text};

@@ -1,5 +1,5 @@
 //! Reading and writing meshes and segment sets: TetGen `.node/.edge/.ele/.face`, OBJ
-//! (`v`, `l`, `f`), the JSON of DESIGN.md, plain `.xyz` point lists, and a legacy VTK
+//! (`v`, `l`, `f`), the JSON of the README, plain `.xyz` point lists, and a legacy VTK
 //! writer.
 //!
 //! Every reader validates as it goes and fails with an [`InputError`] naming the file, the

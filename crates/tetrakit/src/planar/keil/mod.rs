@@ -172,7 +172,7 @@ pub fn keil(beta: Ratio, n: Option<usize>, ctl: &Control) -> Result<KeilResult, 
         i as u32 == xy[0] || i as u32 == xy[1] || !in_beta_region(&x, &y, &sites[i], beta)
     });
     let cycle: Vec<u32> = (0..sites.len() as u32).collect();
-    let (optima, split) = match split::split_along(&sites, &cycle, xy)? {
+    let (optima, split) = match split::split_along(&sites, &cycle, xy, ctl)? {
         Some(s) => (s, true),
         None => (general(&sites, xy, ctl)?, false),
     };

@@ -11,6 +11,7 @@
 //! nearly convex position, whose candidate triangles grow as `n³`. Both answers are
 //! certified as triangulations of the whole set.
 
+use crate::control::Control;
 use crate::geom::{Hull2, Point2};
 use crate::planar::edge_key as key;
 use crate::planar::mwt::{certified_triangles, polygon_dp, walk_area_sign};
@@ -30,6 +31,7 @@ pub(super) fn split_along(
     points: &[Point2],
     cycle: &[u32],
     xy: [u32; 2],
+    ctl: &Control,
 ) -> Result<Option<Optima>, PlanarError> {
     let mut cycle = cycle.to_vec();
     match walk_area_sign(points, &cycle) {
@@ -56,14 +58,17 @@ pub(super) fn split_along(
     let usable = |e: [u32; 2]| !blocked.contains(&e);
     let mut common: Vec<[u32; 2]> = sides.iter().map(|s| key(s[0], s[1])).collect();
     for pocket in &pockets {
-        let inner = polygon_dp(points, pocket, &[], &usable)
-            .ok_or_else(|| PlanarError::internal("a pocket of L has no triangulation"))?;
+        let inner = polygon_dp(points, pocket, &[], &usable, ctl);
+        ctl.check()?;
+        let inner =
+            inner.ok_or_else(|| PlanarError::internal("a pocket of L has no triangulation"))?;
         common.extend(inner.edges);
         common.push(key(pocket[0], pocket[1]));
     }
     let xy = key(xy[0], xy[1]);
-    let with = polygon_dp(points, &cycle, &[xy], &usable);
-    let without = polygon_dp(points, &cycle, &[], &|e| e != xy && usable(e));
+    let with = polygon_dp(points, &cycle, &[xy], &usable, ctl);
+    let without = polygon_dp(points, &cycle, &[], &|e| e != xy && usable(e), ctl);
+    ctl.check()?;
     let complete = |inner: Option<Vec<[u32; 2]>>| -> Result<Vec<[u32; 2]>, PlanarError> {
         let mut edges = common.clone();
         edges.extend(inner.ok_or_else(|| PlanarError::internal("L has no triangulation"))?);

@@ -34,6 +34,7 @@
 use super::polygon::{Solution, clear_of, cmp_edge_sets, polygon_dp};
 use super::sites::walk_with_sites;
 use super::walks::{in_wedge, walk_area_sign};
+use crate::control::Control;
 use crate::geom::{Interval, Point2, orient2d};
 use crate::planar::edge_key as key;
 use rayon::prelude::*;
@@ -56,8 +57,14 @@ pub struct Face {
 /// per ear or joining edge, and hole), and in the length of the paths through hole
 /// sites the region DP meets; the faces the LMT-skeleton leaves on random sets have at
 /// most one hole.
-pub fn solve(points: &[Point2], face: &Face, chords: &HashSet<[u32; 2]>) -> Option<Solution> {
-    solve_by(points, face, chords, true)
+/// `None` also once `ctl` is stopped (looked at in every branch and in each DP).
+pub fn solve(
+    points: &[Point2],
+    face: &Face,
+    chords: &HashSet<[u32; 2]>,
+    ctl: &Control,
+) -> Option<Solution> {
+    solve_by(points, face, chords, true, ctl)
 }
 
 /// [`solve`]; when `fast` is false every hole branches by joins, even isolated sites
@@ -67,11 +74,13 @@ fn solve_by(
     face: &Face,
     chords: &HashSet<[u32; 2]>,
     fast: bool,
+    ctl: &Control,
 ) -> Option<Solution> {
     let search = Search {
         points,
         best: Mutex::new(None),
         fast,
+        ctl,
     };
     search.branch(
         face.outer.clone(),
@@ -95,6 +104,8 @@ struct Search<'a> {
     /// Whether holes with edges branch by ears and isolated sites go to the region DP
     /// (otherwise everything branches by joins).
     fast: bool,
+    /// Stops the search (every branch returns at once).
+    ctl: &'a Control,
 }
 
 impl Search<'_> {
@@ -111,7 +122,7 @@ impl Search<'_> {
         spent: Interval,
         chords: &HashSet<[u32; 2]>,
     ) {
-        if self.heavier(spent) {
+        if self.heavier(spent) || self.ctl.is_stopped() {
             return;
         }
         // Holes that enclose nothing (sites, trees of edges) all at once in the region
@@ -120,7 +131,7 @@ impl Search<'_> {
         if holes.iter().all(flat) {
             let usable = |e| free(chords, &cuts, e);
             let sol = if holes.is_empty() {
-                polygon_dp(self.points, &outer, &cuts, &usable)
+                polygon_dp(self.points, &outer, &cuts, &usable, self.ctl)
             } else {
                 let mut sites: Vec<u32> = holes.concat();
                 sites.sort_unstable();
@@ -553,7 +564,7 @@ mod tests {
             outer: hull.vertices.clone(),
             holes,
         };
-        let sol = solve(pts, &face, &chords).expect("a triangulation exists");
+        let sol = solve(pts, &face, &chords, &Control::new()).expect("a triangulation exists");
         let mut edges = sol.edges;
         edges.extend(&fixed);
         edges.sort_unstable();
@@ -726,8 +737,10 @@ mod tests {
                 continue;
             };
             let face = Face { outer, holes };
-            let by_ears = solve_by(&pts, &face, &chords, true).expect("a triangulation");
-            let by_joins = solve_by(&pts, &face, &chords, false).expect("a triangulation");
+            let by_ears =
+                solve_by(&pts, &face, &chords, true, &Control::new()).expect("a triangulation");
+            let by_joins =
+                solve_by(&pts, &face, &chords, false, &Control::new()).expect("a triangulation");
             assert_eq!(
                 cmp_edge_sets(&pts, &by_ears.edges, &by_joins.edges),
                 Ordering::Equal,
@@ -812,8 +825,10 @@ mod tests {
             }
             let k = pts.len() - m;
             let face = Face { outer, holes };
-            let fast = solve_by(&pts, &face, &chords, true).expect("a triangulation");
-            let reference = solve_by(&pts, &face, &chords, false).expect("a triangulation");
+            let fast =
+                solve_by(&pts, &face, &chords, true, &Control::new()).expect("a triangulation");
+            let reference =
+                solve_by(&pts, &face, &chords, false, &Control::new()).expect("a triangulation");
             assert_eq!(
                 cmp_edge_sets(&pts, &fast.edges, &reference.edges),
                 Ordering::Equal,
@@ -863,8 +878,9 @@ mod tests {
             outer: vec![3, 4, 5, 0, 11, 0, 1, 2],
             holes: vec![vec![6, 7], vec![8], vec![9], vec![10]],
         };
-        let fast = solve_by(&pts, &face, &chords, true).expect("a triangulation");
-        let joins = solve_by(&pts, &face, &chords, false).expect("a triangulation");
+        let fast = solve_by(&pts, &face, &chords, true, &Control::new()).expect("a triangulation");
+        let joins =
+            solve_by(&pts, &face, &chords, false, &Control::new()).expect("a triangulation");
         assert_eq!(fast.edges.len() + fixed.len(), 3 * pts.len() - 3 - 6);
         assert!(fast.edges.iter().all(|e| chords.contains(e)));
         let cmp = cmp_edge_sets(&pts, &fast.edges, &joins.edges);
@@ -906,7 +922,7 @@ mod tests {
             let sol = pool
                 .build()
                 .unwrap()
-                .install(|| solve(&pts, &face, &chords));
+                .install(|| solve(&pts, &face, &chords, &Control::new()));
             let mut edges = sol.expect("a triangulation").edges;
             edges.sort_unstable();
             edges
@@ -914,7 +930,8 @@ mod tests {
         let one = on(1);
         assert_eq!(one, on(2));
         assert_eq!(one, on(4));
-        let joins = solve_by(&pts, &face, &chords, false).expect("a triangulation");
+        let joins =
+            solve_by(&pts, &face, &chords, false, &Control::new()).expect("a triangulation");
         assert_eq!(cmp_edge_sets(&pts, &one, &joins.edges), Ordering::Equal);
         // Four corner edges and one diagonal per trapezoid.
         assert_eq!(one.len(), 8);
@@ -932,6 +949,7 @@ mod tests {
                 points: &pts,
                 best: Mutex::new(None),
                 fast: true,
+                ctl: &Control::new(),
             };
             for edges in offers {
                 let weight = super::super::weight_of(&pts, edges);

@@ -176,7 +176,7 @@ fn solve(
     let constrained = !opts.forced.is_empty() || !opts.forbidden.is_empty();
     if hull.on_boundary.iter().all(|&b| b) && !constrained {
         ctl.stage(mwt_stage::FACES);
-        return convex_position(points, &hull);
+        return convex_position(points, &hull, ctl);
     }
     let mut stats = MwtStats::default();
     ctl.stage(mwt_stage::CANDIDATES);
@@ -245,7 +245,7 @@ fn solve(
             (problems.par_iter())
                 .map(|(face, chords)| {
                     (!ctl.is_stopped())
-                        .then(|| faces::solve(points, face, chords))
+                        .then(|| faces::solve(points, face, chords, ctl))
                         .flatten()
                 })
                 .collect()
@@ -318,15 +318,16 @@ fn dp_fits(m: usize, convex_position: bool) -> Result<(), PlanarError> {
 /// segment between two sites lies in the polygon, and the DP's wedge test drops those
 /// along a side. The diamond test would keep `Θ(n²)` candidates at cubic cost, and the
 /// LMT decides nothing here.
-fn convex_position(points: &[Point2], hull: &Hull2) -> Result<Mwt, PlanarError> {
+fn convex_position(points: &[Point2], hull: &Hull2, ctl: &Control) -> Result<Mwt, PlanarError> {
     let n = points.len();
     let t = Instant::now();
     dp_fits(n, true)?;
     let walk: Vec<u32> = (hull.boundary_chains(points).iter())
         .flat_map(|c| c[..c.len() - 1].iter().copied())
         .collect();
-    let dp = polygon_dp(points, &walk, &[], &|_| true)
-        .ok_or_else(|| PlanarError::internal("a convex polygon has no triangulation"))?;
+    let dp = polygon_dp(points, &walk, &[], &|_| true, ctl);
+    ctl.check()?;
+    let dp = dp.ok_or_else(|| PlanarError::internal("a convex polygon has no triangulation"))?;
     let mut skeleton = lmt::hull_edges(points, hull);
     skeleton.sort_unstable();
     let mut edges: Vec<[u32; 2]> = skeleton.iter().copied().chain(dp.edges).collect();
@@ -644,6 +645,39 @@ mod tests {
                 sites: 400
             }
         );
+    }
+
+    /// A stopped control ends each stage: the candidate search, the polygon DP (between
+    /// spans), the search over a face, and the whole solver; a passed deadline stops it
+    /// the same way.
+    #[test]
+    fn a_stopped_control_ends_every_stage() {
+        let stopped = Control::new();
+        stopped.stop();
+        let go = Control::new();
+        let ring = points2d(Distribution::Convex, 60, 2);
+        let walk: Vec<u32> = Hull2::new(&ring).vertices.clone();
+        assert_eq!(walk.len(), 60);
+        assert!(polygon_dp(&ring, &walk, &[], &|_| true, &go).is_some());
+        assert!(polygon_dp(&ring, &walk, &[], &|_| true, &stopped).is_none());
+        let face = Face {
+            outer: walk.clone(),
+            holes: Vec::new(),
+        };
+        let chords: HashSet<[u32; 2]> = (0..60u32)
+            .flat_map(|a| (a + 1..60).map(move |b| super::super::edge_key(a, b)))
+            .collect();
+        assert!(faces::solve(&ring, &face, &chords, &go).is_some());
+        assert!(faces::solve(&ring, &face, &chords, &stopped).is_none());
+        let pts = points2d(Distribution::Uniform, 500, 5);
+        assert!(candidates::search(&pts, usize::MAX, &stopped).is_none());
+        let past = Control::new().with_deadline(std::time::Instant::now());
+        for set in [&ring, &pts] {
+            for ctl in [&stopped, &past] {
+                let err = mwt(set, &MwtOptions::default(), ctl).unwrap_err();
+                assert_eq!(err, PlanarError::Stopped);
+            }
+        }
     }
 
     /// The memory guards refuse before allocating: the candidate search stops past its

@@ -5,6 +5,7 @@
 
 use super::cross;
 use super::walks::in_wedge;
+use crate::control::Control;
 use crate::geom::{DoubleDouble, Interval, Point2, compare_root_sums, orient2d, squared_length};
 use crate::planar::edge_key as key;
 use rayon::prelude::*;
@@ -75,12 +76,13 @@ pub(super) fn crosses(points: &[Point2], a: &[u32; 2], b: &[u32; 2]) -> bool {
 /// apexes of a diagonal are the intersection of two bit rows. Each cell keeps the
 /// weight of the sub-triangulation it chose in double-double with a certified error
 /// bound; two options the bounds cannot order are compared exactly ([`cmp_edge_sets`]),
-/// so the choice is optimal.
+/// so the choice is optimal. `None` also once `ctl` is stopped (looked at between spans).
 pub(crate) fn polygon_dp(
     points: &[Point2],
     poly: &[u32],
     cuts: &[[u32; 2]],
     usable: &(dyn Fn([u32; 2]) -> bool + Sync),
+    ctl: &Control,
 ) -> Option<Solution> {
     let m = poly.len();
     if m < 3 {
@@ -122,6 +124,9 @@ pub(crate) fn polygon_dp(
         cur
     };
     for span in 2..m {
+        if ctl.is_stopped() {
+            return None;
+        }
         let solve = |i: usize| {
             let j = i + span;
             if rows.ok(i, j) {
