@@ -53,20 +53,7 @@ echo
 echo "| n | minimum (tetrakit) | minimum (TOPCOM) | tetrakit (median of $RUNS) | TOPCOM | ratio |"
 echo "|---|---|---|---|---|---|"
 for n in $NS; do
-  python3 - "$n" "$WORK/cv$n" <<'PY'
-import math, random, sys
-n, out = int(sys.argv[1]), sys.argv[2]
-r = random.Random(n)
-pts = []
-while len(pts) < n:
-    x = [r.gauss(0, 1) for _ in range(3)]
-    l = math.sqrt(sum(c * c for c in x))
-    q = [round(c / l * 1000) for c in x]
-    if q not in pts:
-        pts.append(q)
-open(out + '.xyz', 'w').write('\n'.join(' '.join(map(str, q)) for q in pts) + '\n')
-open(out + '.topcom', 'w').write('[' + ','.join('[' + ','.join(map(str, q + [1])) + ']' for q in pts) + ']\n[]\n')
-PY
+  python3 benches/sphere_points.py "$n" "$WORK/cv$n"
   tk=()
   for _ in $(seq "$RUNS"); do
     "$TK" tetrahedralize "$WORK/cv$n.xyz" --minimal --json >"$WORK/t.json"

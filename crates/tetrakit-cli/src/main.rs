@@ -94,6 +94,11 @@ struct CheckArgs {
     /// Also certify that the mesh tetrahedralizes the convex hull of all its points.
     #[arg(long)]
     convex: bool,
+    /// Require a manifold boundary: boundary edges of four or more boundary faces (two
+    /// boxes touching along an edge) are problems (without it they are counted as
+    /// "non_manifold_edges" and the mesh is valid).
+    #[arg(long)]
+    manifold: bool,
     /// Print one JSON object on stdout.
     #[arg(long)]
     json: bool,
@@ -197,6 +202,11 @@ struct KeilCliArgs {
     /// Draw the sites, the β-disks of xy, the MWT and xy.
     #[arg(long)]
     svg: Option<PathBuf>,
+    /// Write the construction's sites, in the thesis's order (.xyz, .txt, .node or
+    /// .json), to rerun them through `mwt`, `skeleton` or another tool; x and y are the
+    /// sites the JSON output names in "xy".
+    #[arg(long, short)]
+    output: Option<PathBuf>,
     /// Check β-skeleton ⊆ MWT on this many random point sets instead.
     #[arg(long)]
     check_random: Option<usize>,
@@ -379,7 +389,7 @@ fn run(cmd: Cmd) -> CmdResult {
                 links: a.links,
             },
         ),
-        Cmd::Check(a) => run::check(&a.input, a.convex, a.json),
+        Cmd::Check(a) => run::check(&a.input, a.convex, a.manifold, a.json),
         Cmd::Mintetra(a) => poly::mintetra(&a.input, a.json, a.output.as_deref(), a.confirm),
         Cmd::Tetrahedralize(a) => poly::tetrahedralize(poly::TetraArgs {
             input: &a.input,
@@ -404,6 +414,7 @@ fn run(cmd: Cmd) -> CmdResult {
             n: a.n,
             as_json: a.json,
             svg: a.svg.as_deref(),
+            output: a.output.as_deref(),
             check_random: a.check_random,
         }),
         Cmd::Generate(GenerateArgs {

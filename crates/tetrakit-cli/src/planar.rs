@@ -18,7 +18,7 @@ pub fn read_points(path: &Path, xy: bool) -> Result<(Vec<Point2>, Vec<f64>), Cli
         let line = input.point_lines.get(i).copied().unwrap_or(0);
         return Err(CliError::new(format!(
             "{}:{line}: point {} has z = {}; planar commands need 2D points (--xy uses their projection)",
-            path.display(),
+            input.point_file.display(),
             i as u32 + input.index_base,
             input.points[i][2]
         )));
@@ -29,7 +29,7 @@ pub fn read_points(path: &Path, xy: bool) -> Result<(Vec<Point2>, Vec<f64>), Cli
         let line = |i: u32| input.point_lines.get(i as usize).copied().unwrap_or(0);
         return Err(CliError::new(format!(
             "{}:{}: points {} and {} coincide in the xy-plane at {:?} (line {})",
-            path.display(),
+            input.point_file.display(),
             line(b),
             a + input.index_base,
             b + input.index_base,
@@ -230,18 +230,27 @@ pub struct KeilArgs<'a> {
     pub n: Option<usize>,
     pub as_json: bool,
     pub svg: Option<&'a Path>,
+    pub output: Option<&'a Path>,
     pub check_random: Option<usize>,
 }
 
 pub fn keil(a: KeilArgs) -> CmdResult {
     let start = Instant::now();
     let beta = parse_beta(a.beta)?;
+    if a.n == Some(0) {
+        return Err(CliError::new(
+            "--n 0: at least one site per arc (or one point per random set)",
+        ));
+    }
     if let Some(sets) = a.check_random {
         return check_random(beta, sets, a.n.unwrap_or(200), a.as_json, start);
     }
     let k = planar::keil(beta, a.n, &Control::new()).map_err(CliError::new)?;
     if let Some(path) = a.svg {
         std::fs::write(path, io::keil_svg(&k)).written(path)?;
+    }
+    if let Some(path) = a.output {
+        io::write_points2d(path, &k.sites).written(path)?;
     }
     let iv = |w: &tetrakit::geom::Interval| [w.lo, w.hi];
     let refuted = k.xy_in_skeleton && !k.xy_in_mwt;
@@ -252,6 +261,8 @@ pub fn keil(a: KeilArgs) -> CmdResult {
                 "beta": beta.to_string(),
                 "n": k.n,
                 "sites": k.sites.len(),
+                "xy": k.xy,
+                "output": a.output.map(|p| p.display().to_string()),
                 "lemma_5_8_bound": k.lemma_bound,
                 "xy_in_skeleton": k.xy_in_skeleton,
                 "xy_in_mwt": k.xy_in_mwt,
@@ -317,10 +328,25 @@ fn check_random(beta: Ratio, sets: usize, n: usize, as_json: bool, start: Instan
             .iter()
             .map(|(k, s, e)| json!({"set": k, "seed": s, "edge": e}))
             .collect();
-        out!(
-            "{}",
-            json!({"beta": beta.to_string(), "sets": sets, "points": n, "skeleton_edges_checked": checked, "violations": v, "seconds": start.elapsed().as_secs_f64()})
-        );
+        let mut v = json!({
+            "verdict": if bad.is_empty() { "yes" } else { "no" },
+            "beta": beta.to_string(),
+            "sets": sets,
+            "points": n,
+            "skeleton_edges_checked": checked,
+            "violations": v,
+            "seconds": start.elapsed().as_secs_f64(),
+        });
+        if let Some((k, s, e)) = bad.first() {
+            v["witness"] = json!({
+                "kind": "skeleton_edge_not_in_mwt",
+                "detail": format!("edge {}-{} of the β-skeleton of random set {k} (seed {s}) is in no minimum weight triangulation", e[0], e[1]),
+                "set": k,
+                "seed": s,
+                "segments": [e],
+            });
+        }
+        out!("{v}");
     } else {
         out!(
             "β = {beta}: {checked} skeleton edges of {sets} random sets of {n} points checked against the exact MWT; {} violations",

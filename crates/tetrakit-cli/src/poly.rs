@@ -93,6 +93,11 @@ pub fn mintetra(path: &Path, as_json: bool, output: Option<&Path>, confirm: bool
         left.sort_unstable();
         left.dedup();
         v["remaining_vertices"] = json!(left.len());
+        v["witness"] = json!({
+            "kind": "not_augmented_bp_polyhedron",
+            "detail": m.reason,
+            "remaining_faces": shift(&m.remaining, base),
+        });
     }
     v["seconds"] = json!(start.elapsed().as_secs_f64());
     if as_json {
@@ -169,7 +174,15 @@ pub struct TetraArgs<'a> {
 
 pub fn tetrahedralize(a: TetraArgs) -> CmdResult {
     let start = Instant::now();
-    let input = io::read_input(a.input)?;
+    let mut input = io::read_input(a.input)?;
+    // The named file decides the domain: a TetGen point file means its points' convex
+    // hull even with a .face file beside it (name the .face for the polyhedron).
+    let named_node = (a.input.extension().and_then(|e| e.to_str()))
+        .is_some_and(|e| e.eq_ignore_ascii_case("node"));
+    let faces_beside = named_node && !input.faces.is_empty();
+    if named_node {
+        input.faces.clear();
+    }
     let poly;
     let domain = if input.faces.is_empty() {
         Domain::Points(&input.points)
@@ -194,6 +207,7 @@ pub fn tetrahedralize(a: TetraArgs) -> CmdResult {
     let mut v = json!({
         "vertices": n,
         "domain": if input.faces.is_empty() { "convex hull" } else { "polyhedron" },
+        "faces_beside_not_read": faces_beside,
         "candidates": stats.candidates,
         "sat_calls": stats.calls,
     });
@@ -285,11 +299,16 @@ fn print_tetrahedralize(v: &Value) {
                 v["candidates"]
             );
         }
-        _ => out!(
-            "undecided within the time limit: minimum between {} and {}",
-            v["lower_bound"],
-            v["upper_bound"]
-        ),
+        _ => match v["upper_bound"].as_u64() {
+            Some(upper) => out!(
+                "undecided within the time limit: minimum between {} and {upper}",
+                v["lower_bound"]
+            ),
+            None => out!(
+                "undecided within the time limit: minimum at least {} (no tetrahedralization found yet)",
+                v["lower_bound"]
+            ),
+        },
     }
     out!(
         "  {} candidate tetrahedra, {} SAT calls, {:.3} s",
@@ -297,6 +316,11 @@ fn print_tetrahedralize(v: &Value) {
         v["sat_calls"],
         v["seconds"].as_f64().unwrap_or(0.0)
     );
+    if v["faces_beside_not_read"].as_bool() == Some(true) {
+        out!(
+            "  domain: the convex hull of the .node's points (the .face beside it is not read; name the .face for the polyhedron)"
+        );
+    }
 }
 
 /// The polyhedron generators.
@@ -309,6 +333,19 @@ pub enum PolyGen {
 }
 
 pub fn generate(kind: PolyGen, seed: u64, output: &Path) -> CmdResult {
+    match kind {
+        PolyGen::Stacked { n } if !(4..=50_000_000).contains(&n) => {
+            return Err(CliError::new(format!(
+                "--n {n}: a stacked polyhedron has between 4 and 50000000 vertices"
+            )));
+        }
+        PolyGen::Bipyramid { m } if !(3..=50_000_000).contains(&m) => {
+            return Err(CliError::new(format!(
+                "--m {m}: a bipyramid's middle polygon has between 3 and 50000000 vertices"
+            )));
+        }
+        _ => {}
+    }
     if let PolyGen::Bp(params) = &kind {
         if !(1..=12).contains(&params.levels) {
             return Err(CliError::new(
@@ -325,8 +362,16 @@ pub fn generate(kind: PolyGen, seed: u64, output: &Path) -> CmdResult {
         PolyGen::Stacked { n } => (generate::stacked(n, seed), String::new()),
         PolyGen::Bipyramid { m } => (generate::bipyramid(m, seed), String::new()),
         PolyGen::Bp(params) => {
-            let (p, polar) = generate::bp_polyhedron(params);
-            (p, format!(", {polar} BP-net(s) glued"))
+            let (p, polar, seed) = bp_with_levels(params)?;
+            let note = if seed == params.seed {
+                String::new()
+            } else {
+                format!(
+                    " (seed {seed}: the first from --seed with {} levels)",
+                    params.levels
+                )
+            };
+            (p, format!(", {polar} BP-net(s) glued{note}"))
         }
         PolyGen::Schonhardt => (generate::schonhardt(), String::new()),
         PolyGen::SchonhardtBp => (generate::schonhardt_bp(), String::new()),
@@ -339,4 +384,20 @@ pub fn generate(kind: PolyGen, seed: u64, output: &Path) -> CmdResult {
         p.faces.len()
     );
     Ok(Verdict::Yes)
+}
+
+/// An augmented BP-polyhedron with the levels asked for: MINTETRA must find exactly
+/// `params.levels` of them (a small core may not hide a second level's nets). Up to 32
+/// seeds from `params.seed` are tried; returns the polyhedron, its nets and the seed.
+fn bp_with_levels(params: generate::BpParams) -> Result<(Polyhedron, usize, u64), CliError> {
+    for seed in (0..32).map(|i| params.seed.wrapping_add(i)) {
+        let (p, polar) = generate::bp_polyhedron(generate::BpParams { seed, ..params });
+        if params.levels <= 1 || polyhedra::mintetra(&p).levels as usize == params.levels {
+            return Ok((p, polar, seed));
+        }
+    }
+    Err(CliError::new(format!(
+        "no polyhedron with {} levels from --core {} --nets {} at 32 seeds from {}: give a larger --core or more --nets",
+        params.levels, params.core, params.nets, params.seed
+    )))
 }

@@ -20,6 +20,23 @@ pub fn detect(path: &Path, as_json: bool, output: Option<&Path>, opts: Options) 
         let s: Vec<(u32, u32)> = input.segments.iter().map(|s| (s[0], s[1])).collect();
         (s, false)
     } else if !input.tets.is_empty() {
+        // A tetrahedron that repeats a vertex has no edge set: name it where it was read.
+        if let Some(k) = input
+            .tets
+            .iter()
+            .position(|t| (0..4).any(|i| (i + 1..4).any(|j| t[i] == t[j])))
+        {
+            let t = input.tets[k].map(|v| v + input.index_base);
+            return Err(CliError::new(format!(
+                "{}: tetrahedron {} repeats a vertex ({} {} {} {}): it has no edge set to test",
+                input.tet_origin(k),
+                k as u32 + input.index_base,
+                t[0],
+                t[1],
+                t[2],
+                t[3]
+            )));
+        }
         (mesh::edges_of(&input.tets), true)
     } else {
         return Err(CliError::at(
@@ -118,7 +135,7 @@ fn print_detection(d: &Detection, base: u32, from_tets: bool, seconds: f64) {
     }
 }
 
-pub fn check(path: &Path, convex: bool, as_json: bool) -> CmdResult {
+pub fn check(path: &Path, convex: bool, manifold: bool, as_json: bool) -> CmdResult {
     let start = Instant::now();
     let input = io::read_input(path)?;
     if input.tets.is_empty() {
@@ -128,20 +145,29 @@ pub fn check(path: &Path, convex: bool, as_json: bool) -> CmdResult {
         ));
     }
     let hull = convex.then(|| Hull3::new(&input.points));
-    let report =
+    let mut report =
         mesh::verify(&input.points, &input.tets, hull.as_ref()).renumbered(input.index_base);
+    if manifold {
+        report = report.require_manifold();
+    }
     let seconds = start.elapsed().as_secs_f64();
     if as_json {
-        let v = json!({
+        let mut v = json!({
             "verdict": if report.is_valid() { "yes" } else { "no" },
             "tetrahedra": input.tets.len(),
             "vertices": input.points.len(),
             "boundary_faces": report.boundary_faces,
+            "non_manifold_edges": report.non_manifold.len(),
             "convex": convex,
             "problem_count": report.problem_count,
             "problems": report.problems,
             "seconds": seconds,
         });
+        // The witness of a NO: the first problem found (the checks run from the most
+        // local, a single tetrahedron, outwards).
+        if let Some(p) = report.problems.first() {
+            v["witness"] = json!(p);
+        }
         out!("{v}");
     } else if report.is_valid() {
         let scope = if convex {
@@ -154,6 +180,13 @@ pub fn check(path: &Path, convex: bool, as_json: bool) -> CmdResult {
             input.tets.len(),
             input.points.len()
         );
+        if let Some(p) = report.non_manifold.first() {
+            out!(
+                "  {} non-manifold boundary edge(s), valid for a non-manifold domain (--manifold refuses them); first: {}",
+                report.non_manifold.len(),
+                p.detail
+            );
+        }
     } else {
         out!(
             "INVALID: {} problem(s) in {} tetrahedra:",
@@ -193,6 +226,14 @@ pub fn generate(kind: GenKind) -> CmdResult {
                     "--points must be between 4 and 10000 (the generator locates points by brute force; use TetGen for larger meshes)",
                 ));
             }
+            if let Some(g) = grid
+                && (g < 2 || (g as u64).pow(3) < points as u64)
+            {
+                return Err(CliError::new(format!(
+                    "--grid {g} has {} integer points, fewer than --points {points} (and at least 2 a side are needed)",
+                    (g as u64).pow(3)
+                )));
+            }
             let t = generate::random_tetrahedralization(points, flips, common.seed, grid);
             if t.tets.is_empty() {
                 return Err(CliError::new(
@@ -227,30 +268,13 @@ pub fn generate(kind: GenKind) -> CmdResult {
 fn write_generated(name: &str, mut mesh: Tetrahedralization, c: &GenCommon) -> CmdResult {
     let mut edges = mesh.edges();
     if let Some(k) = c.corrupt {
-        let kind = match k {
-            CorruptKind::DropEdge => Corruption::DropEdge,
-            CorruptKind::AddCrossing => Corruption::AddCrossing,
-            CorruptKind::AddOverlap => Corruption::AddOverlap,
-        };
-        match generate::corrupt_edges(&mesh.points, &edges, kind, c.seed) {
-            Some(e) => edges = e,
-            None => {
-                return Err(CliError::new(format!(
-                    "cannot apply {k:?} to this instance: no segment can cross or overlap another (points in general position); try --grid or drop-edge"
-                )));
-            }
-        }
-        if matches!(k, CorruptKind::AddOverlap)
-            && let Some(m) = generate::add_overlapping_tet(&mesh, c.seed)
-        {
-            mesh = m;
-        }
+        (mesh, edges) = corrupted(mesh, &edges, k, c.seed)?;
     }
     let out = &c.output;
     io::write_instance(out, &mesh.points, &mesh.tets, &edges).written(out)?;
     let corrupted = c
         .corrupt
-        .map(|k| format!(", corrupted by {k:?}"))
+        .map(|k| format!(", corrupted by {}", user_name(k)))
         .unwrap_or_default();
     out!(
         "wrote {name}: {} points, {} segments, {} tetrahedra{corrupted} to {}",
@@ -260,4 +284,50 @@ fn write_generated(name: &str, mut mesh: Tetrahedralization, c: &GenCommon) -> C
         out.display()
     );
     Ok(Verdict::Yes)
+}
+
+/// The corruption as the user wrote it (`add-crossing`).
+fn user_name(k: CorruptKind) -> String {
+    use clap::ValueEnum;
+    k.to_possible_value()
+        .map_or_else(|| format!("{k:?}"), |v| v.get_name().to_string())
+}
+
+/// `mesh` and its `edges` corrupted by `k`, checked before anything is written: the
+/// segments are no tetrahedralization's edge set (`detect` says NO) and, for
+/// add-overlap, the tetrahedra fail the verifier. Up to 32 seeds from `seed` are tried;
+/// an instance that cannot be corrupted so is an error, never a valid file.
+fn corrupted(
+    mesh: Tetrahedralization,
+    edges: &[(u32, u32)],
+    k: CorruptKind,
+    seed: u64,
+) -> Result<(Tetrahedralization, Vec<(u32, u32)>), CliError> {
+    let kind = match k {
+        CorruptKind::DropEdge => Corruption::DropEdge,
+        CorruptKind::AddCrossing => Corruption::AddCrossing,
+        CorruptKind::AddOverlap => Corruption::AddOverlap,
+    };
+    let ctl = tetrakit::control::Control::new();
+    for s in (0..32).map(|i| seed.wrapping_add(i)) {
+        let Some(bad_edges) = generate::corrupt_edges(&mesh.points, edges, kind, s) else {
+            break;
+        };
+        let bad_mesh = match k {
+            CorruptKind::AddOverlap => match generate::add_overlapping_tet(&mesh, s) {
+                Some(m) if !m.verify_convex().is_valid() => m,
+                _ => continue,
+            },
+            _ => mesh.clone(),
+        };
+        let d = tetrakit::detect::detect(&mesh.points, &bad_edges, &Options::default(), &ctl)
+            .map_err(CliError::internal)?;
+        if !d.is_yes() {
+            return Ok((bad_mesh, bad_edges));
+        }
+    }
+    Err(CliError::new(format!(
+        "cannot apply {} to this instance: every attempt left a valid instance or found no segment to cross or overlap (points in general position?); try --grid, another --seed or drop-edge",
+        user_name(k)
+    )))
 }

@@ -650,3 +650,112 @@ fn keil_reports_exact_verdicts_and_checks_random_sets() {
     assert!(o.status.success());
     assert_eq!(json(&o)["violations"].as_array().unwrap().len(), 0);
 }
+
+/// Generators keep their word or refuse: out-of-range parameters exit 2, corrupt
+/// instances are checked NO before they are written, status lines use the user's words.
+#[test]
+fn generators_keep_their_word_or_refuse() {
+    let d = dir("gen");
+    for args in [
+        vec!["generate", "bipyramid", "--m", "0"],
+        vec!["generate", "stacked", "--n", "0"],
+        vec![
+            "generate",
+            "random-tetrahedralization",
+            "--points",
+            "100",
+            "--grid",
+            "2",
+        ],
+    ] {
+        let out = d.join("x.off");
+        let mut a = args.clone();
+        a.extend(["-o", s(&out)]);
+        let o = run(&a);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert_eq!(String::from_utf8_lossy(&o.stderr).lines().count(), 1);
+    }
+    let o = run(&["keil", "--beta", "1.155", "--n", "0"]);
+    assert_eq!(o.status.code(), Some(2));
+    // The drop-edge case the issue names, and add-overlap on skew lines: NO every time.
+    for (instance, k) in [
+        (
+            vec![
+                "random-tetrahedralization",
+                "--points",
+                "12",
+                "--flips",
+                "6",
+                "--seed",
+                "6",
+            ],
+            "drop-edge",
+        ),
+        (vec!["skew-lines", "--points", "40"], "add-overlap"),
+    ] {
+        let ele = d.join("c.ele");
+        let mut a = vec!["generate"];
+        a.extend(instance.iter());
+        a.extend(["--corrupt", k, "-o", s(&ele)]);
+        let o = run(&a);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        assert!(String::from_utf8_lossy(&o.stdout).contains(&format!("corrupted by {k}")));
+        let o = run(&["detect", s(&ele.with_extension("edge"))]);
+        assert_eq!(o.status.code(), Some(1), "{k}");
+        if k == "add-overlap" {
+            assert_eq!(run(&["check", s(&ele), "--convex"]).status.code(), Some(1));
+        }
+    }
+}
+
+/// Every NO carries a witness; keil writes its sites; a .node names the convex hull
+/// even with a .face beside it.
+#[test]
+fn one_json_contract() {
+    let d = dir("contract");
+    let ele = d.join("o.ele");
+    run(&[
+        "generate",
+        "kuhn",
+        "--size",
+        "2",
+        "--corrupt",
+        "add-overlap",
+        "-o",
+        s(&ele),
+    ]);
+    let v = json(&run(&["check", s(&ele), "--convex", "--json"]));
+    assert_eq!(v["verdict"], "no");
+    assert!(v["witness"]["kind"].is_string() && v["witness"]["detail"].is_string());
+    let off = d.join("s.off");
+    run(&["generate", "schonhardt-bp", "-o", s(&off)]);
+    let v = json(&run(&["mintetra", s(&off), "--json"]));
+    assert_eq!(v["verdict"], "no");
+    assert_eq!(v["witness"]["kind"], "not_augmented_bp_polyhedron");
+    let sites = d.join("k.xyz");
+    let v = json(&run(&[
+        "keil",
+        "--beta",
+        "1.1548",
+        "--n",
+        "20",
+        "-o",
+        s(&sites),
+        "--json",
+    ]));
+    let xy = v["xy"].as_array().unwrap();
+    let lines = std::fs::read_to_string(&sites).unwrap().lines().count();
+    assert_eq!(lines as u64, v["sites"].as_u64().unwrap());
+    assert!(xy.iter().all(|i| i.as_u64().unwrap() < lines as u64));
+    let face = d.join("p.face");
+    run(&["generate", "bipyramid", "--m", "5", "-o", s(&face)]);
+    let v = json(&run(&[
+        "tetrahedralize",
+        s(&face.with_extension("node")),
+        "--json",
+    ]));
+    assert_eq!(v["domain"], "convex hull");
+    assert_eq!(v["faces_beside_not_read"], true);
+    let v = json(&run(&["tetrahedralize", s(&face), "--json"]));
+    assert_eq!(v["domain"], "polyhedron");
+}

@@ -42,7 +42,7 @@ pub use witness::{Witness, WitnessKind};
 use crate::control::{Control, Stopped};
 use crate::geom::{Hull3, Point3};
 use crate::mesh;
-use crate::numbering::ids;
+use crate::numbering::{Renumbering, ids};
 use link::Ctx;
 use rayon::prelude::*;
 
@@ -185,15 +185,11 @@ pub fn detect(
         Graph::new(n, &[[segments[k].0, segments[k].1]])?;
     }
     // Work in a space-filling-curve order: neighbours then sit close in memory.
-    let order = spatial_order(points);
-    let mut rank = vec![0u32; points.len()];
-    for (new, &old) in order.iter().enumerate() {
-        rank[old as usize] = new as u32;
-    }
-    let pts: Vec<Point3> = order.par_iter().map(|&o| points[o as usize]).collect();
+    let renumber = Renumbering::from_order(spatial_order(points));
+    let pts = renumber.reorder(points);
     let segs: Vec<[u32; 2]> = segments
         .par_iter()
-        .map(|&(a, b)| [rank[a as usize], rank[b as usize]])
+        .map(|&(a, b)| [renumber.new_of(a), renumber.new_of(b)])
         .collect();
     let mut d = match detect_ordered(&pts, &segs, opts, ctl) {
         Err(DetectError::Segments(_)) => {
@@ -206,13 +202,10 @@ pub fn detect(
         }
         other => other?,
     };
-    let back = |v: u32| order[v as usize];
     d.result = match d.result {
-        Ok(Cells::Tetrahedra(t)) => Ok(Cells::Tetrahedra(
-            t.par_iter().map(|t| t.map(back)).collect(),
-        )),
-        Ok(Cells::Triangles(t)) => Ok(Cells::Triangles(t.iter().map(|t| t.map(back)).collect())),
-        Err(w) => Err(w.mapped(back)),
+        Ok(Cells::Tetrahedra(t)) => Ok(Cells::Tetrahedra(renumber.to_old(&t))),
+        Ok(Cells::Triangles(t)) => Ok(Cells::Triangles(renumber.to_old(&t))),
+        Err(w) => Err(w.mapped(|v| renumber.old(v))),
     };
     Ok(d)
 }

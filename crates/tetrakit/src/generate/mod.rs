@@ -349,8 +349,9 @@ pub fn corrupt_edges(
 }
 
 /// Adds a tetrahedron overlapping two neighbours (the union of two adjacent tetrahedra
-/// `abcd`, `abce` contains the new `abde` when `de` crosses `abc`); `None` when no pair of
-/// neighbours allows it.
+/// `abcd`, `abce` contains the new `abde` when `de` crosses `abc`); when no pair of
+/// neighbours allows it (grids: `de` meets `abc` only on its boundary), a second copy of
+/// one tetrahedron, with its vertices rotated. `None` only for an empty mesh.
 ///
 /// ```
 /// let t = tetrakit::generate::random_tetrahedralization(50, 50, 1, None);
@@ -383,7 +384,13 @@ pub fn add_overlapping_tet(t: &Tetrahedralization, seed: u64) -> Option<Tetrahed
             return Some(out);
         }
     }
-    None
+    if t.tets.is_empty() {
+        return None;
+    }
+    let mut out = t.clone();
+    let [a, b, c, d] = t.tets[rng.below(t.tets.len())];
+    out.tets.push([b, c, a, d]);
+    Some(out)
 }
 
 #[cfg(test)]

@@ -26,12 +26,23 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
         point_file: path.to_path_buf(),
         ..Default::default()
     };
+    let dim = doc.points.first().map_or(3, Vec::len);
     for (k, p) in doc.points.iter().enumerate() {
         if !(2..=3).contains(&p.len()) {
             return Err(InputError::new(
                 path,
                 0,
                 format!("points[{k}] has {} coordinates (expected 2 or 3)", p.len()),
+            ));
+        }
+        if p.len() != dim {
+            return Err(InputError::new(
+                path,
+                0,
+                format!(
+                    "points[{k}] has {} coordinates but points[0] has {dim}: every point needs the same number",
+                    p.len()
+                ),
             ));
         }
         if let Some(x) = p.iter().find(|x| !coordinate_in_range(**x)) {
@@ -50,9 +61,7 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
     if doc.points.is_empty() {
         return Err(InputError::new(path, 0, "no points"));
     }
-    if doc.points.iter().all(|p| p.len() == 2) {
-        input.dim = 2;
-    }
+    input.dim = dim;
     let n = input.points.len();
     fn idx<const K: usize>(
         rows: &[[i64; K]],
@@ -84,6 +93,7 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
     input.segments = idx(&doc.segments, n, "segments", path)?;
     input.faces = idx(&doc.faces, n, "faces", path)?;
     input.tets = idx(&doc.tets, n, "tets", path)?;
+    input.tet_file = path.to_path_buf();
     let lines = vec![0; input.segments.len()];
     check_segments(&input.segments, &lines, 0, path)?;
     Ok(input)

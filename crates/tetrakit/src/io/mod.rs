@@ -80,6 +80,21 @@ pub struct Input {
     pub point_lines: Vec<usize>,
     /// The file the points came from.
     pub point_file: PathBuf,
+    /// The file the tetrahedra came from, and the source line of each (empty where the
+    /// format has no lines, as JSON).
+    pub tet_file: PathBuf,
+    /// See [`Input::tet_file`].
+    pub tet_lines: Vec<u32>,
+}
+
+impl Input {
+    /// Where tetrahedron `k` was read, for messages: `file:line` or `file` (`tets[k]`).
+    pub fn tet_origin(&self, k: usize) -> String {
+        match self.tet_lines.get(k) {
+            Some(&line) if line > 0 => format!("{}:{line}", self.tet_file.display()),
+            _ => format!("{}: tets[{k}]", self.tet_file.display()),
+        }
+    }
 }
 
 /// Reads `path`, choosing the format by extension: `.node` (with sibling `.edge`, `.ele`
@@ -157,21 +172,89 @@ pub fn read_polyhedron(path: &Path) -> Result<(Input, crate::mesh::Polyhedron), 
     Ok((input, poly))
 }
 
+/// The largest input file read (bytes): 4 GiB, about 40 million points as text.
+pub const MAX_INPUT_BYTES: u64 = 4 << 30;
+
+/// Reads a text input: a regular file (not a FIFO or a device, which could be read
+/// forever) of at most [`MAX_INPUT_BYTES`], UTF-8, a leading byte-order mark dropped.
+/// Line ends may be LF or CR LF; a file whose only line ends are CR is refused by name.
 pub(crate) fn read_text(path: &Path) -> Result<String, InputError> {
-    std::fs::read_to_string(path).map_err(|e| InputError::new(path, 0, format!("cannot read: {e}")))
+    let cannot = |e: std::io::Error| InputError::new(path, 0, format!("cannot read: {e}"));
+    let meta = std::fs::metadata(path).map_err(cannot)?;
+    if !meta.is_file() {
+        return Err(InputError::new(path, 0, "not a regular file"));
+    }
+    if meta.len() > MAX_INPUT_BYTES {
+        return Err(InputError::new(
+            path,
+            0,
+            format!(
+                "{} bytes: larger than the {} GiB input limit",
+                meta.len(),
+                MAX_INPUT_BYTES >> 30
+            ),
+        ));
+    }
+    let bytes = std::fs::read(path).map_err(cannot)?;
+    let mut text = String::from_utf8(bytes).map_err(|e| {
+        let at = e.utf8_error().valid_up_to();
+        let line = 1 + e.as_bytes()[..at].iter().filter(|&&b| b == b'\n').count();
+        InputError::new(
+            path,
+            line,
+            "not UTF-8 text (a binary file, or another encoding)",
+        )
+    })?;
+    if text.starts_with('\u{feff}') {
+        text.drain(..3);
+    }
+    if !text.contains('\n') && text.trim_end_matches('\r').contains('\r') {
+        return Err(InputError::new(
+            path,
+            0,
+            "lines end in CR alone (classic Mac line ends): convert them to LF or CR LF",
+        ));
+    }
+    Ok(text)
 }
 
-/// Parses a coordinate, rejecting NaN, infinities and magnitudes outside the exact range.
+/// An input token for a message: escaped (no control character reaches the terminal)
+/// and cut to 40 characters.
+pub(crate) fn quote(tok: &str) -> String {
+    let mut q: String = tok.chars().take(40).flat_map(char::escape_debug).collect();
+    if tok.chars().nth(40).is_some() {
+        q.push('…');
+    }
+    format!("'{q}'")
+}
+
+/// Parses a coordinate, rejecting NaN, infinities, magnitudes outside the exact range,
+/// and decimals that round to 0 although their digits are not all 0 (`1e-400`).
 pub(crate) fn parse_coord(tok: &str, path: &Path, line: usize) -> Result<f64, InputError> {
     let x: f64 = tok
         .parse()
-        .map_err(|_| InputError::new(path, line, format!("'{tok}' is not a number")))?;
+        .map_err(|_| InputError::new(path, line, format!("{} is not a number", quote(tok))))?;
+    let nonzero_digits = || {
+        let mantissa = tok.split(['e', 'E']).next().unwrap_or("");
+        mantissa.bytes().any(|b| (b'1'..=b'9').contains(&b))
+    };
+    if x == 0.0 && nonzero_digits() {
+        return Err(InputError::new(
+            path,
+            line,
+            format!(
+                "coordinate {} is below the exactly supported magnitude range [2^-142, 2^201] (it would round to 0)",
+                quote(tok)
+            ),
+        ));
+    }
     if !coordinate_in_range(x) {
         return Err(InputError::new(
             path,
             line,
             format!(
-                "coordinate {tok} is not finite or outside the exactly supported magnitude range [2^-142, 2^201]"
+                "coordinate {} is not finite or outside the exactly supported magnitude range [2^-142, 2^201]",
+                quote(tok)
             ),
         ));
     }
@@ -185,8 +268,13 @@ pub(crate) fn parse_int(
     line: usize,
     what: &str,
 ) -> Result<i64, InputError> {
-    tok.parse()
-        .map_err(|_| InputError::new(path, line, format!("{what} '{tok}' is not an integer")))
+    tok.parse().map_err(|_| {
+        InputError::new(
+            path,
+            line,
+            format!("{what} {} is not an integer", quote(tok)),
+        )
+    })
 }
 
 /// Converts a file's vertex reference to a 0-based index, checking the range.

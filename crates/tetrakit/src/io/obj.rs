@@ -1,6 +1,8 @@
 //! Wavefront OBJ: `v x y z [w]` points, `l a b c ...` polylines (each consecutive pair a
 //! segment) and `f a b c ...` faces (`a/t/n` forms and negative, relative indices
-//! accepted). Other statements (normals, groups, materials) are ignored.
+//! accepted). Texture coordinates, normals, groups, objects, smoothing and materials
+//! (`vt vn vp g o s usemtl mtllib`) are skipped; any other statement is an error naming
+//! its line (curves, surfaces, points and lines of other kinds would otherwise vanish).
 
 use super::{Input, InputError, check_segments, parse_coord, parse_int, read_text, token_lines};
 use std::path::Path;
@@ -71,7 +73,17 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
                     face_lines.push((line, refs))
                 }
             }
-            _ => {}
+            "vt" | "vn" | "vp" | "g" | "o" | "s" | "usemtl" | "mtllib" => {}
+            other => {
+                return Err(InputError::new(
+                    path,
+                    line,
+                    format!(
+                        "unsupported OBJ statement {} (read: v, l, f; skipped: vt vn vp g o s usemtl mtllib)",
+                        super::quote(other)
+                    ),
+                ));
+            }
         }
     }
     if input.points.is_empty() {

@@ -24,7 +24,7 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
         return Err(InputError::new(
             path,
             hline,
-            format!("expected 'OFF', found '{}'", header[0]),
+            format!("expected 'OFF', found {}", super::quote(header[0])),
         ));
     }
     let (cline, counts): (usize, Vec<String>) = if counts_from_header {

@@ -143,3 +143,108 @@ fn written_files_read_back_exactly() {
         vec![[0, 1], [2, 3]]
     );
 }
+
+/// Siblings keep the named file's stem and case: `M.ELE` reads `M.NODE`, not `m.node`,
+/// and two differing candidates are an error, not a silent choice.
+#[test]
+fn siblings_keep_the_case_of_the_named_file() {
+    tmp("case.NODE", NODE);
+    let one_tet = "1 4 0\n1 1 2 3 4\n";
+    let ele = tmp("case.ELE", one_tet);
+    let input = read_input(&ele).unwrap();
+    assert_eq!(input.point_file, ele.with_extension("NODE"));
+    // A lower-case point file with other contents beside the upper-case one.
+    tmp("case.node", "4 3 0 0\n1 0 0 0\n2 2 0 0\n3 0 2 0\n4 0 0 2\n");
+    let e = read_input(&ele).unwrap_err();
+    assert!(
+        e.message.contains("both") && e.message.contains("differ"),
+        "{e}"
+    );
+    // The same contents under both names is one file set.
+    tmp("case.node", NODE);
+    assert!(read_input(&ele).is_ok());
+    // Only a lower-case sibling: it is used.
+    tmp("low.node", NODE);
+    let input = read_input(&tmp("low.ELE", one_tet)).unwrap();
+    assert_eq!(input.point_file, ele.with_file_name("low.node"));
+}
+
+/// Values the reader would change, drop or pad are errors.
+#[test]
+fn nothing_is_silently_changed_or_dropped() {
+    // A 10-node tetrahedron: its edge midpoints are range-checked too.
+    tmp("quad.node", NODE);
+    let e = err("quad.ele", "1 10 0\n1 1 2 3 4 1 2 3 4 1 99\n");
+    assert_eq!(e.line, 2);
+    assert!(e.message.contains("99"), "{e}");
+    tmp("quad2.node", NODE);
+    let ok = read_input(&tmp("quad2.ele", "1 10 0\n1 1 2 3 4 1 2 3 4 1 2\n")).unwrap();
+    assert_eq!(ok.tets, [[0, 1, 2, 3]]);
+    // A JSON point with two coordinates among 3D points is not padded.
+    let e = err("mixed.json", r#"{"points": [[0,0,0],[1,0,0],[0,1]]}"#);
+    assert!(e.message.contains("points[2]"), "{e}");
+    // A decimal that rounds to 0 is refused like one just outside the range.
+    let e = err("tiny.xyz", "0 0 0\n1 0 0\n0 1e-400 0\n");
+    assert_eq!(e.line, 3);
+    assert!(e.message.contains("round to 0"), "{e}");
+    assert!(read_input(&tmp("zero.xyz", "0 0 0\n1 0e-400 0\n0 0.000 1\n")).is_ok());
+    // An OBJ statement that is neither read nor ignorable names its line.
+    let e = err("curve.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\ncurv 0 1 1 2\n");
+    assert_eq!(e.line, 4);
+    assert!(e.message.contains("curv"), "{e}");
+    assert!(
+        read_input(&tmp(
+            "ok.obj",
+            "mtllib a.mtl\no x\nv 0 0 0\nvn 0 0 1\nv 1 0 0\ns off\nv 0 1 0\nf 1 2 3\n"
+        ))
+        .is_ok()
+    );
+}
+
+/// Messages quote tokens escaped and cut, and never show a wrapped integer.
+#[test]
+fn messages_are_one_short_line() {
+    let esc = err("esc.xyz", "0 0 0\n1 \u{1b}[31m 0\n");
+    assert!(!esc.to_string().contains('\u{1b}'), "{esc}");
+    let long = format!("0 0 0\n1 {} 0\n", "7".repeat(5000));
+    let e = err("long.xyz", &long);
+    assert!(
+        e.to_string().len() < 300,
+        "{} characters",
+        e.to_string().len()
+    );
+    let e = err(
+        "wrap.node",
+        "4 3 9223372036854775807 9223372036854775807\n1 0 0 0\n",
+    );
+    assert!(!e.to_string().contains("18446744073709551"), "{e}");
+    assert_eq!(e.line, 1);
+}
+
+/// A byte-order mark is read; CR-only line ends, non-UTF-8 bytes and files that are not
+/// regular files are refused by name.
+#[test]
+fn encodings_and_special_files() {
+    let bom = read_input(&tmp("bom.xyz", "\u{feff}0 0 0\n1 0 0\n0 1 0\n")).unwrap();
+    assert_eq!(bom.points.len(), 3);
+    let e = err("cr.xyz", "0 0 0\r1 0 0\r0 1 0\r");
+    assert!(e.message.contains("CR"), "{e}");
+    let bin = tmp("bin.xyz", "");
+    std::fs::write(&bin, b"0 0 0\n1 0 \xff\n").unwrap();
+    let e = read_input(&bin).unwrap_err();
+    assert_eq!(e.line, 2);
+    assert!(e.message.contains("UTF-8"), "{e}");
+    let dir = tmp("d.xyz", "");
+    std::fs::remove_file(&dir).unwrap();
+    std::fs::create_dir_all(&dir).unwrap();
+    assert!(
+        read_input(&dir)
+            .unwrap_err()
+            .message
+            .contains("regular file")
+    );
+    if Path::new("/dev/zero").exists() {
+        let e = read_text(Path::new("/dev/zero")).unwrap_err();
+        assert!(e.message.contains("regular file"), "{e}");
+    }
+}

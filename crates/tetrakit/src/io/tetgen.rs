@@ -6,35 +6,86 @@ use super::{
 };
 use crate::rows::split_at_offsets;
 use rayon::prelude::*;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 /// Reads a TetGen file set starting from any of its members.
 pub(super) fn read(path: &Path, ext: &str) -> Result<Input, InputError> {
-    let node = path.with_extension("node");
-    if ext != "node" && !node.exists() {
+    let node = if ext == "node" {
+        Some(path.to_path_buf())
+    } else {
+        sibling(path, "node")?
+    };
+    let Some(node) = node else {
         return Err(InputError::new(
             path,
             0,
-            format!("needs the point file {} beside it", node.display()),
+            format!(
+                "needs the point file {} beside it",
+                path.with_extension("node").display()
+            ),
         ));
-    }
-    let mut input = read_node(&node)?;
-    let sibling = |e: &str| {
-        let p = path.with_extension(e);
-        (ext == e || (ext == "node" && p.exists())).then_some(p)
     };
-    if let Some(p) = sibling("edge") {
+    let mut input = read_node(&node)?;
+    let member = |e: &str| -> Result<Option<PathBuf>, InputError> {
+        match (ext == e, ext == "node") {
+            (true, _) => Ok(Some(path.to_path_buf())),
+            (false, true) => sibling(path, e),
+            (false, false) => Ok(None),
+        }
+    };
+    if let Some(p) = member("edge")? {
         let (rows, lines) = read_rows::<2>(&p, &input, "edge", 2)?;
         check_segments(&rows, &lines, input.index_base, &p)?;
         input.segments = rows;
     }
-    if let Some(p) = sibling("ele") {
-        input.tets = read_rows::<4>(&p, &input, "tetrahedron", 4)?.0;
+    if let Some(p) = member("ele")? {
+        (input.tets, input.tet_lines) = read_rows::<4>(&p, &input, "tetrahedron", 4)?;
+        input.tet_file = p;
     }
-    if let Some(p) = sibling("face") {
+    if let Some(p) = member("face")? {
         input.faces = read_rows::<3>(&p, &input, "face", 3)?.0;
     }
     Ok(input)
+}
+
+/// The member of `path`'s file set with extension `ext` (lower case): the same stem with
+/// `ext` in the case of `path`'s own extension (`m.ELE` → `m.NODE`) or in lower case,
+/// whichever exists; `None` when neither does. Both existing as different files with
+/// different contents is an error (which one the user meant cannot be told).
+fn sibling(path: &Path, ext: &str) -> Result<Option<PathBuf>, InputError> {
+    let own = path.extension().and_then(|e| e.to_str()).unwrap_or("");
+    let upper = !own.is_empty() && own.chars().all(|c| !c.is_ascii_lowercase());
+    let same_case = path.with_extension(if upper {
+        ext.to_ascii_uppercase()
+    } else {
+        ext.to_string()
+    });
+    let lower = path.with_extension(ext);
+    match (same_case.is_file(), lower.is_file()) {
+        (false, false) => Ok(None),
+        (true, false) => Ok(Some(same_case)),
+        (false, true) => Ok(Some(lower)),
+        (true, true) if same_case == lower || same_file(&same_case, &lower) => Ok(Some(same_case)),
+        (true, true) => Err(InputError::new(
+            path,
+            0,
+            format!(
+                "both {} and {} exist and differ: rename one (which belongs to this file cannot be told)",
+                same_case.display(),
+                lower.display()
+            ),
+        )),
+    }
+}
+
+/// Whether two paths name one file, or files with the same contents.
+fn same_file(a: &Path, b: &Path) -> bool {
+    match (std::fs::canonicalize(a), std::fs::canonicalize(b)) {
+        (Ok(x), Ok(y)) if x == y => return true,
+        _ => {}
+    }
+    let len = |p: &Path| std::fs::metadata(p).map(|m| m.len()).ok();
+    len(a) == len(b) && std::fs::read(a).ok() == std::fs::read(b).ok()
 }
 
 /// The header line (its number and values) and the body after it (with its first line
@@ -57,6 +108,17 @@ fn split_header<'a>(
             .collect::<Result<Vec<_>, _>>()?;
         if vals.iter().any(|&v| v < 0) {
             return Err(InputError::new(path, line, "negative number in the header"));
+        }
+        // Counts beyond u32 cannot be indexed; refusing them keeps every sum below exact.
+        if let Some(v) = vals.iter().find(|&&v| v > i64::from(u32::MAX)) {
+            return Err(InputError::new(
+                path,
+                line,
+                format!(
+                    "header value {v} is larger than {} (the most this reader indexes)",
+                    u32::MAX
+                ),
+            ));
         }
         return Ok((line, vals, &text[offset..], line + 1));
     }
@@ -318,9 +380,12 @@ fn read_rows<const K: usize>(
             return None;
         }
         let mut r = [0u32; K];
-        for k in 0..K {
+        for k in 0..per_row.max(K) {
             let i = vals[1 + k].checked_sub(nodes.index_base as u64)?;
-            r[k] = u32::try_from(i).ok().filter(|&i| u64::from(i) < n)?;
+            let i = u32::try_from(i).ok().filter(|&i| u64::from(i) < n)?;
+            if k < K {
+                r[k] = i;
+            }
         }
         Some(r)
     };
@@ -336,10 +401,15 @@ fn read_rows<const K: usize>(
             ));
         }
         check_row_index(path, toks, line, ordinal, (base, declared, what))?;
+        // Every node of a row is checked (a 10-node tetrahedron's edge midpoints too);
+        // the corners are kept.
         let mut r = [0u32; K];
-        for k in 0..K {
+        for k in 0..per_row.max(K) {
             let raw = parse_int(toks[1 + k], path, line, "vertex")?;
-            r[k] = vertex_ref(raw, nodes.index_base, nodes.points.len(), path, line)?;
+            let i = vertex_ref(raw, nodes.index_base, nodes.points.len(), path, line)?;
+            if k < K {
+                r[k] = i;
+            }
         }
         Ok(r)
     })?;

@@ -75,14 +75,14 @@ pub(super) fn vertex_overlaps(
                         continue;
                     }
                     if cones_overlap(&points[v], &ct, &cone(u)) {
-                        return Some(Problem {
-                            kind: ProblemKind::Overlap,
-                            cells: vec![t, u],
-                            vertices: vec![v as u32],
-                            detail: format!(
+                        return Some(Problem::new(
+                            ProblemKind::Overlap,
+                            vec![t, u],
+                            vec![v as u32],
+                            format!(
                                 "tetrahedra #{t} and #{u} overlap near their common vertex #{v}"
                             ),
-                        });
+                        ));
                     }
                 }
             }
@@ -158,18 +158,18 @@ pub(super) fn boundary_self_intersections(
         .into_iter()
         .map(|(i, j)| {
             let (fi, fj) = (&faces[i], &faces[j]);
-            Problem {
-                kind: ProblemKind::BoundarySelfIntersection,
-                cells: vec![fi.1, fj.1],
-                vertices: fi.0.iter().chain(&fj.0).copied().collect(),
-                detail: format!(
+            Problem::new(
+                ProblemKind::BoundarySelfIntersection,
+                vec![fi.1, fj.1],
+                fi.0.iter().chain(&fj.0).copied().collect(),
+                format!(
                     "boundary faces {} (of tetrahedron #{}) and {} (of tetrahedron #{}) intersect",
                     ids(&fi.0),
                     fi.1,
                     ids(&fj.0),
                     fj.1
                 ),
-            }
+            )
         })
         .collect()
 }
@@ -213,15 +213,15 @@ pub(super) fn nested_overlaps(
                 }
                 hit
             });
-            found.map(|t| Problem {
-                kind: ProblemKind::Overlap,
-                cells: vec![t, own],
-                vertices: vec![v],
-                detail: format!(
+            found.map(|t| Problem::new(
+ProblemKind::Overlap,
+vec![t, own],
+vec![v],
+format!(
                     "vertex {v} of a boundary component lies in tetrahedron {t} ({}): a separate piece of mesh overlaps another",
                     ids(&tets[t as usize])
                 ),
-            })
+))
         })
         .collect()
 }

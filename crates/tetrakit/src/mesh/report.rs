@@ -19,8 +19,12 @@ pub enum ProblemKind {
     FaceSharedByMore,
     /// Two tetrahedra sharing a face lie on the same side of it (they overlap).
     SameSide,
-    /// The boundary faces do not form a closed surface.
+    /// The boundary faces do not form a closed surface (an edge used unequally in the
+    /// two directions).
     OpenBoundary,
+    /// A boundary edge used by four or more boundary faces (a non-manifold domain); not a
+    /// problem unless a manifold boundary is asked for.
+    NonManifoldEdge,
     /// A boundary face does not lie on the convex hull.
     BoundaryNotOnHull,
     /// Tetrahedra overlap (the mesh covers part of the hull more than once).
@@ -93,6 +97,9 @@ pub struct Report {
     pub problem_count: usize,
     /// Number of boundary (unpaired) faces.
     pub boundary_faces: usize,
+    /// Non-manifold boundary edges: valid in a tetrahedralization of a non-manifold
+    /// domain, listed so a caller that needs a manifold boundary can refuse them.
+    pub non_manifold: Vec<Problem>,
 }
 
 impl Report {
@@ -101,10 +108,19 @@ impl Report {
 
     /// Shifts tetrahedron and vertex numbers by `base` (fields and `#12` numbers in the text).
     pub fn renumbered(mut self, base: u32) -> Self {
-        for p in &mut self.problems {
+        for p in self.problems.iter_mut().chain(&mut self.non_manifold) {
             p.cells.iter_mut().for_each(|t| *t += base);
             p.vertices.iter_mut().for_each(|v| *v += base);
             p.detail = crate::numbering::renumber_text(&p.detail, base);
+        }
+        self
+    }
+
+    /// The report of a check that also requires a manifold boundary: the non-manifold
+    /// edges become problems.
+    pub fn require_manifold(mut self) -> Self {
+        for p in std::mem::take(&mut self.non_manifold) {
+            self.push(p);
         }
         self
     }

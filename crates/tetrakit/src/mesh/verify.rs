@@ -4,7 +4,11 @@
 //! 1. every tetrahedron has four distinct, in-range vertices and is positively oriented;
 //! 2. every triangle is a face of at most two tetrahedra, and of two only when they lie on
 //!    opposite sides of it (oriented-face pairing);
-//! 3. the unpaired (boundary) faces form a closed surface;
+//! 3. the unpaired (boundary) faces form a closed surface: every boundary edge is used as
+//!    often in one direction as in the other. An edge used more than once each way is a
+//!    *non-manifold edge* of the domain (two boxes meshed conformingly, touching along an
+//!    edge), as valid as a non-manifold vertex (boxes touching at a corner); such edges are
+//!    counted in [`Report::non_manifold`], and `check --manifold` reports them;
 //! 4. with a convex domain: every boundary face lies on a facet of the convex hull of the
 //!    points, the boundary faces on one facet do not overlap, and every point is a vertex;
 //!    without one: the tetrahedra around each vertex do not overlap, the boundary does not
@@ -54,9 +58,11 @@ pub fn verify(points: &[Point3], tets: &[[u32; 4]], hull: Option<&Hull3>) -> Rep
         report.push(p);
     }
     report.boundary_faces = boundary.len();
-    for p in check_closed(&boundary) {
+    let (open, non_manifold) = check_closed(&boundary);
+    for p in open {
         report.push(p);
     }
+    report.non_manifold = non_manifold;
     if let Some(h) = hull {
         for p in check_hull(points, tets, &boundary, h) {
             report.push(p);
@@ -263,7 +269,9 @@ fn pair_bucket(a: u32, recs: &mut [[u32; 3]]) -> (Vec<BoundaryFace>, Vec<Problem
     (boundary, problems)
 }
 
-fn check_closed(boundary: &[BoundaryFace]) -> Vec<Problem> {
+/// The boundary edges used unequally in the two directions (the boundary is not closed
+/// there) and those used equally but more than once each way (non-manifold edges).
+fn check_closed(boundary: &[BoundaryFace]) -> (Vec<Problem>, Vec<Problem>) {
     let mut directed: Vec<(u32, u32, u32)> = boundary
         .iter()
         .flat_map(|f| (0..3).map(move |i| (f.v[i], f.v[(i + 1) % 3], f.tet)))
@@ -274,22 +282,29 @@ fn check_closed(boundary: &[BoundaryFace]) -> Vec<Problem> {
         let hi = directed.partition_point(|e| (e.0, e.1) <= (a, b));
         hi - lo
     };
-    let mut problems = Vec::new();
+    let (mut open, mut non_manifold) = (Vec::new(), Vec::new());
     for (k, &(a, b, t)) in directed.iter().enumerate() {
         if k > 0 && (directed[k - 1].0, directed[k - 1].1) == (a, b) {
             continue;
         }
         let (fw, bw) = (count(a, b), count(b, a));
-        if fw != 1 || bw != 1 {
-            problems.push(Problem::new(
+        if fw != bw {
+            open.push(Problem::new(
                 ProblemKind::OpenBoundary,
                 vec![t],
                 vec![a, b],
                 format!("boundary edge (#{a}, #{b}) is used {fw} times in one direction and {bw} in the other; the boundary is not a closed surface"),
             ));
+        } else if fw > 1 && a < b {
+            non_manifold.push(Problem::new(
+                ProblemKind::NonManifoldEdge,
+                vec![t],
+                vec![a, b],
+                format!("boundary edge (#{a}, #{b}) is used by {} boundary faces ({fw} each way): the domain is not a manifold there", 2 * fw),
+            ));
         }
     }
-    problems
+    (open, non_manifold)
 }
 
 fn check_hull(
@@ -356,6 +371,55 @@ fn check_hull(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Two Kuhn cubes, the second moved by `shift`, sharing the points they have in
+    /// common.
+    fn two_cubes(shift: [f64; 3]) -> crate::mesh::Tetrahedralization {
+        let a = crate::generate::kuhn(1);
+        let mut points = a.points.clone();
+        let mut tets = a.tets.clone();
+        let index: Vec<u32> = a
+            .points
+            .iter()
+            .map(|p| {
+                let q = [p[0] + shift[0], p[1] + shift[1], p[2] + shift[2]];
+                match points.iter().position(|r| *r == q) {
+                    Some(i) => i as u32,
+                    None => {
+                        points.push(q);
+                        points.len() as u32 - 1
+                    }
+                }
+            })
+            .collect();
+        tets.extend(a.tets.iter().map(|t| t.map(|v| index[v as usize])));
+        crate::mesh::Tetrahedralization { points, tets }
+    }
+
+    /// Boxes touching along an edge form a valid mesh of a non-manifold domain, like
+    /// boxes touching at a corner; the edge is named as non-manifold, and refused only
+    /// when a manifold boundary is required.
+    #[test]
+    fn non_manifold_edges_are_valid_and_named() {
+        let edge = two_cubes([1.0, 1.0, 0.0]);
+        assert_eq!(edge.points.len(), 14);
+        let r = verify(&edge.points, &edge.tets, None);
+        assert!(r.is_valid(), "{:?}", r.problems);
+        assert_eq!(r.non_manifold.len(), 1);
+        assert_eq!(r.non_manifold[0].kind, ProblemKind::NonManifoldEdge);
+        let strict = r.require_manifold();
+        assert!(!strict.is_valid());
+        let corner = two_cubes([1.0, 1.0, 1.0]);
+        let r = verify(&corner.points, &corner.tets, None);
+        assert!(
+            r.is_valid() && r.non_manifold.is_empty(),
+            "{:?}",
+            r.problems
+        );
+        // Overlapping boxes sharing that edge are still refused.
+        let overlap = two_cubes([0.5, 0.5, 0.0]);
+        assert!(!verify(&overlap.points, &overlap.tets, None).is_valid());
+    }
 
     fn cube() -> (Vec<Point3>, Vec<[u32; 4]>) {
         // Kuhn subdivision of the unit cube into 6 tetrahedra around the diagonal 0–7.

@@ -76,7 +76,7 @@ pub enum Checks {
     /// a shelling, and a NO means that no trim order the algorithm tries works.
     Shelling,
     /// Orientation checks only; the grid is not even built. Much faster, but a YES must
-    /// be certified ([`certify`](super::certify)): if it fails, or on NO, run
+    /// be certified ([`certify_polyhedron`](crate::mesh::certify_polyhedron)): if it fails, or on NO, run
     /// [`Checks::Shelling`]. The CLI does exactly this; the certificate is run on every
     /// answer anyway, so the per-trim checks are redundant whenever it passes.
     OrientationOnly,

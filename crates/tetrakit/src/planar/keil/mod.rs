@@ -156,7 +156,7 @@ pub const MAX_N: usize = 4000;
 pub fn keil(beta: Ratio, n: Option<usize>, ctl: &Control) -> Result<KeilResult, PlanarError> {
     let (build, lemma_bound) = construction(beta)?;
     let n = n
-        .unwrap_or(lemma_bound.max(0.0).floor() as usize + 1)
+        .unwrap_or((lemma_bound.max(0.0).floor() as usize).saturating_add(1))
         .max(1);
     if n > MAX_N {
         return Err(PlanarError::KeilTooLarge {

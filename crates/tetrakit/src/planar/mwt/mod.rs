@@ -25,6 +25,7 @@ use super::{PlanarError, find};
 use crate::control::Control;
 use crate::geom::{Hull2, Interval, Point2, orient2d};
 use crate::mesh::verify_triangulation;
+use crate::numbering::Renumbering;
 use crate::planar::grid::PointGrid;
 use faces::Face;
 use lmt::{ALIVE, CERTAIN};
@@ -131,32 +132,24 @@ pub fn mwt(points: &[Point2], opts: &MwtOptions, ctl: &Control) -> Result<Mwt, P
     }
     // Every stage reads sites by index, at random; in grid-cell order, neighbours in the
     // plane are mostly neighbours in memory (at 10^6 sites this halves the time).
-    let order = PointGrid::new(points, 2.0).slots().0.to_vec();
-    let mut rank = vec![0u32; points.len()];
-    for (i, &o) in order.iter().enumerate() {
-        rank[o as usize] = i as u32;
-    }
-    let local: Vec<Point2> = order.iter().map(|&o| points[o as usize]).collect();
-    let relabel = |v: &[[u32; 2]], map: &[u32]| -> Vec<[u32; 2]> {
-        let mut v: Vec<[u32; 2]> = v
-            .iter()
-            .map(|e| super::edge_key(map[e[0] as usize], map[e[1] as usize]))
-            .collect();
+    let renumber = Renumbering::from_order(PointGrid::new(points, 2.0).slots().0.to_vec());
+    let local = renumber.reorder(points);
+    // Edges as sorted `[min, max]` pairs, in either numbering.
+    let sorted = |mut v: Vec<[u32; 2]>| -> Vec<[u32; 2]> {
+        v.iter_mut().for_each(|e| *e = super::edge_key(e[0], e[1]));
         v.par_sort_unstable();
         v
     };
     let local_opts = MwtOptions {
-        forced: relabel(&opts.forced, &rank),
-        forbidden: relabel(&opts.forbidden, &rank),
+        forced: sorted(renumber.to_new(&opts.forced)),
+        forbidden: sorted(renumber.to_new(&opts.forbidden)),
     };
-    let m = solve(&local, &local_opts, &order, ctl)?;
+    let m = solve(&local, &local_opts, &renumber, ctl)?;
     Ok(Mwt {
-        edges: relabel(&m.edges, &order),
-        triangles: (m.triangles.iter())
-            .map(|t| t.map(|v| order[v as usize]))
-            .collect(),
+        edges: sorted(renumber.to_old(&m.edges)),
+        triangles: renumber.to_old(&m.triangles),
         weight: m.weight,
-        skeleton: relabel(&m.skeleton, &order),
+        skeleton: sorted(renumber.to_old(&m.skeleton)),
         stats: m.stats,
     })
 }
@@ -165,7 +158,7 @@ pub fn mwt(points: &[Point2], opts: &MwtOptions, ctl: &Control) -> Result<Mwt, P
 fn solve(
     points: &[Point2],
     opts: &MwtOptions,
-    global: &[u32],
+    global: &Renumbering,
     ctl: &Control,
 ) -> Result<Mwt, PlanarError> {
     ctl.check()?;
@@ -199,7 +192,7 @@ fn solve(
     for f in &forced {
         if cands.binary_search(f).is_err() {
             return Err(PlanarError::ForcedEdgeBlocked {
-                edge: [global[f[0] as usize], global[f[1] as usize]],
+                edge: [global.old(f[0]), global.old(f[1])],
             });
         }
     }
@@ -211,7 +204,9 @@ fn solve(
         |[v, a, b]| {
             PlanarError::internal(format!(
                 "candidate edges {0}-{1} and {0}-{2} overlap (one passes through a site)",
-                global[v as usize], global[a as usize], global[b as usize]
+                global.old(v),
+                global.old(a),
+                global.old(b)
             ))
         },
     )?;
