@@ -38,19 +38,7 @@ for c in 100000 1000000; do
   [ -f "$WORK/bp$c.off" ] || "$AFTER" generate bp-polyhedron --core "$c" --nets $((c / 20)) --augment $((c / 10)) --seed 1 -o "$WORK/bp$c.off" >/dev/null
 done
 for k in 14 16; do
-  [ -f "$WORK/cv$k.xyz" ] || python3 - "$k" "$WORK/cv$k.xyz" <<'PY'
-import math, random, sys
-n, out = int(sys.argv[1]), sys.argv[2]
-r = random.Random(n)
-pts = []
-while len(pts) < n:
-    x = [r.gauss(0, 1) for _ in range(3)]
-    l = math.sqrt(sum(c * c for c in x))
-    q = [round(c / l * 1000) for c in x]
-    if q not in pts:
-        pts.append(q)
-open(out, 'w').write('\n'.join(' '.join(map(str, q)) for q in pts) + '\n')
-PY
+  [ -f "$WORK/cv$k.xyz" ] || python3 benches/sphere_points.py "$k" "$WORK/cv$k"
 done
 
 row() { # name, then the command's arguments

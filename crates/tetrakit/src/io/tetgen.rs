@@ -380,12 +380,16 @@ fn read_rows<const K: usize>(
             return None;
         }
         let mut r = [0u32; K];
-        for k in 0..per_row.max(K) {
+        for k in 0..K {
             let i = vals[1 + k].checked_sub(nodes.index_base as u64)?;
-            let i = u32::try_from(i).ok().filter(|&i| u64::from(i) < n)?;
-            if k < K {
-                r[k] = i;
-            }
+            r[k] = u32::try_from(i).ok().filter(|&i| u64::from(i) < n)?;
+        }
+        // The other nodes of a 10-node tetrahedron are range-checked, not kept.
+        if per_row > K
+            && !(vals[1 + K..1 + per_row].iter())
+                .all(|&v| v >= nodes.index_base as u64 && v - (nodes.index_base as u64) < n)
+        {
+            return None;
         }
         Some(r)
     };
