@@ -3,7 +3,8 @@
 //! byte flips, truncation, duplicated and deleted lines, extreme numbers and swapped
 //! tokens go to the commands that read them. Every run must end with an exit code of the
 //! CLI contract (0, 1, 2, 3), without a panic, within a time bound; an exit 2 must be one
-//! line on stderr; every YES with `--output` must pass `check`. Seeds are fixed, and a
+//! line on stderr; every YES with `--output` must pass `check`; memory is bounded by
+//! `prlimit` where it is installed. Seeds are fixed, and a
 //! failure prints the seed and the input file, which is kept.
 //!
 //! `TETRAKIT_FUZZ_RUNS` sets the mutations per base file (default 120, about 2,000 runs);
@@ -25,7 +26,18 @@ fn dir() -> PathBuf {
 fn run(args: &[&str], limit: Duration) -> Option<(i32, String)> {
     let bin = std::env::var_os("TETRAKIT_FUZZ_BIN")
         .unwrap_or_else(|| env!("CARGO_BIN_EXE_tetrakit").into());
-    let mut child = Command::new(bin)
+    // Memory is bounded too where util-linux's prlimit is at hand: 4 GiB of address
+    // space, far above what these small inputs need (an allocation past it aborts, and
+    // the exit code fails the test).
+    let prlimit = Path::new("/usr/bin/prlimit");
+    let mut cmd = if prlimit.exists() {
+        let mut c = Command::new(prlimit);
+        c.arg("--as=4294967296").arg(bin);
+        c
+    } else {
+        Command::new(bin)
+    };
+    let mut child = cmd
         .args(args)
         .stdout(Stdio::null())
         .stderr(Stdio::piped())

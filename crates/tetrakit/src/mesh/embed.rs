@@ -213,15 +213,13 @@ pub(super) fn nested_overlaps(
                 }
                 hit
             });
-            found.map(|t| Problem::new(
-ProblemKind::Overlap,
-vec![t, own],
-vec![v],
-format!(
-                    "vertex {v} of a boundary component lies in tetrahedron {t} ({}): a separate piece of mesh overlaps another",
+            found.map(|t| {
+                let detail = format!(
+                    "vertex #{v} of a boundary component lies in tetrahedron #{t} ({}): a separate piece of mesh overlaps another",
                     ids(&tets[t as usize])
-                ),
-))
+                );
+                Problem::new(ProblemKind::Overlap, vec![t, own], vec![v], detail)
+            })
         })
         .collect()
 }

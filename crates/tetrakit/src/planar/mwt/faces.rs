@@ -140,7 +140,15 @@ impl Search<'_> {
                     .flat_map(|h| (0..h.len()).map(|i| key(h[i], h[(i + 1) % h.len()])))
                     .filter(|e| e[0] != e[1])
                     .collect();
-                walk_with_sites(self.points, &outer, &sites, &fixed, &cuts, &usable)
+                walk_with_sites(
+                    self.points,
+                    &outer,
+                    &sites,
+                    &fixed,
+                    &cuts,
+                    &usable,
+                    self.ctl,
+                )
             };
             if let Some(sol) = sol {
                 let mut edges = sol.edges;

@@ -664,6 +664,18 @@ mod tests {
             .collect();
         assert!(faces::solve(&ring, &face, &chords, &go).is_some());
         assert!(faces::solve(&ring, &face, &chords, &stopped).is_none());
+        // A face with an isolated site goes to the region DP, which looks as well.
+        let mut with_site = ring.clone();
+        let c = ring
+            .iter()
+            .fold([0.0, 0.0], |s, p| [s[0] + p[0], s[1] + p[1]]);
+        with_site.push([c[0] / 60.0, c[1] / 60.0]);
+        let region = |ctl: &Control| {
+            let none = HashSet::new();
+            sites::walk_with_sites(&with_site, &walk, &[60], &none, &[], &|_| true, ctl)
+        };
+        assert!(region(&go).is_some());
+        assert!(region(&stopped).is_none());
         let pts = points2d(Distribution::Uniform, 500, 5);
         assert!(candidates::search(&pts, usize::MAX, &stopped).is_none());
         let past = Control::new().with_deadline(std::time::Instant::now());

@@ -41,6 +41,7 @@
 
 use super::polygon::{Rows, Solution, clear_of, cmp_edge_sets, crosses, upper_index};
 use super::walks::in_wedge;
+use crate::control::Control;
 use crate::geom::{DoubleDouble, Point2, orient2d};
 use crate::planar::edge_key as key;
 use rustc_hash::FxBuildHasher;
@@ -51,7 +52,7 @@ use std::collections::{HashMap, HashSet};
 /// The lightest triangulation of the face bounded by the counter-clockwise `walk` with
 /// the `sites` of its flat holes inside (their edges `fixed`), whose new edges satisfy
 /// `usable` and cross no edge of `cuts`: the new edges and their weight; `None` when
-/// there is none.
+/// there is none, or once `ctl` is stopped (looked at region by region).
 pub(super) fn walk_with_sites(
     points: &[Point2],
     walk: &[u32],
@@ -59,6 +60,7 @@ pub(super) fn walk_with_sites(
     fixed: &HashSet<[u32; 2]>,
     cuts: &[[u32; 2]],
     usable: &(dyn Fn([u32; 2]) -> bool + Sync),
+    ctl: &Control,
 ) -> Option<Solution> {
     let m = walk.len();
     if m < 3 {
@@ -69,7 +71,7 @@ pub(super) fn walk_with_sites(
         chain: Some((0, m as u32 - 1)),
         path: Vec::new(),
     };
-    dp.solve(root)
+    dp.solve(root, ctl)
 }
 
 /// A region: walk occurrences `i..=j` (if any), then the sites `path` (indices into the
@@ -466,10 +468,13 @@ impl<'a> Dp<'a> {
 
     /// Solves `root` and every region it needs, children before parents (an explicit
     /// stack: regions nest as deep as the walk is long).
-    fn solve(&self, root: Region) -> Option<Solution> {
+    fn solve(&self, root: Region, ctl: &Control) -> Option<Solution> {
         // A region comes back with its options once the regions they leave are solved.
         let mut stack: Vec<(Region, Option<Vec<Apex>>)> = vec![(root.clone(), None)];
         while let Some((r, options)) = stack.pop() {
+            if ctl.is_stopped() {
+                return None;
+            }
             if self.get(&r).is_some() {
                 continue;
             }
