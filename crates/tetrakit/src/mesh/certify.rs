@@ -1,6 +1,7 @@
 //! Certificates that tetrahedra tetrahedralize a given domain: the convex hull of a point
-//! set (every point a vertex) or a polyhedron (boundary exactly its facets). Both rest on
-//! [`verify`]; every tetrahedralization a solver returns passes one of them.
+//! set (every point a vertex), or a region given by its boundary (a polyhedron's facets;
+//! the outer and reversed inner facets of a shell). Both rest on [`verify`]; every
+//! tetrahedralization a solver returns passes one of them.
 
 use super::report::{Problem, ProblemKind};
 use super::{Polyhedron, rotated_face, sorted_face, verify};
@@ -21,9 +22,8 @@ pub fn certify_hull(points: &[Point3], tets: &[[u32; 4]]) -> Result<(), Problem>
     first_problem(verify(points, tets, Some(&hull)).problems)
 }
 
-/// Certifies that `tets` tetrahedralize `poly`: [`verify`] (orientation, face pairing,
-/// no overlap) and the boundary triangles are exactly the polyhedron's facets with their
-/// outward orientation. Returns the first problem found.
+/// Certifies that `tets` tetrahedralize `poly`: [`certify_boundary`] with the
+/// polyhedron's facets.
 ///
 /// ```
 /// use tetrakit::mesh::certify_polyhedron;
@@ -34,9 +34,31 @@ pub fn certify_hull(points: &[Point3], tets: &[[u32; 4]]) -> Result<(), Problem>
 /// assert!(certify_polyhedron(&p, &m.tets[1..]).is_err());
 /// ```
 pub fn certify_polyhedron(poly: &Polyhedron, tets: &[[u32; 4]]) -> Result<(), Problem> {
-    first_problem(verify(&poly.points, tets, None).problems)?;
+    certify_boundary(&poly.points, tets, &poly.faces)
+}
+
+/// Certifies that `tets` tetrahedralize the region whose boundary is exactly `faces`,
+/// each oriented outward from the region: [`verify`] (orientation, face pairing, no
+/// overlap near any vertex, an embedded boundary, no nested piece) and the boundary
+/// triangles of the tetrahedra are exactly `faces` with their orientation. A region with
+/// holes is given by all its boundary surfaces: the shell between nested polytopes by
+/// the outer facets and the inner ones reversed. Returns the first problem found.
+///
+/// ```
+/// use tetrakit::mesh::certify_boundary;
+/// let pts = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+/// let faces = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+/// assert_eq!(certify_boundary(&pts, &[[0, 1, 2, 3]], &faces), Ok(()));
+/// assert!(certify_boundary(&pts, &[[0, 1, 2, 3]], &faces[1..]).is_err());
+/// ```
+pub fn certify_boundary(
+    points: &[Point3],
+    tets: &[[u32; 4]],
+    faces: &[[u32; 3]],
+) -> Result<(), Problem> {
+    first_problem(verify(points, tets, None).problems)?;
     let boundary = boundary_faces(tets);
-    let mut want: Vec<[u32; 3]> = poly.faces.iter().map(|&f| rotated_face(f)).collect();
+    let mut want: Vec<[u32; 3]> = faces.iter().map(|&f| rotated_face(f)).collect();
     want.sort_unstable();
     if boundary == want {
         return Ok(());
@@ -54,7 +76,7 @@ pub fn certify_polyhedron(poly: &Polyhedron, tets: &[[u32; 4]]) -> Result<(), Pr
             .copied()
             .collect(),
         format!(
-            "the boundary of the tetrahedra is not the polyhedron's surface (facet {} not covered, boundary triangle {} not a facet)",
+            "the boundary of the tetrahedra is not the given surface (face {} not covered, boundary triangle {} not a given face)",
             name(missing),
             name(extra)
         ),
@@ -86,4 +108,32 @@ fn boundary_faces(tets: &[[u32; 4]]) -> Vec<[u32; 3]> {
     }
     boundary.sort_unstable();
     boundary
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The 3 × 3 × 3 Kuhn block without its middle cube is a tetrahedralization of the
+    /// shell between two cubes: its boundary is the outer faces and the middle cube's
+    /// faces reversed, and neither surface alone will do.
+    #[test]
+    fn a_shell_is_certified_by_both_surfaces() {
+        let block = crate::generate::kuhn(3);
+        let p = |t: &[u32; 4]| t.map(|v| block.points[v as usize]);
+        let middle = |t: &[u32; 4]| p(t).iter().flatten().all(|&x| (1.0..=2.0).contains(&x));
+        let (inner, shell): (Vec<[u32; 4]>, Vec<[u32; 4]>) =
+            block.tets.iter().partition(|t| middle(t));
+        assert_eq!((inner.len(), shell.len()), (6, 156));
+        let outer = boundary_faces(&block.tets);
+        let hole: Vec<[u32; 3]> = boundary_faces(&inner)
+            .iter()
+            .map(|f| [f[0], f[2], f[1]])
+            .collect();
+        let both: Vec<[u32; 3]> = outer.iter().chain(&hole).copied().collect();
+        assert_eq!(certify_boundary(&block.points, &shell, &both), Ok(()));
+        assert!(certify_boundary(&block.points, &shell, &outer).is_err());
+        // The hole filled is not the shell.
+        assert!(certify_boundary(&block.points, &block.tets, &both).is_err());
+    }
 }
