@@ -114,7 +114,7 @@ fn minimal_tetrahedralizations() {
     };
     let (p, _) = generate::bp_polyhedron(params);
     let start = Instant::now();
-    let m = polyhedra::mintetra(&p);
+    let m = polyhedra::mintetra(&p, polyhedra::Checks::Shelling);
     let ms = start.elapsed().as_secs_f64() * 1e3;
     let certified = tetrakit::mesh::certify_polyhedron(&p, &m.tets).is_ok();
     out!(
@@ -148,7 +148,7 @@ fn minimal_tetrahedralizations() {
         };
     out!("  Schönhardt's twisted prism: {verdict}");
     let sbp = generate::schonhardt_bp();
-    let m = polyhedra::mintetra(&sbp);
+    let m = polyhedra::mintetra(&sbp, polyhedra::Checks::Shelling);
     out!(
         "  Schönhardt with three BP-nets (Figure 3.21, convex): MINTETRA says {} ({})",
         if m.yes { "YES" } else { "NO" },

@@ -30,7 +30,7 @@ pub fn mintetra(path: &Path, as_json: bool, output: Option<&Path>, confirm: bool
     // Fast trimming (orientation checks only) whose YES the certificate below confirms;
     // on NO, or if the certificate fails, the careful shelling mode decides.
     let t0 = Instant::now();
-    let mut m = polyhedra::mintetra_with(&poly, Checks::OrientationOnly);
+    let mut m = polyhedra::mintetra(&poly, Checks::OrientationOnly);
     let mut algorithm = t0.elapsed().as_secs_f64();
     let mut verify_seconds = 0.0;
     let mut certified = false;
@@ -41,7 +41,7 @@ pub fn mintetra(path: &Path, as_json: bool, output: Option<&Path>, confirm: bool
     }
     if !certified {
         let t2 = Instant::now();
-        m = polyhedra::mintetra_with(&poly, Checks::Shelling);
+        m = polyhedra::mintetra(&poly, Checks::Shelling);
         algorithm += t2.elapsed().as_secs_f64();
     }
     let base = input.index_base;
@@ -392,7 +392,9 @@ pub fn generate(kind: PolyGen, seed: u64, output: &Path) -> CmdResult {
 fn bp_with_levels(params: generate::BpParams) -> Result<(Polyhedron, usize, u64), CliError> {
     for seed in (0..32).map(|i| params.seed.wrapping_add(i)) {
         let (p, polar) = generate::bp_polyhedron(generate::BpParams { seed, ..params });
-        if params.levels <= 1 || polyhedra::mintetra(&p).levels as usize == params.levels {
+        if params.levels <= 1
+            || polyhedra::mintetra(&p, Checks::Shelling).levels as usize == params.levels
+        {
             return Ok((p, polar, seed));
         }
     }

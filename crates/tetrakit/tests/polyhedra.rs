@@ -7,7 +7,7 @@ use tetrakit::exact::{Domain, Options, Outcome, minimal_tetrahedralization};
 use tetrakit::polyhedra::generate::BpParams;
 use tetrakit::polyhedra::{
     Checks, Polyhedron, SurfaceGraph, bp_nets, certify_polyhedron as certify, generate, is_proper,
-    mintetra, mintetra_with, proper_nets_disjoint,
+    mintetra, proper_nets_disjoint,
 };
 
 fn exact(p: &Polyhedron, unique: bool) -> Outcome {
@@ -24,7 +24,7 @@ fn exact(p: &Polyhedron, unique: bool) -> Outcome {
 }
 
 fn check_against_solver(p: &Polyhedron, polar: usize, what: &str) -> Option<bool> {
-    let m = mintetra(p);
+    let m = mintetra(p, Checks::Shelling);
     assert!(m.yes, "{what}: MINTETRA said NO: {}", m.reason);
     certify(p, &m.tets).unwrap_or_else(|e| panic!("{what}: {e}"));
     let n = p.points.len();
@@ -39,7 +39,7 @@ fn check_against_solver(p: &Polyhedron, polar: usize, what: &str) -> Option<bool
         "{what}: one polar edge per glued BP-net"
     );
     // The CLI's fast mode (orientation checks only, then the certificate) must agree.
-    let fast = mintetra_with(p, Checks::OrientationOnly);
+    let fast = mintetra(p, Checks::OrientationOnly);
     if fast.yes && certify(p, &fast.tets).is_ok() {
         assert_eq!(
             fast.tets.len(),
@@ -121,7 +121,7 @@ fn mintetra_is_minimal_and_unique_on_two_level_bp_polyhedra() {
         if p.points.len() > 16 {
             continue;
         }
-        let m = mintetra(&p);
+        let m = mintetra(&p, Checks::Shelling);
         assert!(m.levels <= 2);
         let unique = check_against_solver(&p, polar, &format!("two-level seed {seed}"));
         let _ = unique;
@@ -133,7 +133,7 @@ fn mintetra_is_minimal_and_unique_on_two_level_bp_polyhedra() {
 #[test]
 fn schonhardt_is_not_tetrahedralizable() {
     let s = generate::schonhardt();
-    let m = mintetra(&s);
+    let m = mintetra(&s, Checks::Shelling);
     assert!(!m.yes);
     assert_eq!(m.remaining.len(), 8);
     assert_eq!(exact(&s, false), Outcome::Infeasible);
@@ -148,7 +148,7 @@ fn schonhardt_is_not_tetrahedralizable() {
 fn schonhardt_with_three_bp_nets_is_convex_and_not_a_bp_polyhedron() {
     let p = generate::schonhardt_bp();
     assert_eq!(p.points.len(), 12);
-    let m = mintetra(&p);
+    let m = mintetra(&p, Checks::Shelling);
     assert!(!m.yes, "§3.5: trimming leaves Schönhardt's polyhedron");
     match exact(&p, false) {
         Outcome::Optimal { tets, .. } => {
@@ -163,7 +163,7 @@ fn schonhardt_with_three_bp_nets_is_convex_and_not_a_bp_polyhedron() {
 fn stacked_polyhedra_need_no_diagonal() {
     for seed in 0..50 {
         let p = generate::stacked(4 + seed as usize % 12, seed);
-        let m = mintetra(&p);
+        let m = mintetra(&p, Checks::Shelling);
         assert!(m.yes && m.polar_edges.is_empty());
         assert_eq!(m.tets.len(), p.points.len() - 3);
         certify(&p, &m.tets).unwrap();
@@ -215,7 +215,7 @@ fn h_level_conjecture_holds_on_small_instances() {
         if p.points.len() > 18 {
             continue;
         }
-        let m = mintetra(&p);
+        let m = mintetra(&p, Checks::Shelling);
         if m.levels < 3 {
             continue;
         }
@@ -313,7 +313,7 @@ fn theorem_3_3_fails_on_a_stacked_octahedron() {
         "the two low-degree neighbours are adjacent"
     );
     // MINTETRA is unaffected: it relies on Theorem 3.4, which holds here.
-    let m = mintetra(&p);
+    let m = mintetra(&p, Checks::Shelling);
     assert!(m.yes);
     certify(&p, &m.tets).unwrap();
     assert_eq!(m.tets.len(), p.points.len() - 3 + m.polar_edges.len());

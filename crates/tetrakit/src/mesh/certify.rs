@@ -27,9 +27,9 @@ pub fn certify_hull(points: &[Point3], tets: &[[u32; 4]]) -> Result<(), Problem>
 ///
 /// ```
 /// use tetrakit::mesh::certify_polyhedron;
-/// use tetrakit::polyhedra::{generate, mintetra};
+/// use tetrakit::polyhedra::{Checks, generate, mintetra};
 /// let p = generate::stacked(8, 3);
-/// let m = mintetra(&p);
+/// let m = mintetra(&p, Checks::Shelling);
 /// assert_eq!(certify_polyhedron(&p, &m.tets), Ok(()));
 /// assert!(certify_polyhedron(&p, &m.tets[1..]).is_err());
 /// ```

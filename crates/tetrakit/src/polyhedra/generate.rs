@@ -406,9 +406,9 @@ impl Default for BpParams {
 /// `n - 3 + polar` (Theorem 3.5, Corollaries 3.6–3.7).
 ///
 /// ```
-/// use tetrakit::polyhedra::{generate, mintetra};
+/// use tetrakit::polyhedra::{Checks, generate, mintetra};
 /// let (p, polar) = generate::bp_polyhedron(generate::BpParams::default());
-/// let m = mintetra(&p);
+/// let m = mintetra(&p, Checks::Shelling);
 /// assert!(m.yes);
 /// assert_eq!(m.tets.len(), p.points.len() - 3 + polar);
 /// ```

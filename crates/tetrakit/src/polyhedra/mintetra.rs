@@ -53,22 +53,6 @@ pub struct Mintetra {
     pub reason: String,
 }
 
-/// Runs MINTETRA on a validated polyhedron.
-///
-/// ```
-/// use tetrakit::polyhedra::{Polyhedron, mintetra};
-/// // A triangular bipyramid: poles 3 and 4, equator 0 1 2.
-/// let pts = vec![[1.0, 0.0, 0.0], [-0.5, 0.9, 0.0], [-0.5, -0.9, 0.0], [0.0, 0.0, 1.0], [0.0, 0.0, -1.0]];
-/// let faces = vec![[0, 1, 3], [1, 2, 3], [2, 0, 3], [1, 0, 4], [2, 1, 4], [0, 2, 4]];
-/// let p = Polyhedron::new(pts, faces).unwrap();
-/// let m = mintetra(&p);
-/// assert!(m.yes);
-/// assert_eq!(m.tets.len(), 2); // two stacked tetrahedra, n - 3
-/// ```
-pub fn mintetra(p: &Polyhedron) -> Mintetra {
-    mintetra_with(p, Checks::Shelling)
-}
-
 /// How much geometry MINTETRA checks while trimming.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Checks {
@@ -82,8 +66,19 @@ pub enum Checks {
     OrientationOnly,
 }
 
-/// MINTETRA with the given [`Checks`].
-pub fn mintetra_with(p: &Polyhedron, checks: Checks) -> Mintetra {
+/// Runs MINTETRA on a validated polyhedron, with the given [`Checks`].
+///
+/// ```
+/// use tetrakit::polyhedra::{Checks, Polyhedron, mintetra};
+/// // A triangular bipyramid: poles 3 and 4, equator 0 1 2.
+/// let pts = vec![[1.0, 0.0, 0.0], [-0.5, 0.9, 0.0], [-0.5, -0.9, 0.0], [0.0, 0.0, 1.0], [0.0, 0.0, -1.0]];
+/// let faces = vec![[0, 1, 3], [1, 2, 3], [2, 0, 3], [1, 0, 4], [2, 1, 4], [0, 2, 4]];
+/// let p = Polyhedron::new(pts, faces).unwrap();
+/// let m = mintetra(&p, Checks::Shelling);
+/// assert!(m.yes);
+/// assert_eq!(m.tets.len(), 2); // two stacked tetrahedra, n - 3
+/// ```
+pub fn mintetra(p: &Polyhedron, checks: Checks) -> Mintetra {
     let mut t = Trimmer::new(p, checks == Checks::Shelling);
     t.run();
     t.finish()

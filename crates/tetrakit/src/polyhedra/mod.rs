@@ -17,4 +17,4 @@ mod mintetra;
 pub use crate::mesh::{Polyhedron, SurfaceError, certify_polyhedron};
 pub use bpnet::{BpNet, are_disjoint, bp_nets, is_proper, proper_nets_disjoint, strip_stacked};
 pub use graph::SurfaceGraph;
-pub use mintetra::{Checks, Mintetra, mintetra, mintetra_with};
+pub use mintetra::{Checks, Mintetra, mintetra};
