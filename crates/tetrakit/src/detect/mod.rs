@@ -191,30 +191,24 @@ pub fn detect(
         .par_iter()
         .map(|&(a, b)| [renumber.new_of(a), renumber.new_of(b)])
         .collect();
-    let mut d = match detect_ordered(&pts, &segs, opts, ctl) {
-        Err(DetectError::Segments(_)) => {
-            // Only a repeated segment gets here: name it in the caller's numbering.
-            let orig: Vec<[u32; 2]> = segments.iter().map(|&(a, b)| [a, b]).collect();
-            return Err(match Graph::new(n, &orig) {
-                Err(e) => e.into(),
-                Ok(_) => unreachable_repeat(),
-            });
+    // Only a repeated segment can be refused here (the others were checked above): name
+    // it in the caller's numbering.
+    let mut d = detect_ordered(&pts, &segs, opts, ctl).map_err(|e| match e {
+        DetectError::Segments(SegmentError::Repeated { ends: [a, b] }) => {
+            let (a, b) = (renumber.old(a), renumber.old(b));
+            SegmentError::Repeated {
+                ends: [a.min(b), a.max(b)],
+            }
+            .into()
         }
-        other => other?,
-    };
+        other => other,
+    })?;
     d.result = match d.result {
         Ok(Cells::Tetrahedra(t)) => Ok(Cells::Tetrahedra(renumber.to_old(&t))),
         Ok(Cells::Triangles(t)) => Ok(Cells::Triangles(renumber.to_old(&t))),
         Err(w) => Err(w.mapped(|v| renumber.old(v))),
     };
     Ok(d)
-}
-
-/// The reordered segments were rejected but the caller's were not: impossible, since
-/// reordering is a bijection of the points. Reported as a repeated segment rather than
-/// a panic.
-fn unreachable_repeat() -> DetectError {
-    DetectError::Segments(SegmentError::Repeated { ends: [0, 0] })
 }
 
 /// Point indices sorted along a Morton (Z-order) curve of the bounding box (a heuristic
@@ -643,6 +637,49 @@ fn unconfirmed_witness(t: [u32; 4], found: &dyn Fn(u32, [u32; 3]) -> bool) -> Wi
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Progress reaches the control: the stage, then every vertex done.
+    #[test]
+    fn progress_reports_the_links_stage() {
+        use crate::control::Progress;
+        use std::sync::{Arc, Mutex};
+        let t = crate::generate::kuhn(2);
+        let seen = Arc::new(Mutex::new(Vec::new()));
+        let log = Arc::clone(&seen);
+        let ctl = Control::new().with_progress(move |p| log.lock().unwrap().push(p));
+        let links = Options {
+            delaunay_first: false,
+            ..Options::default()
+        };
+        assert!(
+            detect(&t.points, &t.edges(), &links, &ctl)
+                .unwrap()
+                .is_yes()
+        );
+        let seen = seen.lock().unwrap();
+        assert_eq!(seen[0], Progress::Stage("vertex links"));
+        assert_eq!(
+            seen.last(),
+            Some(&Progress::Items {
+                done: 27,
+                total: 27
+            })
+        );
+    }
+
+    /// A repeated segment is named in the caller's numbering.
+    #[test]
+    fn a_repeated_segment_is_named() {
+        let t = crate::generate::kuhn(2);
+        let mut e = t.edges();
+        e.push((e[5].1, e[5].0));
+        let err = detect(&t.points, &e, &Options::default(), &Control::new()).unwrap_err();
+        let (a, b) = e[5];
+        let want = SegmentError::Repeated {
+            ends: [a.min(b), a.max(b)],
+        };
+        assert_eq!(err, DetectError::Segments(want));
+    }
 
     /// A stopped control ends both routes with `Stopped`; a live one answers.
     #[test]
