@@ -642,6 +642,26 @@ mod tests {
         );
     }
 
+    /// The stages reach the control's progress callback in order.
+    #[test]
+    fn stages_are_reported_in_order() {
+        use crate::control::Progress;
+        use std::sync::{Arc, Mutex};
+        let seen = Arc::new(Mutex::new(Vec::new()));
+        let log = Arc::clone(&seen);
+        let ctl = Control::new().with_progress(move |p| log.lock().unwrap().push(p));
+        let pts = points2d(Distribution::Uniform, 300, 8);
+        mwt(&pts, &MwtOptions::default(), &ctl).unwrap();
+        let want = [
+            mwt_stage::CANDIDATES,
+            mwt_stage::SKELETON,
+            mwt_stage::FACES,
+            mwt_stage::CERTIFY,
+        ]
+        .map(Progress::Stage);
+        assert_eq!(*seen.lock().unwrap(), want);
+    }
+
     /// A stopped control ends each stage: the candidate search, the polygon DP (between
     /// spans), the search over a face, and the whole solver; a passed deadline stops it
     /// the same way.
