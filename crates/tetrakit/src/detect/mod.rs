@@ -85,7 +85,7 @@ pub enum Route {
     Links,
 }
 
-/// What [`detect_with`] tries. The verdict never depends on it.
+/// What [`detect`] tries. The verdict never depends on it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Options {
     /// Try the Delaunay proposal ([`Route::Delaunay`]) before the thesis's algorithm.

@@ -25,7 +25,7 @@
 //! vertex), and form a tetrahedralization. Conversely every tetrahedralization satisfies
 //! the clauses. The pairwise "interiors overlap" clauses of a direct encoding are
 //! implied, which keeps the formula near-linear in the number of candidates. Every answer
-//! is still certified afterwards by [`mesh::verify`](crate::mesh::verify).
+//! is still certified afterwards by [`mesh::verify`].
 //!
 //! **Minimising.** By Euler's formula the number of tetrahedra is `e_i + c`, with `e_i`
 //! the interior edges used and `c = 2·n_b − n − 3` (`n_b` vertices on the boundary; for a

@@ -88,7 +88,7 @@ impl Problem {
     }
 }
 
-/// The result of [`verify`].
+/// The result of [`verify`](super::verify) and [`verify_triangulation`](super::verify_triangulation).
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct Report {
     /// Problems found (at most [`Report::LIMIT`] are kept).
