@@ -1,5 +1,6 @@
-//! Vertex numbers: a renumbering of points for locality ([`Renumbering`]), and vertex
-//! numbers in the text of witnesses and problems.
+//! Vertex numbers and message text: a renumbering of points for locality
+//! ([`Renumbering`]), vertex numbers in the text of witnesses and problems, and input
+//! tokens quoted for messages ([`quote`]).
 //!
 //! Sentences for a person name vertices as `#12`. The library numbers from 0; a file may
 //! number from 1 (TetGen) or the algorithm may have renumbered the points (a spatial
@@ -103,4 +104,21 @@ impl Renumbering {
         use rayon::prelude::*;
         cells.par_iter().map(|c| c.map(|v| self.old(v))).collect()
     }
+}
+
+/// An input token for a message, in single quotes: escaped (no control character from
+/// a file reaches the terminal) and cut to 40 characters.
+///
+/// ```
+/// use tetrakit::numbering::quote;
+/// assert_eq!(quote("1.5"), "'1.5'");
+/// assert_eq!(quote("\u{1b}[31m"), "'\\u{1b}[31m'");
+/// assert_eq!(quote(&"7".repeat(100)).chars().count(), 43);
+/// ```
+pub fn quote(tok: &str) -> String {
+    let mut q: String = tok.chars().take(40).flat_map(char::escape_debug).collect();
+    if tok.chars().nth(40).is_some() {
+        q.push('…');
+    }
+    format!("'{q}'")
 }

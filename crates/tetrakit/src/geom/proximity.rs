@@ -83,40 +83,31 @@ impl Ratio {
     }
 }
 
-/// Why a text is not a [`Ratio`]. The text is kept escaped and cut to 40 characters.
+/// Why a text is not a [`Ratio`]. The text is kept quoted, escaped and cut
+/// ([`quote`](crate::numbering::quote)).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum RatioError {
     /// Not a positive decimal or fraction `a/b` below 2^53.
     Malformed {
-        /// The text, escaped and cut.
+        /// The text, quoted, escaped and cut.
         text: String,
     },
     /// A decimal with more than 15 significant digits.
     TooManyDigits {
-        /// The text, escaped and cut.
+        /// The text, quoted, escaped and cut.
         text: String,
     },
-}
-
-impl RatioError {
-    fn quoted(s: &str) -> String {
-        let mut t: String = s.chars().take(40).flat_map(char::escape_debug).collect();
-        if s.chars().count() > 40 {
-            t.push('…');
-        }
-        t
-    }
 }
 
 impl std::fmt::Display for RatioError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             RatioError::Malformed { text } => {
-                write!(f, "'{text}' is not a positive decimal or fraction a/b")
+                write!(f, "{text} is not a positive decimal or fraction a/b")
             }
             RatioError::TooManyDigits { text } => write!(
                 f,
-                "'{text}' has too many digits (at most 15 significant digits)"
+                "{text} has too many digits (at most 15 significant digits)"
             ),
         }
     }
@@ -130,7 +121,7 @@ impl std::str::FromStr for Ratio {
     /// Parses a decimal (`1.16`, `2`, at most 15 significant digits) or a fraction (`7/6`).
     fn from_str(s: &str) -> Result<Ratio, RatioError> {
         let bad = || RatioError::Malformed {
-            text: RatioError::quoted(s),
+            text: crate::numbering::quote(s),
         };
         let parse_int = |t: &str| -> Result<u64, RatioError> {
             if t.is_empty() || !t.bytes().all(|c| c.is_ascii_digit()) || t.len() > 16 {
@@ -139,7 +130,7 @@ impl std::str::FromStr for Ratio {
             t.parse::<u64>().map_err(|_| bad())
         };
         let too_long = || RatioError::TooManyDigits {
-            text: RatioError::quoted(s),
+            text: crate::numbering::quote(s),
         };
         let (num, den) = if let Some((a, b)) = s.split_once('/') {
             (parse_int(a.trim())?, parse_int(b.trim())?)

@@ -21,6 +21,7 @@ pub use write::{
 };
 
 use crate::geom::{Point3, coordinate_in_range, lex_cmp};
+pub(crate) use crate::numbering::quote;
 use rayon::prelude::*;
 use std::fmt;
 use std::path::{Path, PathBuf};
@@ -216,16 +217,6 @@ pub(crate) fn read_text(path: &Path) -> Result<String, InputError> {
         ));
     }
     Ok(text)
-}
-
-/// An input token for a message: escaped (no control character reaches the terminal)
-/// and cut to 40 characters.
-pub(crate) fn quote(tok: &str) -> String {
-    let mut q: String = tok.chars().take(40).flat_map(char::escape_debug).collect();
-    if tok.chars().nth(40).is_some() {
-        q.push('…');
-    }
-    format!("'{q}'")
 }
 
 /// Parses a coordinate, rejecting NaN, infinities, magnitudes outside the exact range,
