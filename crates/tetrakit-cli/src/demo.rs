@@ -86,6 +86,15 @@ pub fn run() -> CmdResult {
             );
         }
     }
+    let boxes = generate::two_cubes([1.0, 1.0, 0.0]);
+    let report = tetrakit::mesh::verify(&boxes.points, &boxes.tets, None);
+    let strict = report.clone().require_manifold();
+    out!(
+        "  two cubes touching along an edge (a non-manifold domain): valid: {}, {} non-manifold edge(s); with `check --manifold`: valid: {}",
+        report.is_valid(),
+        report.non_manifold.len(),
+        strict.is_valid()
+    );
     minimal_tetrahedralizations();
     planar_section();
     out!("\nTry: tetrakit generate kuhn --size 10 -o /tmp/k.ele && tetrakit detect /tmp/k.edge");

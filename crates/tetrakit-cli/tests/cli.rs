@@ -747,6 +747,30 @@ fn one_json_contract() {
     let lines = std::fs::read_to_string(&sites).unwrap().lines().count();
     assert_eq!(lines as u64, v["sites"].as_u64().unwrap());
     assert!(xy.iter().all(|i| i.as_u64().unwrap() < lines as u64));
+    let bad = run(&[
+        "keil",
+        "--beta",
+        "1.1548",
+        "--n",
+        "20",
+        "-o",
+        s(&d.join("k.stl")),
+    ]);
+    assert_eq!(bad.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&bad.stderr);
+    assert!(err.lines().count() == 1 && err.contains("k.stl"), "{err}");
+    // check --manifold refuses what plain check accepts: two boxes along an edge.
+    let boxes = tetrakit::generate::two_cubes([1.0, 1.0, 0.0]);
+    let ele = d.join("boxes.ele");
+    tetrakit::io::write_mesh(&ele, &boxes.points, &boxes.tets, 1).unwrap();
+    let v = json(&run(&["check", s(&ele), "--json"]));
+    assert_eq!(
+        (&v["verdict"], &v["non_manifold_edges"]),
+        (&"yes".into(), &1.into())
+    );
+    let o = run(&["check", s(&ele), "--manifold", "--json"]);
+    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(json(&o)["witness"]["kind"], "non_manifold_edge");
     let face = d.join("p.face");
     run(&["generate", "bipyramid", "--m", "5", "-o", s(&face)]);
     let v = json(&run(&[

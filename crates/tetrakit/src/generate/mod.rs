@@ -348,6 +348,34 @@ pub fn corrupt_edges(
     None
 }
 
+/// Two Kuhn-subdivided unit cubes, the second moved by `shift`, sharing the points they
+/// have in common: `[1, 1, 0]` makes them touch along an edge (a non-manifold domain),
+/// `[1, 1, 1]` at a corner, `[0.5, 0.5, 0]` overlap.
+///
+/// ```
+/// let t = tetrakit::generate::two_cubes([1.0, 1.0, 0.0]);
+/// assert_eq!((t.points.len(), t.tets.len()), (14, 12));
+/// ```
+pub fn two_cubes(shift: [f64; 3]) -> Tetrahedralization {
+    let a = kuhn(1);
+    let mut points = a.points.clone();
+    let mut tets = a.tets.clone();
+    let index: Vec<u32> = (a.points.iter())
+        .map(|p| {
+            let q = [p[0] + shift[0], p[1] + shift[1], p[2] + shift[2]];
+            match points.iter().position(|r| *r == q) {
+                Some(i) => i as u32,
+                None => {
+                    points.push(q);
+                    points.len() as u32 - 1
+                }
+            }
+        })
+        .collect();
+    tets.extend(a.tets.iter().map(|t| t.map(|v| index[v as usize])));
+    Tetrahedralization { points, tets }
+}
+
 /// Adds a tetrahedron overlapping two neighbours (the union of two adjacent tetrahedra
 /// `abcd`, `abce` contains the new `abde` when `de` crosses `abc`); when no pair of
 /// neighbours allows it (grids: `de` meets `abc` only on its boundary), a second copy of

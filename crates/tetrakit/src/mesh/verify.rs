@@ -372,36 +372,12 @@ fn check_hull(
 mod tests {
     use super::*;
 
-    /// Two Kuhn cubes, the second moved by `shift`, sharing the points they have in
-    /// common.
-    fn two_cubes(shift: [f64; 3]) -> crate::mesh::Tetrahedralization {
-        let a = crate::generate::kuhn(1);
-        let mut points = a.points.clone();
-        let mut tets = a.tets.clone();
-        let index: Vec<u32> = a
-            .points
-            .iter()
-            .map(|p| {
-                let q = [p[0] + shift[0], p[1] + shift[1], p[2] + shift[2]];
-                match points.iter().position(|r| *r == q) {
-                    Some(i) => i as u32,
-                    None => {
-                        points.push(q);
-                        points.len() as u32 - 1
-                    }
-                }
-            })
-            .collect();
-        tets.extend(a.tets.iter().map(|t| t.map(|v| index[v as usize])));
-        crate::mesh::Tetrahedralization { points, tets }
-    }
-
     /// Boxes touching along an edge form a valid mesh of a non-manifold domain, like
     /// boxes touching at a corner; the edge is named as non-manifold, and refused only
     /// when a manifold boundary is required.
     #[test]
     fn non_manifold_edges_are_valid_and_named() {
-        let edge = two_cubes([1.0, 1.0, 0.0]);
+        let edge = crate::generate::two_cubes([1.0, 1.0, 0.0]);
         assert_eq!(edge.points.len(), 14);
         let r = verify(&edge.points, &edge.tets, None);
         assert!(r.is_valid(), "{:?}", r.problems);
@@ -409,7 +385,7 @@ mod tests {
         assert_eq!(r.non_manifold[0].kind, ProblemKind::NonManifoldEdge);
         let strict = r.require_manifold();
         assert!(!strict.is_valid());
-        let corner = two_cubes([1.0, 1.0, 1.0]);
+        let corner = crate::generate::two_cubes([1.0, 1.0, 1.0]);
         let r = verify(&corner.points, &corner.tets, None);
         assert!(
             r.is_valid() && r.non_manifold.is_empty(),
@@ -417,7 +393,7 @@ mod tests {
             r.problems
         );
         // Overlapping boxes sharing that edge are still refused.
-        let overlap = two_cubes([0.5, 0.5, 0.0]);
+        let overlap = crate::generate::two_cubes([0.5, 0.5, 0.0]);
         assert!(!verify(&overlap.points, &overlap.tets, None).is_valid());
     }
 
