@@ -30,7 +30,7 @@ pub fn detect(path: &Path, as_json: bool, output: Option<&Path>, opts: Options) 
             return Err(CliError::new(format!(
                 "{}: tetrahedron {} repeats a vertex ({} {} {} {}): it has no edge set to test",
                 input.tet_origin(k),
-                k as u32 + input.index_base,
+                input.tet_label(k),
                 t[0],
                 t[1],
                 t[2],
@@ -145,8 +145,8 @@ pub fn check(path: &Path, convex: bool, manifold: bool, as_json: bool) -> CmdRes
         ));
     }
     let hull = convex.then(|| Hull3::new(&input.points));
-    let mut report =
-        mesh::verify(&input.points, &input.tets, hull.as_ref()).renumbered(input.index_base);
+    let mut report = mesh::verify(&input.points, &input.tets, hull.as_ref())
+        .relabeled(input.index_base, |t| input.tet_label(t as usize));
     if manifold {
         report = report.require_manifold();
     }

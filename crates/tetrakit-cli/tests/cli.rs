@@ -198,6 +198,36 @@ fn check_valid_and_overlapping_meshes() {
     assert!(!v["problems"][0]["tets"].as_array().unwrap().is_empty());
 }
 
+/// A `.ele` numbered with gaps is checked, and its problems name the tetrahedra by the
+/// file's numbers (fields and text); a tet with a repeated vertex is named the same way.
+#[test]
+fn check_names_tetrahedra_by_the_files_numbers() {
+    let d = dir("labels");
+    let node = "5 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 1 1\n";
+    std::fs::write(d.join("g.node"), node).unwrap();
+    // Two copies of one tetrahedron: they overlap.
+    std::fs::write(d.join("g.ele"), "2 4 0\n100 1 2 3 4\n205 1 2 4 3\n").unwrap();
+    let o = run(&["check", s(&d.join("g.ele")), "--json"]);
+    assert_eq!(o.status.code(), Some(1));
+    let w = json(&o)["witness"].clone();
+    let tets: Vec<u64> = serde_json::from_value(w["tets"].clone()).unwrap();
+    assert!(tets.iter().all(|t| [100, 205].contains(t)), "{w}");
+    let detail = w["detail"].as_str().unwrap();
+    assert!(
+        detail.contains("T100") || detail.contains("T205"),
+        "{detail}"
+    );
+    assert!(
+        !detail.contains("T0") && !detail.contains("T1 "),
+        "{detail}"
+    );
+    std::fs::write(d.join("g.ele"), "1 4 0\n7 1 2 2 4\n").unwrap();
+    let o = run(&["detect", s(&d.join("g.ele"))]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("g.ele:2: tetrahedron 7 repeats"), "{err}");
+}
+
 #[test]
 fn planar_input_is_a_triangulation_question() {
     let d = dir("planar");

@@ -1,40 +1,66 @@
 //! Vertex numbers and message text: a renumbering of points for locality
-//! ([`Renumbering`]), vertex numbers in the text of witnesses and problems, and input
-//! tokens quoted for messages ([`quote`]).
+//! ([`Renumbering`]), vertex and cell numbers in the text of witnesses and problems, and
+//! input tokens quoted for messages ([`quote`]).
 //!
-//! Sentences for a person name vertices as `#12`. The library numbers from 0; a file may
-//! number from 1 (TetGen) or the algorithm may have renumbered the points (a spatial
-//! order), so texts are renumbered by rewriting every `#<digits>`. Shared by `mesh` (the
-//! verifier's problems) and `detect` (witnesses), which depend on it and not on each
-//! other.
+//! Sentences for a person name vertices as `#12` and cells (tetrahedra, triangles) as
+//! `T12`. The library numbers both from 0; a file may number from 1 (TetGen), may number
+//! its tetrahedra with gaps, or the algorithm may have renumbered the points (a spatial
+//! order), so texts are renamed by rewriting every `#<digits>` and every `T<digits>` that
+//! starts a word. Shared by `mesh` (the verifier's problems) and `detect` (witnesses),
+//! which depend on it and not on each other.
 //!
 //! ```
-//! use tetrakit::numbering::{ids, renumber_text};
+//! use tetrakit::numbering::{ids, relabel_text, renumber_text};
 //! assert_eq!(ids(&[1, 2]), "[#1, #2]");
 //! assert_eq!(renumber_text("vertex #0 lies on (#1, #2)", 1), "vertex #1 lies on (#2, #3)");
+//! let labels = [10, 20, 30];
+//! assert_eq!(
+//!     relabel_text("tetrahedra T0 and T2 share #0", |v| v + 1, |t| labels[t as usize]),
+//!     "tetrahedra T10 and T30 share #1"
+//! );
 //! ```
 
-/// Adds `base` to every `#<digits>` vertex number in `text`.
+/// Adds `base` to every vertex number (`#<digits>`) and cell number (`T<digits>`) in
+/// `text`.
 pub fn renumber_text(text: &str, base: u32) -> String {
-    map_text(text, |v| v + base)
+    relabel_text(text, |v| v + base, |t| t + base)
 }
 
-/// Renames every `#<digits>` vertex number `v` in `text` to `f(v)`.
+/// Renames every vertex number `#v` in `text` to `#f(v)`; cell numbers are kept.
 pub fn map_text(text: &str, f: impl Fn(u32) -> u32) -> String {
+    relabel_text(text, f, |t| t)
+}
+
+/// Renames every vertex number `#v` in `text` to `#vertex(v)` and every cell number `Tt`
+/// (a `T` that starts a word, then digits) to `Tcell(t)`.
+pub fn relabel_text(text: &str, vertex: impl Fn(u32) -> u32, cell: impl Fn(u32) -> u32) -> String {
     let mut out = String::with_capacity(text.len());
-    let mut rest = text;
-    while let Some(i) = rest.find('#') {
-        out.push_str(&rest[..=i]);
-        rest = &rest[i + 1..];
-        let digits = rest.bytes().take_while(u8::is_ascii_digit).count();
-        if let Ok(x) = rest[..digits].parse::<u32>() {
-            out.push_str(&f(x).to_string());
-        } else {
-            out.push_str(&rest[..digits]);
+    let bytes = text.as_bytes();
+    let (mut i, mut copied) = (0, 0);
+    while i < bytes.len() {
+        let b = bytes[i];
+        let starts_word = i == 0 || !bytes[i - 1].is_ascii_alphanumeric();
+        let f: Option<&dyn Fn(u32) -> u32> = match b {
+            b'#' => Some(&vertex),
+            b'T' if starts_word => Some(&cell),
+            _ => None,
+        };
+        // `b` is ASCII, so `i + 1` is a character boundary.
+        let digits = bytes[i + 1..]
+            .iter()
+            .take_while(|c| c.is_ascii_digit())
+            .count();
+        match f.map(|f| (f, text[i + 1..i + 1 + digits].parse::<u32>())) {
+            Some((f, Ok(x))) => {
+                out.push_str(&text[copied..=i]);
+                out.push_str(&f(x).to_string());
+                i += 1 + digits;
+                copied = i;
+            }
+            _ => i += 1,
         }
-        rest = &rest[digits..];
     }
-    out.push_str(rest);
+    out.push_str(&text[copied..]);
     out
 }
 

@@ -86,9 +86,22 @@ pub struct Input {
     pub tet_file: PathBuf,
     /// See [`Input::tet_file`].
     pub tet_lines: Vec<u32>,
+    /// The file's own number of each tetrahedron where it is not `k + index_base` (a
+    /// `.ele` numbered with gaps, or from another base than its `.node`); empty otherwise.
+    /// See [`Input::tet_label`].
+    pub tet_labels: Vec<u32>,
 }
 
 impl Input {
+    /// The number the file gives tetrahedron `k` (`k + index_base` unless the file
+    /// numbers its tetrahedra otherwise).
+    pub fn tet_label(&self, k: usize) -> u32 {
+        match self.tet_labels.get(k) {
+            Some(&l) => l,
+            None => k as u32 + self.index_base,
+        }
+    }
+
     /// Where tetrahedron `k` was read, for messages: `file:line` or `file` (`tets[k]`).
     pub fn tet_origin(&self, k: usize) -> String {
         match self.tet_lines.get(k) {

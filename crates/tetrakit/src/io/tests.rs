@@ -36,6 +36,35 @@ fn reads_zero_based_ele() {
     assert_eq!(input.tets, vec![[0, 1, 2, 3]]);
 }
 
+/// A `.ele` numbered with gaps (or from another base than its `.node`) is read as TetGen
+/// and meshio read it, and its numbers are kept to name tetrahedra; they must increase.
+#[test]
+fn ele_numbering_with_gaps_is_kept() {
+    let two = "5 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 1 1\n";
+    tmp("gaps.node", two);
+    let input = read_input(&tmp("gaps.ele", "2 4 0\n10 1 2 3 4\n30 2 3 4 5\n")).unwrap();
+    assert_eq!(input.tets, [[0, 1, 2, 3], [1, 2, 3, 4]]);
+    assert_eq!((input.tet_label(0), input.tet_label(1)), (10, 30));
+    tmp("plain.node", two);
+    let input = read_input(&tmp("plain.ele", "2 4 0\n1 1 2 3 4\n2 2 3 4 5\n")).unwrap();
+    assert!(input.tet_labels.is_empty());
+    assert_eq!(input.tet_label(1), 2);
+    // A 0-based .ele beside a 1-based .node names its tetrahedra from 0.
+    tmp("mixed0.node", two);
+    let input = read_input(&tmp("mixed0.ele", "2 4 0\n0 1 2 3 4\n1 2 3 4 5\n")).unwrap();
+    assert_eq!(input.tet_label(0), 0);
+    tmp("down.node", two);
+    let e = err("down.ele", "2 4 0\n10 1 2 3 4\n# c\n7 2 3 4 5\n");
+    assert_eq!(e.line, 4);
+    assert!(e.message.contains("numbered 7 after 10"), "{e}");
+    tmp("neg.node", two);
+    let e = err("neg.ele", "1 4 0\n-3 1 2 3 4\n");
+    assert!(e.message.contains("numbered -3"), "{e}");
+    // Point, edge and face files keep TetGen's consecutive numbering.
+    let e = err("gapnode.node", "2 3 0 0\n1 0 0 0\n3 1 1 1\n");
+    assert!(e.message.contains("expected 2"), "{e}");
+}
+
 #[test]
 fn rejects_non_numeric_nan_and_range() {
     let e = err("bad1.node", "2 3 0 0\n1 0 0 x\n2 1 1 1\n");

@@ -1,5 +1,8 @@
 //! TetGen's `.node`, `.edge`, `.ele` and `.face` formats (0- or 1-based, `#` comments,
-//! attributes and boundary markers), read strictly.
+//! attributes and boundary markers), read strictly. Rows of `.node`, `.edge` and `.face`
+//! are numbered `base, base + 1, ...`; a `.ele` may number its tetrahedra with gaps, in
+//! increasing order (TetGen and meshio ignore those numbers), and they are kept in
+//! [`Input::tet_labels`] to name tetrahedra in witnesses.
 
 use super::{
     Input, InputError, Tokens, check_segments, parse_coord, parse_int, read_text, vertex_ref,
@@ -34,16 +37,22 @@ pub(super) fn read(path: &Path, ext: &str) -> Result<Input, InputError> {
         }
     };
     if let Some(p) = member("edge")? {
-        let (rows, lines) = read_rows::<2>(&p, &input, "edge", 2)?;
+        let (rows, lines, _) = read_rows::<2>(&p, &input, "edge", Numbering::Consecutive)?;
         check_segments(&rows, &lines, input.index_base, &p)?;
         input.segments = rows;
     }
     if let Some(p) = member("ele")? {
-        (input.tets, input.tet_lines) = read_rows::<4>(&p, &input, "tetrahedron", 4)?;
-        input.tet_file = p;
+        let (tets, lines, labels) = read_rows::<4>(&p, &input, "tetrahedron", Numbering::Gaps)?;
+        let base = input.index_base;
+        let plain = labels
+            .iter()
+            .enumerate()
+            .all(|(k, &l)| l == k as u32 + base);
+        input.tet_labels = if plain { Vec::new() } else { labels };
+        (input.tets, input.tet_lines, input.tet_file) = (tets, lines, p);
     }
     if let Some(p) = member("face")? {
-        input.faces = read_rows::<3>(&p, &input, "face", 3)?.0;
+        input.faces = read_rows::<3>(&p, &input, "face", Numbering::Consecutive)?.0;
     }
     Ok(input)
 }
@@ -245,23 +254,40 @@ fn numbering_base(
     Ok(idx)
 }
 
-/// Checks a row's index (`base + ordinal`) and that the header declared enough rows.
+/// How the rows of a file are numbered: `base, base + 1, ...` (TetGen's rule, required
+/// of `.node`, `.edge` and `.face`), or strictly increasing with gaps allowed (`.ele`, whose
+/// row numbers TetGen and meshio ignore; kept to name tetrahedra in witnesses).
+#[derive(Clone, Copy, PartialEq)]
+enum Numbering {
+    Consecutive,
+    Gaps,
+}
+
+/// Reads a row's index and checks it (`base + ordinal` when consecutive, at most
+/// `u32::MAX` otherwise) and that the header declared enough rows.
 fn check_row_index(
     path: &Path,
     toks: &[&str],
     line: usize,
     ordinal: usize,
-    (base, declared, what): (i64, usize, &str),
-) -> Result<(), InputError> {
+    (base, declared, what, numbering): (i64, usize, &str, Numbering),
+) -> Result<u32, InputError> {
     let idx = parse_int(toks[0], path, line, "index")?;
     let expect = base + ordinal as i64;
-    if idx != expect {
+    if numbering == Numbering::Consecutive && idx != expect {
         return Err(InputError::new(
             path,
             line,
             format!("{what} numbered {idx}, expected {expect}"),
         ));
     }
+    let label = u32::try_from(idx).map_err(|_| {
+        InputError::new(
+            path,
+            line,
+            format!("{what} numbered {idx}: numbers run from 0 to {}", u32::MAX),
+        )
+    })?;
     if ordinal >= declared {
         return Err(InputError::new(
             path,
@@ -269,7 +295,28 @@ fn check_row_index(
             format!("more {what}s than the {declared} the header declares"),
         ));
     }
-    Ok(())
+    Ok(label)
+}
+
+/// Row numbers with gaps must increase, so that each names one row.
+fn check_increasing(
+    path: &Path,
+    labels: &[u32],
+    lines: &[u32],
+    what: &str,
+) -> Result<(), InputError> {
+    match labels.windows(2).position(|w| w[1] <= w[0]) {
+        None => Ok(()),
+        Some(k) => Err(InputError::new(
+            path,
+            lines[k + 1] as usize,
+            format!(
+                "{what} numbered {} after {}: numbers must increase (gaps are allowed)",
+                labels[k + 1],
+                labels[k]
+            ),
+        )),
+    }
 }
 
 /// The number of rows read must be the number the header declared.
@@ -319,7 +366,8 @@ fn read_node(path: &Path) -> Result<Input, InputError> {
                     ),
                 ));
             }
-            check_row_index(path, toks, line, ordinal, (base, declared, "point"))?;
+            let key = (base, declared, "point", Numbering::Consecutive);
+            check_row_index(path, toks, line, ordinal, key)?;
             let mut p = [0.0; 3];
             for k in 0..dim {
                 p[k] = parse_coord(toks[1 + k], path, line)?;
@@ -341,13 +389,14 @@ fn read_node(path: &Path) -> Result<Input, InputError> {
     })
 }
 
-/// Reads a TetGen element file whose rows are `index v1 .. vK [extras]`.
+/// Reads a TetGen element file whose rows are `index v1 .. vK [extras]`: the rows, their
+/// lines and their indices.
 fn read_rows<const K: usize>(
     path: &Path,
     nodes: &Input,
     what: &str,
-    min_per_row: usize,
-) -> Result<(Vec<[u32; K]>, Vec<u32>), InputError> {
+    numbering: Numbering,
+) -> Result<(Vec<[u32; K]>, Vec<u32>, Vec<u32>), InputError> {
     let text = read_text(path)?;
     let (hline, h, body, first_line) = split_header(path, &text)?;
     let declared = h[0] as usize;
@@ -368,33 +417,39 @@ fn read_rows<const K: usize>(
     } else {
         h.get(1).copied().unwrap_or(0) as usize
     };
-    let base = numbering_base(path, body, first_line, what)?;
-    let (lo, hi) = (1 + per_row.max(min_per_row), 1 + per_row + extra);
+    let base = match numbering {
+        Numbering::Consecutive => numbering_base(path, body, first_line, what)?,
+        Numbering::Gaps => 0,
+    };
+    let (lo, hi) = (1 + per_row.max(K), 1 + per_row + extra);
     let n = nodes.points.len() as u64;
+    let node_base = u64::from(nodes.index_base);
     // A plain row (unsigned integers only) that passes every check below, without
     // tokenizing; anything else goes through the checks that name the problem.
-    let fast = |raw: &[u8], ordinal: usize| -> Option<[u32; K]> {
+    let fast = |raw: &[u8], ordinal: usize| -> Option<([u32; K], u32)> {
         let (vals, count) = uint_row::<16>(raw)?;
-        let ok_count = (lo..=hi).contains(&count);
-        if !ok_count || vals[0] != (base as u64) + ordinal as u64 || ordinal >= declared {
+        let label = u32::try_from(vals[0]).ok()?;
+        let label_ok = match numbering {
+            Numbering::Consecutive => vals[0] == (base as u64) + ordinal as u64,
+            Numbering::Gaps => true,
+        };
+        if !(lo..=hi).contains(&count) || !label_ok || ordinal >= declared {
             return None;
         }
-        let mut r = [0u32; K];
-        for k in 0..K {
-            let i = vals[1 + k].checked_sub(nodes.index_base as u64)?;
-            r[k] = u32::try_from(i).ok().filter(|&i| u64::from(i) < n)?;
-        }
-        // The other nodes of a 10-node tetrahedron are range-checked, not kept.
-        if per_row > K
-            && !(vals[1 + K..1 + per_row].iter())
-                .all(|&v| v >= nodes.index_base as u64 && v - (nodes.index_base as u64) < n)
-        {
+        // Every node is range-checked (a 10-node tetrahedron's edge midpoints too); the
+        // corners are kept.
+        let in_range = |v: u64| v >= node_base && v - node_base < n;
+        if !vals[1..1 + per_row.max(K)].iter().all(|&v| in_range(v)) {
             return None;
         }
-        Some(r)
+        Some((
+            std::array::from_fn(|k| (vals[1 + k] - node_base) as u32),
+            label,
+        ))
     };
-    let (rows, lines) = parse_body(body, first_line, [0; K], fast, |toks, line, ordinal| {
-        if toks.len() < 1 + per_row.max(min_per_row) || toks.len() > 1 + per_row + extra {
+    let blank = ([0; K], 0);
+    let (rows, lines) = parse_body(body, first_line, blank, fast, |toks, line, ordinal| {
+        if toks.len() < lo || toks.len() > hi {
             return Err(InputError::new(
                 path,
                 line,
@@ -404,9 +459,8 @@ fn read_rows<const K: usize>(
                 ),
             ));
         }
-        check_row_index(path, toks, line, ordinal, (base, declared, what))?;
-        // Every node of a row is checked (a 10-node tetrahedron's edge midpoints too);
-        // the corners are kept.
+        let key = (base, declared, what, numbering);
+        let label = check_row_index(path, toks, line, ordinal, key)?;
         let mut r = [0u32; K];
         for k in 0..per_row.max(K) {
             let raw = parse_int(toks[1 + k], path, line, "vertex")?;
@@ -415,10 +469,12 @@ fn read_rows<const K: usize>(
                 r[k] = i;
             }
         }
-        Ok(r)
+        Ok((r, label))
     })?;
     check_row_count(path, rows.len(), declared, what)?;
-    Ok((rows, lines))
+    let (rows, labels): (Vec<[u32; K]>, Vec<u32>) = rows.into_iter().unzip();
+    check_increasing(path, &labels, &lines, what)?;
+    Ok((rows, lines, labels))
 }
 
 /// The unsigned decimal integers of a line (at most `N`, at most 18 digits each), separated

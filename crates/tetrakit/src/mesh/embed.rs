@@ -80,7 +80,7 @@ pub(super) fn vertex_overlaps(
                             vec![t, u],
                             vec![v as u32],
                             format!(
-                                "tetrahedra #{t} and #{u} overlap near their common vertex #{v}"
+                                "tetrahedra T{t} and T{u} overlap near their common vertex #{v}"
                             ),
                         ));
                     }
@@ -163,7 +163,7 @@ pub(super) fn boundary_self_intersections(
                 vec![fi.1, fj.1],
                 fi.0.iter().chain(&fj.0).copied().collect(),
                 format!(
-                    "boundary faces {} (of tetrahedron #{}) and {} (of tetrahedron #{}) intersect",
+                    "boundary faces {} (of tetrahedron T{}) and {} (of tetrahedron T{}) intersect",
                     ids(&fi.0),
                     fi.1,
                     ids(&fj.0),
@@ -215,7 +215,7 @@ pub(super) fn nested_overlaps(
             });
             found.map(|t| {
                 let detail = format!(
-                    "vertex #{v} of a boundary component lies in tetrahedron #{t} ({}): a separate piece of mesh overlaps another",
+                    "vertex #{v} of a boundary component lies in tetrahedron T{t} ({}): a separate piece of mesh overlaps another",
                     ids(&tets[t as usize])
                 );
                 Problem::new(ProblemKind::Overlap, vec![t, own], vec![v], detail)

@@ -106,12 +106,20 @@ impl Report {
     /// How many problems are kept in detail.
     pub const LIMIT: usize = 1000;
 
-    /// Shifts tetrahedron and vertex numbers by `base` (fields and `#12` numbers in the text).
-    pub fn renumbered(mut self, base: u32) -> Self {
+    /// Shifts cell and vertex numbers by `base` (in the fields, and `T12` and `#12` in the
+    /// texts).
+    pub fn renumbered(self, base: u32) -> Self {
+        self.relabeled(base, |t| t + base)
+    }
+
+    /// The report in a file's own numbering: vertex `v` becomes `v + base` and cell `t`
+    /// becomes `cell(t)` (a `.ele` may number its tetrahedra with gaps), in the cell and
+    /// vertex lists and in the texts.
+    pub fn relabeled(mut self, base: u32, cell: impl Fn(u32) -> u32) -> Self {
         for p in self.problems.iter_mut().chain(&mut self.non_manifold) {
-            p.cells.iter_mut().for_each(|t| *t += base);
+            p.cells.iter_mut().for_each(|t| *t = cell(*t));
             p.vertices.iter_mut().for_each(|v| *v += base);
-            p.detail = crate::numbering::renumber_text(&p.detail, base);
+            p.detail = crate::numbering::relabel_text(&p.detail, |v| v + base, &cell);
         }
         self
     }

@@ -133,11 +133,11 @@ fn repeats(t: &[u32; 4]) -> bool {
 /// What is wrong with tetrahedron `i` = `t` of orientation `sign` (not +1).
 fn tet_problem(i: u32, t: &[u32; 4], sign: i8, n: u32) -> Problem {
     if let Some(&v) = t.iter().find(|&&v| v >= n) {
-        let d = format!("tetrahedron #{i} names vertex #{v}, but there are {n} points");
+        let d = format!("tetrahedron T{i} names vertex #{v}, but there are {n} points");
         return Problem::new(ProblemKind::BadIndex, vec![i], vec![v], d);
     }
     if repeats(t) {
-        let d = format!("tetrahedron #{i} repeats a vertex: {}", ids(t));
+        let d = format!("tetrahedron T{i} repeats a vertex: {}", ids(t));
         return Problem::new(ProblemKind::RepeatedVertex, vec![i], t.to_vec(), d);
     }
     let (kind, what) = if sign == 0 {
@@ -148,7 +148,7 @@ fn tet_problem(i: u32, t: &[u32; 4], sign: i8, n: u32) -> Problem {
     } else {
         (ProblemKind::Inverted, "is negatively oriented")
     };
-    let d = format!("tetrahedron #{i} {} {what}", ids(t));
+    let d = format!("tetrahedron T{i} {} {what}", ids(t));
     Problem::new(kind, vec![i], t.to_vec(), d)
 }
 
@@ -241,7 +241,7 @@ fn pair_bucket(a: u32, recs: &mut [[u32; 3]]) -> (Vec<BoundaryFace>, Vec<Problem
             2 => {
                 let tets = tets();
                 let detail = format!(
-                    "tetrahedra #{} and #{} lie on the same side of their common face {}",
+                    "tetrahedra T{} and T{} lie on the same side of their common face {}",
                     tets[0],
                     tets[1],
                     ids(&face)
@@ -339,7 +339,7 @@ fn check_hull(
                 ProblemKind::BoundaryNotOnHull,
                 vec![f.tet],
                 f.v.to_vec(),
-                format!("face {} of tetrahedron #{} has no neighbour across it but is not on the convex hull", ids(&f.v), f.tet),
+                format!("face {} of tetrahedron T{} has no neighbour across it but is not on the convex hull", ids(&f.v), f.tet),
             ));
         }
     }
@@ -356,7 +356,7 @@ fn check_hull(
                 vec![f0.tet, g.tet],
                 f0.v.iter().chain(&g.v).copied().collect(),
                 format!(
-                    "boundary faces {} and {} overlap on the hull, so tetrahedra #{} and #{} overlap",
+                    "boundary faces {} and {} overlap on the hull, so tetrahedra T{} and T{} overlap",
                     ids(&f0.v),
                     ids(&g.v),
                     f0.tet,

@@ -27,7 +27,7 @@ pub fn verify_triangulation(points: &[Point2], tris: &[[u32; 3]]) -> Report {
                 ProblemKind::BadIndex,
                 vec![i],
                 t.to_vec(),
-                format!("triangle #{i} {} has a bad or repeated vertex", ids(t)),
+                format!("triangle T{i} {} has a bad or repeated vertex", ids(t)),
             ));
             return r;
         }
@@ -38,13 +38,13 @@ pub fn verify_triangulation(points: &[Point2], tris: &[[u32; 3]]) -> Report {
                 ProblemKind::Degenerate,
                 vec![i],
                 t.to_vec(),
-                format!("triangle #{i} {} is degenerate", ids(t)),
+                format!("triangle T{i} {} is degenerate", ids(t)),
             )),
             _ => r.push(Problem::new(
                 ProblemKind::Inverted,
                 vec![i],
                 t.to_vec(),
-                format!("triangle #{i} {} is clockwise", ids(t)),
+                format!("triangle T{i} {} is clockwise", ids(t)),
             )),
         }
     }
@@ -53,7 +53,7 @@ pub fn verify_triangulation(points: &[Point2], tris: &[[u32; 3]]) -> Report {
             ProblemKind::SameSide,
             vec![u, t],
             vec![a, b],
-            format!("triangles #{u} and #{t} lie on the same side of edge (#{a}, #{b})"),
+            format!("triangles T{u} and T{t} lie on the same side of edge (#{a}, #{b})"),
         ))
     });
     r.boundary_faces = boundary.len();
@@ -69,7 +69,7 @@ pub fn verify_triangulation(points: &[Point2], tris: &[[u32; 3]]) -> Report {
         .collect();
     for (&(a, b, t), s) in boundary.iter().zip(&sides) {
         if s.is_none() {
-            r.push(Problem::new(ProblemKind::BoundaryNotOnHull, vec![t], vec![a, b], format!("edge (#{a}, #{b}) of triangle #{t} has no neighbour but is not on the convex hull")));
+            r.push(Problem::new(ProblemKind::BoundaryNotOnHull, vec![t], vec![a, b], format!("edge (#{a}, #{b}) of triangle T{t} has no neighbour but is not on the convex hull")));
         }
     }
     let mut used = vec![false; points.len()];
@@ -100,7 +100,7 @@ pub fn verify_triangulation(points: &[Point2], tris: &[[u32; 3]]) -> Report {
         for (&(a, b, t), s) in boundary.iter().zip(&sides).skip(1) {
             let sp = span(a, b);
             if *s == sides[0] && sp.0.max(s0.0) < sp.1.min(s0.1) {
-                r.push(Problem::new(ProblemKind::Overlap, vec![t0, t], vec![a0, b0, a, b], format!("boundary edges (#{a0}, #{b0}) and (#{a}, #{b}) overlap, so triangles #{t0} and #{t} overlap")));
+                r.push(Problem::new(ProblemKind::Overlap, vec![t0, t], vec![a0, b0, a, b], format!("boundary edges (#{a0}, #{b0}) and (#{a}, #{b}) overlap, so triangles T{t0} and T{t} overlap")));
             }
         }
     }
