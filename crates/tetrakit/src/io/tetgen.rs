@@ -389,14 +389,16 @@ fn read_node(path: &Path) -> Result<Input, InputError> {
     })
 }
 
-/// Reads a TetGen element file whose rows are `index v1 .. vK [extras]`: the rows, their
-/// lines and their indices.
+/// The rows of an element file, their lines and their indices.
+type ElementRows<const K: usize> = (Vec<[u32; K]>, Vec<u32>, Vec<u32>);
+
+/// Reads a TetGen element file whose rows are `index v1 .. vK [extras]`.
 fn read_rows<const K: usize>(
     path: &Path,
     nodes: &Input,
     what: &str,
     numbering: Numbering,
-) -> Result<(Vec<[u32; K]>, Vec<u32>, Vec<u32>), InputError> {
+) -> Result<ElementRows<K>, InputError> {
     let text = read_text(path)?;
     let (hline, h, body, first_line) = split_header(path, &text)?;
     let declared = h[0] as usize;
