@@ -36,3 +36,4 @@ pub mod planar;
 pub mod polyhedra;
 pub mod rng;
 mod rows;
+pub mod shell;

@@ -12,7 +12,7 @@ pub(crate) mod surface;
 mod verify;
 mod verify_planar;
 
-pub use certify::{certify_boundary, certify_hull, certify_polyhedron};
+pub use certify::{certify_boundary, certify_hull, certify_polyhedron, certify_shell};
 pub use report::{Problem, ProblemKind, Report};
 pub use surface::{Polyhedron, SurfaceError};
 pub use verify::verify;

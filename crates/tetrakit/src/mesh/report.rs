@@ -33,9 +33,12 @@ pub enum ProblemKind {
     UnusedVertex,
     /// Two boundary faces intersect: the boundary surface is not embedded.
     BoundarySelfIntersection,
-    /// The boundary of the tetrahedra is not the polyhedron's surface (a facet not
-    /// covered, or a boundary triangle that is not a facet).
+    /// The boundary of the tetrahedra is not the domain's surface (a facet not covered,
+    /// a boundary triangle that is not a facet, or the wrong volume).
     BoundaryNotSurface,
+    /// A vertex that is not on the domain's boundary surfaces (a Steiner point where none
+    /// is allowed).
+    SteinerPoint,
 }
 
 impl fmt::Display for ProblemKind {

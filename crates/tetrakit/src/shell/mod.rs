@@ -1,0 +1,411 @@
+//! Steiner-free tetrahedralization of the region between two nested convex polytopes
+//! (thesis ch. 4): `P − int(Q)` for convex `Q ⊆ P`, with no point added and no vertex
+//! moved.
+//!
+//! Both methods repeatedly remove outer vertices from the current hull
+//! `P̄ = CH(remaining outer vertices ∪ V(Q))` until `P̄ = Q`; each removed piece is
+//! star-shaped from its tip and coned from it (Lemma 4.1), see [`surface`](self) for the
+//! exact construction of a piece's bottom.
+//! - [`Method::Cap`]: Bern's cap removal (§4.1): one vertex at a time, always one of
+//!   minimum degree among the outer vertices still on `P̄`. `O(n log n)` tetrahedra in
+//!   the worst case (`n(2 + 6H_n)`).
+//!
+//! **Input.** `P` and `Q` are the exact convex hulls of two point sets ([`Shell::new`]).
+//! Their vertices are the extreme points; other points (inside a hull, or on it but not
+//! a corner) are not vertices, and are listed in [`Shell::outer_ignored`] and
+//! [`Shell::inner_ignored`]. `Q ⊆ P` is checked exactly; `Q` may touch `P` (shared
+//! vertices, edges or facets, a vertex of `Q` on a facet of `P`). A vertex of both is one
+//! point. `Q` must be full-dimensional.
+//!
+//! **Facets.** A facet of `P` or `Q` with more than three vertices is a convex polygon;
+//! its triangulation is whatever the removals leave (each removal retriangulates the part
+//! of the surface it replaces), and the certificate
+//! ([`certify_shell`](crate::mesh::certify_shell)) accepts any triangulation of the
+//! facets by their vertices.
+//!
+//! ```
+//! use tetrakit::control::Control;
+//! use tetrakit::shell::{Method, Shell, tetrahedralize};
+//! let cube: Vec<[f64; 3]> =
+//!     (0..8).map(|i| [(i & 1) as f64 * 4.0, ((i >> 1) & 1) as f64 * 4.0, (i >> 2) as f64 * 4.0]).collect();
+//! let inner: Vec<[f64; 3]> = cube.iter().map(|p| p.map(|x| 1.0 + x / 2.0)).collect();
+//! let shell = Shell::new(&cube, &inner).unwrap();
+//! let mesh = tetrahedralize(&shell, Method::Cap, &Control::new()).unwrap();
+//! assert!(tetrakit::mesh::certify_shell(&shell.points, &mesh.tets, &shell.inner).is_ok());
+//! assert!(mesh.tets.len() <= 9 * 16 - 6);
+//! ```
+
+mod bins;
+pub mod generate;
+mod surface;
+
+use crate::control::{Control, Stopped};
+use crate::geom::{Hull3, Point3};
+use std::cmp::Reverse;
+use std::collections::{BinaryHeap, HashMap, HashSet};
+use std::fmt;
+use surface::Surface;
+
+/// The region between two nested convex polytopes, as vertices.
+#[derive(Clone, Debug)]
+pub struct Shell {
+    /// The vertices: the outer ones first (in input order), then the inner ones that are
+    /// not also outer vertices.
+    pub points: Vec<Point3>,
+    /// The vertices of `P`: indices into `points`.
+    pub outer: Vec<u32>,
+    /// The vertices of `Q`: indices into `points` (a vertex of both is an outer index).
+    pub inner: Vec<u32>,
+    /// For each outer vertex, its index in the outer input.
+    pub outer_source: Vec<u32>,
+    /// For each inner vertex, its index in the inner input.
+    pub inner_source: Vec<u32>,
+    /// Outer input points that are not vertices of `P` (inside it, on it but not a
+    /// corner, or repeated).
+    pub outer_ignored: Vec<u32>,
+    /// Inner input points that are not vertices of `Q`.
+    pub inner_ignored: Vec<u32>,
+    /// Inner vertices (not outer ones) on the boundary of `P`: on an edge or inside a
+    /// facet of the outer hull.
+    pub touching: Vec<u32>,
+}
+
+/// Why a shell cannot be built or tetrahedralized.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ShellError {
+    /// The outer points span less than 3 dimensions.
+    OuterFlat {
+        /// Their affine dimension.
+        dimension: usize,
+    },
+    /// The inner points span less than 3 dimensions.
+    InnerFlat {
+        /// Their affine dimension.
+        dimension: usize,
+    },
+    /// A vertex of `Q` lies outside `P`.
+    InnerOutside {
+        /// Its index in the inner input.
+        index: u32,
+        /// The point.
+        point: Point3,
+    },
+    /// The control stopped the run.
+    Stopped,
+    /// A removal the construction guarantees was refused by its exact checks (a bug).
+    Internal(String),
+}
+
+impl fmt::Display for ShellError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ShellError::OuterFlat { dimension } => write!(
+                f,
+                "the outer points span {dimension} dimension(s), not 3: their hull has no volume"
+            ),
+            ShellError::InnerFlat { dimension } => write!(
+                f,
+                "the inner points span {dimension} dimension(s), not 3: a flat inner hull is not a hole"
+            ),
+            ShellError::InnerOutside { index, point } => write!(
+                f,
+                "inner point {index} ({} {} {}) lies outside the outer hull",
+                point[0], point[1], point[2]
+            ),
+            ShellError::Stopped => write!(f, "stopped"),
+            ShellError::Internal(why) => write!(f, "internal error: {why}"),
+        }
+    }
+}
+
+impl std::error::Error for ShellError {}
+
+impl From<Stopped> for ShellError {
+    fn from(_: Stopped) -> Self {
+        ShellError::Stopped
+    }
+}
+
+/// The extreme points of `pts` (in input order, repeats dropped) and the others, or the
+/// hull's dimension when it is flat.
+fn extreme_points(pts: &[Point3]) -> Result<(Vec<u32>, Vec<u32>), usize> {
+    let hull = Hull3::new(pts);
+    if hull.dimension < 3 {
+        return Err(hull.dimension);
+    }
+    let mut seen = HashSet::new();
+    let (mut vertices, mut others) = (Vec::new(), Vec::new());
+    for (i, p) in pts.iter().enumerate() {
+        // A corner of a 3-polytope lies on three facets or more; a point inside an edge
+        // on two, inside a facet on one.
+        let corner = hull.facets_of(i).len() >= 3 && seen.insert(key(p));
+        if corner {
+            vertices.push(i as u32)
+        } else {
+            others.push(i as u32)
+        }
+    }
+    Ok((vertices, others))
+}
+
+/// A point's exact coordinates as a hash key (`-0.0` and `0.0` are one point).
+fn key(p: &Point3) -> [u64; 3] {
+    p.map(|x| (x + 0.0).to_bits())
+}
+
+impl Shell {
+    /// The shell between `CH(outer)` and `CH(inner)`: checks exactly that both are
+    /// full-dimensional and that `CH(inner) ⊆ CH(outer)`.
+    ///
+    /// ```
+    /// use tetrakit::shell::{Shell, ShellError};
+    /// let tet = [[0.0, 0.0, 0.0], [4.0, 0.0, 0.0], [0.0, 4.0, 0.0], [0.0, 0.0, 4.0]];
+    /// let small = [[1.0, 1.0, 1.0], [2.0, 1.0, 1.0], [1.0, 2.0, 1.0], [1.0, 1.0, 2.0]];
+    /// assert_eq!(Shell::new(&tet, &small).unwrap().points.len(), 8);
+    /// let out = [[1.0, 1.0, 1.0], [2.0, 1.0, 1.0], [1.0, 2.0, 1.0], [3.0, 3.0, 3.0]];
+    /// assert!(matches!(Shell::new(&tet, &out), Err(ShellError::InnerOutside { index: 3, .. })));
+    /// ```
+    pub fn new(outer: &[Point3], inner: &[Point3]) -> Result<Shell, ShellError> {
+        let (outer_v, outer_ignored) =
+            extreme_points(outer).map_err(|dimension| ShellError::OuterFlat { dimension })?;
+        let (inner_v, inner_ignored) =
+            extreme_points(inner).map_err(|dimension| ShellError::InnerFlat { dimension })?;
+        let mut points: Vec<Point3> = outer_v.iter().map(|&i| outer[i as usize]).collect();
+        let index: HashMap<[u64; 3], u32> = points
+            .iter()
+            .enumerate()
+            .map(|(k, p)| (key(p), k as u32))
+            .collect();
+        let mut inner_idx = Vec::with_capacity(inner_v.len());
+        for &i in &inner_v {
+            let p = inner[i as usize];
+            inner_idx.push(*index.get(&key(&p)).unwrap_or(&(points.len() as u32)));
+            if inner_idx.last() == Some(&(points.len() as u32)) {
+                points.push(p);
+            }
+        }
+        // Q ⊆ P exactly when every corner of CH(P ∪ Q) is a vertex of P: a corner of the
+        // union that is an inner vertex not shared with P lies outside P.
+        let union = Hull3::new(&points);
+        let n_outer = outer_v.len() as u32;
+        let corner = |c: u32| union.facets_of(c as usize).len() >= 3;
+        if let Some(c) = (n_outer..points.len() as u32).find(|&c| corner(c)) {
+            let k = inner_idx.iter().position(|&x| x == c).unwrap_or(0);
+            return Err(ShellError::InnerOutside {
+                index: inner_v[k],
+                point: points[c as usize],
+            });
+        }
+        let touching = (n_outer..points.len() as u32)
+            .filter(|&c| union.on_boundary(c as usize))
+            .collect();
+        Ok(Shell {
+            points,
+            outer: (0..n_outer).collect(),
+            inner: inner_idx,
+            outer_source: outer_v,
+            inner_source: inner_v,
+            outer_ignored,
+            inner_ignored,
+            touching,
+        })
+    }
+
+    /// `n = |V(P) ∪ V(Q)|`, the `n` of the thesis's bound `9n − 6`.
+    pub fn n(&self) -> usize {
+        self.points.len()
+    }
+}
+
+/// How to remove the outer vertices.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Method {
+    /// Bern's cap removal, minimum degree first (§4.1).
+    Cap,
+}
+
+impl Method {
+    /// The name used on the command line and in JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::Cap => "cap",
+        }
+    }
+}
+
+/// A tetrahedralization of a shell.
+#[derive(Clone, Debug)]
+pub struct ShellMesh {
+    /// Positively oriented tetrahedra on [`Shell::points`].
+    pub tets: Vec<[u32; 4]>,
+    /// How many pieces were removed (caps or bigcaps).
+    pub pieces: usize,
+}
+
+impl ShellMesh {
+    /// The edges of the tetrahedra that are not on the boundary surfaces (`e_i` of
+    /// Lemma 4.9: `t = e_i + n − 6` when `P` and `Q` are simplicial and do not touch).
+    pub fn interior_edges(&self) -> usize {
+        let mut faces: HashMap<[u32; 3], u32> = HashMap::new();
+        let mut edges: HashSet<[u32; 2]> = HashSet::new();
+        for &[a, b, c, d] in &self.tets {
+            for f in [[a, b, c], [a, b, d], [a, c, d], [b, c, d]] {
+                let mut f = f;
+                f.sort_unstable();
+                *faces.entry(f).or_default() += 1;
+            }
+            for (x, y) in [(a, b), (a, c), (a, d), (b, c), (b, d), (c, d)] {
+                edges.insert([x.min(y), x.max(y)]);
+            }
+        }
+        let mut boundary: HashSet<[u32; 2]> = HashSet::new();
+        for (f, _) in faces.iter().filter(|(_, k)| **k == 1) {
+            boundary.extend([[f[0], f[1]], [f[0], f[2]], [f[1], f[2]]]);
+        }
+        edges.len() - boundary.len()
+    }
+}
+
+/// Tetrahedralizes the shell by `method`. The result is not yet certified: pass it to
+/// [`certify_shell`](crate::mesh::certify_shell) (the CLI always does).
+pub fn tetrahedralize(
+    shell: &Shell,
+    method: Method,
+    ctl: &Control,
+) -> Result<ShellMesh, ShellError> {
+    let hidden: Vec<u32> = shell
+        .inner
+        .iter()
+        .copied()
+        .filter(|&v| v as usize >= shell.outer.len())
+        .collect();
+    let mut surface = Surface::new(&shell.points, &shell.outer, &hidden, &shell.touching)
+        .map_err(|r| ShellError::Internal(r.0.to_string()))?;
+    let removable: Vec<u32> = {
+        let inner: HashSet<u32> = shell.inner.iter().copied().collect();
+        shell
+            .outer
+            .iter()
+            .copied()
+            .filter(|v| !inner.contains(v))
+            .collect()
+    };
+    let (tets, pieces) = match method {
+        Method::Cap => cap_removal(&mut surface, &removable, ctl)?,
+    };
+    if surface.hidden.count() > 0 {
+        return Err(ShellError::Internal(format!(
+            "{} inner vertices never reached the surface",
+            surface.hidden.count()
+        )));
+    }
+    Ok(ShellMesh { tets, pieces })
+}
+
+/// The removal in progress: the surface, the outer vertices still on it, and the
+/// tetrahedra so far.
+struct Removal<'s, 'a> {
+    surface: &'s mut Surface<'a>,
+    left: HashSet<u32>,
+    heap: BinaryHeap<Reverse<(usize, u32)>>,
+    tets: Vec<[u32; 4]>,
+    pieces: usize,
+}
+
+impl Removal<'_, '_> {
+    /// Removes the cap at `v` and requeues its neighbours with their new degrees; false
+    /// (nothing changed) when the cap's checks refuse it.
+    fn cap(&mut self, v: u32) -> bool {
+        self.piece(v, &[v])
+    }
+
+    /// Removes `set` coned from `tip` (see [`Surface::remove_set`]).
+    fn piece(&mut self, tip: u32, set: &[u32]) -> bool {
+        let mut around: Vec<u32> = set
+            .iter()
+            .flat_map(|&u| self.surface.neighbours(u))
+            .collect();
+        around.sort_unstable();
+        around.dedup();
+        let t = match self.surface.remove_set(tip, set) {
+            Ok(t) => t,
+            Err(_) => return false,
+        };
+        self.pieces += 1;
+        self.tets.extend(t);
+        for v in set {
+            self.left.remove(v);
+        }
+        for u in around {
+            if self.left.contains(&u) {
+                self.heap.push(Reverse((self.surface.degree(u), u)));
+            }
+        }
+        true
+    }
+
+    /// When every cap is refused (coplanar facets of the current hull inside `P`, where a
+    /// tip is not an ear of every such facet's triangulation): a tip with one removable
+    /// neighbour, removed together.
+    fn pair(&mut self, refused: &[u32]) -> bool {
+        for &v in refused {
+            for u in self.surface.neighbours(v) {
+                if self.left.contains(&u) && self.piece(v, &[v, u]) {
+                    return true;
+                }
+            }
+        }
+        false
+    }
+}
+
+/// Bern's order: the removable vertex of least degree first, degrees updated as the
+/// surface changes (a lazy heap: stale entries are skipped). A refused cap is tried
+/// again once the surface has changed.
+fn cap_removal(
+    surface: &mut Surface,
+    removable: &[u32],
+    ctl: &Control,
+) -> Result<(Vec<[u32; 4]>, usize), ShellError> {
+    let heap = removable
+        .iter()
+        .map(|&v| Reverse((surface.degree(v), v)))
+        .collect();
+    let mut r = Removal {
+        surface,
+        left: removable.iter().copied().collect(),
+        heap,
+        tets: Vec::new(),
+        pieces: 0,
+    };
+    let total = removable.len();
+    let mut refused: Vec<u32> = Vec::new();
+    loop {
+        let Some(Reverse((d, v))) = r.heap.pop() else {
+            // Some refused tips have been removed since, by a pair.
+            refused.retain(|v| r.left.contains(v));
+            if refused.is_empty() {
+                break;
+            }
+            let before = r.left.len();
+            refused.retain(|&v| !r.cap(v));
+            if r.left.len() == before && !r.pair(&refused) {
+                return Err(ShellError::Internal(format!(
+                    "{} caps refused",
+                    refused.len()
+                )));
+            }
+            continue;
+        };
+        if !r.left.contains(&v) || r.surface.degree(v) != d {
+            continue;
+        }
+        ctl.check()?;
+        if r.cap(v) {
+            ctl.items((total - r.left.len()) as u64, total as u64);
+        } else {
+            refused.push(v);
+        }
+    }
+    Ok((r.tets, r.pieces))
+}

@@ -1,0 +1,400 @@
+//! The current hull `P̄` as a triangulated sphere, and the one operation both methods are
+//! made of: removing outer vertices from it, each removal a star-shaped piece coned from
+//! its tip (thesis §4.2, Lemma 4.1).
+//!
+//! **Removing a vertex `v`** (a cap, §4.1). Let `L` be the link of `v` (its neighbours,
+//! a cycle) and `H' = CH(V(P̄) − v ∪ V(Q))` the new hull. The cap `P̄ − H'` lies in
+//! `CH(v ∪ L)`, so the only points that can appear on its bottom are `L` and the hidden
+//! inner vertices `C` in that region (found by bounding box, a superset). Let
+//! `K = CH(L ∪ C) ⊆ H'`. Every facet of `H'` that `v` sees is a face of `K` (its
+//! vertices are in `L ∪ C`), and conversely a facet of `K` that `v` sees strictly lies on
+//! `∂H'` (a point of `K` that `v` sees is not in the interior of `H'`, else the segment
+//! from `v` would meet `∂H'` first, on a visible facet of `K`). So the bottom is the disk
+//! of `∂K` bounded by `L` on `v`'s side: the triangles of `K` reached from the link edges,
+//! directed as in the star, without crossing a link edge. Its triangles that `v` sees
+//! strictly are the bottoms of the cap's tetrahedra `v·t`; those in a plane through `v`
+//! (a coplanar facet of `P̄`) are kept on the surface without a tetrahedron. When `L ∪ C`
+//! is flat, `K` is a polygon and the bottom is the base of `CH(v ∪ L ∪ C)`, reversed.
+//!
+//! **Removing several at once** (a bigcap, §4.2): the same with `v`'s star replaced by
+//! the union of the stars of a connected vertex set `U` whose removal leaves a disk
+//! visible from `v`; see [`Surface::remove_set`].
+//!
+//! Every step is checked (the bottom is a disk bounded by the link, every bottom triangle
+//! seen from the tip or coplanar with it): a removal that fails a check changes nothing
+//! and is reported, and the caller tries another tip. The final mesh is certified anyway
+//! ([`crate::mesh::certify_shell`]).
+
+use super::bins::Bins;
+use crate::geom::{Hull3, Point3, bounding_box, orient2d_drop, orient3d, projection_axis};
+use std::collections::{HashMap, HashSet};
+
+/// The triangulated surface of the current hull.
+pub(super) struct Surface<'a> {
+    pts: &'a [Point3],
+    tris: Vec<[u32; 3]>,
+    alive: Vec<bool>,
+    /// Directed edge → the live triangle that has it.
+    edge: HashMap<(u32, u32), u32>,
+    /// Triangles by vertex (dead ones are dropped lazily).
+    incident: Vec<Vec<u32>>,
+    /// Inner vertices not yet on the surface.
+    pub(super) hidden: Bins,
+    /// `P` itself, to tell the surface's facets on `∂P` from those inside it.
+    outer_hull: Hull3,
+}
+
+/// Why a removal was not made (the surface is unchanged).
+#[derive(Debug)]
+pub(super) struct Refused(pub(super) &'static str);
+
+impl<'a> Surface<'a> {
+    /// The surface of `CH(points[outer])` (every outer point a vertex of it), with the
+    /// inner vertices `hidden` below it.
+    ///
+    /// `on_outer` are the hidden vertices that lie on `∂P` (an inner vertex on a facet or
+    /// an edge of the outer hull): they are vertices of the surface from the start.
+    pub(super) fn new(
+        pts: &'a [Point3],
+        outer: &[u32],
+        hidden: &[u32],
+        on_outer: &[u32],
+    ) -> Result<Surface<'a>, Refused> {
+        let sub: Vec<Point3> = outer.iter().map(|&i| pts[i as usize]).collect();
+        let hull = Hull3::new(&sub);
+        let mut tris: Vec<[u32; 3]> = hull
+            .triangles
+            .iter()
+            .map(|t| t.map(|k| outer[k as usize]))
+            .collect();
+        if refine(pts, &mut tris, on_outer)? != on_outer.len() {
+            return Err(Refused(
+                "an inner vertex on the outer hull is on none of its triangles",
+            ));
+        }
+        let mut s = Surface {
+            pts,
+            tris: Vec::new(),
+            alive: Vec::new(),
+            edge: HashMap::new(),
+            incident: vec![Vec::new(); pts.len()],
+            hidden: Bins::new(pts, hidden),
+            outer_hull: Hull3::new(pts),
+        };
+        for &v in on_outer {
+            s.hidden.expose(pts, v);
+        }
+        for t in tris {
+            s.add(t);
+        }
+        Ok(s)
+    }
+
+    fn add(&mut self, t: [u32; 3]) {
+        let id = self.tris.len() as u32;
+        self.tris.push(t);
+        self.alive.push(true);
+        for i in 0..3 {
+            self.edge.insert((t[i], t[(i + 1) % 3]), id);
+            self.incident[t[i] as usize].push(id);
+        }
+    }
+
+    fn kill(&mut self, id: u32) {
+        let t = self.tris[id as usize];
+        self.alive[id as usize] = false;
+        for i in 0..3 {
+            let e = (t[i], t[(i + 1) % 3]);
+            if self.edge.get(&e) == Some(&id) {
+                self.edge.remove(&e);
+            }
+        }
+    }
+
+    /// True when triangle `t` lies in a facet of `P` (nothing is behind it).
+    fn on_outer(&self, t: &[u32; 3]) -> bool {
+        let h = &self.outer_hull;
+        h.common_facet(t[0] as usize, t[1] as usize, t[2] as usize)
+            .is_some()
+    }
+
+    /// The live triangles at `v`.
+    pub(super) fn star(&mut self, v: u32) -> Vec<u32> {
+        let alive = &self.alive;
+        self.incident[v as usize].retain(|&t| alive[t as usize]);
+        self.incident[v as usize].clone()
+    }
+
+    /// The number of live triangles at `v` (its degree on the surface).
+    pub(super) fn degree(&mut self, v: u32) -> usize {
+        self.star(v).len()
+    }
+
+    /// The neighbours of `v` on the surface.
+    pub(super) fn neighbours(&mut self, v: u32) -> Vec<u32> {
+        let star = self.star(v);
+        star.iter()
+            .map(|&t| {
+                let tri = self.tris[t as usize];
+                let i = tri.iter().position(|&x| x == v).unwrap_or(0);
+                tri[(i + 1) % 3]
+            })
+            .collect()
+    }
+
+    /// Removes the vertices `set` (containing `tip`, connected on the surface, with no
+    /// vertex of their boundary in `set`): the region between the surface and the hull
+    /// without them, coned from `tip`. Refused, with nothing changed, when that region is
+    /// not star-shaped from `tip` through its bottom (a bottom triangle behind `tip`).
+    pub(super) fn remove_set(&mut self, tip: u32, set: &[u32]) -> Result<Vec<[u32; 4]>, Refused> {
+        let removed: HashSet<u32> = set.iter().copied().collect();
+        let mut region: Vec<u32> = set.iter().flat_map(|&u| self.star(u)).collect();
+        region.sort_unstable();
+        region.dedup();
+        // The boundary of the union of the stars, as directed edges of its triangles.
+        let mut inside: HashSet<(u32, u32)> = HashSet::new();
+        for &t in &region {
+            let tri = self.tris[t as usize];
+            for i in 0..3 {
+                inside.insert((tri[i], tri[(i + 1) % 3]));
+            }
+        }
+        let mut boundary: Vec<(u32, u32)> = inside
+            .iter()
+            .filter(|&&(a, b)| !inside.contains(&(b, a)))
+            .copied()
+            .collect();
+        boundary.sort_unstable(); // the same hull, whatever the hash order
+        if boundary
+            .iter()
+            .any(|(a, b)| removed.contains(a) || removed.contains(b))
+        {
+            return Err(Refused(
+                "a removed vertex is on the boundary of the removed region",
+            ));
+        }
+        let ring: Vec<u32> = boundary.iter().map(|e| e.0).collect();
+        let bottom = self.bottom(tip, set, &ring, &boundary)?;
+        // The region is star-shaped from the tip when the tip is on the inner side of
+        // every face (the kernel is the intersection of those half-spaces): then the
+        // cones from the tip over the faces not at it tile it.
+        let p = |v: u32| &self.pts[v as usize];
+        let mut tets = Vec::new();
+        for t in &bottom {
+            match orient3d(p(t[0]), p(t[1]), p(t[2]), p(tip)) {
+                1 => tets.push([t[0], t[1], t[2], tip]),
+                // A bottom triangle in a plane through the tip stays on the surface with
+                // nothing behind it: only right where that plane is a facet of P. In a
+                // plane inside P (a facet of P̄ made by earlier pieces) the triangles
+                // there are faces of earlier tetrahedra, which the new ones must meet
+                // face to face; a new coplanar triangle would not.
+                0 if self.on_outer(t) => {}
+                0 => {
+                    return Err(Refused(
+                        "a bottom triangle lies in a plane of earlier pieces through the tip",
+                    ));
+                }
+                _ => return Err(Refused("a bottom triangle is behind the tip")),
+            }
+        }
+        for t in region.iter().map(|&t| self.tris[t as usize]) {
+            if t.contains(&tip) {
+                continue;
+            }
+            match orient3d(p(t[0]), p(t[1]), p(t[2]), p(tip)) {
+                -1 => tets.push([t[0], t[2], t[1], tip]),
+                // Left without a tetrahedron: only where nothing is behind it.
+                0 if self.on_outer(&t) => {}
+                0 => {
+                    return Err(Refused(
+                        "a removed triangle of earlier pieces is flat to the tip",
+                    ));
+                }
+                _ => return Err(Refused("a removed triangle is behind the tip")),
+            }
+        }
+        if tets.is_empty() {
+            return Err(Refused("the removed region is flat"));
+        }
+        for t in region {
+            self.kill(t);
+        }
+        for t in bottom {
+            for v in t {
+                self.hidden.expose(self.pts, v);
+            }
+            self.add(t);
+        }
+        Ok(tets)
+    }
+
+    /// The new surface inside the region bounded by `boundary` (directed as in the
+    /// removed triangles): the disk of `∂CH(ring ∪ hidden below)` on the tip's side.
+    fn bottom(
+        &self,
+        tip: u32,
+        set: &[u32],
+        ring: &[u32],
+        boundary: &[(u32, u32)],
+    ) -> Result<Vec<[u32; 3]>, Refused> {
+        let around: Vec<Point3> = ring
+            .iter()
+            .chain(set)
+            .map(|&v| self.pts[v as usize])
+            .collect();
+        let (lo, hi) = bounding_box(&around);
+        let mut local: Vec<u32> = ring.to_vec();
+        local.extend(self.hidden.in_box(self.pts, &lo, &hi));
+        let coords: Vec<Point3> = local.iter().map(|&v| self.pts[v as usize]).collect();
+        let hull = Hull3::new(&coords);
+        let (tris, on_hull): (Vec<[u32; 3]>, Vec<u32>) = if hull.dimension == 3 {
+            let tris = hull
+                .triangles
+                .iter()
+                .map(|t| t.map(|k| local[k as usize]))
+                .collect();
+            let on = (0..local.len())
+                .filter(|&k| hull.on_boundary(k))
+                .map(|k| local[k]);
+            (tris, on.collect())
+        } else {
+            // A flat ring: the base of the cone from the tip, facing the tip.
+            let mut with_tip = coords.clone();
+            with_tip.push(self.pts[tip as usize]);
+            let cone = Hull3::new(&with_tip);
+            let apex = local.len() as u32;
+            let tris = cone
+                .triangles
+                .iter()
+                .filter(|t| !t.contains(&apex))
+                .map(|t| [t[0], t[2], t[1]].map(|k| local[k as usize]))
+                .collect();
+            let on = (0..local.len())
+                .filter(|&k| cone.on_boundary(k))
+                .map(|k| local[k]);
+            (tris, on.collect())
+        };
+        // Points on the hull but not corners of its triangles (on an edge, or inside a
+        // coplanar facet) are on the new surface where it is the bottom: they become
+        // vertices there, or a later piece would meet them mid-face (and a ring vertex
+        // on an edge of the hull would leave its ring edges out). On the far side of the
+        // hull they stay hidden.
+        let corners: HashSet<u32> = tris.iter().flatten().copied().collect();
+        let flat: Vec<u32> = on_hull
+            .into_iter()
+            .filter(|v| !corners.contains(v))
+            .collect();
+        let mut tris = tris;
+        if refine(self.pts, &mut tris, &flat)? != flat.len() {
+            return Err(Refused("a point on the hull is on none of its triangles"));
+        }
+        let by_edge: HashMap<(u32, u32), usize> = tris
+            .iter()
+            .enumerate()
+            .flat_map(|(i, t)| (0..3).map(move |k| ((t[k], t[(k + 1) % 3]), i)))
+            .collect();
+        let walls: HashSet<(u32, u32)> = boundary.iter().copied().collect();
+        let mut seen = vec![false; tris.len()];
+        let mut stack = Vec::new();
+        for e in boundary {
+            let &t = by_edge
+                .get(e)
+                .ok_or(Refused("a link edge is not an edge of the bottom"))?;
+            stack.push(t);
+        }
+        let mut out = Vec::new();
+        while let Some(t) = stack.pop() {
+            if std::mem::replace(&mut seen[t], true) {
+                continue;
+            }
+            let tri = tris[t];
+            out.push(tri);
+            for k in 0..3 {
+                let (a, b) = (tri[k], tri[(k + 1) % 3]);
+                if walls.contains(&(a, b)) {
+                    continue;
+                }
+                let &u = by_edge
+                    .get(&(b, a))
+                    .ok_or(Refused("the bottom is not closed"))?;
+                stack.push(u);
+            }
+        }
+        if out.iter().any(|t| t.contains(&tip)) {
+            return Err(Refused("the bottom reaches the tip"));
+        }
+        Ok(out)
+    }
+}
+
+/// Splits the triangles `tris` (a triangulated surface piece) at each point of `points`
+/// that lies on one of them, inside it (into three) or inside an edge it shares with
+/// another triangle of `tris` (both into two): a point on a surface is a vertex of it.
+/// Returns how many points were inserted; a point inside an edge of `tris`'s boundary
+/// is refused (the triangle outside would keep the unsplit edge).
+fn refine(pts: &[Point3], tris: &mut Vec<[u32; 3]>, points: &[u32]) -> Result<usize, Refused> {
+    let mut inserted = 0;
+    for &q in points {
+        let x = &pts[q as usize];
+        let Some((i, place)) = tris
+            .iter()
+            .enumerate()
+            .find_map(|(i, t)| locate(pts, t, x).map(|p| (i, p)))
+        else {
+            continue;
+        };
+        let t = tris[i];
+        match place {
+            Place::Inside => {
+                tris[i] = [t[0], t[1], q];
+                tris.push([t[1], t[2], q]);
+                tris.push([t[2], t[0], q]);
+            }
+            Place::Edge(k) => {
+                let (a, b, c) = (t[k], t[(k + 1) % 3], t[(k + 2) % 3]);
+                let twin = tris
+                    .iter()
+                    .position(|u| (0..3).any(|m| u[m] == b && u[(m + 1) % 3] == a))
+                    .ok_or(Refused(
+                        "a hidden point lies on the edge of the removed region",
+                    ))?;
+                let u = tris[twin];
+                let m = (0..3).find(|&m| u[m] == b).unwrap_or(0);
+                let d = u[(m + 2) % 3];
+                tris[i] = [a, q, c];
+                tris.push([q, b, c]);
+                tris[twin] = [b, q, d];
+                tris.push([q, a, d]);
+            }
+        }
+        inserted += 1;
+    }
+    Ok(inserted)
+}
+
+/// Where a point lies on a triangle.
+enum Place {
+    Inside,
+    /// Inside edge `k` (from corner `k` to corner `k + 1`).
+    Edge(usize),
+}
+
+/// Where `x` lies on the closed triangle `t`, if it does (exact: coplanar, then the
+/// three edge sides in a projection that keeps the triangle non-degenerate).
+fn locate(pts: &[Point3], t: &[u32; 3], x: &Point3) -> Option<Place> {
+    let p = |k: usize| &pts[t[k] as usize];
+    if orient3d(p(0), p(1), p(2), x) != 0 {
+        return None;
+    }
+    let axis = projection_axis(p(0), p(1), p(2))?;
+    let o = orient2d_drop(p(0), p(1), p(2), axis);
+    let sides = [0, 1, 2].map(|k| orient2d_drop(p(k), p((k + 1) % 3), x, axis));
+    if sides.iter().any(|&s| s == -o) {
+        return None;
+    }
+    match sides.iter().filter(|&&s| s == 0).count() {
+        0 => Some(Place::Inside),
+        1 => sides.iter().position(|&s| s == 0).map(Place::Edge),
+        _ => None, // a corner: already a vertex
+    }
+}
