@@ -18,6 +18,7 @@ mod planar;
 mod poly;
 mod progress;
 mod run;
+mod shell;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use exit::CmdResult;
@@ -60,6 +61,10 @@ enum Cmd {
     /// and in the MWT (both exact)? With --check-random K, β-skeleton ⊆ MWT on K random
     /// sets (β above the Cheng–Xu bound).
     Keil(KeilCliArgs),
+    /// Tetrahedralize the region between two nested convex polytopes without Steiner
+    /// points (thesis ch. 4), certified: every tetrahedron, the boundary on both hulls,
+    /// the exact volume.
+    Shell(ShellCliArgs),
     /// Write a generated instance.
     Generate(GenerateArgs),
     /// A short tour on built-in examples.
@@ -139,6 +144,34 @@ struct TetrahedralizeArgs {
     /// Write the tetrahedra: .ele (with .node), .vtk or .json.
     #[arg(long)]
     output: Option<PathBuf>,
+}
+
+#[derive(Args)]
+struct ShellCliArgs {
+    /// The outer polytope: a point set or polyhedron (.node, .xyz, .json, .off, .obj);
+    /// its convex hull is used.
+    outer: PathBuf,
+    /// The inner polytope, inside the outer one (it may touch it).
+    inner: PathBuf,
+    /// How the outer vertices are removed: Bern's caps, minimum degree first.
+    #[arg(long, value_enum, default_value_t = ShellMethod::Cap)]
+    method: ShellMethod,
+    /// Give up after this many seconds (exit 3).
+    #[arg(long, value_parser = seconds)]
+    time_limit: Option<Duration>,
+    /// Print one JSON object on stdout.
+    #[arg(long)]
+    json: bool,
+    /// Write the tetrahedra: .ele (with .node), .vtk or .json (vertices numbered from
+    /// the outer ones, then the inner ones not shared).
+    #[arg(long, short)]
+    output: Option<PathBuf>,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
+enum ShellMethod {
+    /// Bern's cap removal (§4.1).
+    Cap,
 }
 
 #[derive(Args)]
@@ -308,6 +341,34 @@ enum GenKind {
         #[arg(long, short)]
         output: PathBuf,
     },
+    /// Two nested convex point sets for `shell`: the outer shape of radius 1 and the
+    /// inner one of radius 1 − gap (shrunk by 0.9 until it fits, reported).
+    Nested {
+        /// The outer shape.
+        #[arg(long, value_enum, default_value_t = tetrakit::shell::generate::Shape::Sphere)]
+        outer: tetrakit::shell::generate::Shape,
+        /// The inner shape.
+        #[arg(long, value_enum, default_value_t = tetrakit::shell::generate::Shape::Sphere)]
+        inner: tetrakit::shell::generate::Shape,
+        /// Points of the outer shape.
+        #[arg(long, default_value_t = 100)]
+        n_outer: usize,
+        /// Points of the inner shape.
+        #[arg(long, default_value_t = 50)]
+        n_inner: usize,
+        /// The gap between the shapes, in (0, 1).
+        #[arg(long, default_value_t = 0.3)]
+        gap: f64,
+        /// Seed.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// The outer points: .xyz, .txt, .node or .json.
+        #[arg(long)]
+        outer_output: PathBuf,
+        /// The inner points: .xyz, .txt, .node or .json.
+        #[arg(long)]
+        inner_output: PathBuf,
+    },
     /// Points on two skew lines: Θ(n²) tetrahedra, the thesis's worst case for m.
     SkewLines {
         /// Number of points (half on each line).
@@ -417,6 +478,40 @@ fn run(cmd: Cmd) -> CmdResult {
             output: a.output.as_deref(),
             check_random: a.check_random,
         }),
+        Cmd::Shell(a) => shell::shell(shell::ShellArgs {
+            outer: &a.outer,
+            inner: &a.inner,
+            method: match a.method {
+                ShellMethod::Cap => tetrakit::shell::Method::Cap,
+            },
+            time_limit: a.time_limit,
+            as_json: a.json,
+            output: a.output.as_deref(),
+        }),
+        Cmd::Generate(GenerateArgs {
+            kind:
+                GenKind::Nested {
+                    outer,
+                    inner,
+                    n_outer,
+                    n_inner,
+                    gap,
+                    seed,
+                    outer_output,
+                    inner_output,
+                },
+        }) => shell::generate_nested(
+            &tetrakit::shell::generate::NestedParams {
+                outer,
+                inner,
+                n_outer,
+                n_inner,
+                gap,
+                seed,
+            },
+            &outer_output,
+            &inner_output,
+        ),
         Cmd::Generate(GenerateArgs {
             kind:
                 GenKind::Points2d {

@@ -813,3 +813,51 @@ fn one_json_contract() {
     let v = json(&run(&["tetrahedralize", s(&face), "--json"]));
     assert_eq!(v["domain"], "polyhedron");
 }
+
+/// `shell`: generated nested spheres give a certified YES within 9n − 6 whose output
+/// `check` validates; swapped files are one line naming the inner file's point.
+#[test]
+fn shell_between_nested_spheres() {
+    let d = dir("shell");
+    let (o, i) = (d.join("o.xyz"), d.join("i.node"));
+    let g = run(&[
+        "generate",
+        "nested",
+        "--n-outer",
+        "60",
+        "--n-inner",
+        "30",
+        "--gap",
+        "0.4",
+        "--outer-output",
+        s(&o),
+        "--inner-output",
+        s(&i),
+    ]);
+    assert!(g.status.success(), "{}", String::from_utf8_lossy(&g.stderr));
+    let out = d.join("s.ele");
+    let r = run(&["shell", s(&o), s(&i), "--json", "-o", s(&out)]);
+    assert_eq!(
+        r.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&r.stderr)
+    );
+    let v = json(&r);
+    assert_eq!(
+        (v["verdict"].as_str(), v["n"].as_u64()),
+        (Some("yes"), Some(90))
+    );
+    assert!(v["tetrahedra"].as_u64() <= v["bound"].as_u64());
+    assert_eq!(v["steiner_points"], 0);
+    assert_eq!(run(&["check", s(&out)]).status.code(), Some(0));
+    let bad = run(&["shell", s(&i), s(&o)]);
+    assert_eq!(bad.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&bad.stderr);
+    assert!(
+        err.contains("o.xyz:")
+            && err.contains("outside the outer hull")
+            && err.lines().count() == 1,
+        "{err}"
+    );
+}

@@ -241,3 +241,26 @@ pub fn write_instance(
         _ => write_edges(path, points, segments, 1),
     }
 }
+
+/// Writes 3D points: `.xyz`/`.txt` (`x y z` per line), `.node` (TetGen, 1-based) or
+/// `.json` (`{"points": [[x, y, z], ...]}`), so that they read back exactly.
+///
+/// ```
+/// let path = std::env::temp_dir().join("tetrakit-doc-pts3.xyz");
+/// tetrakit::io::write_points(&path, &[[0.1, 2.0, 3.0], [3.0, 4.5, 6.0]]).unwrap();
+/// assert_eq!(tetrakit::io::read_input(&path).unwrap().points[0], [0.1, 2.0, 3.0]);
+/// ```
+pub fn write_points(path: &Path, points: &[Point3]) -> io::Result<()> {
+    match ext(path).as_str() {
+        "xyz" | "txt" => {
+            let mut s = String::new();
+            for p in points {
+                let _ = writeln!(s, "{:?} {:?} {:?}", p[0], p[1], p[2]);
+            }
+            save(path, s)
+        }
+        "node" => save(path, node_text(points, 1)),
+        "json" => save(path, serde_json::json!({ "points": points }).to_string()),
+        other => Err(unsupported(other, ".xyz, .txt, .node or .json")),
+    }
+}
