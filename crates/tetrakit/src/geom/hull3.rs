@@ -204,17 +204,20 @@ impl Hull3 {
                 )
             })
             .collect();
-        let grid = FacetGrid::new(pts, &self.facet_planes);
-        let lists: Vec<Vec<u32>> = pts
-            .par_iter()
-            .map(|x| {
-                grid.candidates(x)
-                    .iter()
-                    .copied()
-                    .filter(|&f| planes[f as usize].side(x) == 0)
-                    .collect()
-            })
-            .collect();
+        let grid = FacetGrid::new(pts, self);
+        let on = |x: &Point3| -> Vec<u32> {
+            grid.candidates(x)
+                .iter()
+                .copied()
+                .filter(|&f| planes[f as usize].side(x) == 0)
+                .collect()
+        };
+        // Small hulls (the shell's local ones, thousands a second) stay on this thread.
+        let lists: Vec<Vec<u32>> = if pts.len() < 4096 {
+            pts.iter().map(on).collect()
+        } else {
+            pts.par_iter().map(on).collect()
+        };
         self.facet_start = Vec::with_capacity(pts.len() + 1);
         self.facet_start.push(0);
         for l in &lists {
@@ -237,8 +240,21 @@ struct FacetGrid {
 }
 
 impl FacetGrid {
-    fn new(pts: &[Point3], facets: &[[u32; 3]]) -> Self {
+    fn new(pts: &[Point3], hull: &Hull3) -> Self {
+        let facets = &hull.facet_planes;
         let (lo, hi) = super::predicates::bounding_box(pts);
+        // A point on a facet's plane lies in the facet (the plane supports the hull), so
+        // only the cells of the facet's bounding box can hold it.
+        let mut boxes = vec![([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]); facets.len()];
+        for (t, &f) in hull.triangles.iter().zip(&hull.triangle_facet) {
+            let b = &mut boxes[f as usize];
+            for &v in t {
+                for k in 0..3 {
+                    b.0[k] = b.0[k].min(pts[v as usize][k]);
+                    b.1[k] = b.1[k].max(pts[v as usize][k]);
+                }
+            }
+        }
         // About one cell per 64 points, at most 64 per side.
         let res = ((pts.len() as f64 / 64.0).cbrt().ceil() as usize).clamp(1, 64);
         let size: Point3 =
@@ -261,8 +277,21 @@ impl FacetGrid {
                 .fold(0.0, f64::max);
             let pad =
                 1e-6 * nn * (scale + 1.0) + 1e-6 * nn * size.iter().fold(0.0f64, |m, s| m.max(*s));
-            for (cell, list) in per_cell.iter_mut().enumerate() {
-                let idx = [cell / (res * res), (cell / res) % res, cell % res];
+            // The same (monotone) cell formula as `candidates`, so a point inside the box
+            // is in a cell of this range.
+            let cell_of = |x: f64, k: usize| (((x - lo[k]) * inv[k]) as usize).min(res - 1);
+            let (blo, bhi) = boxes[fi];
+            let range: [std::ops::RangeInclusive<usize>; 3] =
+                std::array::from_fn(|k| cell_of(blo[k], k)..=cell_of(bhi[k], k));
+            let cells_in_box = range[0].clone().flat_map(|x| {
+                let r2 = range[2].clone();
+                range[1]
+                    .clone()
+                    .flat_map(move |y| r2.clone().map(move |z| [x, y, z]))
+            });
+            for idx in cells_in_box {
+                let cell = (idx[0] * res + idx[1]) * res + idx[2];
+                let list = &mut per_cell[cell];
                 // Signed distances (times |n|) of the cell's corners from the plane.
                 let (mut dmin, mut dmax) = (0.0f64, 0.0f64);
                 for k in 0..3 {

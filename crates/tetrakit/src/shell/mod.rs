@@ -68,6 +68,8 @@ pub struct Shell {
     /// Inner vertices (not outer ones) on the boundary of `P`: on an edge or inside a
     /// facet of the outer hull.
     pub touching: Vec<u32>,
+    /// `P` as the hull of `points`.
+    hull: Hull3,
 }
 
 /// Why a shell cannot be built or tetrahedralized.
@@ -208,6 +210,7 @@ impl Shell {
             outer_ignored,
             inner_ignored,
             touching,
+            hull: union,
         })
     }
 
@@ -279,7 +282,7 @@ pub fn tetrahedralize(
         .copied()
         .filter(|&v| v as usize >= shell.outer.len())
         .collect();
-    let mut surface = Surface::new(&shell.points, &shell.outer, &hidden, &shell.touching)
+    let mut surface = Surface::new(&shell.points, &shell.hull, &hidden, &shell.touching)
         .map_err(|r| ShellError::Internal(r.0.to_string()))?;
     let removable: Vec<u32> = {
         let inner: HashSet<u32> = shell.inner.iter().copied().collect();

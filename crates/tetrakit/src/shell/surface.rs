@@ -41,7 +41,7 @@ pub(super) struct Surface<'a> {
     /// Inner vertices not yet on the surface.
     pub(super) hidden: Bins,
     /// `P` itself, to tell the surface's facets on `∂P` from those inside it.
-    outer_hull: Hull3,
+    outer_hull: &'a Hull3,
 }
 
 /// Why a removal was not made (the surface is unchanged).
@@ -49,25 +49,25 @@ pub(super) struct Surface<'a> {
 pub(super) struct Refused(pub(super) &'static str);
 
 impl<'a> Surface<'a> {
-    /// The surface of `CH(points[outer])` (every outer point a vertex of it), with the
-    /// inner vertices `hidden` below it.
+    /// The surface of `P` (the hull of all the points, every outer point a vertex of
+    /// it), with the inner vertices `hidden` below it.
     ///
-    /// `on_outer` are the hidden vertices that lie on `∂P` (an inner vertex on a facet or
-    /// an edge of the outer hull): they are vertices of the surface from the start.
+    /// `on_outer` are the inner vertices that lie on `∂P` (on a facet or an edge of the
+    /// outer hull): they are vertices of the surface from the start.
     pub(super) fn new(
         pts: &'a [Point3],
-        outer: &[u32],
+        outer_hull: &'a Hull3,
         hidden: &[u32],
         on_outer: &[u32],
     ) -> Result<Surface<'a>, Refused> {
-        let sub: Vec<Point3> = outer.iter().map(|&i| pts[i as usize]).collect();
-        let hull = Hull3::new(&sub);
-        let mut tris: Vec<[u32; 3]> = hull
-            .triangles
+        let mut tris = outer_hull.triangles.clone();
+        let corners: HashSet<u32> = tris.iter().flatten().copied().collect();
+        let flat: Vec<u32> = on_outer
             .iter()
-            .map(|t| t.map(|k| outer[k as usize]))
+            .copied()
+            .filter(|v| !corners.contains(v))
             .collect();
-        if refine(pts, &mut tris, on_outer)? != on_outer.len() {
+        if refine(pts, &mut tris, &flat)? != flat.len() {
             return Err(Refused(
                 "an inner vertex on the outer hull is on none of its triangles",
             ));
@@ -79,7 +79,7 @@ impl<'a> Surface<'a> {
             edge: HashMap::new(),
             incident: vec![Vec::new(); pts.len()],
             hidden: Bins::new(pts, hidden),
-            outer_hull: Hull3::new(pts),
+            outer_hull,
         };
         for &v in on_outer {
             s.hidden.expose(pts, v);
