@@ -249,9 +249,9 @@ impl FacetGrid {
         for (t, &f) in hull.triangles.iter().zip(&hull.triangle_facet) {
             let b = &mut boxes[f as usize];
             for &v in t {
-                for k in 0..3 {
-                    b.0[k] = b.0[k].min(pts[v as usize][k]);
-                    b.1[k] = b.1[k].max(pts[v as usize][k]);
+                for (k, &x) in pts[v as usize].iter().enumerate() {
+                    b.0[k] = b.0[k].min(x);
+                    b.1[k] = b.1[k].max(x);
                 }
             }
         }
