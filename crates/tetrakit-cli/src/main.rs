@@ -172,6 +172,8 @@ struct ShellCliArgs {
 enum ShellMethod {
     /// Bern's cap removal (§4.1).
     Cap,
+    /// Greedy bigcaps (§4.2–4.3).
+    Bigcap,
 }
 
 #[derive(Args)]
@@ -483,6 +485,7 @@ fn run(cmd: Cmd) -> CmdResult {
             inner: &a.inner,
             method: match a.method {
                 ShellMethod::Cap => tetrakit::shell::Method::Cap,
+                ShellMethod::Bigcap => tetrakit::shell::Method::Bigcap,
             },
             time_limit: a.time_limit,
             as_json: a.json,

@@ -8,15 +8,23 @@ use tetrakit::mesh::certify_shell;
 use tetrakit::shell::generate::{NestedParams, Shape, nested};
 use tetrakit::shell::{Method, Shell, ShellError, ShellMesh, tetrahedralize};
 
+/// Both methods, each certified and within 9n − 6; the cap removal's mesh is returned.
 fn solve(outer: &[Point3], inner: &[Point3]) -> (Shell, ShellMesh) {
+    solve_by(outer, inner, &[Method::Bigcap, Method::Cap])
+}
+
+/// The given methods (the last one's mesh is returned).
+fn solve_by(outer: &[Point3], inner: &[Point3], methods: &[Method]) -> (Shell, ShellMesh) {
     let shell = Shell::new(outer, inner).expect("a shell");
-    let mesh = tetrahedralize(&shell, Method::Cap, &Control::new()).expect("tetrahedralized");
-    assert_eq!(
-        certify_shell(&shell.points, &mesh.tets, &shell.inner),
-        Ok(())
-    );
-    assert!(mesh.tets.len() <= 9 * shell.n() - 6);
-    (shell, mesh)
+    let run = |m: Method| {
+        let mesh = tetrahedralize(&shell, m, &Control::new()).expect("tetrahedralized");
+        let cert = certify_shell(&shell.points, &mesh.tets, &shell.inner);
+        assert_eq!(cert, Ok(()), "{m:?}");
+        assert!(mesh.tets.len() <= 9 * shell.n() - 6, "{m:?}");
+        mesh
+    };
+    let meshes: Vec<ShellMesh> = methods.iter().map(|&m| run(m)).collect();
+    (shell, meshes.into_iter().last().expect("a method"))
 }
 
 fn simplicial(points: &[Point3]) -> bool {
@@ -84,7 +92,9 @@ fn random_nested_shells_are_certified_and_obey_lemma_4_9() {
 #[test]
 fn touching_and_coplanar_shells() {
     let big = cube([0.0; 3], 4.0);
-    solve(&big, &cube([0.0; 3], 2.0)); // shared corner, three facets in common planes
+    // A shared corner, three facets in common planes (bigcap: see
+    // never_a_wrong_answer_on_coaxial_prisms).
+    solve_by(&big, &cube([0.0; 3], 2.0), &[Method::Cap]);
     solve(&big, &cube([0.0, 0.0, 1.0], 4.0 - 1.0)); // a shared edge segment
     solve(&big, &cube([1.0, 1.0, 1.0], 2.0)); // apart, all facets squares
     let tip = [
@@ -147,15 +157,17 @@ fn bad_shells_are_refused_with_a_reason() {
     );
 }
 
-/// Known gap: coaxial prisms and a cube sharing two facet planes can leave every
-/// remaining cap refused (each tip is not an ear of a coplanar facet of the current
+/// Known gap: coaxial prisms, and a cube sharing two facet planes (or, for bigcaps, a
+/// corner), can leave every remaining piece refused (each tip is not an ear of a coplanar facet of the current
 /// hull inside `P`, and no pair helps). The answer is then an internal error, never an
 /// uncertified mesh.
 #[test]
 fn never_a_wrong_answer_on_coaxial_prisms() {
     let mut done = 0;
-    let mut cases: Vec<(Vec<Point3>, Vec<Point3>)> =
-        vec![(cube([0.0; 3], 4.0), cube([1.0, 0.0, 0.0], 2.0))];
+    let mut cases: Vec<(Vec<Point3>, Vec<Point3>)> = vec![
+        (cube([0.0; 3], 4.0), cube([1.0, 0.0, 0.0], 2.0)),
+        (cube([0.0; 3], 4.0), cube([0.0; 3], 2.0)),
+    ];
     for seed in 0..60 {
         let p = NestedParams {
             outer: Shape::Cylinder,
@@ -180,5 +192,5 @@ fn never_a_wrong_answer_on_coaxial_prisms() {
             Err(e) => assert!(matches!(e, ShellError::Internal(_)), "{e}"),
         }
     }
-    assert!(done > 40, "only {done} of 61 done");
+    assert!(done > 50, "only {done} of 124 done");
 }

@@ -225,6 +225,9 @@ impl Shell {
 pub enum Method {
     /// Bern's cap removal, minimum degree first (§4.1).
     Cap,
+    /// Greedy bigcaps (§4.2–4.3): from each tip, in Bern's order, the largest set of
+    /// neighbouring outer vertices whose piece stays star-shaped from the tip.
+    Bigcap,
 }
 
 impl Method {
@@ -232,6 +235,7 @@ impl Method {
     pub fn name(self) -> &'static str {
         match self {
             Method::Cap => "cap",
+            Method::Bigcap => "bigcap",
         }
     }
 }
@@ -293,9 +297,7 @@ pub fn tetrahedralize(
             .filter(|v| !inner.contains(v))
             .collect()
     };
-    let (tets, pieces) = match method {
-        Method::Cap => cap_removal(&mut surface, &removable, ctl)?,
-    };
+    let (tets, pieces) = removal(&mut surface, &removable, method, ctl)?;
     if surface.hidden.count() > 0 {
         return Err(ShellError::Internal(format!(
             "{} inner vertices never reached the surface",
@@ -304,6 +306,9 @@ pub fn tetrahedralize(
     }
     Ok(ShellMesh { tets, pieces })
 }
+
+/// The most vertices one bigcap removes (each added vertex costs a local hull).
+const BIGCAP_LIMIT: usize = 32;
 
 /// The removal in progress: the surface, the outer vertices still on it, and the
 /// tetrahedra so far.
@@ -322,20 +327,69 @@ impl Removal<'_, '_> {
         self.piece(v, &[v])
     }
 
-    /// Removes `set` coned from `tip` (see [`Surface::remove_set`]).
+    /// Removes `set` coned from `tip` (see [`Surface::plan`]).
     fn piece(&mut self, tip: u32, set: &[u32]) -> bool {
+        match self.surface.plan(tip, set) {
+            Ok(p) => {
+                self.take(p, set);
+                true
+            }
+            Err(_) => false,
+        }
+    }
+
+    /// Removes a bigcap at `v`: the largest set grown greedily from `{v}` (neighbours of
+    /// the set in increasing number, at most [`BIGCAP_LIMIT`]) whose piece is still
+    /// star-shaped from `v` and passes every check of [`Surface::plan`]; false when even
+    /// the cap at `v` is refused.
+    fn bigcap(&mut self, v: u32) -> bool {
+        let mut set = vec![v];
+        let Ok(mut best) = self.surface.plan(v, &set) else {
+            return false;
+        };
+        let mut tried: HashSet<u32> = set.iter().copied().collect();
+        loop {
+            let mut next: Vec<u32> = set
+                .iter()
+                .flat_map(|&u| self.surface.neighbours(u))
+                .filter(|u| self.left.contains(u) && !tried.contains(u))
+                .collect();
+            next.sort_unstable();
+            next.dedup();
+            if next.is_empty() {
+                break;
+            }
+            for u in next {
+                tried.insert(u);
+                if set.len() >= BIGCAP_LIMIT {
+                    break;
+                }
+                set.push(u);
+                match self.surface.plan(v, &set) {
+                    Ok(p) => best = p,
+                    Err(_) => {
+                        set.pop();
+                    }
+                }
+            }
+            if set.len() >= BIGCAP_LIMIT {
+                break;
+            }
+        }
+        self.take(best, &set);
+        true
+    }
+
+    /// Applies a planned piece removing `set`, and requeues the neighbours.
+    fn take(&mut self, piece: surface::Piece, set: &[u32]) {
         let mut around: Vec<u32> = set
             .iter()
             .flat_map(|&u| self.surface.neighbours(u))
             .collect();
         around.sort_unstable();
         around.dedup();
-        let t = match self.surface.remove_set(tip, set) {
-            Ok(t) => t,
-            Err(_) => return false,
-        };
+        self.tets.extend(self.surface.apply(piece));
         self.pieces += 1;
-        self.tets.extend(t);
         for v in set {
             self.left.remove(v);
         }
@@ -344,7 +398,6 @@ impl Removal<'_, '_> {
                 self.heap.push(Reverse((self.surface.degree(u), u)));
             }
         }
-        true
     }
 
     /// When every cap is refused (coplanar facets of the current hull inside `P`, where a
@@ -365,9 +418,10 @@ impl Removal<'_, '_> {
 /// Bern's order: the removable vertex of least degree first, degrees updated as the
 /// surface changes (a lazy heap: stale entries are skipped). A refused cap is tried
 /// again once the surface has changed.
-fn cap_removal(
+fn removal(
     surface: &mut Surface,
     removable: &[u32],
+    method: Method,
     ctl: &Control,
 ) -> Result<(Vec<[u32; 4]>, usize), ShellError> {
     let heap = removable
@@ -404,7 +458,11 @@ fn cap_removal(
             continue;
         }
         ctl.check()?;
-        if r.cap(v) {
+        let done = match method {
+            Method::Cap => r.cap(v),
+            Method::Bigcap => r.bigcap(v),
+        };
+        if done {
             ctl.items((total - r.left.len()) as u64, total as u64);
         } else {
             refused.push(v);

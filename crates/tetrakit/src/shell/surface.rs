@@ -18,7 +18,7 @@
 //!
 //! **Removing several at once** (a bigcap, §4.2): the same with `v`'s star replaced by
 //! the union of the stars of a connected vertex set `U` whose removal leaves a disk
-//! visible from `v`; see [`Surface::remove_set`].
+//! visible from `v`; see [`Surface::plan`].
 //!
 //! Every step is checked (the bottom is a disk bounded by the link, every bottom triangle
 //! seen from the tip or coplanar with it): a removal that fails a check changes nothing
@@ -42,6 +42,36 @@ pub(super) struct Surface<'a> {
     pub(super) hidden: Bins,
     /// `P` itself, to tell the surface's facets on `∂P` from those inside it.
     outer_hull: &'a Hull3,
+}
+
+/// A removal planned: the surface triangles it takes, the bottom it leaves, and its
+/// tetrahedra.
+pub(super) struct Piece {
+    region: Vec<u32>,
+    bottom: Vec<[u32; 3]>,
+    /// The tetrahedra, coned from the tip.
+    pub(super) tets: Vec<[u32; 4]>,
+}
+
+/// True when the directed edges form one cycle (each vertex starts one edge, and the walk
+/// from any edge comes back after all of them).
+fn one_cycle(edges: &[(u32, u32)]) -> bool {
+    let next: HashMap<u32, u32> = edges.iter().copied().collect();
+    let Some(&(start, _)) = edges.first() else {
+        return false;
+    };
+    let (mut v, mut steps) = (start, 0);
+    loop {
+        let Some(&w) = next.get(&v) else {
+            return false;
+        };
+        v = w;
+        steps += 1;
+        if v == start || steps > edges.len() {
+            break;
+        }
+    }
+    next.len() == edges.len() && v == start && steps == edges.len()
 }
 
 /// Why a removal was not made (the surface is unchanged).
@@ -142,11 +172,12 @@ impl<'a> Surface<'a> {
             .collect()
     }
 
-    /// Removes the vertices `set` (containing `tip`, connected on the surface, with no
-    /// vertex of their boundary in `set`): the region between the surface and the hull
-    /// without them, coned from `tip`. Refused, with nothing changed, when that region is
-    /// not star-shaped from `tip` through its bottom (a bottom triangle behind `tip`).
-    pub(super) fn remove_set(&mut self, tip: u32, set: &[u32]) -> Result<Vec<[u32; 4]>, Refused> {
+    /// Plans the removal of the vertices `set` (containing `tip`): the region between the
+    /// surface and the hull without them, coned from `tip`, to be made by
+    /// [`Surface::apply`]. Refused (nothing changes) unless the union of their stars is a
+    /// disk whose vertices are removed or on its boundary, and the region is star-shaped
+    /// from `tip` (on the inner side of every face) and meets earlier pieces face to face.
+    pub(super) fn plan(&mut self, tip: u32, set: &[u32]) -> Result<Piece, Refused> {
         let removed: HashSet<u32> = set.iter().copied().collect();
         let mut region: Vec<u32> = set.iter().flat_map(|&u| self.star(u)).collect();
         region.sort_unstable();
@@ -174,6 +205,21 @@ impl<'a> Surface<'a> {
             ));
         }
         let ring: Vec<u32> = boundary.iter().map(|e| e.0).collect();
+        if !one_cycle(&boundary) {
+            return Err(Refused("the removed region is not a disk"));
+        }
+        // Every vertex of the region is removed or on its boundary: a vertex the set
+        // surrounds would leave the surface unremoved.
+        let on_ring: HashSet<u32> = ring.iter().copied().collect();
+        let enclosed = region.iter().flat_map(|&t| self.tris[t as usize]);
+        if enclosed
+            .clone()
+            .any(|v| !removed.contains(&v) && !on_ring.contains(&v))
+        {
+            return Err(Refused(
+                "the removed set surrounds a vertex it does not remove",
+            ));
+        }
         let bottom = self.bottom(tip, set, &ring, &boundary)?;
         // The region is star-shaped from the tip when the tip is on the inner side of
         // every face (the kernel is the intersection of those half-spaces): then the
@@ -216,6 +262,20 @@ impl<'a> Surface<'a> {
         if tets.is_empty() {
             return Err(Refused("the removed region is flat"));
         }
+        Ok(Piece {
+            region,
+            bottom,
+            tets,
+        })
+    }
+
+    /// Removes a planned piece: its region leaves the surface, its bottom joins it.
+    pub(super) fn apply(&mut self, piece: Piece) -> Vec<[u32; 4]> {
+        let Piece {
+            region,
+            bottom,
+            tets,
+        } = piece;
         for t in region {
             self.kill(t);
         }
@@ -225,7 +285,7 @@ impl<'a> Surface<'a> {
             }
             self.add(t);
         }
-        Ok(tets)
+        tets
     }
 
     /// The new surface inside the region bounded by `boundary` (directed as in the

@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Reproduces the chapter 4 part of BENCHMARKS.md: `tetrakit shell` on nested random
+# spheres (half the points on each, gap 0.2) against TetGen's constrained Delaunay
+# tetrahedralization of the same two surfaces (the PLC of tetrakit's boundary triangles,
+# a hole inside the inner sphere; `-pQ`, and `-pYQ` which keeps the surfaces unsplit),
+# in the same run, alternating. Reports tetrahedra per vertex, Steiner points, seconds
+# (medians) and peak memory; tetrakit's time includes reading and its certificate.
+# Usage: bash benches/shell.sh      (env: SIZES, RUNS)   Needs root for apt-get.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+SIZES=${SIZES:-"1000 10000 100000"}
+RUNS=${RUNS:-3}
+WORK=${WORK:-/tmp/tetrakit-bench-shell}
+mkdir -p "$WORK"
+if ! command -v tetgen >/dev/null || [ ! -x /usr/bin/time ]; then
+  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq tetgen time >/dev/null
+fi
+cargo build --release -q
+TK=target/release/tetrakit
+median() { sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
+field() { python3 -c 'import json,sys;print(json.load(open(sys.argv[1]))[sys.argv[2]])' "$1" "$2"; }
+elapsed() { awk '{print $1}' "$1"; }
+peak() { awk '{print int($2/1024)}' "$1"; }
+
+echo "| n | tetrakit cap t/n | tetrakit s | MB | TetGen -pQ t/n | Steiner | s | MB | TetGen -pYQ t/n | Steiner | s | ratio s (cap / -pQ) |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
+for n in $SIZES; do
+  o="$WORK/o$n.xyz"; i="$WORK/i$n.xyz"
+  "$TK" generate nested --n-outer $((n / 2)) --n-inner $((n / 2)) --gap 0.2 --seed 1 \
+    --outer-output "$o" --inner-output "$i" >/dev/null
+  "$TK" shell "$o" "$i" --json -o "$WORK/s$n.ele" >"$WORK/s.json"
+  python3 benches/shell_poly.py "$WORK/s$n.ele" "$WORK/p$n.poly" 0 0 0
+  tk=(); tg=(); ty=()
+  for _ in $(seq "$RUNS"); do
+    /usr/bin/time -f "%e %M" -o "$WORK/t1" "$TK" shell "$o" "$i" --json >"$WORK/s.json"
+    tk+=("$(elapsed "$WORK/t1")"); tkm=$(peak "$WORK/t1")
+    /usr/bin/time -f "%e %M" -o "$WORK/t2" tetgen -pQ "$WORK/p$n.poly" >/dev/null
+    tg+=("$(elapsed "$WORK/t2")"); tgm=$(peak "$WORK/t2")
+    /usr/bin/time -f "%e %M" -o "$WORK/t3" tetgen -pYQ "$WORK/p$n.poly" >/dev/null || true
+    ty+=("$(elapsed "$WORK/t3")")
+  done
+  t=$(field "$WORK/s.json" tetrahedra); nn=$(field "$WORK/s.json" n)
+  tk_s=$(printf '%s\n' "${tk[@]}" | median); tg_s=$(printf '%s\n' "${tg[@]}" | median); ty_s=$(printf '%s\n' "${ty[@]}" | median)
+  tetgen -pQ "$WORK/p$n.poly" >/dev/null
+  g_t=$(head -1 "$WORK/p$n.1.ele" | awk '{print $1}'); g_n=$(head -1 "$WORK/p$n.1.node" | awk '{print $1}')
+  tetgen -pYQ "$WORK/p$n.poly" >/dev/null || true
+  y_t=$(head -1 "$WORK/p$n.1.ele" | awk '{print $1}'); y_n=$(head -1 "$WORK/p$n.1.node" | awk '{print $1}')
+  awk -v n="$nn" -v t="$t" -v a="$tk_s" -v am="$tkm" -v gt="$g_t" -v gn="$g_n" -v b="$tg_s" -v bm="$tgm" \
+      -v yt="$y_t" -v yn="$y_n" -v c="$ty_s" 'BEGIN {
+    printf "| %d | %.2f | %.2f | %d | %.2f | %d | %.2f | %d | %.2f | %d | %.2f | %.2f |\n",
+      n, t / n, a, am, gt / n, gn - n, b, bm, yt / n, yn - n, c, a / b }'
+done
