@@ -22,31 +22,34 @@ field() { python3 -c 'import json,sys;print(json.load(open(sys.argv[1]))[sys.arg
 elapsed() { awk '{print $1}' "$1"; }
 peak() { awk '{print int($2/1024)}' "$1"; }
 
-echo "| n | tetrakit cap t/n | tetrakit s | MB | TetGen -pQ t/n | Steiner | s | MB | TetGen -pYQ t/n | Steiner | s | ratio s (cap / -pQ) |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
+echo "| n | cap t/n | cap s | cap MB | bigcap t/n | bigcap s | TetGen -pQ t/n | Steiner | s | MB | TetGen -pYQ t/n | Steiner | s | ratio s (cap / -pQ) |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 for n in $SIZES; do
   o="$WORK/o$n.xyz"; i="$WORK/i$n.xyz"
   "$TK" generate nested --n-outer $((n / 2)) --n-inner $((n / 2)) --gap 0.2 --seed 1 \
     --outer-output "$o" --inner-output "$i" >/dev/null
   "$TK" shell "$o" "$i" --json -o "$WORK/s$n.ele" >"$WORK/s.json"
   python3 benches/shell_poly.py "$WORK/s$n.ele" "$WORK/p$n.poly" 0 0 0
-  tk=(); tg=(); ty=()
+  tk=(); tb=(); tg=(); ty=()
   for _ in $(seq "$RUNS"); do
     /usr/bin/time -f "%e %M" -o "$WORK/t1" "$TK" shell "$o" "$i" --json >"$WORK/s.json"
     tk+=("$(elapsed "$WORK/t1")"); tkm=$(peak "$WORK/t1")
+    /usr/bin/time -f "%e %M" -o "$WORK/t4" "$TK" shell "$o" "$i" --method bigcap --json >"$WORK/b.json"
+    tb+=("$(elapsed "$WORK/t4")")
     /usr/bin/time -f "%e %M" -o "$WORK/t2" tetgen -pQ "$WORK/p$n.poly" >/dev/null
     tg+=("$(elapsed "$WORK/t2")"); tgm=$(peak "$WORK/t2")
     /usr/bin/time -f "%e %M" -o "$WORK/t3" tetgen -pYQ "$WORK/p$n.poly" >/dev/null || true
     ty+=("$(elapsed "$WORK/t3")")
   done
-  t=$(field "$WORK/s.json" tetrahedra); nn=$(field "$WORK/s.json" n)
+  t=$(field "$WORK/s.json" tetrahedra); nn=$(field "$WORK/s.json" n); bt=$(field "$WORK/b.json" tetrahedra)
+  tb_s=$(printf '%s\n' "${tb[@]}" | median)
   tk_s=$(printf '%s\n' "${tk[@]}" | median); tg_s=$(printf '%s\n' "${tg[@]}" | median); ty_s=$(printf '%s\n' "${ty[@]}" | median)
   tetgen -pQ "$WORK/p$n.poly" >/dev/null
   g_t=$(head -1 "$WORK/p$n.1.ele" | awk '{print $1}'); g_n=$(head -1 "$WORK/p$n.1.node" | awk '{print $1}')
   tetgen -pYQ "$WORK/p$n.poly" >/dev/null || true
   y_t=$(head -1 "$WORK/p$n.1.ele" | awk '{print $1}'); y_n=$(head -1 "$WORK/p$n.1.node" | awk '{print $1}')
-  awk -v n="$nn" -v t="$t" -v a="$tk_s" -v am="$tkm" -v gt="$g_t" -v gn="$g_n" -v b="$tg_s" -v bm="$tgm" \
+  awk -v n="$nn" -v t="$t" -v a="$tk_s" -v am="$tkm" -v bt="$bt" -v bs="$tb_s" -v gt="$g_t" -v gn="$g_n" -v b="$tg_s" -v bm="$tgm" \
       -v yt="$y_t" -v yn="$y_n" -v c="$ty_s" 'BEGIN {
-    printf "| %d | %.2f | %.2f | %d | %.2f | %d | %.2f | %d | %.2f | %d | %.2f | %.2f |\n",
-      n, t / n, a, am, gt / n, gn - n, b, bm, yt / n, yn - n, c, a / b }'
+    printf "| %d | %.2f | %.2f | %d | %.2f | %.2f | %.2f | %d | %.2f | %d | %.2f | %d | %.2f | %.2f |\n",
+      n, t / n, a, am, bt / n, bs, gt / n, gn - n, b, bm, yt / n, yn - n, c, a / b }'
 done

@@ -9,6 +9,21 @@
 //! - [`Method::Cap`]: Bern's cap removal (§4.1): one vertex at a time, always one of
 //!   minimum degree among the outer vertices still on `P̄`. `O(n log n)` tetrahedra in
 //!   the worst case (`n(2 + 6H_n)`).
+//! - [`Method::Bigcap`]: bigcaps (§4.2): from each tip, in the same order, a set of
+//!   outer vertices removed at once. The thesis's `U_v` (the vertices whose incident
+//!   facets the tip sees past `Q`) is exactly the condition that the piece be
+//!   star-shaped from the tip (Lemma 4.1), which [`surface`](self)'s plan checks; the
+//!   set is grown greedily (neighbours in increasing number, kept while the plan passes,
+//!   at most 32), a polynomial stand-in for step 3a's minimization. Step 6's chains and
+//!   the S-constraints of the 9n − 6 proof are not built yet; on random spheres the
+//!   greedy bigcaps give *more* tetrahedra than caps (BENCHMARKS.md).
+//!
+//! Degenerate inputs: a facet of `P̄` that lies inside `P` (made by earlier pieces, in a
+//! plane through several vertices) must be met face to face, so a tip that is not an ear
+//! of such a facet's triangulation is refused and retried later, and when every tip is
+//! refused a tip and one neighbour are removed together. Coaxial prisms (and a few
+//! shared-facet contacts) can still leave every piece refused: the answer is then
+//! [`ShellError::Internal`], never an uncertified mesh.
 //!
 //! **Input.** `P` and `Q` are the exact convex hulls of two point sets ([`Shell::new`]).
 //! Their vertices are the extreme points; other points (inside a hull, or on it but not
