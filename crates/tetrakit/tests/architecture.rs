@@ -26,6 +26,16 @@ fn allowed(top: &str) -> &'static [&'static str] {
             "mesh",
             "planar",
         ],
+        // The shell solves the pieces no cone tiles with the exact solver.
+        "shell" => &[
+            "control",
+            "numbering",
+            "rows",
+            "rng",
+            "geom",
+            "mesh",
+            "exact",
+        ],
         _ => ALGORITHM,
     }
 }

@@ -21,8 +21,13 @@
 //! Degenerate inputs: a facet of `P̄` that lies inside `P` (made by earlier pieces, in a
 //! plane through several vertices) must be met face to face, so a tip that is not an ear
 //! of such a facet's triangulation is refused and retried later, and when every tip is
-//! refused a tip and one neighbour are removed together. Coaxial prisms (and a few
-//! shared-facet contacts) can still leave every piece refused: the answer is then
+//! refused a tip and one neighbour are removed together; when that fails too (coaxial
+//! prisms: two tips each coplanar with a triangle of the other's star that has
+//! tetrahedra behind it, so no cone from either tiles the piece), the piece of one tip,
+//! or of a tip and a neighbour, is tetrahedralized as a polyhedron by the exact solver
+//! ([`crate::exact`], at most 60 vertices and 10 s). An inner cube sharing two facet
+//! planes with the outer one can still leave every piece refused (the piece is then not
+//! a polyhedron: its bottom lies partly on an outer facet): the answer is
 //! [`ShellError::Internal`], never an uncertified mesh.
 //!
 //! **Input.** `P` and `Q` are the exact convex hulls of two point sets ([`Shell::new`]).
@@ -325,6 +330,9 @@ pub fn tetrahedralize(
 /// The most vertices one bigcap removes (each added vertex costs a local hull).
 const BIGCAP_LIMIT: usize = 32;
 
+/// The time the exact solver gets for one piece that no cone tiles.
+const EXACT_PIECE_SECONDS: u64 = 10;
+
 /// The removal in progress: the surface, the outer vertices still on it, and the
 /// tetrahedra so far.
 struct Removal<'s, 'a> {
@@ -415,6 +423,67 @@ impl Removal<'_, '_> {
         }
     }
 
+    /// The piece removing `set` as a polyhedron (its old surface triangles and its bottom
+    /// reversed), tetrahedralized by the exact solver instead of a cone: for the pieces
+    /// no vertex is a kernel vertex of (two tips each coplanar with a triangle of the
+    /// other's star that has tetrahedra behind it). At most [`EXACT_PIECE_SECONDS`].
+    fn exact_piece(&mut self, set: &[u32]) -> bool {
+        let Ok(cut) = self.surface.cut(set[0], set) else {
+            return false;
+        };
+        let mut faces = self.surface.region_triangles(&cut);
+        faces.extend(cut.bottom.iter().map(|t| [t[0], t[2], t[1]]));
+        let mut ids: Vec<u32> = faces.iter().flatten().copied().collect();
+        ids.sort_unstable();
+        ids.dedup();
+        if ids.len() > crate::exact::MAX_VERTICES {
+            return false;
+        }
+        let local = |v: u32| ids.binary_search(&v).unwrap_or(0) as u32;
+        let points = ids.iter().map(|&v| self.surface.point(v)).collect();
+        let faces = faces.iter().map(|f| f.map(local)).collect();
+        let Ok(poly) = crate::mesh::Polyhedron::new(points, faces) else {
+            return false;
+        };
+        let ctl =
+            Control::new().with_time_limit(std::time::Duration::from_secs(EXACT_PIECE_SECONDS));
+        let options = crate::exact::Options {
+            unique: false,
+            any: true,
+        };
+        let found = crate::exact::minimal_tetrahedralization(
+            crate::exact::Domain::Polyhedron(&poly),
+            &options,
+            &ctl,
+        );
+        let tets = match found {
+            Ok((
+                crate::exact::Outcome::Found { tets } | crate::exact::Outcome::Optimal { tets, .. },
+                _,
+            )) => tets,
+            _ => return false,
+        };
+        let tets = tets.iter().map(|t| t.map(|k| ids[k as usize])).collect();
+        self.take(cut.with_tets(tets), set);
+        true
+    }
+
+    /// The last resort: a refused tip alone, or with one removable neighbour, as an exact
+    /// piece.
+    fn exact(&mut self, refused: &[u32]) -> bool {
+        for &v in refused {
+            if self.exact_piece(&[v]) {
+                return true;
+            }
+            for u in self.surface.neighbours(v) {
+                if self.left.contains(&u) && self.exact_piece(&[v, u]) {
+                    return true;
+                }
+            }
+        }
+        false
+    }
+
     /// When every cap is refused (coplanar facets of the current hull inside `P`, where a
     /// tip is not an ear of every such facet's triangulation): a tip with one removable
     /// neighbour, removed together.
@@ -461,7 +530,7 @@ fn removal(
             }
             let before = r.left.len();
             refused.retain(|&v| !r.cap(v));
-            if r.left.len() == before && !r.pair(&refused) {
+            if r.left.len() == before && !r.pair(&refused) && !r.exact(&refused) {
                 return Err(ShellError::Internal(format!(
                     "{} caps refused",
                     refused.len()

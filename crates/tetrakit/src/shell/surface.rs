@@ -44,6 +44,24 @@ pub(super) struct Surface<'a> {
     outer_hull: &'a Hull3,
 }
 
+/// What a removal takes off the surface (triangle ids) and the bottom it leaves.
+pub(super) struct Cut {
+    region: Vec<u32>,
+    /// The new surface triangles, facing out of the new hull (into the piece).
+    pub(super) bottom: Vec<[u32; 3]>,
+}
+
+impl Cut {
+    /// The piece with these tetrahedra (tiling the region between, e.g. from a solver).
+    pub(super) fn with_tets(self, tets: Vec<[u32; 4]>) -> Piece {
+        Piece {
+            region: self.region,
+            bottom: self.bottom,
+            tets,
+        }
+    }
+}
+
 /// A removal planned: the surface triangles it takes, the bottom it leaves, and its
 /// tetrahedra.
 pub(super) struct Piece {
@@ -141,6 +159,16 @@ impl<'a> Surface<'a> {
         }
     }
 
+    /// The coordinates of vertex `v`.
+    pub(super) fn point(&self, v: u32) -> Point3 {
+        self.pts[v as usize]
+    }
+
+    /// The surface triangles a cut takes (facing out of the current hull).
+    pub(super) fn region_triangles(&self, cut: &Cut) -> Vec<[u32; 3]> {
+        cut.region.iter().map(|&t| self.tris[t as usize]).collect()
+    }
+
     /// True when triangle `t` lies in a facet of `P` (nothing is behind it).
     fn on_outer(&self, t: &[u32; 3]) -> bool {
         let h = &self.outer_hull;
@@ -178,6 +206,13 @@ impl<'a> Surface<'a> {
     /// disk whose vertices are removed or on its boundary, and the region is star-shaped
     /// from `tip` (on the inner side of every face) and meets earlier pieces face to face.
     pub(super) fn plan(&mut self, tip: u32, set: &[u32]) -> Result<Piece, Refused> {
+        let Cut { region, bottom } = self.cut(tip, set)?;
+        self.cone(tip, region, bottom)
+    }
+
+    /// The region removing `set` takes off the surface and the bottom it leaves (`tip`
+    /// decides a flat bottom's side), checked to be a disk that surrounds no vertex.
+    pub(super) fn cut(&mut self, tip: u32, set: &[u32]) -> Result<Cut, Refused> {
         let removed: HashSet<u32> = set.iter().copied().collect();
         let mut region: Vec<u32> = set.iter().flat_map(|&u| self.star(u)).collect();
         region.sort_unstable();
@@ -221,6 +256,11 @@ impl<'a> Surface<'a> {
             ));
         }
         let bottom = self.bottom(tip, set, &ring, &boundary)?;
+        Ok(Cut { region, bottom })
+    }
+
+    /// The piece between `region` and `bottom` coned from `tip`.
+    fn cone(&self, tip: u32, region: Vec<u32>, bottom: Vec<[u32; 3]>) -> Result<Piece, Refused> {
         // The region is star-shaped from the tip when the tip is on the inner side of
         // every face (the kernel is the intersection of those half-spaces): then the
         // cones from the tip over the faces not at it tile it.
