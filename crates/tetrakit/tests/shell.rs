@@ -198,3 +198,14 @@ fn shared_facet_planes_are_never_a_wrong_answer() {
         }
     }
 }
+
+/// A stopped control stops the removal (the CLI's `--time-limit`, exit 3).
+#[test]
+fn a_stopped_control_stops() {
+    let shell = Shell::new(&cube([0.0; 3], 4.0), &cube([1.0; 3], 2.0)).unwrap();
+    let ctl = Control::new();
+    ctl.stop();
+    for m in [Method::Cap, Method::Bigcap] {
+        assert_eq!(tetrahedralize(&shell, m, &ctl).unwrap_err(), ShellError::Stopped);
+    }
+}

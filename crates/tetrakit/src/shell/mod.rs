@@ -341,6 +341,8 @@ struct Removal<'s, 'a> {
     heap: BinaryHeap<Reverse<(usize, u32)>>,
     tets: Vec<[u32; 4]>,
     pieces: usize,
+    /// The caller's control (the exact fallback stops with it).
+    ctl: Control,
 }
 
 impl Removal<'_, '_> {
@@ -445,8 +447,8 @@ impl Removal<'_, '_> {
         let Ok(poly) = crate::mesh::Polyhedron::new(points, faces) else {
             return false;
         };
-        let ctl =
-            Control::new().with_time_limit(std::time::Duration::from_secs(EXACT_PIECE_SECONDS));
+        let limit = std::time::Duration::from_secs(EXACT_PIECE_SECONDS);
+        let ctl = self.ctl.clone().with_time_limit(limit);
         let options = crate::exact::Options {
             unique: false,
             any: true,
@@ -518,6 +520,7 @@ fn removal(
         heap,
         tets: Vec::new(),
         pieces: 0,
+        ctl: ctl.clone(),
     };
     let total = removable.len();
     let mut refused: Vec<u32> = Vec::new();
@@ -531,6 +534,7 @@ fn removal(
             let before = r.left.len();
             refused.retain(|&v| !r.cap(v));
             if r.left.len() == before && !r.pair(&refused) && !r.exact(&refused) {
+                ctl.check()?; // the exact fallback gave up because the run was stopped
                 return Err(ShellError::Internal(format!(
                     "{} caps refused",
                     refused.len()
