@@ -345,32 +345,7 @@ enum GenKind {
     },
     /// Two nested convex point sets for `shell`: the outer shape of radius 1 and the
     /// inner one of radius 1 − gap (shrunk by 0.9 until it fits, reported).
-    Nested {
-        /// The outer shape.
-        #[arg(long, value_enum, default_value_t = tetrakit::shell::generate::Shape::Sphere)]
-        outer: tetrakit::shell::generate::Shape,
-        /// The inner shape.
-        #[arg(long, value_enum, default_value_t = tetrakit::shell::generate::Shape::Sphere)]
-        inner: tetrakit::shell::generate::Shape,
-        /// Points of the outer shape.
-        #[arg(long, default_value_t = 100)]
-        n_outer: usize,
-        /// Points of the inner shape.
-        #[arg(long, default_value_t = 50)]
-        n_inner: usize,
-        /// The gap between the shapes, in (0, 1).
-        #[arg(long, default_value_t = 0.3)]
-        gap: f64,
-        /// Seed.
-        #[arg(long, default_value_t = 1)]
-        seed: u64,
-        /// The outer points: .xyz, .txt, .node or .json.
-        #[arg(long)]
-        outer_output: PathBuf,
-        /// The inner points: .xyz, .txt, .node or .json.
-        #[arg(long)]
-        inner_output: PathBuf,
-    },
+    Nested(NestedArgs),
     /// Points on two skew lines: Θ(n²) tetrahedra, the thesis's worst case for m.
     SkewLines {
         /// Number of points (half on each line).
@@ -379,6 +354,47 @@ enum GenKind {
         #[command(flatten)]
         common: GenCommon,
     },
+}
+
+#[derive(Args, Clone)]
+struct NestedArgs {
+    /// The outer shape.
+    #[arg(long, value_enum, default_value_t = tetrakit::shell::generate::Shape::Sphere)]
+    outer: tetrakit::shell::generate::Shape,
+    /// The inner shape.
+    #[arg(long, value_enum, default_value_t = tetrakit::shell::generate::Shape::Sphere)]
+    inner: tetrakit::shell::generate::Shape,
+    /// Points of the outer shape.
+    #[arg(long, default_value_t = 100)]
+    n_outer: usize,
+    /// Points of the inner shape.
+    #[arg(long, default_value_t = 50)]
+    n_inner: usize,
+    /// The gap between the shapes, in (0, 1).
+    #[arg(long, default_value_t = 0.3)]
+    gap: f64,
+    /// Seed.
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+    /// The outer points: .xyz, .txt, .node or .json.
+    #[arg(long)]
+    outer_output: PathBuf,
+    /// The inner points: .xyz, .txt, .node or .json.
+    #[arg(long)]
+    inner_output: PathBuf,
+}
+
+impl NestedArgs {
+    fn params(&self) -> tetrakit::shell::generate::NestedParams {
+        tetrakit::shell::generate::NestedParams {
+            outer: self.outer,
+            inner: self.inner,
+            n_outer: self.n_outer,
+            n_inner: self.n_inner,
+            gap: self.gap,
+            seed: self.seed,
+        }
+    }
 }
 
 #[derive(Args, Clone)]
@@ -492,29 +508,8 @@ fn run(cmd: Cmd) -> CmdResult {
             output: a.output.as_deref(),
         }),
         Cmd::Generate(GenerateArgs {
-            kind:
-                GenKind::Nested {
-                    outer,
-                    inner,
-                    n_outer,
-                    n_inner,
-                    gap,
-                    seed,
-                    outer_output,
-                    inner_output,
-                },
-        }) => shell::generate_nested(
-            &tetrakit::shell::generate::NestedParams {
-                outer,
-                inner,
-                n_outer,
-                n_inner,
-                gap,
-                seed,
-            },
-            &outer_output,
-            &inner_output,
-        ),
+            kind: GenKind::Nested(a),
+        }) => shell::generate_nested(&a.params(), &a.outer_output, &a.inner_output),
         Cmd::Generate(GenerateArgs {
             kind:
                 GenKind::Points2d {

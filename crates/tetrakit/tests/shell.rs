@@ -206,6 +206,9 @@ fn a_stopped_control_stops() {
     let ctl = Control::new();
     ctl.stop();
     for m in [Method::Cap, Method::Bigcap] {
-        assert_eq!(tetrahedralize(&shell, m, &ctl).unwrap_err(), ShellError::Stopped);
+        assert_eq!(
+            tetrahedralize(&shell, m, &ctl).unwrap_err(),
+            ShellError::Stopped
+        );
     }
 }
