@@ -861,3 +861,52 @@ fn shell_between_nested_spheres() {
         "{err}"
     );
 }
+
+/// `shell` and `generate nested` on bad input: exit 2 with one line naming the file (and
+/// the line where there is one); `--time-limit 0` is exit 3 with verdict "undecided".
+#[test]
+fn shell_bad_input_and_time_limit() {
+    let d = dir("shellbad");
+    let cube = "0 0 0\n4 0 0\n0 4 0\n4 4 0\n0 0 4\n4 0 4\n0 4 4\n4 4 4\n";
+    let (o, i) = (d.join("o.xyz"), d.join("i.xyz"));
+    std::fs::write(&o, cube).unwrap();
+    let one_line = |out: &Output, needle: &str| {
+        assert_eq!(out.status.code(), Some(2));
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(needle) && err.lines().count() == 1, "{err}");
+    };
+    // A flat inner set, planar points, a bad number, a missing file.
+    std::fs::write(&i, "1 1 1\n2 1 1\n1 2 1\n2 2 1\n").unwrap();
+    one_line(
+        &run(&["shell", s(&o), s(&i)]),
+        "i.xyz: the inner points span 2",
+    );
+    std::fs::write(&i, "1 1\n2 1\n1 2\n").unwrap();
+    one_line(&run(&["shell", s(&o), s(&i)]), "i.xyz");
+    std::fs::write(&i, "1 1 1\n2 1 x\n1 2 1\n1 1 2\n").unwrap();
+    one_line(&run(&["shell", s(&o), s(&i)]), "i.xyz:2:");
+    one_line(&run(&["shell", s(&o), s(&d.join("none.xyz"))]), "none.xyz");
+    // Out of time at once.
+    std::fs::write(&i, "1 1 1\n2 1 1\n1 2 1\n1 1 2\n").unwrap();
+    let t = run(&["shell", s(&o), s(&i), "--time-limit", "0", "--json"]);
+    assert_eq!(t.status.code(), Some(3));
+    assert_eq!(json(&t)["verdict"], "undecided");
+    // Generator parameters out of range.
+    let g = |extra: &[&str]| {
+        let mut a = vec![
+            "generate",
+            "nested",
+            "--outer-output",
+            s(&o),
+            "--inner-output",
+            s(&i),
+        ];
+        a.extend_from_slice(extra);
+        run(&a)
+    };
+    one_line(&g(&["--gap", "1.5"]), "gap 1.5 is not in (0, 1)");
+    one_line(
+        &g(&["--outer", "cube", "--n-outer", "5"]),
+        "at least 8 points",
+    );
+}

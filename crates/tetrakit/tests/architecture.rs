@@ -13,6 +13,15 @@ type Module = Vec<String>;
 fn allowed(top: &str) -> &'static [&'static str] {
     const BASE: &[&str] = &["control", "numbering", "rows", "rng"];
     const ALGORITHM: &[&str] = &["control", "numbering", "rows", "rng", "geom", "mesh"];
+    const WITH_EXACT: &[&str] = &[
+        "control",
+        "numbering",
+        "rows",
+        "rng",
+        "geom",
+        "mesh",
+        "exact",
+    ];
     match top {
         "control" | "numbering" | "rows" | "rng" => &[],
         "geom" => BASE,
@@ -27,15 +36,7 @@ fn allowed(top: &str) -> &'static [&'static str] {
             "planar",
         ],
         // The shell solves the pieces no cone tiles with the exact solver.
-        "shell" => &[
-            "control",
-            "numbering",
-            "rows",
-            "rng",
-            "geom",
-            "mesh",
-            "exact",
-        ],
+        "shell" => WITH_EXACT,
         _ => ALGORITHM,
     }
 }

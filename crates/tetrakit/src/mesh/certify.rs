@@ -231,7 +231,7 @@ fn first_problem(problems: Vec<Problem>) -> Result<(), Problem> {
 /// The faces of exactly one tetrahedron, outward and rotated to their smallest vertex,
 /// sorted. A positively oriented tet (a,b,c,d) has outward faces (a,c,b), (a,b,d),
 /// (a,d,c), (b,c,d).
-fn boundary_faces(tets: &[[u32; 4]]) -> Vec<[u32; 3]> {
+pub(crate) fn boundary_faces(tets: &[[u32; 4]]) -> Vec<[u32; 3]> {
     let mut faces: Vec<([u32; 3], [u32; 3])> = tets
         .iter()
         .flat_map(|&[a, b, c, d]| [[a, c, b], [a, b, d], [a, d, c], [b, c, d]])

@@ -12,6 +12,7 @@ pub(crate) mod surface;
 mod verify;
 mod verify_planar;
 
+pub(crate) use certify::boundary_faces;
 pub use certify::{certify_boundary, certify_hull, certify_polyhedron, certify_shell};
 pub use report::{Problem, ProblemKind, Report};
 pub use surface::{Polyhedron, SurfaceError};

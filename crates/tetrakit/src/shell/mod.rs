@@ -273,23 +273,14 @@ impl ShellMesh {
     /// The edges of the tetrahedra that are not on the boundary surfaces (`e_i` of
     /// Lemma 4.9: `t = e_i + n − 6` when `P` and `Q` are simplicial and do not touch).
     pub fn interior_edges(&self) -> usize {
-        let mut faces: HashMap<[u32; 3], u32> = HashMap::new();
-        let mut edges: HashSet<[u32; 2]> = HashSet::new();
-        for &[a, b, c, d] in &self.tets {
-            for f in [[a, b, c], [a, b, d], [a, c, d], [b, c, d]] {
-                let mut f = f;
-                f.sort_unstable();
-                *faces.entry(f).or_default() += 1;
-            }
-            for (x, y) in [(a, b), (a, c), (a, d), (b, c), (b, d), (c, d)] {
-                edges.insert([x.min(y), x.max(y)]);
-            }
-        }
-        let mut boundary: HashSet<[u32; 2]> = HashSet::new();
-        for (f, _) in faces.iter().filter(|(_, k)| **k == 1) {
-            boundary.extend([[f[0], f[1]], [f[0], f[2]], [f[1], f[2]]]);
-        }
-        edges.len() - boundary.len()
+        let mut on_boundary: Vec<(u32, u32)> = crate::mesh::boundary_faces(&self.tets)
+            .iter()
+            .flat_map(|f| [(f[0], f[1]), (f[1], f[2]), (f[0], f[2])])
+            .map(|(a, b)| (a.min(b), a.max(b)))
+            .collect();
+        on_boundary.sort_unstable();
+        on_boundary.dedup();
+        crate::mesh::edges_of(&self.tets).len() - on_boundary.len()
     }
 }
 
