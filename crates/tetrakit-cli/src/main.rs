@@ -346,6 +346,25 @@ enum GenKind {
     /// Two nested convex point sets for `shell`: the outer shape of radius 1 and the
     /// inner one of radius 1 − gap (shrunk by 0.9 until it fits, reported).
     Nested(NestedArgs),
+    /// A shell on which Bern's minimum-degree cap removal is superlinear: an antiprism
+    /// over two RING-gons around a flat bicone with RIDGE points on its rim.
+    BernDisk {
+        /// Points on the inner bicone's rim (it has two apexes besides).
+        #[arg(long)]
+        ridge: usize,
+        /// Vertices of each of the outer antiprism's two polygons.
+        #[arg(long)]
+        ring: usize,
+        /// Seed (jitters the ring heights).
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// The outer points: .xyz, .txt, .node or .json.
+        #[arg(long)]
+        outer_output: PathBuf,
+        /// The inner points: .xyz, .txt, .node or .json.
+        #[arg(long)]
+        inner_output: PathBuf,
+    },
     /// Points on two skew lines: Θ(n²) tetrahedra, the thesis's worst case for m.
     SkewLines {
         /// Number of points (half on each line).
@@ -510,6 +529,16 @@ fn run(cmd: Cmd) -> CmdResult {
         Cmd::Generate(GenerateArgs {
             kind: GenKind::Nested(a),
         }) => shell::generate_nested(&a.params(), &a.outer_output, &a.inner_output),
+        Cmd::Generate(GenerateArgs {
+            kind:
+                GenKind::BernDisk {
+                    ridge,
+                    ring,
+                    seed,
+                    outer_output,
+                    inner_output,
+                },
+        }) => shell::generate_bern_disk(ridge, ring, seed, &outer_output, &inner_output),
         Cmd::Generate(GenerateArgs {
             kind:
                 GenKind::Points2d {

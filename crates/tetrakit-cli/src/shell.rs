@@ -6,6 +6,7 @@ use crate::progress::Run;
 use serde_json::json;
 use std::path::Path;
 use std::time::{Duration, Instant};
+use tetrakit::geom::Point3;
 use tetrakit::io::{self, Input};
 use tetrakit::shell::{Method, Shell, ShellError, tetrahedralize};
 
@@ -140,10 +141,26 @@ pub fn generate_nested(
     inner: &Path,
 ) -> CmdResult {
     let (o, i, radius) = tetrakit::shell::generate::nested(p).map_err(CliError::new)?;
-    io::write_points(outer, &o).written(outer)?;
-    io::write_points(inner, &i).written(inner)?;
+    write_pair(&o, outer, &i, inner, &format!(" (radius {radius:.4})"))
+}
+
+/// Writes a Bern disk ([`tetrakit::shell::generate::bern_disk`]) as OUTER and INNER.
+pub fn generate_bern_disk(
+    ridge: usize,
+    ring: usize,
+    seed: u64,
+    outer: &Path,
+    inner: &Path,
+) -> CmdResult {
+    let (o, i) = tetrakit::shell::generate::bern_disk(ridge, ring, seed).map_err(CliError::new)?;
+    write_pair(&o, outer, &i, inner, "")
+}
+
+fn write_pair(o: &[Point3], outer: &Path, i: &[Point3], inner: &Path, note: &str) -> CmdResult {
+    io::write_points(outer, o).written(outer)?;
+    io::write_points(inner, i).written(inner)?;
     out!(
-        "wrote {} outer points to {} and {} inner points (radius {radius:.4}) to {}",
+        "wrote {} outer points to {} and {} inner points{note} to {}",
         o.len(),
         outer.display(),
         i.len(),

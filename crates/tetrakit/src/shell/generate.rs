@@ -135,3 +135,62 @@ pub fn nested(p: &NestedParams) -> Result<(Vec<Point3>, Vec<Point3>, f64), Strin
     }
     Err("the inner shape does not fit inside the outer hull".into())
 }
+
+/// Heights of the Bern disk: the outer rings at `±RING_HEIGHT`, the inner apexes at
+/// `±APEX_HEIGHT` (the rings more than twice as high, so a ring vertex sees the whole
+/// upper cone of the inner polytope).
+const RING_HEIGHT: f64 = 0.05;
+const APEX_HEIGHT: f64 = 0.02;
+
+/// A shell on which Bern's minimum-degree cap removal makes `Θ(n log n)` tetrahedra:
+/// the outer polytope an antiprism over two regular `ring`-gons at heights `±0.05`
+/// (heights jittered by 10⁻³ of themselves, so no four ring vertices are coplanar), of
+/// radius `1 / cos(1.5π / ring)`; the inner one a flat bicone, `ridge` points on the unit
+/// circle at height 0 and two apexes at `±0.02`.
+///
+/// The ring's chords clear the unit circle, but once a ring vertex is removed its
+/// neighbours' chord does not: the ridge shows through between them. Every ridge vertex
+/// is then joined to the nearest ring vertices left, and the apexes stay hidden until the
+/// last ring vertex on their side goes, so each removal hands its stretch of ridge to
+/// its neighbours. A ridge vertex changes hands about `log₂ ring` times, each time at
+/// the cost of new triangles, whatever the order of removal (a merge tree over the
+/// ring); TetGen's constrained Delaunay tetrahedralization of the same surfaces has
+/// about 3 tetrahedra per vertex. Returns `(outer, inner)`; refuses fewer than 3 ring or
+/// ridge points.
+///
+/// ```
+/// use tetrakit::shell::generate::bern_disk;
+/// let (outer, inner) = bern_disk(40, 10, 1).unwrap();
+/// assert_eq!((outer.len(), inner.len()), (20, 42));
+/// ```
+pub fn bern_disk(
+    ridge: usize,
+    ring: usize,
+    seed: u64,
+) -> Result<(Vec<Point3>, Vec<Point3>), String> {
+    if ridge < 3 || ring < 3 {
+        return Err(format!(
+            "a Bern disk needs at least 3 ridge and 3 ring points, not {ridge} and {ring}"
+        ));
+    }
+    let mut rng = Rng::new(seed);
+    let radius = 1.0 / (1.5 * std::f64::consts::PI / ring as f64).cos();
+    let mut outer = Vec::with_capacity(2 * ring);
+    for side in [1.0, -1.0] {
+        let shift = if side > 0.0 { 0.5 } else { 0.0 };
+        for j in 0..ring {
+            let t = TAU * (j as f64 + shift) / ring as f64;
+            let z = side * RING_HEIGHT * (1.0 + 1e-3 * rng.unit());
+            outer.push([radius * t.cos(), radius * t.sin(), z]);
+        }
+    }
+    let mut inner: Vec<Point3> = (0..ridge)
+        .map(|j| {
+            let t = TAU * j as f64 / ridge as f64;
+            [t.cos(), t.sin(), 0.0]
+        })
+        .collect();
+    inner.push([0.0, 0.0, APEX_HEIGHT]);
+    inner.push([0.0, 0.0, -APEX_HEIGHT]);
+    Ok((outer, inner))
+}
