@@ -156,6 +156,10 @@ struct ShellCliArgs {
     /// How the outer vertices are removed: Bern's caps, minimum degree first.
     #[arg(long, value_enum, default_value_t = ShellMethod::Cap)]
     method: ShellMethod,
+    /// Skip the improvement pass after the removals (3-2 flips, and Delaunay flips
+    /// above 3 tetrahedra per vertex, each keeping both surfaces).
+    #[arg(long)]
+    no_flips: bool,
     /// Give up after this many seconds (exit 3).
     #[arg(long, value_parser = seconds)]
     time_limit: Option<Duration>,
@@ -522,6 +526,7 @@ fn run(cmd: Cmd) -> CmdResult {
                 ShellMethod::Cap => tetrakit::shell::Method::Cap,
                 ShellMethod::Bigcap => tetrakit::shell::Method::Bigcap,
             },
+            flips: !a.no_flips,
             time_limit: a.time_limit,
             as_json: a.json,
             output: a.output.as_deref(),

@@ -8,13 +8,14 @@ use std::path::Path;
 use std::time::{Duration, Instant};
 use tetrakit::geom::Point3;
 use tetrakit::io::{self, Input};
-use tetrakit::shell::{Method, Shell, ShellError, tetrahedralize};
+use tetrakit::shell::{Improvement, Method, Shell, ShellError, improve, tetrahedralize};
 
 /// What `shell` was asked.
 pub struct ShellArgs<'a> {
     pub outer: &'a Path,
     pub inner: &'a Path,
     pub method: Method,
+    pub flips: bool,
     pub time_limit: Option<Duration>,
     pub as_json: bool,
     pub output: Option<&'a Path>,
@@ -61,9 +62,19 @@ pub fn shell(a: ShellArgs) -> CmdResult {
     let shell = Shell::new(&outer_in.points, &inner_in.points)
         .map_err(|e| blame(e, &outer_in, &inner_in))?;
     let run = Run::new(a.time_limit, shell.outer.len(), 20_000);
-    let result = tetrahedralize(&shell, a.method, &run.ctl);
+    let result = tetrahedralize(&shell, a.method, &run.ctl).and_then(|mut mesh| {
+        let done = if a.flips {
+            improve(&shell.points, &mut mesh, &run.ctl)?
+        } else {
+            Improvement {
+                before: mesh.tets.len(),
+                ..Default::default()
+            }
+        };
+        Ok((mesh, done))
+    });
     drop(run);
-    let mesh = match result {
+    let (mesh, flips) = match result {
         Ok(m) => m,
         Err(ShellError::Stopped) => return undecided(&shell, a.method, a.as_json, start),
         Err(e) => return Err(blame(e, &outer_in, &inner_in)),
@@ -98,6 +109,8 @@ pub fn shell(a: ShellArgs) -> CmdResult {
                 "steiner_points": 0,
                 "pieces": mesh.pieces,
                 "method": a.method.name(),
+                "tetrahedra_before_flips": flips.before,
+                "flips": flips_json(&flips, a.flips),
                 "seconds": seconds,
             })
         );
@@ -110,6 +123,18 @@ pub fn shell(a: ShellArgs) -> CmdResult {
             9 * n - 6,
             mesh.tets.len() as f64 / n as f64
         );
+        if flips.before != mesh.tets.len() {
+            out!(
+                "  the removals made {}; flips inside the shell took it to {}{}",
+                flips.before,
+                mesh.tets.len(),
+                if flips.delaunay.is_some() {
+                    " (Delaunay flips, then 3-2 flips)"
+                } else {
+                    " (3-2 flips)"
+                }
+            );
+        }
         if shell.outer_ignored.len() + shell.inner_ignored.len() > 0 {
             out!(
                 "  not vertices (inside a hull, or on it but not a corner, or repeated): {} outer and {} inner points",
@@ -119,6 +144,17 @@ pub fn shell(a: ShellArgs) -> CmdResult {
         }
     }
     Ok(Verdict::Yes)
+}
+
+/// The improvement pass for JSON: `null` when skipped.
+fn flips_json(f: &Improvement, ran: bool) -> serde_json::Value {
+    if !ran {
+        return serde_json::Value::Null;
+    }
+    json!({
+        "three_two": f.three_two,
+        "delaunay": f.delaunay.map(|d| json!({"two_three": d.two_three, "three_two": d.three_two})),
+    })
 }
 
 fn undecided(shell: &Shell, method: Method, as_json: bool, start: Instant) -> CmdResult {

@@ -27,6 +27,7 @@
 pub mod control;
 pub mod detect;
 pub mod exact;
+pub mod flip;
 pub mod generate;
 pub mod geom;
 pub mod io;

@@ -13,7 +13,7 @@ type Module = Vec<String>;
 fn allowed(top: &str) -> &'static [&'static str] {
     const BASE: &[&str] = &["control", "numbering", "rows", "rng"];
     const ALGORITHM: &[&str] = &["control", "numbering", "rows", "rng", "geom", "mesh"];
-    const WITH_EXACT: &[&str] = &[
+    const WITH_EXACT_AND_FLIPS: &[&str] = &[
         "control",
         "numbering",
         "rows",
@@ -21,6 +21,7 @@ fn allowed(top: &str) -> &'static [&'static str] {
         "geom",
         "mesh",
         "exact",
+        "flip",
     ];
     match top {
         "control" | "numbering" | "rows" | "rng" => &[],
@@ -35,8 +36,9 @@ fn allowed(top: &str) -> &'static [&'static str] {
             "mesh",
             "planar",
         ],
-        // The shell solves the pieces no cone tiles with the exact solver.
-        "shell" => WITH_EXACT,
+        // The shell solves the pieces no cone tiles with the exact solver, and improves
+        // its meshes by flips.
+        "shell" => WITH_EXACT_AND_FLIPS,
         _ => ALGORITHM,
     }
 }

@@ -57,11 +57,13 @@
 
 mod bins;
 pub mod generate;
+mod improve;
 mod removal;
 mod surface;
 
 use crate::control::{Control, Stopped};
 use crate::geom::{Hull3, Point3};
+pub use improve::{DELAUNAY_ABOVE, Improvement, improve};
 use std::collections::{HashMap, HashSet};
 use std::fmt;
 use surface::Surface;

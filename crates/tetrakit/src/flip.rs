@@ -1,0 +1,437 @@
+//! Flips that keep a tetrahedralization's vertices and boundary: Lawson's flips towards
+//! the constrained Delaunay tetrahedralization, and 3-2 flips that lower the count.
+//!
+//! A **2-3 flip** replaces two tetrahedra `abcd`, `abce` sharing the face `abc` by the
+//! three around the new edge `de`; it applies when `de` crosses the interior of `abc`
+//! (then the two form a convex bipyramid, which the three tile). A **3-2 flip** is the
+//! inverse: the three tetrahedra around an edge `ab` of degree 3, with link `cde`,
+//! become `cdea` and `cdeb` when `ab` crosses the interior of `cde`. Both act inside the
+//! union of the tetrahedra they replace, so the vertices, the boundary triangles and the
+//! region stay as they were; every decision is an exact sign (orient3d, insphere), and a
+//! configuration on the boundary of a test (four coplanar points, five cospherical ones)
+//! is left alone. Faces with one tetrahedron (the boundary) are never flipped.
+//!
+//! **Delaunay.** [`delaunay`] flips every interior face whose opposite vertex lies
+//! strictly inside the circumsphere of the tetrahedron on the other side, when one of the
+//! two flips applies. Each such flip lowers the lifted surface of the tetrahedralization
+//! (the points lifted to the paraboloid), so the flipping ends; in three dimensions it
+//! can end before the Delaunay tetrahedralization, at faces no flip applies to. The
+//! count changes by +1 per 2-3 flip and −1 per 3-2 flip.
+//!
+//! **Fewer tetrahedra.** [`reduce`] applies 3-2 flips while any applies; each removes one
+//! tetrahedron and one interior edge.
+//!
+//! ```
+//! use tetrakit::control::Control;
+//! use tetrakit::flip;
+//! // Three tetrahedra around the edge from (0,0,-1) to (0,0,1), which crosses the
+//! // triangle of their other vertices: one 3-2 flip leaves two.
+//! let pts = [[0.0, 0.0, -1.0], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [-0.5, 1.0, 0.0], [-0.5, -1.0, 0.0]];
+//! let mut tets = vec![[0, 1, 2, 3], [0, 1, 3, 4], [0, 1, 4, 2]];
+//! assert_eq!(flip::reduce(&pts, &mut tets, &Control::new()).unwrap(), 1);
+//! assert_eq!(tets.len(), 2);
+//! ```
+
+use crate::control::{Control, Stopped};
+use crate::geom::{Point3, insphere, orient3d};
+use rustc_hash::FxHashMap as HashMap;
+use std::collections::VecDeque;
+
+const NONE: u32 = u32::MAX;
+
+/// The flips [`delaunay`] made.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Flips {
+    /// 2-3 flips (one tetrahedron more each).
+    pub two_three: usize,
+    /// 3-2 flips (one tetrahedron fewer each).
+    pub three_two: usize,
+}
+
+/// Lawson's flips until every interior face is locally Delaunay or no flip applies to it
+/// (see the module docs). `tets` are rewritten, positively oriented.
+///
+/// ```
+/// use tetrakit::control::Control;
+/// use tetrakit::flip;
+/// // Two tetrahedra on the face (1,2,3); the apex 4 lies inside the sphere of 0123.
+/// let pts = [[0.0, 0.0, 2.0], [1.0, 0.0, 0.0], [-0.5, 0.9, 0.0], [-0.5, -0.9, 0.0], [0.0, 0.0, -0.2]];
+/// let mut tets = vec![[0, 1, 2, 3], [4, 1, 3, 2]];
+/// let f = flip::delaunay(&pts, &mut tets, &Control::new()).unwrap();
+/// assert_eq!((f.two_three, tets.len()), (1, 3));
+/// ```
+pub fn delaunay(
+    points: &[Point3],
+    tets: &mut Vec<[u32; 4]>,
+    ctl: &Control,
+) -> Result<Flips, Stopped> {
+    let mut m = Mesh::new(points, tets);
+    let mut keys: Vec<[u32; 3]> = m.face.keys().copied().collect();
+    keys.sort_unstable();
+    let mut queue: VecDeque<[u32; 3]> = keys.into();
+    let mut flips = Flips::default();
+    let mut steps = 0usize;
+    while let Some(key) = queue.pop_front() {
+        steps += 1;
+        if steps.is_multiple_of(4096) {
+            ctl.check()?;
+        }
+        let Some([t1, t2]) = m.pair(&key) else {
+            continue;
+        };
+        let (d, e) = (m.apex(t1, &key), m.apex(t2, &key));
+        let t = m.tets[t1 as usize];
+        let p = |v: u32| &points[v as usize];
+        if insphere(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e)) <= 0 {
+            continue;
+        }
+        if let Some(outer) = m.two_three(t1, t2, key, d, e) {
+            flips.two_three += 1;
+            queue.extend(outer);
+            continue;
+        }
+        for (a, b) in [(key[0], key[1]), (key[1], key[2]), (key[0], key[2])] {
+            if let Some(outer) = m.three_two(a, b, t1) {
+                flips.three_two += 1;
+                queue.extend(outer);
+                break;
+            }
+        }
+    }
+    *tets = m.into_tets();
+    Ok(flips)
+}
+
+/// 3-2 flips while any applies; returns how many were made (the tetrahedra removed).
+pub fn reduce(
+    points: &[Point3],
+    tets: &mut Vec<[u32; 4]>,
+    ctl: &Control,
+) -> Result<usize, Stopped> {
+    let mut m = Mesh::new(points, tets);
+    let mut queue: VecDeque<([u32; 2], u32)> = m.edges().into();
+    let mut done = 0;
+    let mut steps = 0usize;
+    while let Some(([a, b], t)) = queue.pop_front() {
+        steps += 1;
+        if steps.is_multiple_of(4096) {
+            ctl.check()?;
+        }
+        if m.three_two(a, b, t).is_some() {
+            done += 1;
+            // The edges of the two new tetrahedra may have reached degree 3.
+            let new = m.tets.len() as u32;
+            for id in [new - 2, new - 1] {
+                queue.extend(m.tet_edges(id));
+            }
+        }
+    }
+    *tets = m.into_tets();
+    Ok(done)
+}
+
+/// Tetrahedra with their faces: each sorted face to the (at most two) tetrahedra on it.
+struct Mesh<'a> {
+    pts: &'a [Point3],
+    tets: Vec<[u32; 4]>,
+    alive: Vec<bool>,
+    face: HashMap<[u32; 3], [u32; 2]>,
+}
+
+fn sorted<const N: usize>(mut v: [u32; N]) -> [u32; N] {
+    v.sort_unstable();
+    v
+}
+
+/// The four faces of `t`, sorted.
+fn faces(t: &[u32; 4]) -> [[u32; 3]; 4] {
+    [0, 1, 2, 3].map(|k| {
+        let mut f = [0; 3];
+        let mut i = 0;
+        for (j, &v) in t.iter().enumerate() {
+            if j != k {
+                f[i] = v;
+                i += 1;
+            }
+        }
+        sorted(f)
+    })
+}
+
+impl<'a> Mesh<'a> {
+    fn new(pts: &'a [Point3], tets: &[[u32; 4]]) -> Self {
+        let mut m = Mesh {
+            pts,
+            tets: Vec::with_capacity(tets.len()),
+            alive: Vec::with_capacity(tets.len()),
+            face: HashMap::with_capacity_and_hasher(2 * tets.len(), Default::default()),
+        };
+        for &t in tets {
+            m.add(t);
+        }
+        m
+    }
+
+    fn into_tets(self) -> Vec<[u32; 4]> {
+        self.tets
+            .into_iter()
+            .zip(self.alive)
+            .filter_map(|(t, a)| a.then_some(t))
+            .collect()
+    }
+
+    fn orient(&self, a: u32, b: u32, c: u32, d: u32) -> i8 {
+        let p = |v: u32| &self.pts[v as usize];
+        orient3d(p(a), p(b), p(c), p(d))
+    }
+
+    /// Adds `t`, reordered to be positively oriented.
+    fn add(&mut self, mut t: [u32; 4]) {
+        if self.orient(t[0], t[1], t[2], t[3]) < 0 {
+            t.swap(0, 1);
+        }
+        let id = self.tets.len() as u32;
+        self.tets.push(t);
+        self.alive.push(true);
+        for f in faces(&t) {
+            let slot = self.face.entry(f).or_insert([NONE; 2]);
+            let k = if slot[0] == NONE { 0 } else { 1 };
+            slot[k] = id;
+        }
+    }
+
+    fn remove(&mut self, id: u32) {
+        self.alive[id as usize] = false;
+        for f in faces(&self.tets[id as usize]) {
+            if let Some(slot) = self.face.get_mut(&f) {
+                slot.iter_mut()
+                    .filter(|s| **s == id)
+                    .for_each(|s| *s = NONE);
+                if slot == &[NONE; 2] {
+                    self.face.remove(&f);
+                }
+            }
+        }
+    }
+
+    /// The two tetrahedra on an interior face.
+    fn pair(&self, key: &[u32; 3]) -> Option<[u32; 2]> {
+        self.face.get(key).copied().filter(|s| !s.contains(&NONE))
+    }
+
+    /// The vertex of tetrahedron `t` not on `key`.
+    fn apex(&self, t: u32, key: &[u32; 3]) -> u32 {
+        let tet = &self.tets[t as usize];
+        *tet.iter().find(|v| !key.contains(v)).expect("a face of t")
+    }
+
+    /// The 2-3 flip of the face `key = abc` between `t1 = abcd` and `t2 = abce`, if `de`
+    /// crosses its interior; returns the six faces around the new tetrahedra.
+    fn two_three(
+        &mut self,
+        t1: u32,
+        t2: u32,
+        key: [u32; 3],
+        d: u32,
+        e: u32,
+    ) -> Option<Vec<[u32; 3]>> {
+        let [a, b, c] = key;
+        let s = [
+            self.orient(d, e, a, b),
+            self.orient(d, e, b, c),
+            self.orient(d, e, c, a),
+        ];
+        if s[0] == 0 || s.iter().any(|&x| x != s[0]) {
+            return None;
+        }
+        self.remove(t1);
+        self.remove(t2);
+        for (x, y) in [(a, b), (b, c), (c, a)] {
+            self.add([x, y, d, e]);
+        }
+        Some(
+            [(a, b), (b, c), (c, a)]
+                .iter()
+                .flat_map(|&(x, y)| [sorted([x, y, d]), sorted([x, y, e])])
+                .collect(),
+        )
+    }
+
+    /// The 3-2 flip removing the edge `ab`, if it has degree 3, is interior, and crosses
+    /// the interior of the triangle `cde` of its other vertices; returns the six faces
+    /// around the two new tetrahedra.
+    fn three_two(&mut self, a: u32, b: u32, t0: u32) -> Option<Vec<[u32; 3]>> {
+        if !self.alive[t0 as usize] {
+            return None;
+        }
+        let ([t1, t2, t3], [c, d, e]) = self.ring(a, b, t0)?;
+        if self.orient(c, d, e, a) * self.orient(c, d, e, b) >= 0 {
+            return None;
+        }
+        let s = [
+            self.orient(a, b, c, d),
+            self.orient(a, b, d, e),
+            self.orient(a, b, e, c),
+        ];
+        if s[0] == 0 || s.iter().any(|&x| x != s[0]) {
+            return None;
+        }
+        for t in [t1, t2, t3] {
+            self.remove(t);
+        }
+        self.add([c, d, e, a]);
+        self.add([c, d, e, b]);
+        Some(
+            [(c, d), (d, e), (e, c)]
+                .iter()
+                .flat_map(|&(x, y)| [sorted([x, y, a]), sorted([x, y, b])])
+                .collect(),
+        )
+    }
+
+    /// For an interior edge `ab` of degree 3 on the tetrahedron `t0`: its three
+    /// tetrahedra and their three other vertices, or `None` (another degree, or on the
+    /// boundary). Walks around the edge through the faces `abx`.
+    fn ring(&self, a: u32, b: u32, t0: u32) -> Option<([u32; 3], [u32; 3])> {
+        let others = |t: u32| {
+            let mut o = self.tets[t as usize]
+                .into_iter()
+                .filter(|&v| v != a && v != b);
+            (o.next(), o.next())
+        };
+        let (Some(c), Some(mut v)) = others(t0) else {
+            return None; // t0 is not on ab
+        };
+        let (mut ts, mut link, mut cur) = ([t0; 3], [c, v, 0], t0);
+        for k in 1..=3 {
+            let [s0, s1] = self.pair(&sorted([a, b, v]))?;
+            let next = if s0 == cur { s1 } else { s0 };
+            if next == t0 {
+                return (k == 3).then_some((ts, link));
+            }
+            if k == 3 {
+                return None;
+            }
+            let (Some(x), Some(y)) = others(next) else {
+                return None;
+            };
+            v = if x == v { y } else { x };
+            ts[k] = next;
+            if k == 1 {
+                link[2] = v;
+            }
+            cur = next;
+        }
+        None
+    }
+
+    /// The six edges of tetrahedron `id`, each with `id`.
+    fn tet_edges(&self, id: u32) -> [([u32; 2], u32); 6] {
+        let t = self.tets[id as usize];
+        [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)].map(|(i, j)| (sorted([t[i], t[j]]), id))
+    }
+
+    /// Every edge of a live tetrahedron, once, with a tetrahedron on it.
+    fn edges(&self) -> Vec<([u32; 2], u32)> {
+        let mut e: Vec<([u32; 2], u32)> = (0..self.tets.len() as u32)
+            .filter(|&id| self.alive[id as usize])
+            .flat_map(|id| self.tet_edges(id))
+            .collect();
+        e.sort_unstable();
+        e.dedup_by_key(|x| x.0);
+        e
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geom::Hull3;
+    use crate::mesh::certify_hull;
+    use proptest::prelude::*;
+
+    /// The pulling tetrahedralization of points in convex position: vertex 0 coned to
+    /// every hull triangle not in a plane through it (far from Delaunay: many flips).
+    fn pulled(points: &[Point3]) -> Vec<[u32; 4]> {
+        let hull = Hull3::new(points);
+        hull.triangles
+            .iter()
+            .filter(|t| {
+                let p = |v: u32| &points[v as usize];
+                orient3d(p(t[0]), p(t[1]), p(t[2]), &points[0]) != 0
+            })
+            .map(|t| {
+                let mut tet = [t[0], t[1], t[2], 0];
+                let p = |v: u32| &points[v as usize];
+                if orient3d(p(tet[0]), p(tet[1]), p(tet[2]), p(tet[3])) < 0 {
+                    tet.swap(0, 1);
+                }
+                tet
+            })
+            .collect()
+    }
+
+    fn sphere_points(seeds: &[(f64, f64)]) -> Vec<Point3> {
+        seeds
+            .iter()
+            .map(|&(u, v)| {
+                let (z, t) = (2.0 * u - 1.0, std::f64::consts::TAU * v);
+                let r = (1.0 - z * z).sqrt();
+                [r * t.cos(), r * t.sin(), z]
+            })
+            .collect()
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// From a pulling tetrahedralization, Delaunay flips then 3-2 flips: still a
+        /// tetrahedralization of the hull with every point, and the count moves by one
+        /// per flip in the stated direction.
+        #[test]
+        fn flips_keep_a_tetrahedralization(seeds in proptest::collection::vec((0.0f64..1.0, 0.0f64..1.0), 6..40)) {
+            let pts = sphere_points(&seeds);
+            let hull = Hull3::new(&pts);
+            prop_assume!(hull.dimension == 3 && (0..pts.len()).all(|i| hull.on_boundary(i)));
+            let mut tets = pulled(&pts);
+            prop_assume!(certify_hull(&pts, &tets).is_ok()); // a point on a hull edge
+            let start = tets.len();
+            let f = delaunay(&pts, &mut tets, &Control::new()).unwrap();
+            prop_assert_eq!(certify_hull(&pts, &tets), Ok(()));
+            prop_assert_eq!(tets.len() + f.three_two, start + f.two_three);
+            let mid = tets.len();
+            let r = reduce(&pts, &mut tets, &Control::new()).unwrap();
+            prop_assert_eq!(certify_hull(&pts, &tets), Ok(()));
+            prop_assert_eq!(tets.len() + r, mid);
+        }
+    }
+
+    /// Cospherical points (a cube's corners, and a 3×3×3 grid's Kuhn cells): no point is
+    /// strictly inside any sphere, so no Delaunay flip; the meshes stay valid.
+    #[test]
+    fn cospherical_points_are_not_flipped() {
+        let cube: Vec<Point3> = (0..8)
+            .map(|i| [(i & 1) as f64, ((i >> 1) & 1) as f64, (i >> 2) as f64])
+            .collect();
+        let mut tets = pulled(&cube);
+        assert_eq!(tets.len(), 6);
+        let f = delaunay(&cube, &mut tets, &Control::new()).unwrap();
+        assert_eq!(f, Flips::default());
+        reduce(&cube, &mut tets, &Control::new()).unwrap();
+        assert_eq!(certify_hull(&cube, &tets), Ok(()));
+        let grid = crate::generate::kuhn(3);
+        let mut tets = grid.tets.clone();
+        let f = delaunay(&grid.points, &mut tets, &Control::new()).unwrap();
+        assert_eq!((f, tets.len()), (Flips::default(), grid.tets.len()));
+    }
+
+    /// A stopped control stops the flipping (checked every 4096 steps).
+    #[test]
+    fn a_stopped_control_stops() {
+        let grid = crate::generate::kuhn(8);
+        let ctl = Control::new();
+        ctl.stop();
+        let mut tets = grid.tets.clone();
+        assert!(reduce(&grid.points, &mut tets, &ctl).is_err());
+    }
+}
