@@ -15,6 +15,16 @@ pub enum Domain<'a> {
     Polyhedron(&'a Polyhedron),
     /// The convex hull of a point set, using every point (a *fine* triangulation).
     Points(&'a [Point3]),
+    /// The region between two nested convex polytopes (they may touch), by its boundary
+    /// triangles, each oriented outward from the region: the outer surface's facing
+    /// out, the inner surface's facing into the inner polytope. The tetrahedralizations
+    /// are those with exactly these boundary triangles.
+    Shell {
+        /// The vertices (every one on a boundary triangle).
+        points: &'a [Point3],
+        /// The boundary triangles.
+        faces: &'a [[u32; 3]],
+    },
 }
 
 impl Domain<'_> {
@@ -22,6 +32,17 @@ impl Domain<'_> {
         match self {
             Domain::Polyhedron(p) => &p.points,
             Domain::Points(p) => p,
+            Domain::Shell { points, .. } => points,
+        }
+    }
+
+    /// The boundary triangles the tetrahedralization must have (none for a point set,
+    /// whose hull facets may be triangulated in any way).
+    pub(crate) fn faces(&self) -> &[[u32; 3]] {
+        match self {
+            Domain::Polyhedron(p) => &p.faces,
+            Domain::Points(_) => &[],
+            Domain::Shell { faces, .. } => faces,
         }
     }
 }
@@ -57,10 +78,7 @@ pub(crate) fn candidates(domain: Domain) -> Candidates {
     let pts = domain.points();
     let n = pts.len() as u32;
     let mut tets = Vec::new();
-    let facets: Vec<[u32; 3]> = match domain {
-        Domain::Polyhedron(p) => p.faces.clone(),
-        Domain::Points(_) => Vec::new(),
-    };
+    let facets: Vec<[u32; 3]> = domain.faces().to_vec();
     let facet_set: HashMap<[u32; 3], [u32; 3]> = facets
         .iter()
         .map(|&f| (crate::mesh::sorted_face(f), f))
@@ -114,8 +132,24 @@ pub(crate) fn candidates(domain: Domain) -> Candidates {
             }
         }
     }
-    let (boundary_edges, boundary_vertices) = match domain {
-        Domain::Polyhedron(p) => (p.edges().into_iter().collect(), p.points.len()),
+    // Euler: t = e_i + offset (see the module docs of `exact`).
+    let (boundary_edges, offset) = match domain {
+        Domain::Polyhedron(_) | Domain::Shell { .. } => {
+            let edges: std::collections::HashSet<[u32; 2]> = facets
+                .iter()
+                .flat_map(|f| [[f[0], f[1]], [f[1], f[2]], [f[0], f[2]]])
+                .map(|[a, b]| [a.min(b), a.max(b)])
+                .collect();
+            // χ = 1 for a ball, 2 for the region between nested polytopes (P = region
+            // ∪ Q, meeting in ∂Q: 1 = χ + 1 − 2), and t = χ − n + e_b − f_b / 2 + e_i.
+            let chi = if matches!(domain, Domain::Shell { .. }) {
+                2
+            } else {
+                1
+            };
+            let offset = chi - n as i64 + edges.len() as i64 - facets.len() as i64 / 2;
+            (edges, offset)
+        }
         Domain::Points(_) => {
             for (f, usage) in triangles.iter_mut() {
                 usage.on_hull = supporting(pts, f);
@@ -128,7 +162,7 @@ pub(crate) fn candidates(domain: Domain) -> Candidates {
                 .collect();
             let hull = crate::geom::Hull3::new(pts);
             let nb = (0..pts.len()).filter(|&i| hull.on_boundary(i)).count();
-            (on_hull, nb)
+            (on_hull, 2 * nb as i64 - n as i64 - 3)
         }
     };
     let mut interior_edges: Vec<([u32; 2], Vec<u32>)> = edges
@@ -140,7 +174,7 @@ pub(crate) fn candidates(domain: Domain) -> Candidates {
         tets,
         triangles,
         interior_edges,
-        offset: 2 * boundary_vertices as i64 - n as i64 - 3,
+        offset,
     }
 }
 

@@ -27,9 +27,19 @@
 //! implied, which keeps the formula near-linear in the number of candidates. Every answer
 //! is still certified afterwards by [`mesh::verify`].
 //!
+//! **A region with a hole** ([`Domain::Shell`], the region between nested polytopes) is
+//! the same argument with two boundary surfaces: next to an inner facet, on the hole's
+//! side, no candidate uses it (candidates on a facet lie on the region's side), so the
+//! count is 0 throughout the hole and no tetrahedron inside it is chosen; the region's
+//! interior is connected and the count there is 1.
+//!
 //! **Minimising.** By Euler's formula the number of tetrahedra is `e_i + c`, with `e_i`
-//! the interior edges used and `c = 2·n_b − n − 3` (`n_b` vertices on the boundary; for a
-//! polyhedron `n_b = n` and this is the thesis's `t = e_i + n − 3`). So the solver bounds
+//! the interior edges used. For a point set `c = 2·n_b − n − 3` (`n_b` vertices on the
+//! boundary). For a region with boundary triangles `f_b` on `e_b` edges and Euler
+//! characteristic `χ` (1 for a polyhedron, 2 for a shell), `4t = 2f_i + f_b` and
+//! `n − e + f − t = χ` give `c = χ − n + e_b − f_b / 2`: the thesis's `t = e_i + n − 3`
+//! for a polyhedron and Lemma 4.9's `t = e_i + n − 6` for disjoint simplicial shells.
+//! So the solver bounds
 //! a totalizer over the edge variables — far fewer than the tetrahedra — and searches
 //! downward from each solution found until the bound is unsatisfiable.
 
@@ -140,6 +150,7 @@ impl Domain<'_> {
         match self {
             Domain::Points(p) => mesh::certify_hull(p, tets),
             Domain::Polyhedron(p) => mesh::certify_polyhedron(p, tets),
+            Domain::Shell { points, faces } => mesh::certify_boundary(points, tets, faces),
         }
     }
 }
@@ -207,7 +218,7 @@ pub fn minimal_tetrahedralization(
     let tet_lits: Vec<Lit> = (0..cand.tets.len()).map(|_| vars.new_lit()).collect();
     let anchor = match domain {
         Domain::Points(p) => Some(anchor(p, &cand).ok_or(ExactError::NoAnchor)?),
-        Domain::Polyhedron(_) => None,
+        Domain::Polyhedron(_) | Domain::Shell { .. } => None,
     };
     add_structure(
         &mut solver,
@@ -343,14 +354,11 @@ fn add_structure(
     domain: Domain,
     anchor: Option<&[u32]>,
 ) {
-    let facets: std::collections::HashSet<[u32; 3]> = match domain {
-        Domain::Polyhedron(p) => p
-            .faces
-            .iter()
-            .map(|&f| crate::mesh::sorted_face(f))
-            .collect(),
-        Domain::Points(_) => Default::default(),
-    };
+    let facets: std::collections::HashSet<[u32; 3]> = domain
+        .faces()
+        .iter()
+        .map(|&f| crate::mesh::sorted_face(f))
+        .collect();
     let lits = |ids: &[u32]| -> Vec<Lit> { ids.iter().map(|&i| tet[i as usize]).collect() };
     let mut keys: Vec<&[u32; 3]> = cand.triangles.keys().collect();
     keys.sort_unstable();

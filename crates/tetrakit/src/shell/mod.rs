@@ -58,12 +58,14 @@
 mod bins;
 pub mod generate;
 mod improve;
+mod optimum;
 mod removal;
 mod surface;
 
 use crate::control::{Control, Stopped};
 use crate::geom::{Hull3, Point3};
 pub use improve::{DELAUNAY_ABOVE, Improvement, improve};
+pub use optimum::optimum;
 use std::collections::{HashMap, HashSet};
 use std::fmt;
 use surface::Surface;
