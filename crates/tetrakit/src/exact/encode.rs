@@ -15,15 +15,18 @@ pub enum Domain<'a> {
     Polyhedron(&'a Polyhedron),
     /// The convex hull of a point set, using every point (a *fine* triangulation).
     Points(&'a [Point3]),
-    /// The region between two nested convex polytopes (they may touch), by its boundary
-    /// triangles, each oriented outward from the region: the outer surface's facing
-    /// out, the inner surface's facing into the inner polytope. The tetrahedralizations
-    /// are those with exactly these boundary triangles.
+    /// The region between two nested convex polytopes `P ⊇ Q` (they may touch): `P` the
+    /// hull of `points`, `Q` the hull of `points[inner]`. A polygon facet of `Q` may be
+    /// triangulated in any way; so may one of `P` unless `outer_faces` fixes the
+    /// triangles of `∂P` (each oriented outward, as a removal's surface is fixed by the
+    /// tetrahedra already made).
     Shell {
-        /// The vertices (every one on a boundary triangle).
+        /// The vertices of `P` and `Q` (no other points).
         points: &'a [Point3],
-        /// The boundary triangles.
-        faces: &'a [[u32; 3]],
+        /// The vertices of `Q`.
+        inner: &'a [u32],
+        /// The triangles of `∂P`, when they are fixed.
+        outer_faces: Option<&'a [[u32; 3]]>,
     },
 }
 
@@ -42,7 +45,7 @@ impl Domain<'_> {
         match self {
             Domain::Polyhedron(p) => &p.faces,
             Domain::Points(_) => &[],
-            Domain::Shell { faces, .. } => faces,
+            Domain::Shell { outer_faces, .. } => outer_faces.unwrap_or(&[]),
         }
     }
 }
@@ -55,7 +58,9 @@ pub(crate) struct TriangleUse {
     pub(crate) pos: Vec<u32>,
     /// ... on the negative side.
     pub(crate) neg: Vec<u32>,
-    /// For a point set: the triangle lies in a supporting plane (on the hull's boundary).
+    /// On the boundary with its triangulation free (used at most once): in a supporting
+    /// plane of a point set, or of a shell's `P` when its faces are not fixed, or on a
+    /// facet of a shell's `Q`.
     pub(crate) on_hull: bool,
 }
 
@@ -83,6 +88,7 @@ pub(crate) fn candidates(domain: Domain) -> Candidates {
         .iter()
         .map(|&f| (crate::mesh::sorted_face(f), f))
         .collect();
+    let inner = inner_polytope(domain);
     for a in 0..n {
         for b in a + 1..n {
             for c in b + 1..n {
@@ -98,6 +104,12 @@ pub(crate) fn candidates(domain: Domain) -> Candidates {
                         continue;
                     }
                     if !facets.is_empty() && !fits_polyhedron(pts, &facets, &facet_set, t) {
+                        continue;
+                    }
+                    if inner
+                        .as_ref()
+                        .is_some_and(|(q, local)| crosses_inner(q, local, &t, &geo))
+                    {
                         continue;
                     }
                     tets.push(t);
@@ -132,38 +144,38 @@ pub(crate) fn candidates(domain: Domain) -> Candidates {
             }
         }
     }
-    // Euler: t = e_i + offset (see the module docs of `exact`).
-    let (boundary_edges, offset) = match domain {
-        Domain::Polyhedron(_) | Domain::Shell { .. } => {
-            let edges: std::collections::HashSet<[u32; 2]> = facets
-                .iter()
-                .flat_map(|f| [[f[0], f[1]], [f[1], f[2]], [f[0], f[2]]])
-                .map(|[a, b]| [a.min(b), a.max(b)])
-                .collect();
-            // χ = 1 for a ball, 2 for the region between nested polytopes (P = region
-            // ∪ Q, meeting in ∂Q: 1 = χ + 1 − 2), and t = χ − n + e_b − f_b / 2 + e_i.
-            let chi = if matches!(domain, Domain::Shell { .. }) {
-                2
-            } else {
-                1
-            };
-            let offset = chi - n as i64 + edges.len() as i64 - facets.len() as i64 / 2;
-            (edges, offset)
-        }
-        Domain::Points(_) => {
-            for (f, usage) in triangles.iter_mut() {
-                usage.on_hull = supporting(pts, f);
+    // Free boundary triangles, and Euler: t = e_i + offset (see the module docs).
+    for (f, usage) in triangles.iter_mut() {
+        usage.on_hull = match (domain, &inner) {
+            (Domain::Points(_), _) => supporting(pts, f),
+            (Domain::Shell { outer_faces, .. }, Some((q, local))) => {
+                let on_q = f.map(|v| local[v as usize]);
+                let on_q = !on_q.contains(&u32::MAX)
+                    && q.common_facet(on_q[0] as usize, on_q[1] as usize, on_q[2] as usize)
+                        .is_some();
+                on_q || (outer_faces.is_none() && supporting(pts, f))
             }
-            let on_hull: std::collections::HashSet<[u32; 2]> = triangles
-                .iter()
-                .filter(|(_, usage)| usage.on_hull)
-                .map(|(f, _)| f)
-                .flat_map(|f| [[f[0], f[1]], [f[0], f[2]], [f[1], f[2]]])
-                .collect();
+            _ => false,
+        };
+    }
+    let mut boundary_edges: std::collections::HashSet<[u32; 2]> = triangles
+        .iter()
+        .filter(|(_, usage)| usage.on_hull)
+        .map(|(f, _)| *f)
+        .chain(facets.iter().map(|&f| crate::mesh::sorted_face(f)))
+        .flat_map(|f| [[f[0], f[1]], [f[0], f[2]], [f[1], f[2]]])
+        .collect();
+    boundary_edges.shrink_to_fit();
+    let offset = match domain {
+        // χ = 1 for a ball: t = χ − n + e_b − f_b / 2 + e_i = e_i + n − 3.
+        Domain::Polyhedron(_) => n as i64 - 3,
+        Domain::Points(_) => {
             let hull = crate::geom::Hull3::new(pts);
             let nb = (0..pts.len()).filter(|&i| hull.on_boundary(i)).count();
-            (on_hull, 2 * nb as i64 - n as i64 - 3)
+            2 * nb as i64 - n as i64 - 3
         }
+        // Lemma 4.9's n − 6 needs simplicial, disjoint polytopes; 1 is always below.
+        Domain::Shell { .. } => 1,
     };
     let mut interior_edges: Vec<([u32; 2], Vec<u32>)> = edges
         .into_iter()
@@ -176,6 +188,42 @@ pub(crate) fn candidates(domain: Domain) -> Candidates {
         interior_edges,
         offset,
     }
+}
+
+/// True when the tetrahedron `t` (points `geo`) meets the interior of `Q`: at once when
+/// an edge joins two vertices of `Q` on no common facet, else by the separation test.
+fn crosses_inner(
+    q: &super::separate::Convex,
+    local: &[u32],
+    t: &[u32; 4],
+    geo: &[Point3; 4],
+) -> bool {
+    let on_q: Vec<usize> = t
+        .iter()
+        .map(|&v| local[v as usize])
+        .filter(|&k| k != u32::MAX)
+        .map(|k| k as usize)
+        .collect();
+    for (i, &a) in on_q.iter().enumerate() {
+        if on_q[i + 1..].iter().any(|&b| q.chord(a, b)) {
+            return true;
+        }
+    }
+    q.meets_interior(geo)
+}
+
+/// A shell's `Q` and, for each point, its index among `Q`'s vertices (`u32::MAX` if
+/// not one).
+fn inner_polytope(domain: Domain) -> Option<(super::separate::Convex, Vec<u32>)> {
+    let Domain::Shell { points, inner, .. } = domain else {
+        return None;
+    };
+    let mut local = vec![u32::MAX; points.len()];
+    for (k, &v) in inner.iter().enumerate() {
+        local[v as usize] = k as u32;
+    }
+    let q = inner.iter().map(|&v| points[v as usize]).collect();
+    Some((super::separate::Convex::new(q), local))
 }
 
 /// True when the plane of `f` supports the point set (all points on one closed side).

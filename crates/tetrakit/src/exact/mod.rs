@@ -36,7 +36,7 @@
 //! **Minimising.** By Euler's formula the number of tetrahedra is `e_i + c`, with `e_i`
 //! the interior edges used. For a point set `c = 2·n_b − n − 3` (`n_b` vertices on the
 //! boundary). For a region with boundary triangles `f_b` on `e_b` edges and Euler
-//! characteristic `χ` (1 for a polyhedron, 2 for a shell), `4t = 2f_i + f_b` and
+//! characteristic `χ` (1 for a polyhedron, 2 for a shell whose polytopes share no facet), `4t = 2f_i + f_b` and
 //! `n − e + f − t = χ` give `c = χ − n + e_b − f_b / 2`: the thesis's `t = e_i + n − 3`
 //! for a polyhedron and Lemma 4.9's `t = e_i + n − 6` for disjoint simplicial shells.
 //! So the solver bounds
@@ -44,6 +44,7 @@
 //! downward from each solution found until the bound is unsatisfiable.
 
 mod encode;
+mod separate;
 
 pub use encode::Domain;
 
@@ -150,7 +151,7 @@ impl Domain<'_> {
         match self {
             Domain::Points(p) => mesh::certify_hull(p, tets),
             Domain::Polyhedron(p) => mesh::certify_polyhedron(p, tets),
-            Domain::Shell { points, faces } => mesh::certify_boundary(points, tets, faces),
+            Domain::Shell { points, inner, .. } => mesh::certify_shell(points, tets, inner),
         }
     }
 }
@@ -217,8 +218,10 @@ pub fn minimal_tetrahedralization(
     let mut vars = BasicVarManager::default();
     let tet_lits: Vec<Lit> = (0..cand.tets.len()).map(|_| vars.new_lit()).collect();
     let anchor = match domain {
-        Domain::Points(p) => Some(anchor(p, &cand).ok_or(ExactError::NoAnchor)?),
-        Domain::Polyhedron(_) | Domain::Shell { .. } => None,
+        Domain::Points(p) | Domain::Shell { points: p, .. } => {
+            Some(anchor(p, &cand).ok_or(ExactError::NoAnchor)?)
+        }
+        Domain::Polyhedron(_) => None,
     };
     add_structure(
         &mut solver,
@@ -427,8 +430,28 @@ fn chosen_indices<'a>(
     })
 }
 
+/// The interior edges `tets` use (the totalizer's variables that are true), counted on
+/// the tetrahedra themselves so that the search never depends on Euler's offset.
 fn edge_count(tets: &[[u32; 4]], cand: &Candidates) -> usize {
-    (tets.len() as i64 - cand.offset).max(0) as usize
+    let mut edges: Vec<[u32; 2]> = tets
+        .iter()
+        .flat_map(|t| {
+            [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)].map(|(i, j)| {
+                let (a, b) = (t[i], t[j]);
+                [a.min(b), a.max(b)]
+            })
+        })
+        .collect();
+    edges.sort_unstable();
+    edges.dedup();
+    edges
+        .iter()
+        .filter(|e| {
+            cand.interior_edges
+                .binary_search_by(|(x, _)| x.cmp(e))
+                .is_ok()
+        })
+        .count()
 }
 
 #[cfg(test)]

@@ -15,7 +15,7 @@ mod predicates;
 mod proximity;
 mod radical;
 
-pub use expansion::{Expansion, det3, edge_edge_side, orient3d_value, parallel};
+pub use expansion::{Expansion, det3, edge_edge_side, orient3d_value, parallel, vector};
 pub(crate) use grid::Grid2;
 pub use hull2::Hull2;
 pub use hull3::{Hull3, affine_dimension};

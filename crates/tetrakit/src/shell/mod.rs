@@ -312,7 +312,7 @@ pub fn tetrahedralize(
             .filter(|v| !inner.contains(v))
             .collect()
     };
-    let (tets, pieces) = removal::run(&mut surface, &removable, method, ctl)?;
+    let (tets, pieces) = removal::run(&mut surface, &removable, &shell.inner, method, ctl)?;
     if surface.hidden.count() > 0 {
         return Err(ShellError::Internal(format!(
             "{} inner vertices never reached the surface",

@@ -5,8 +5,9 @@
 use super::surface::{self, Surface};
 use super::{Method, ShellError};
 use crate::control::Control;
+use crate::geom::{Hull3, Point3};
 use std::cmp::Reverse;
-use std::collections::{BinaryHeap, HashSet};
+use std::collections::{BinaryHeap, HashMap, HashSet};
 
 /// The most vertices one bigcap removes (each added vertex costs a local hull).
 const BIGCAP_LIMIT: usize = 32;
@@ -128,23 +129,8 @@ impl Removal<'_, '_> {
         let Ok(poly) = crate::mesh::Polyhedron::new(points, faces) else {
             return false;
         };
-        let limit = std::time::Duration::from_secs(EXACT_PIECE_SECONDS);
-        let ctl = self.ctl.clone().with_time_limit(limit);
-        let options = crate::exact::Options {
-            unique: false,
-            any: true,
-        };
-        let found = crate::exact::minimal_tetrahedralization(
-            crate::exact::Domain::Polyhedron(&poly),
-            &options,
-            &ctl,
-        );
-        let tets = match found {
-            Ok((
-                crate::exact::Outcome::Found { tets } | crate::exact::Outcome::Optimal { tets, .. },
-                _,
-            )) => tets,
-            _ => return false,
+        let Some(tets) = self.exact_tets(crate::exact::Domain::Polyhedron(&poly)) else {
+            return false;
         };
         let tets = tets.iter().map(|t| t.map(|k| ids[k as usize])).collect();
         self.take(cut.with_tets(tets), set);
@@ -165,6 +151,70 @@ impl Removal<'_, '_> {
             }
         }
         false
+    }
+
+    /// The last resort when every removal is refused (the current hull and `Q` in
+    /// shared or parallel planes, where the flat parts of a piece would not meet earlier
+    /// tetrahedra face to face): the whole region left, `P̄ − int Q`, tetrahedralized by
+    /// the exact solver when it has at most [`crate::exact::MAX_VERTICES`] vertices, with
+    /// the surface's triangles fixed (earlier tetrahedra are on them) and the hidden
+    /// facets of `Q` free.
+    fn exact_finish(&mut self, inner: &[u32]) -> bool {
+        let q_points: Vec<Point3> = inner.iter().map(|&v| self.surface.point(v)).collect();
+        let q = Hull3::new(&q_points);
+        let local: HashMap<u32, usize> = inner.iter().enumerate().map(|(k, &v)| (v, k)).collect();
+        let on_q = |t: &[u32; 3]| {
+            let [a, b, c] = t.map(|v| local.get(&v).copied());
+            matches!((a, b, c), (Some(a), Some(b), Some(c)) if q.common_facet(a, b, c).is_some())
+        };
+        let faces: Vec<[u32; 3]> = self
+            .surface
+            .triangles()
+            .into_iter()
+            .filter(|t| !on_q(t))
+            .collect();
+        let mut ids: Vec<u32> = faces.iter().flatten().chain(inner).copied().collect();
+        ids.sort_unstable();
+        ids.dedup();
+        if faces.is_empty() || ids.len() > crate::exact::MAX_VERTICES {
+            return false;
+        }
+        let local_id = |v: u32| ids.binary_search(&v).unwrap_or(0) as u32;
+        let points: Vec<Point3> = ids.iter().map(|&v| self.surface.point(v)).collect();
+        let faces: Vec<[u32; 3]> = faces.iter().map(|f| f.map(local_id)).collect();
+        let inner_local: Vec<u32> = inner.iter().map(|&v| local_id(v)).collect();
+        let domain = crate::exact::Domain::Shell {
+            points: &points,
+            inner: &inner_local,
+            outer_faces: Some(&faces),
+        };
+        let Some(tets) = self.exact_tets(domain) else {
+            return false;
+        };
+        self.tets
+            .extend(tets.iter().map(|t| t.map(|k| ids[k as usize])));
+        self.pieces += 1;
+        self.surface.clear();
+        self.left.clear();
+        true
+    }
+
+    /// Any tetrahedralization of `domain` by the exact solver, within
+    /// [`EXACT_PIECE_SECONDS`] and the caller's control.
+    fn exact_tets(&self, domain: crate::exact::Domain) -> Option<Vec<[u32; 4]>> {
+        let limit = std::time::Duration::from_secs(EXACT_PIECE_SECONDS);
+        let ctl = self.ctl.clone().with_time_limit(limit);
+        let options = crate::exact::Options {
+            unique: false,
+            any: true,
+        };
+        match crate::exact::minimal_tetrahedralization(domain, &options, &ctl) {
+            Ok((
+                crate::exact::Outcome::Found { tets } | crate::exact::Outcome::Optimal { tets, .. },
+                _,
+            )) => Some(tets),
+            _ => None,
+        }
     }
 
     /// When every cap is refused (coplanar facets of the current hull inside `P`, where a
@@ -188,6 +238,7 @@ impl Removal<'_, '_> {
 pub(super) fn run(
     surface: &mut Surface,
     removable: &[u32],
+    inner: &[u32],
     method: Method,
     ctl: &Control,
 ) -> Result<(Vec<[u32; 4]>, usize), ShellError> {
@@ -214,7 +265,11 @@ pub(super) fn run(
             }
             let before = r.left.len();
             refused.retain(|&v| !r.cap(v));
-            if r.left.len() == before && !r.pair(&refused) && !r.exact(&refused) {
+            if r.left.len() == before
+                && !r.pair(&refused)
+                && !r.exact(&refused)
+                && !r.exact_finish(inner)
+            {
                 ctl.check()?; // the exact fallback gave up because the run was stopped
                 return Err(ShellError::Internal(format!(
                     "{} caps refused",

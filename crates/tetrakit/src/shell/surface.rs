@@ -160,6 +160,28 @@ impl<'a> Surface<'a> {
     }
 
     /// The coordinates of vertex `v`.
+    /// The live triangles, facing out.
+    pub(super) fn triangles(&self) -> Vec<[u32; 3]> {
+        self.tris
+            .iter()
+            .zip(&self.alive)
+            .filter_map(|(t, a)| a.then_some(*t))
+            .collect()
+    }
+
+    /// The surface is gone: every triangle removed, every inner vertex reached (after
+    /// the rest of the region was tetrahedralized at once).
+    pub(super) fn clear(&mut self) {
+        for id in 0..self.tris.len() as u32 {
+            if self.alive[id as usize] {
+                self.kill(id);
+            }
+        }
+        for v in self.hidden.all() {
+            self.hidden.expose(self.pts, v);
+        }
+    }
+
     pub(super) fn point(&self, v: u32) -> Point3 {
         self.pts[v as usize]
     }
