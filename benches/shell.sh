@@ -1,14 +1,16 @@
 #!/usr/bin/env bash
 # Reproduces the chapter 4 part of BENCHMARKS.md: `tetrakit shell` on nested random
-# spheres (half the points on each, gap 0.2) against TetGen's constrained Delaunay
+# spheres (half the points on each, gap 0.2) and on Bern disks (`generate bern-disk`,
+# RIDGE:RING in BERN) against TetGen's constrained Delaunay
 # tetrahedralization of the same two surfaces (the PLC of tetrakit's boundary triangles,
 # a hole inside the inner sphere; `-pQ`, and `-pYQ` which keeps the surfaces unsplit),
 # in the same run, alternating. Reports tetrahedra per vertex, Steiner points, seconds
 # (medians) and peak memory; tetrakit's time includes reading and its certificate.
-# Usage: bash benches/shell.sh      (env: SIZES, RUNS)   Needs root for apt-get.
+# Usage: bash benches/shell.sh      (env: SIZES, BERN, RUNS)   Needs root for apt-get.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 SIZES=${SIZES:-"1000 10000 100000"}
+BERN=${BERN:-"1000:250 4000:1000 10000:2500"}
 RUNS=${RUNS:-3}
 WORK=${WORK:-/tmp/tetrakit-bench-shell}
 mkdir -p "$WORK"
@@ -22,34 +24,47 @@ field() { python3 -c 'import json,sys;print(json.load(open(sys.argv[1]))[sys.arg
 elapsed() { awk '{print $1}' "$1"; }
 peak() { awk '{print int($2/1024)}' "$1"; }
 
-echo "| n | cap t/n | cap s | cap MB | bigcap t/n | bigcap s | TetGen -pQ t/n | Steiner | s | MB | TetGen -pYQ t/n | Steiner | s | ratio s (cap / -pQ) |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
-for n in $SIZES; do
-  o="$WORK/o$n.xyz"; i="$WORK/i$n.xyz"
-  "$TK" generate nested --n-outer $((n / 2)) --n-inner $((n / 2)) --gap 0.2 --seed 1 \
-    --outer-output "$o" --inner-output "$i" >/dev/null
-  "$TK" shell "$o" "$i" --json -o "$WORK/s$n.ele" >"$WORK/s.json"
-  python3 benches/shell_poly.py "$WORK/s$n.ele" "$WORK/p$n.poly" 0 0 0
+# One row: the shell OUTER INNER against TetGen on the same surfaces.
+row() {
+  local label=$1 o=$2 i=$3 key=$4
+  "$TK" shell "$o" "$i" --json -o "$WORK/s$key.ele" >"$WORK/s.json"
+  python3 benches/shell_poly.py "$WORK/s$key.ele" "$WORK/p$key.poly" 0 0 0
   tk=(); tb=(); tg=(); ty=()
   for _ in $(seq "$RUNS"); do
     /usr/bin/time -f "%e %M" -o "$WORK/t1" "$TK" shell "$o" "$i" --json >"$WORK/s.json"
     tk+=("$(elapsed "$WORK/t1")"); tkm=$(peak "$WORK/t1")
     /usr/bin/time -f "%e %M" -o "$WORK/t4" "$TK" shell "$o" "$i" --method bigcap --json >"$WORK/b.json"
     tb+=("$(elapsed "$WORK/t4")")
-    /usr/bin/time -f "%e %M" -o "$WORK/t2" tetgen -pQ "$WORK/p$n.poly" >/dev/null
+    /usr/bin/time -f "%e %M" -o "$WORK/t2" tetgen -pQ "$WORK/p$key.poly" >/dev/null
     tg+=("$(elapsed "$WORK/t2")"); tgm=$(peak "$WORK/t2")
-    /usr/bin/time -f "%e %M" -o "$WORK/t3" tetgen -pYQ "$WORK/p$n.poly" >/dev/null || true
+    /usr/bin/time -f "%e %M" -o "$WORK/t3" tetgen -pYQ "$WORK/p$key.poly" >/dev/null || true
     ty+=("$(elapsed "$WORK/t3")")
   done
-  t=$(field "$WORK/s.json" tetrahedra); nn=$(field "$WORK/s.json" n); bt=$(field "$WORK/b.json" tetrahedra)
+  t=$(field "$WORK/s.json" tetrahedra); t0=$(field "$WORK/s.json" tetrahedra_before_flips)
+  nn=$(field "$WORK/s.json" n); bt=$(field "$WORK/b.json" tetrahedra)
   tb_s=$(printf '%s\n' "${tb[@]}" | median)
   tk_s=$(printf '%s\n' "${tk[@]}" | median); tg_s=$(printf '%s\n' "${tg[@]}" | median); ty_s=$(printf '%s\n' "${ty[@]}" | median)
-  tetgen -pQ "$WORK/p$n.poly" >/dev/null
-  g_t=$(head -1 "$WORK/p$n.1.ele" | awk '{print $1}'); g_n=$(head -1 "$WORK/p$n.1.node" | awk '{print $1}')
-  tetgen -pYQ "$WORK/p$n.poly" >/dev/null || true
-  y_t=$(head -1 "$WORK/p$n.1.ele" | awk '{print $1}'); y_n=$(head -1 "$WORK/p$n.1.node" | awk '{print $1}')
-  awk -v n="$nn" -v t="$t" -v a="$tk_s" -v am="$tkm" -v bt="$bt" -v bs="$tb_s" -v gt="$g_t" -v gn="$g_n" -v b="$tg_s" -v bm="$tgm" \
+  tetgen -pQ "$WORK/p$key.poly" >/dev/null
+  g_t=$(head -1 "$WORK/p$key.1.ele" | awk '{print $1}'); g_n=$(head -1 "$WORK/p$key.1.node" | awk '{print $1}')
+  tetgen -pYQ "$WORK/p$key.poly" >/dev/null || true
+  y_t=$(head -1 "$WORK/p$key.1.ele" | awk '{print $1}'); y_n=$(head -1 "$WORK/p$key.1.node" | awk '{print $1}')
+  awk -v l="$label" -v n="$nn" -v t0="$t0" -v t="$t" -v a="$tk_s" -v am="$tkm" -v bt="$bt" -v bs="$tb_s" -v gt="$g_t" -v gn="$g_n" -v b="$tg_s" -v bm="$tgm" \
       -v yt="$y_t" -v yn="$y_n" -v c="$ty_s" 'BEGIN {
-    printf "| %d | %.2f | %.2f | %d | %.2f | %.2f | %.2f | %d | %.2f | %d | %.2f | %d | %.2f | %.2f |\n",
-      n, t / n, a, am, bt / n, bs, gt / n, gn - n, b, bm, yt / n, yn - n, c, a / b }'
+    printf "| %s | %d | %.2f | %.2f | %.2f | %d | %.2f | %.2f | %.2f | %d | %.2f | %d | %.2f | %d | %.2f | %.2f |\n",
+      l, n, t0 / n, t / n, a, am, bt / n, bs, gt / n, gn - n, b, bm, yt / n, yn - n, c, a / b }'
+}
+
+echo "| shells | n | cap t/n removals | cap t/n flipped | cap s | cap MB | bigcap t/n flipped | bigcap s | TetGen -pQ t/n | Steiner | s | MB | TetGen -pYQ t/n | Steiner | s | ratio s (cap / -pQ) |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+for n in $SIZES; do
+  o="$WORK/o$n.xyz"; i="$WORK/i$n.xyz"
+  "$TK" generate nested --n-outer $((n / 2)) --n-inner $((n / 2)) --gap 0.2 --seed 1 \
+    --outer-output "$o" --inner-output "$i" >/dev/null
+  row spheres "$o" "$i" "$n"
+done
+for d in $BERN; do
+  ridge=${d%:*}; ring=${d#*:}
+  o="$WORK/bo$ridge.xyz"; i="$WORK/bi$ridge.xyz"
+  "$TK" generate bern-disk --ridge "$ridge" --ring "$ring" --outer-output "$o" --inner-output "$i" >/dev/null
+  row "Bern disk $ridge/$ring" "$o" "$i" "b$ridge"
 done

@@ -168,10 +168,16 @@ fn minimal_tetrahedralizations() {
 
 /// Thesis ch. 4: the region between two nested convex polytopes, no Steiner point.
 fn shell_section() {
-    use tetrakit::shell::generate::{NestedParams, Shape, nested};
-    use tetrakit::shell::{Method, Shell, tetrahedralize};
-    out!("\n6. A shell (thesis ch. 4): random points on a sphere around a cube, no Steiner point.");
-    let p = NestedParams {
+    use tetrakit::shell::generate::{NestedParams, Shape, bern_disk, nested};
+    use tetrakit::shell::{Method, Shell};
+    out!(
+        "\n6. Shells (thesis ch. 4): the region between nested convex polytopes, no Steiner point."
+    );
+    let shell_of = |p: NestedParams| {
+        let (outer, inner, _) = nested(&p).ok()?;
+        Shell::new(&outer, &inner).ok()
+    };
+    let around_cube = NestedParams {
         outer: Shape::Sphere,
         inner: Shape::Cube,
         n_outer: 200,
@@ -179,36 +185,82 @@ fn shell_section() {
         gap: 0.4,
         seed: 3,
     };
-    let Ok((outer, inner, _)) = nested(&p) else {
-        out!("  (the generated cube does not fit)");
-        return;
-    };
-    let Ok(shell) = Shell::new(&outer, &inner) else {
-        out!("  (the generated shell is not nested)");
-        return;
-    };
-    let n = shell.n();
-    for method in [Method::Cap, Method::Bigcap] {
-        let start = Instant::now();
-        let result = tetrahedralize(&shell, method, &Control::new());
-        let ms = start.elapsed().as_secs_f64() * 1e3;
-        match result {
-            Ok(m) => {
-                let cert = tetrakit::mesh::certify_shell(&shell.points, &m.tets, &shell.inner);
-                out!(
-                    "  {}: {} tetrahedra for n = {n} (9n − 6 = {}), {} [{ms:.1} ms]",
-                    method.name(),
-                    m.tets.len(),
-                    9 * n - 6,
-                    match cert {
-                        Ok(()) =>
-                            "certified (verify, boundary on both hulls, exact volume)".to_string(),
-                        Err(p) => format!("NOT certified: {p}"),
-                    }
-                );
-            }
-            Err(e) => out!("  {}: {e}", method.name()),
+    if let Some(shell) = shell_of(around_cube) {
+        out!(
+            "  200 random points on a sphere around a cube (n = {}):",
+            shell.n()
+        );
+        for method in [Method::Cap, Method::Bigcap] {
+            shell_line(&shell, method);
         }
+    }
+    let small = NestedParams {
+        outer: Shape::Random,
+        inner: Shape::Sphere,
+        n_outer: 9,
+        n_inner: 6,
+        gap: 0.5,
+        seed: 4,
+    };
+    if let Some(shell) = shell_of(small) {
+        out!(
+            "  a small shell (n = {}), against the exact optimum:",
+            shell.n()
+        );
+        for method in [Method::Cap, Method::Bigcap] {
+            shell_line(&shell, method);
+        }
+        let start = Instant::now();
+        match tetrakit::shell::optimum(&shell, &Control::new()) {
+            Ok((tetrakit::exact::Outcome::Optimal { tets, .. }, _)) => out!(
+                "    optimum (SAT, every triangulation of the facets): {} tetrahedra, {} [{:.0} ms]",
+                tets.len(),
+                certified(&shell, &tets),
+                start.elapsed().as_secs_f64() * 1e3
+            ),
+            other => out!("    optimum: {other:?}"),
+        }
+    }
+    if let Some(shell) = bern_disk(1000, 250, 1)
+        .ok()
+        .and_then(|(o, i)| Shell::new(&o, &i).ok())
+    {
+        out!(
+            "  a Bern disk (n = {}), where minimum-degree cap removal is Θ(n log n); the flips recover:",
+            shell.n()
+        );
+        shell_line(&shell, Method::Cap);
+    }
+}
+
+fn certified(shell: &tetrakit::shell::Shell, tets: &[[u32; 4]]) -> String {
+    match tetrakit::mesh::certify_shell(&shell.points, tets, &shell.inner) {
+        Ok(()) => "certified".to_string(),
+        Err(p) => format!("NOT certified: {p}"),
+    }
+}
+
+/// One method on a shell: the removals' count, the count after the flips, the bound,
+/// and the certificate of the final mesh.
+fn shell_line(shell: &tetrakit::shell::Shell, method: tetrakit::shell::Method) {
+    let start = Instant::now();
+    let ctl = Control::new();
+    let result = tetrakit::shell::tetrahedralize(shell, method, &ctl).and_then(|mut m| {
+        let done = tetrakit::shell::improve(&shell.points, &mut m, &ctl)?;
+        Ok((m, done))
+    });
+    let ms = start.elapsed().as_secs_f64() * 1e3;
+    let n = shell.n();
+    match result {
+        Ok((m, done)) => out!(
+            "    {}: {} tetrahedra, {} after flips (9n − 6 = {}), {} [{ms:.0} ms]",
+            method.name(),
+            done.before,
+            m.tets.len(),
+            9 * n - 6,
+            certified(shell, &m.tets)
+        ),
+        Err(e) => out!("    {}: {e}", method.name()),
     }
 }
 

@@ -143,7 +143,8 @@ fn token_spans(text: &str) -> Vec<(usize, usize)> {
 }
 
 /// A base file set: the files to write (name, text), the file to mutate, and the commands
-/// to run on it (`{}` is the mutated file, `{out}` an output path).
+/// to run on it (`{}` is the mutated file, `{out}` an output path, `{dir}` the case's
+/// directory, where the other files are).
 struct Base {
     files: Vec<(&'static str, String)>,
     target: &'static str,
@@ -168,6 +169,18 @@ fn bases(d: &Path) -> Vec<Base> {
         &p("r.json"),
     ]);
     make(&["generate", "points2d", "--n", "30", "-o", &p("p.xyz")]);
+    make(&[
+        "generate",
+        "nested",
+        "--n-outer",
+        "30",
+        "--n-inner",
+        "12",
+        "--outer-output",
+        &p("o.xyz"),
+        "--inner-output",
+        &p("i.xyz"),
+    ]);
     let read = |name: &str| std::fs::read_to_string(d.join(name)).unwrap();
     let node = read("k.node");
     let detect = vec!["detect", "{}", "--output", "{out}.ele"];
@@ -223,6 +236,32 @@ fn bases(d: &Path) -> Vec<Base> {
             commands: vec![detect, vec!["check", "{}", "--convex"]],
         },
         Base {
+            files: vec![("o.xyz", read("o.xyz"))],
+            target: "i.xyz",
+            commands: vec![vec![
+                "shell",
+                "{dir}/o.xyz",
+                "{}",
+                "--time-limit",
+                "5",
+                "--output",
+                "{out}.ele",
+            ]],
+        },
+        Base {
+            files: vec![("i.xyz", read("i.xyz"))],
+            target: "o.xyz",
+            commands: vec![vec![
+                "shell",
+                "{}",
+                "{dir}/i.xyz",
+                "--method",
+                "bigcap",
+                "--time-limit",
+                "5",
+            ]],
+        },
+        Base {
             files: vec![],
             target: "p.xyz",
             commands: vec![
@@ -263,7 +302,11 @@ fn mutated_inputs_keep_the_cli_contract() {
                 let o = out.to_str().unwrap().to_string();
                 let args: Vec<String> = cmd
                     .iter()
-                    .map(|a| a.replace("{out}", &o).replace("{}", &f))
+                    .map(|a| {
+                        a.replace("{out}", &o)
+                            .replace("{dir}", case.to_str().unwrap())
+                            .replace("{}", &f)
+                    })
                     .collect();
                 let argv: Vec<&str> = args.iter().map(String::as_str).collect();
                 let what = format!("seed {seed}, {argv:?} (input kept in {})", case.display());

@@ -86,7 +86,10 @@ fn separates(
 ) -> bool {
     // The sign of (u × v) · (x − y): in floating point when the error bound allows,
     // exactly otherwise.
-    let (uf, vf) = ([0, 1, 2].map(|i| u[i].estimate()), [0, 1, 2].map(|i| v[i].estimate()));
+    let (uf, vf) = (
+        [0, 1, 2].map(|i| u[i].estimate()),
+        [0, 1, 2].map(|i| v[i].estimate()),
+    );
     let n = [
         uf[1] * vf[2] - uf[2] * vf[1],
         uf[2] * vf[0] - uf[0] * vf[2],

@@ -7,16 +7,27 @@
 //! star-shaped from its tip and coned from it (Lemma 4.1), see [`surface`](self) for the
 //! exact construction of a piece's bottom.
 //! - [`Method::Cap`]: Bern's cap removal (§4.1): one vertex at a time, always one of
-//!   minimum degree among the outer vertices still on `P̄`. `O(n log n)` tetrahedra in
-//!   the worst case (`n(2 + 6H_n)`).
+//!   minimum degree among the outer vertices still on `P̄`. `Θ(n log n)` tetrahedra in
+//!   the worst case (`n(2 + 6H_n)`), met by the Bern disks of
+//!   [`generate::bern_disk`]: 9.25 per vertex at n = 3002, above 9n − 6.
 //! - [`Method::Bigcap`]: bigcaps (§4.2): from each tip, in the same order, a set of
-//!   outer vertices removed at once. The thesis's `U_v` (the vertices whose incident
-//!   facets the tip sees past `Q`) is exactly the condition that the piece be
-//!   star-shaped from the tip (Lemma 4.1), which [`surface`](self)'s plan checks; the
-//!   set is grown greedily (neighbours in increasing number, kept while the plan passes,
-//!   at most 32), a polynomial stand-in for step 3a's minimization. Step 6's chains and
-//!   the S-constraints of the 9n − 6 proof are not built yet; on random spheres the
-//!   greedy bigcaps give *more* tetrahedra than caps (BENCHMARKS.md).
+//!   outer vertices removed at once, grown greedily (neighbours in increasing number,
+//!   kept while the piece stays star-shaped from the tip and passes every check, at most
+//!   32). Step 6's chains and the S-constraints of the 9n − 6 proof are not built: on a
+//!   Bern disk no two neighbouring ring vertices form a piece star-shaped from either
+//!   (the surface's plan refuses "a bottom triangle is behind the tip"), although both
+//!   are visible past `Q` with their facets, so the thesis's `U_v` does not give a
+//!   star-shaped bigcap there (Lemma 4.1 assumes it does), and bigcaps equal caps.
+//!
+//! **Flips** ([`improve`]): after the removals, exact 3-2 flips, and above 3 tetrahedra
+//! per vertex Lawson's flips towards the constrained Delaunay tetrahedralization, kept
+//! when they end lower ([`crate::flip`]). They keep both surfaces and add no vertex; on
+//! Bern disks they reach TetGen's count (3.0 per vertex), on random spheres the 3-2
+//! flips remove about 6 %. This, not the removal, is what keeps every output we have
+//! found within 9n − 6.
+//!
+//! **Optimum** ([`optimum`]): for small shells the exact solver's minimum over every
+//! tetrahedralization (polygon facets triangulated freely), [`crate::exact::Domain::Shell`].
 //!
 //! Degenerate inputs: a facet of `P̄` that lies inside `P` (made by earlier pieces, in a
 //! plane through several vertices) must be met face to face, so a tip that is not an ear
@@ -25,10 +36,10 @@
 //! prisms: two tips each coplanar with a triangle of the other's star that has
 //! tetrahedra behind it, so no cone from either tiles the piece), the piece of one tip,
 //! or of a tip and a neighbour, is tetrahedralized as a polyhedron by the exact solver
-//! ([`crate::exact`], at most 60 vertices and 10 s). An inner cube sharing two facet
-//! planes with the outer one can still leave every piece refused (the piece is then not
-//! a polyhedron: its bottom lies partly on an outer facet): the answer is
-//! [`ShellError::Internal`], never an uncertified mesh.
+//! ([`crate::exact`], at most 60 vertices and 10 s), and last the whole region left
+//! (cubes in cubes, where planes of `P̄` through tips are parallel to facets of `Q`): the
+//! surface's triangles fixed, `Q`'s facets free, at most 60 vertices. Beyond that the
+//! answer is [`ShellError::Internal`], never an uncertified mesh.
 //!
 //! **Input.** `P` and `Q` are the exact convex hulls of two point sets ([`Shell::new`]).
 //! Their vertices are the extreme points; other points (inside a hull, or on it but not
