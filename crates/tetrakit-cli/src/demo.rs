@@ -190,9 +190,7 @@ fn shell_section() {
             "  200 random points on a sphere around a cube (n = {}):",
             shell.n()
         );
-        for method in [Method::Cap, Method::Bigcap] {
-            shell_line(&shell, method);
-        }
+        both_methods(&shell);
     }
     let small = NestedParams {
         outer: Shape::Random,
@@ -207,9 +205,7 @@ fn shell_section() {
             "  a small shell (n = {}), against the exact optimum:",
             shell.n()
         );
-        for method in [Method::Cap, Method::Bigcap] {
-            shell_line(&shell, method);
-        }
+        both_methods(&shell);
         let start = Instant::now();
         match tetrakit::shell::optimum(&shell, &Control::new()) {
             Ok((tetrakit::exact::Outcome::Optimal { tets, .. }, _)) => out!(
@@ -237,6 +233,15 @@ fn certified(shell: &tetrakit::shell::Shell, tets: &[[u32; 4]]) -> String {
     match tetrakit::mesh::certify_shell(&shell.points, tets, &shell.inner) {
         Ok(()) => "certified".to_string(),
         Err(p) => format!("NOT certified: {p}"),
+    }
+}
+
+fn both_methods(shell: &tetrakit::shell::Shell) {
+    for method in [
+        tetrakit::shell::Method::Cap,
+        tetrakit::shell::Method::Bigcap,
+    ] {
+        shell_line(shell, method);
     }
 }
 

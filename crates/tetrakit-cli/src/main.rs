@@ -362,12 +362,8 @@ enum GenKind {
         /// Seed (jitters the ring heights).
         #[arg(long, default_value_t = 1)]
         seed: u64,
-        /// The outer points: .xyz, .txt, .node or .json.
-        #[arg(long)]
-        outer_output: PathBuf,
-        /// The inner points: .xyz, .txt, .node or .json.
-        #[arg(long)]
-        inner_output: PathBuf,
+        #[command(flatten)]
+        out: PairOutput,
     },
     /// Points on two skew lines: Θ(n²) tetrahedra, the thesis's worst case for m.
     SkewLines {
@@ -399,6 +395,13 @@ struct NestedArgs {
     /// Seed.
     #[arg(long, default_value_t = 1)]
     seed: u64,
+    #[command(flatten)]
+    out: PairOutput,
+}
+
+/// Where a generated shell's two point sets go.
+#[derive(Args, Clone)]
+struct PairOutput {
     /// The outer points: .xyz, .txt, .node or .json.
     #[arg(long)]
     outer_output: PathBuf,
@@ -533,17 +536,16 @@ fn run(cmd: Cmd) -> CmdResult {
         }),
         Cmd::Generate(GenerateArgs {
             kind: GenKind::Nested(a),
-        }) => shell::generate_nested(&a.params(), &a.outer_output, &a.inner_output),
+        }) => shell::generate_nested(&a.params(), &a.out.outer_output, &a.out.inner_output),
         Cmd::Generate(GenerateArgs {
             kind:
                 GenKind::BernDisk {
                     ridge,
                     ring,
                     seed,
-                    outer_output,
-                    inner_output,
+                    out,
                 },
-        }) => shell::generate_bern_disk(ridge, ring, seed, &outer_output, &inner_output),
+        }) => shell::generate_bern_disk(ridge, ring, seed, &out.outer_output, &out.inner_output),
         Cmd::Generate(GenerateArgs {
             kind:
                 GenKind::Points2d {

@@ -143,6 +143,15 @@ fn sorted<const N: usize>(mut v: [u32; N]) -> [u32; N] {
     v
 }
 
+/// The six faces of the bipyramid over the triangle `t` with apexes `p` and `q`, sorted.
+fn bipyramid_faces(t: [u32; 3], p: u32, q: u32) -> Vec<[u32; 3]> {
+    let [a, b, c] = t;
+    [(a, b), (b, c), (c, a)]
+        .iter()
+        .flat_map(|&(x, y)| [sorted([x, y, p]), sorted([x, y, q])])
+        .collect()
+}
+
 /// The four faces of `t`, sorted.
 fn faces(t: &[u32; 4]) -> [[u32; 3]; 4] {
     [0, 1, 2, 3].map(|k| {
@@ -236,12 +245,7 @@ impl<'a> Mesh<'a> {
         e: u32,
     ) -> Option<Vec<[u32; 3]>> {
         let [a, b, c] = key;
-        let s = [
-            self.orient(d, e, a, b),
-            self.orient(d, e, b, c),
-            self.orient(d, e, c, a),
-        ];
-        if s[0] == 0 || s.iter().any(|&x| x != s[0]) {
+        if !self.line_through(d, e, key) {
             return None;
         }
         self.remove(t1);
@@ -249,12 +253,18 @@ impl<'a> Mesh<'a> {
         for (x, y) in [(a, b), (b, c), (c, a)] {
             self.add([x, y, d, e]);
         }
-        Some(
-            [(a, b), (b, c), (c, a)]
-                .iter()
-                .flat_map(|&(x, y)| [sorted([x, y, d]), sorted([x, y, e])])
-                .collect(),
-        )
+        Some(bipyramid_faces(key, d, e))
+    }
+
+    /// True when the line `pq` passes through the interior of the triangle `t`.
+    fn line_through(&self, p: u32, q: u32, t: [u32; 3]) -> bool {
+        let [a, b, c] = t;
+        let s = [
+            self.orient(p, q, a, b),
+            self.orient(p, q, b, c),
+            self.orient(p, q, c, a),
+        ];
+        s[0] != 0 && s.iter().all(|&x| x == s[0])
     }
 
     /// The 3-2 flip removing the edge `ab`, if it has degree 3, is interior, and crosses
@@ -265,15 +275,9 @@ impl<'a> Mesh<'a> {
             return None;
         }
         let ([t1, t2, t3], [c, d, e]) = self.ring(a, b, t0)?;
-        if self.orient(c, d, e, a) * self.orient(c, d, e, b) >= 0 {
-            return None;
-        }
-        let s = [
-            self.orient(a, b, c, d),
-            self.orient(a, b, d, e),
-            self.orient(a, b, e, c),
-        ];
-        if s[0] == 0 || s.iter().any(|&x| x != s[0]) {
+        if self.orient(c, d, e, a) * self.orient(c, d, e, b) >= 0
+            || !self.line_through(a, b, [c, d, e])
+        {
             return None;
         }
         for t in [t1, t2, t3] {
@@ -281,12 +285,7 @@ impl<'a> Mesh<'a> {
         }
         self.add([c, d, e, a]);
         self.add([c, d, e, b]);
-        Some(
-            [(c, d), (d, e), (e, c)]
-                .iter()
-                .flat_map(|&(x, y)| [sorted([x, y, a]), sorted([x, y, b])])
-                .collect(),
-        )
+        Some(bipyramid_faces([c, d, e], a, b))
     }
 
     /// For an interior edge `ab` of degree 3 on the tetrahedron `t0`: its three
