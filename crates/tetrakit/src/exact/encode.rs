@@ -158,14 +158,13 @@ pub(crate) fn candidates(domain: Domain) -> Candidates {
             _ => false,
         };
     }
-    let mut boundary_edges: std::collections::HashSet<[u32; 2]> = triangles
+    let boundary_edges: std::collections::HashSet<[u32; 2]> = triangles
         .iter()
         .filter(|(_, usage)| usage.on_hull)
         .map(|(f, _)| *f)
         .chain(facets.iter().map(|&f| crate::mesh::sorted_face(f)))
         .flat_map(|f| [[f[0], f[1]], [f[0], f[2]], [f[1], f[2]]])
         .collect();
-    boundary_edges.shrink_to_fit();
     let offset = match domain {
         // χ = 1 for a ball: t = χ − n + e_b − f_b / 2 + e_i = e_i + n − 3.
         Domain::Polyhedron(_) => n as i64 - 3,

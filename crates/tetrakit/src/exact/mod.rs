@@ -27,11 +27,13 @@
 //! implied, which keeps the formula near-linear in the number of candidates. Every answer
 //! is still certified afterwards by [`mesh::verify`].
 //!
-//! **A region with a hole** ([`Domain::Shell`], the region between nested polytopes) is
-//! the same argument with two boundary surfaces: next to an inner facet, on the hole's
-//! side, no candidate uses it (candidates on a facet lie on the region's side), so the
-//! count is 0 throughout the hole and no tetrahedron inside it is chosen; the region's
-//! interior is connected and the count there is 1.
+//! **A region with a hole** ([`Domain::Shell`], the region between nested polytopes
+//! `Q ⊆ P`): candidates are also kept off the interior of `Q` (an exact separating-axis
+//! test), triangles on a facet of `Q` (and on a facet of `P`, unless its triangles are
+//! given) are used at most once, and an anchor is covered once, as for a point set. The
+//! count is 0 inside `Q` (no candidate reaches it) and outside `P`, constant on the
+//! region's interior (connected), 1 at the anchor; so the region is covered exactly
+//! once, and its boundary triangles are those where the count changes.
 //!
 //! **Minimising.** By Euler's formula the number of tetrahedra is `e_i + c`, with `e_i`
 //! the interior edges used. For a point set `c = 2·n_b − n − 3` (`n_b` vertices on the
