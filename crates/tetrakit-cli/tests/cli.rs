@@ -909,4 +909,54 @@ fn shell_bad_input_and_time_limit() {
         &g(&["--outer", "cube", "--n-outer", "5"]),
         "at least 8 points",
     );
+    let disk = |ridge: &str| {
+        run(&[
+            "generate",
+            "bern-disk",
+            "--ridge",
+            ridge,
+            "--ring",
+            "10",
+            "--outer-output",
+            s(&o),
+            "--inner-output",
+            s(&i),
+        ])
+    };
+    one_line(&disk("2"), "at least 3 ridge and 3 ring points");
+}
+
+/// A Bern disk: the removals exceed 9n − 6, the flips (on by default) bring the mesh
+/// within it and say so in JSON; `--no-flips` leaves the removals' mesh and `flips` null.
+#[test]
+fn shell_flips_on_a_bern_disk() {
+    let d = dir("bern");
+    let (o, i) = (d.join("o.xyz"), d.join("i.xyz"));
+    let g = run(&[
+        "generate",
+        "bern-disk",
+        "--ridge",
+        "2500",
+        "--ring",
+        "250",
+        "--outer-output",
+        s(&o),
+        "--inner-output",
+        s(&i),
+    ]);
+    assert!(g.status.success(), "{}", String::from_utf8_lossy(&g.stderr));
+    let v = json(&run(&["shell", s(&o), s(&i), "--json"]));
+    assert_eq!(v["verdict"], "yes");
+    let (t, before, bound) = (
+        v["tetrahedra"].as_u64(),
+        v["tetrahedra_before_flips"].as_u64(),
+        v["bound"].as_u64(),
+    );
+    assert!(before > bound && t <= bound, "{v}");
+    assert!(v["flips"]["delaunay"].is_object(), "{v}");
+    let raw = json(&run(&["shell", s(&o), s(&i), "--json", "--no-flips"]));
+    assert_eq!(
+        (raw["tetrahedra"].as_u64(), raw["flips"].is_null()),
+        (before, true)
+    );
 }
