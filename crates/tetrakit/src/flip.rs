@@ -70,12 +70,9 @@ pub fn delaunay(
     keys.sort_unstable();
     let mut queue: VecDeque<[u32; 3]> = keys.into();
     let mut flips = Flips::default();
-    let mut steps = 0usize;
+    let mut steps = Steps::new(ctl);
     while let Some(key) = queue.pop_front() {
-        steps += 1;
-        if steps.is_multiple_of(4096) {
-            ctl.check()?;
-        }
+        steps.tick()?;
         let Some([t1, t2]) = m.pair(&key) else {
             continue;
         };
@@ -111,12 +108,9 @@ pub fn reduce(
     let mut m = Mesh::new(points, tets);
     let mut queue: VecDeque<([u32; 2], u32)> = m.edges().into();
     let mut done = 0;
-    let mut steps = 0usize;
+    let mut steps = Steps::new(ctl);
     while let Some(([a, b], t)) = queue.pop_front() {
-        steps += 1;
-        if steps.is_multiple_of(4096) {
-            ctl.check()?;
-        }
+        steps.tick()?;
         if m.three_two(a, b, t).is_some() {
             done += 1;
             // The edges of the two new tetrahedra may have reached degree 3.
@@ -128,6 +122,26 @@ pub fn reduce(
     }
     *tets = m.into_tets();
     Ok(done)
+}
+
+/// A step counter that asks the control every 4096 steps.
+struct Steps<'c> {
+    ctl: &'c Control,
+    n: usize,
+}
+
+impl<'c> Steps<'c> {
+    fn new(ctl: &'c Control) -> Self {
+        Steps { ctl, n: 0 }
+    }
+
+    fn tick(&mut self) -> Result<(), Stopped> {
+        self.n += 1;
+        if self.n.is_multiple_of(4096) {
+            self.ctl.check()?;
+        }
+        Ok(())
+    }
 }
 
 /// Tetrahedra with their faces: each sorted face to the (at most two) tetrahedra on it.
