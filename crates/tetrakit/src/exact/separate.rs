@@ -84,8 +84,11 @@ fn separates(
     a: &[Point3],
     b: &[Point3],
 ) -> bool {
-    // The sign of (u × v) · (x − y): in floating point when the error bound allows,
-    // exactly otherwise.
+    // The sign of (u × v) · (x − y): in floating point when the value clears an error
+    // bound, exactly otherwise. The rounded value (the estimates of u and v, the cross
+    // product, x − y and the dot product, each step off by at most 2⁻⁵³ of its size) is
+    // within about 10 · 2⁻⁵³ of the permanent Σ |n_i| |w_i| of the true one, far inside
+    // the 10⁻¹² of it used: a filter, never the decision near zero.
     let (uf, vf) = (
         [0, 1, 2].map(|i| u[i].estimate()),
         [0, 1, 2].map(|i| v[i].estimate()),
