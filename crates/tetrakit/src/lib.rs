@@ -24,6 +24,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod constrain;
 pub mod control;
 pub mod detect;
 pub mod exact;

@@ -22,9 +22,11 @@ fn allowed(top: &str) -> Vec<&'static str> {
         _ => &["geom", "mesh"],
     };
     // `io` writes planar results; the shell hands pieces no cone tiles to the exact
-    // solver and improves its meshes by flips.
+    // solver and improves its meshes by flips; `constrain` asks `detect` first and the
+    // exact solver after.
     let extra: &[&str] = match top {
         "io" => &["planar"],
+        "constrain" => &["detect", "exact"],
         "shell" => &["exact", "flip"],
         _ => &[],
     };

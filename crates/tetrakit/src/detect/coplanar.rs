@@ -11,21 +11,12 @@ use super::Cells;
 use super::graph::Graph;
 use super::rotation::{check_chains, local_crossing, trace_faces};
 use super::witness::{Witness, WitnessKind};
-use crate::geom::{Hull2, Point2, Point3, drop_axis, orient2d, projection_axis};
+use crate::geom::{Hull2, Point2, Point3, orient2d, project_to_plane};
 use crate::mesh::verify_triangulation;
 use crate::numbering::ids;
 
-/// Points projected faithfully to 2D (orientation preserved for some fixed normal).
-pub(crate) fn project(points: &[Point3]) -> Option<Vec<Point2>> {
-    let a = &points[0];
-    let b = points.iter().find(|p| *p != a)?;
-    let c = points.iter().find(|c| projection_axis(a, b, c).is_some())?;
-    let axis = projection_axis(a, b, c)?;
-    Some(points.iter().map(|p| drop_axis(p, axis)).collect())
-}
-
 pub(super) fn detect(points: &[Point3], g: &Graph) -> (usize, Result<Cells, Witness>) {
-    let Some(p) = project(points) else {
+    let Some(p) = project_to_plane(points) else {
         return (
             points.len(),
             Err(Witness::new(

@@ -75,7 +75,7 @@ pub fn forms_tetrahedralization(points: &[Point3], segments: &[(u32, u32)]) -> b
             verify(points, &tets, Some(&hull)).is_valid() && edges_of(&tets) == want
         }
         2 => {
-            let Some(p2) = crate::detect::coplanar::project(points) else {
+            let Some(p2) = crate::geom::project_to_plane(points) else {
                 return false;
             };
             let mut tris = Vec::new();

@@ -1,8 +1,9 @@
 //! Candidate tetrahedra and the CNF of "these candidates form a tetrahedralization".
 
+use crate::control::Control;
 use crate::geom::{
     Point3, orient2d_drop, orient3d, point_in_closed_tetrahedron, projection_axis,
-    triangle_meets_tet,
+    segment_meets_tet_improperly, triangle_meets_tet,
 };
 use crate::mesh::Polyhedron;
 use crate::rng::Rng;
@@ -72,53 +73,170 @@ pub(crate) struct Candidates {
     pub(crate) triangles: HashMap<[u32; 3], TriangleUse>,
     /// Every edge not on the domain's boundary, with the candidates containing it.
     pub(crate) interior_edges: Vec<([u32; 2], Vec<u32>)>,
+    /// For each required segment ([`Edges::required`]), the candidates having it as an
+    /// edge.
+    pub(crate) required: Vec<Vec<u32>>,
     /// The number of tetrahedra is `interior edges used + offset`.
     pub(crate) offset: i64,
 }
 
-/// Enumerates candidates: every 4-subset of vertices that spans a tetrahedron whose
-/// closed set holds no other vertex; for a polyhedron, also no facet meeting it other
-/// than in shared vertices and edges, and the inner side of any facet it has.
-pub(crate) fn candidates(domain: Domain) -> Candidates {
+/// Which edges a tetrahedralization may, or must, have: the TETRAD and CT problems of
+/// thesis §2.5–2.6. The default is no restriction.
+///
+/// ```
+/// use tetrakit::exact::Edges;
+/// let l = [[0, 1], [0, 2]];
+/// let within = Edges { allowed: Some(&l), ..Edges::default() };
+/// assert!(within.required.is_empty());
+/// ```
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Edges<'a> {
+    /// Only these segments may be edges (TETRAD: the segment set *contains* the edge
+    /// set); a candidate tetrahedron has all six edges among them.
+    pub allowed: Option<&'a [[u32; 2]]>,
+    /// Every one of these segments must be an edge (CT: a constrained
+    /// tetrahedralization); a candidate meets none of them other than in shared vertices
+    /// or as one of its edges. They must not cross each other nor pass through a vertex
+    /// (checked by the caller: such input has no answer to search for).
+    pub required: &'a [[u32; 2]],
+}
+
+/// More 4-cliques of the allowed edges than the solver takes.
+pub(crate) struct TooMany(pub(crate) usize);
+
+/// The largest number of candidate tetrahedra enumerated.
+pub const MAX_CANDIDATES: usize = 4_000_000;
+
+/// Enumerates candidates: every 4-subset of vertices, with all six edges allowed, that
+/// spans a tetrahedron whose closed set holds no other vertex and meets no required
+/// segment improperly; for a polyhedron, also no facet meeting it other than in shared
+/// vertices and edges, and the inner side of any facet it has. `None` once `ctl` stops.
+pub(crate) fn candidates(
+    domain: Domain,
+    edges: Edges,
+    ctl: &Control,
+) -> Result<Option<Candidates>, TooMany> {
     let pts = domain.points();
-    let n = pts.len() as u32;
-    let mut tets = Vec::new();
     let facets: Vec<[u32; 3]> = domain.faces().to_vec();
     let facet_set: HashMap<[u32; 3], [u32; 3]> = facets
         .iter()
         .map(|&f| (crate::mesh::sorted_face(f), f))
         .collect();
     let inner = inner_polytope(domain);
+    let cliques = four_cliques(pts.len(), edges.allowed)?;
+    let empty = EmptinessIndex::new(pts);
+    let mut tets = Vec::new();
+    for (k, t) in cliques.into_iter().enumerate() {
+        if k % 4096 == 0 && ctl.is_stopped() {
+            return Ok(None);
+        }
+        let geo = t.map(|v| pts[v as usize]);
+        if orient3d(&geo[0], &geo[1], &geo[2], &geo[3]) == 0 || !empty.is_empty(&geo) {
+            continue;
+        }
+        if !facets.is_empty() && !fits_polyhedron(pts, &facets, &facet_set, t) {
+            continue;
+        }
+        if inner
+            .as_ref()
+            .is_some_and(|(q, local)| crosses_inner(q, local, &t, &geo))
+        {
+            continue;
+        }
+        if edges.required.iter().any(|&s| {
+            segment_meets_tet_improperly(&pts[s[0] as usize], &pts[s[1] as usize], s, &geo, &t)
+        }) {
+            continue;
+        }
+        tets.push(t);
+    }
+    Ok(Some(structure(domain, edges, tets, inner.as_ref())))
+}
+
+/// The sorted 4-subsets `a < b < c < d` whose six pairs are all allowed (all of them
+/// when `allowed` is `None`), or [`TooMany`].
+fn four_cliques(n: usize, allowed: Option<&[[u32; 2]]>) -> Result<Vec<[u32; 4]>, TooMany> {
+    // Forward adjacency: the neighbours above each vertex, sorted.
+    let up: Vec<Vec<u32>> = match allowed {
+        None => (0..n as u32).map(|a| (a + 1..n as u32).collect()).collect(),
+        Some(list) => {
+            let mut up = vec![Vec::new(); n];
+            for &[a, b] in list {
+                if a != b {
+                    up[a.min(b) as usize].push(a.max(b));
+                }
+            }
+            for l in &mut up {
+                l.sort_unstable();
+                l.dedup();
+            }
+            up
+        }
+    };
+    let meet = |x: &[u32], y: &[u32]| -> Vec<u32> {
+        x.iter()
+            .filter(|v| y.binary_search(v).is_ok())
+            .copied()
+            .collect()
+    };
+    let mut out = Vec::new();
     for a in 0..n {
-        for b in a + 1..n {
-            for c in b + 1..n {
-                for d in c + 1..n {
-                    let t = [a, b, c, d];
-                    let geo = t.map(|v| pts[v as usize]);
-                    if orient3d(&geo[0], &geo[1], &geo[2], &geo[3]) == 0 {
-                        continue;
+        for &b in &up[a] {
+            let ab = meet(&up[a], &up[b as usize]);
+            for (i, &c) in ab.iter().enumerate() {
+                for &d in &ab[i + 1..] {
+                    if up[c as usize].binary_search(&d).is_ok() {
+                        out.push([a as u32, b, c, d]);
+                        if out.len() > MAX_CANDIDATES {
+                            return Err(TooMany(out.len()));
+                        }
                     }
-                    if (0..n).any(|x| {
-                        !t.contains(&x) && point_in_closed_tetrahedron(&pts[x as usize], &geo)
-                    }) {
-                        continue;
-                    }
-                    if !facets.is_empty() && !fits_polyhedron(pts, &facets, &facet_set, t) {
-                        continue;
-                    }
-                    if inner
-                        .as_ref()
-                        .is_some_and(|(q, local)| crosses_inner(q, local, &t, &geo))
-                    {
-                        continue;
-                    }
-                    tets.push(t);
                 }
             }
         }
     }
+    Ok(out)
+}
+
+/// The points sorted by x, so that a tetrahedron's emptiness test looks only at those in
+/// its bounding box's x-range.
+struct EmptinessIndex<'a> {
+    pts: &'a [Point3],
+    by_x: Vec<u32>,
+}
+
+impl<'a> EmptinessIndex<'a> {
+    fn new(pts: &'a [Point3]) -> Self {
+        let mut by_x: Vec<u32> = (0..pts.len() as u32).collect();
+        by_x.sort_by(|&i, &j| pts[i as usize][0].total_cmp(&pts[j as usize][0]));
+        EmptinessIndex { pts, by_x }
+    }
+
+    /// True when no point other than the corners lies in the closed tetrahedron `geo`.
+    fn is_empty(&self, geo: &[Point3; 4]) -> bool {
+        let (lo, hi) = crate::geom::bounding_box(geo);
+        let x = |i: &u32| self.pts[*i as usize][0];
+        let from = self.by_x.partition_point(|i| x(i) < lo[0]);
+        let to = self.by_x.partition_point(|i| x(i) <= hi[0]);
+        self.by_x[from..to].iter().all(|&i| {
+            let p = &self.pts[i as usize];
+            (1..3).any(|k| p[k] < lo[k] || p[k] > hi[k]) || !point_in_closed_tetrahedron(p, geo)
+        })
+    }
+}
+
+/// The triangles, edges and Euler offset of the candidates `tets`.
+fn structure(
+    domain: Domain,
+    edges: Edges,
+    tets: Vec<[u32; 4]>,
+    inner: Option<&(super::separate::Convex, Vec<u32>)>,
+) -> Candidates {
+    let pts = domain.points();
+    let n = pts.len() as u32;
+    let facets = domain.faces();
     let mut triangles: HashMap<[u32; 3], TriangleUse> = HashMap::new();
-    let mut edges: HashMap<[u32; 2], Vec<u32>> = HashMap::new();
+    let mut holders: HashMap<[u32; 2], Vec<u32>> = HashMap::new();
     for (i, t) in tets.iter().enumerate() {
         for k in 0..4 {
             let mut f = [0u32; 3];
@@ -140,13 +258,13 @@ pub(crate) fn candidates(domain: Domain) -> Candidates {
         }
         for x in 0..4 {
             for y in x + 1..4 {
-                edges.entry([t[x], t[y]]).or_default().push(i as u32);
+                holders.entry([t[x], t[y]]).or_default().push(i as u32);
             }
         }
     }
     // Free boundary triangles, and Euler: t = e_i + offset (see the module docs).
     for (f, usage) in triangles.iter_mut() {
-        usage.on_hull = match (domain, &inner) {
+        usage.on_hull = match (domain, inner) {
             (Domain::Points(_), _) => supporting(pts, f),
             (Domain::Shell { outer_faces, .. }, Some((q, local))) => {
                 let on_q = f.map(|v| local[v as usize]);
@@ -176,7 +294,17 @@ pub(crate) fn candidates(domain: Domain) -> Candidates {
         // Lemma 4.9's n − 6 needs simplicial, disjoint polytopes; 1 is always below.
         Domain::Shell { .. } => 1,
     };
-    let mut interior_edges: Vec<([u32; 2], Vec<u32>)> = edges
+    let required = edges
+        .required
+        .iter()
+        .map(|&[a, b]| {
+            holders
+                .get(&[a.min(b), a.max(b)])
+                .cloned()
+                .unwrap_or_default()
+        })
+        .collect();
+    let mut interior_edges: Vec<([u32; 2], Vec<u32>)> = holders
         .into_iter()
         .filter(|(e, _)| !boundary_edges.contains(e))
         .collect();
@@ -185,6 +313,7 @@ pub(crate) fn candidates(domain: Domain) -> Candidates {
         tets,
         triangles,
         interior_edges,
+        required,
         offset,
     }
 }

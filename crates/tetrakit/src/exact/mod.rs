@@ -48,12 +48,17 @@
 mod encode;
 mod separate;
 
-pub use encode::Domain;
+mod proof;
+
+pub use encode::{Domain, Edges, MAX_CANDIDATES};
+
+pub use proof::{Proof, prove_infeasible};
 
 use crate::control::Control;
 use crate::mesh;
 use encode::{Candidates, anchor, candidates};
 use rustsat::encodings::card::{BoundUpper, BoundUpperIncremental, Totalizer};
+use rustsat::instances::Cnf;
 use rustsat::instances::{BasicVarManager, ManageVars};
 use rustsat::solvers::{Solve, SolveIncremental, SolverResult};
 use rustsat::types::{Clause, Lit, TernaryVal};
@@ -109,6 +114,46 @@ pub struct Stats {
     pub interior_edges: usize,
     /// SAT calls.
     pub calls: usize,
+    /// With [`Outcome::Infeasible`]: the short reason found before any SAT call, if any.
+    pub obstacle: Option<Obstacle>,
+}
+
+/// A short reason that no tetrahedralization exists, found from the candidates alone
+/// (every vertex, required segment and facet must belong to a chosen tetrahedron).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Obstacle {
+    /// No candidate tetrahedron at all.
+    NoCandidate,
+    /// This vertex is in no candidate.
+    UncoveredVertex(u32),
+    /// This required segment is an edge of no candidate.
+    UnusableSegment([u32; 2]),
+    /// This facet of the polyhedron is a face of no candidate.
+    UncoveredFacet([u32; 3]),
+}
+
+impl Obstacle {
+    /// The first obstacle of the candidates, if any.
+    fn of(domain: Domain, edges: Edges, cand: &Candidates) -> Option<Obstacle> {
+        if cand.tets.is_empty() {
+            return Some(Obstacle::NoCandidate);
+        }
+        let mut covered = vec![false; domain.points().len()];
+        for &v in cand.tets.iter().flatten() {
+            covered[v as usize] = true;
+        }
+        if let Some(v) = covered.iter().position(|&c| !c) {
+            return Some(Obstacle::UncoveredVertex(v as u32));
+        }
+        if let Some(k) = cand.required.iter().position(|h| h.is_empty()) {
+            return Some(Obstacle::UnusableSegment(edges.required[k]));
+        }
+        domain
+            .faces()
+            .iter()
+            .find(|&&f| !cand.triangles.contains_key(&crate::mesh::sorted_face(f)))
+            .map(|&f| Obstacle::UncoveredFacet(f))
+    }
 }
 
 /// Why the solver could not run.
@@ -118,8 +163,13 @@ pub enum ExactError {
     Flat,
     /// More vertices than the candidate enumeration handles.
     TooLarge(usize),
+    /// More candidate tetrahedra (4-cliques of the allowed segments) than the solver
+    /// takes.
+    TooManyCandidates(usize),
     /// No anchor point could be placed (not expected; reported rather than guessed).
     NoAnchor,
+    /// Writing a formula or proof failed.
+    Io(String),
 }
 
 impl std::fmt::Display for ExactError {
@@ -130,9 +180,14 @@ impl std::fmt::Display for ExactError {
                 f,
                 "{n} vertices: the exact solver enumerates C(n,4) candidate tetrahedra and accepts at most {MAX_VERTICES}"
             ),
+            ExactError::TooManyCandidates(k) => write!(
+                f,
+                "more than {k} candidate tetrahedra (4-cliques of the segments): the exact solver takes at most {MAX_CANDIDATES}"
+            ),
             ExactError::NoAnchor => {
                 write!(f, "could not place an anchor point in general position")
             }
+            ExactError::Io(e) => write!(f, "writing the formula or proof: {e}"),
         }
     }
 }
@@ -158,8 +213,13 @@ impl Domain<'_> {
     }
 }
 
-/// The largest input the candidate enumeration accepts.
+/// The largest input the candidate enumeration accepts when every 4-subset is a
+/// candidate (no [`Edges::allowed`]).
 pub const MAX_VERTICES: usize = 60;
+
+/// The largest input with [`Edges::allowed`] (its 4-cliques are the candidates, at most
+/// [`MAX_CANDIDATES`] of them).
+pub const MAX_RESTRICTED_VERTICES: usize = 1_000_000;
 
 /// The run-control, asked by the SAT solver at its periodic stop check.
 #[derive(Default)]
@@ -198,41 +258,60 @@ pub fn minimal_tetrahedralization(
     options: &Options,
     ctl: &Control,
 ) -> Result<(Outcome, Stats), ExactError> {
-    let pts = domain.points();
-    if pts.len() > MAX_VERTICES {
-        return Err(ExactError::TooLarge(pts.len()));
-    }
-    if crate::geom::affine_dimension(pts) < 3 {
-        return Err(ExactError::Flat);
-    }
-    let cand = candidates(domain);
-    if cand.tets.is_empty() {
-        return Ok((Outcome::Infeasible, Stats::default()));
-    }
+    solve(domain, Edges::default(), options, ctl)
+}
+
+/// [`minimal_tetrahedralization`] among the tetrahedralizations whose edges obey
+/// `edges`: only allowed segments (TETRAD, thesis §2.5), every required segment (CT,
+/// §2.6). The same candidates, clauses and certificate; see the module docs for why the
+/// formula is exact.
+///
+/// ```
+/// use tetrakit::control::Control;
+/// use tetrakit::exact::{Edges, Options, Outcome, Domain, solve};
+/// // A square pyramid: its base splits along one diagonal or the other.
+/// let p = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0], [0.5, 0.5, 1.0]];
+/// let want = [[1, 3]];
+/// let edges = Edges { required: &want, ..Edges::default() };
+/// let (out, _) = solve(Domain::Points(&p), edges, &Options::default(), &Control::new()).unwrap();
+/// let Outcome::Optimal { tets, .. } = out else { panic!() };
+/// assert!(tets.iter().all(|t| t.contains(&1) && t.contains(&3)));
+/// ```
+pub fn solve(
+    domain: Domain,
+    edges: Edges,
+    options: &Options,
+    ctl: &Control,
+) -> Result<(Outcome, Stats), ExactError> {
+    let Some(f) = Formula::new(domain, edges, ctl)? else {
+        return Ok((
+            Outcome::Undecided {
+                best: None,
+                lower: 1,
+            },
+            Stats::default(),
+        ));
+    };
+    let (cand, pts) = (&f.cand, domain.points());
     let mut stats = Stats {
         candidates: cand.tets.len(),
         triangles: cand.triangles.len(),
         interior_edges: cand.interior_edges.len(),
         calls: 0,
+        obstacle: Obstacle::of(domain, edges, cand),
     };
+    if stats.obstacle.is_some() {
+        return Ok((Outcome::Infeasible, stats));
+    }
     let mut solver = Solver::default();
     solver.batsat_mut().cb_mut().0 = ctl.clone();
-    let mut vars = BasicVarManager::default();
-    let tet_lits: Vec<Lit> = (0..cand.tets.len()).map(|_| vars.new_lit()).collect();
-    let anchor = match domain {
-        Domain::Points(p) | Domain::Shell { points: p, .. } => {
-            Some(anchor(p, &cand).ok_or(ExactError::NoAnchor)?)
-        }
-        Domain::Polyhedron(_) => None,
-    };
-    add_structure(
-        &mut solver,
-        &mut vars,
-        &cand,
-        &tet_lits,
-        domain,
-        anchor.as_deref(),
-    );
+    let Formula {
+        cand,
+        cnf,
+        mut vars,
+        tet_lits,
+    } = f;
+    solver.add_cnf(cnf).expect("batsat accepts clauses");
     let edge_lits: Vec<Lit> = cand
         .interior_edges
         .iter()
@@ -327,12 +406,72 @@ fn add(solver: &mut Solver, lits: &[Lit]) {
         .expect("batsat accepts clauses");
 }
 
+/// The candidates of a problem and the formula saying "these candidates form a
+/// tetrahedralization" (without the objective), one variable per candidate first.
+struct Formula {
+    cand: Candidates,
+    cnf: Cnf,
+    vars: BasicVarManager,
+    tet_lits: Vec<Lit>,
+}
+
+impl Formula {
+    /// `None` when `ctl` stopped the enumeration.
+    fn new(domain: Domain, edges: Edges, ctl: &Control) -> Result<Option<Formula>, ExactError> {
+        let pts = domain.points();
+        let limit = match edges.allowed {
+            None => MAX_VERTICES,
+            Some(_) => MAX_RESTRICTED_VERTICES,
+        };
+        if pts.len() > limit {
+            return Err(ExactError::TooLarge(pts.len()));
+        }
+        if crate::geom::affine_dimension(pts) < 3 {
+            return Err(ExactError::Flat);
+        }
+        let cand = match candidates(domain, edges, ctl) {
+            Ok(Some(c)) => c,
+            Ok(None) => return Ok(None),
+            Err(encode::TooMany(k)) => return Err(ExactError::TooManyCandidates(k)),
+        };
+        let mut vars = BasicVarManager::default();
+        let tet_lits: Vec<Lit> = (0..cand.tets.len()).map(|_| vars.new_lit()).collect();
+        let mut cnf = Cnf::new();
+        if !cand.tets.is_empty() {
+            let anchor = match domain {
+                Domain::Points(p) | Domain::Shell { points: p, .. } => {
+                    Some(anchor(p, &cand).ok_or(ExactError::NoAnchor)?)
+                }
+                Domain::Polyhedron(_) => None,
+            };
+            add_structure(
+                &mut cnf,
+                &mut vars,
+                &cand,
+                &tet_lits,
+                domain,
+                anchor.as_deref(),
+            );
+        }
+        Ok(Some(Formula {
+            cand,
+            cnf,
+            vars,
+            tet_lits,
+        }))
+    }
+}
+
+fn push(cnf: &mut Cnf, lits: &[Lit]) {
+    cnf.add_clause(lits.iter().copied().collect::<Clause>());
+}
+
 /// At most one of `lits` (pairwise for few, sequential counter otherwise).
-fn at_most_one(solver: &mut Solver, vars: &mut BasicVarManager, lits: &[Lit]) {
+fn at_most_one(solver: &mut Cnf, vars: &mut BasicVarManager, lits: &[Lit]) {
     if lits.len() <= 6 {
         for i in 0..lits.len() {
             for j in i + 1..lits.len() {
-                add(solver, &[!lits[i], !lits[j]]);
+                push(solver, &[!lits[i], !lits[j]]);
             }
         }
         return;
@@ -340,19 +479,19 @@ fn at_most_one(solver: &mut Solver, vars: &mut BasicVarManager, lits: &[Lit]) {
     let s: Vec<Lit> = (0..lits.len() - 1).map(|_| vars.new_lit()).collect();
     for i in 0..lits.len() {
         if i + 1 < lits.len() {
-            add(solver, &[!lits[i], s[i]]);
+            push(solver, &[!lits[i], s[i]]);
         }
         if i > 0 {
-            add(solver, &[!s[i - 1], !lits[i]]);
+            push(solver, &[!s[i - 1], !lits[i]]);
             if i + 1 < lits.len() {
-                add(solver, &[!s[i - 1], s[i]]);
+                push(solver, &[!s[i - 1], s[i]]);
             }
         }
     }
 }
 
 fn add_structure(
-    solver: &mut Solver,
+    solver: &mut Cnf,
     vars: &mut BasicVarManager,
     cand: &Candidates,
     tet: &[Lit],
@@ -375,7 +514,7 @@ fn add_structure(
         if facets.contains(key) {
             // Candidates on a facet were filtered to its inner side: all on one side.
             let inner = if pos.is_empty() { &neg } else { &pos };
-            add(solver, inner);
+            push(solver, inner);
             continue;
         }
         if usage.on_hull {
@@ -385,17 +524,22 @@ fn add_structure(
             for &t in side.iter() {
                 let mut c = vec![!t];
                 c.extend(other.iter().copied());
-                add(solver, &c);
+                push(solver, &c);
             }
         }
     }
     // A facet no candidate has: no tetrahedralization.
     if facets.iter().any(|f| !cand.triangles.contains_key(f)) {
-        add(solver, &[]);
+        push(solver, &[]);
+    }
+    // A required segment is an edge of some chosen tetrahedron (implied, as no
+    // candidate crosses it; stated to help the solver, and empty when none has it).
+    for holders in &cand.required {
+        push(solver, &lits(holders));
     }
     if let Some(holders) = anchor {
         let l = lits(holders);
-        add(solver, &l);
+        push(solver, &l);
         at_most_one(solver, vars, &l);
     }
 }

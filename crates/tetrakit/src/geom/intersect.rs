@@ -427,6 +427,48 @@ pub fn triangle_meets_tet(tri: &[Point3; 3], ti: [u32; 3], t: &[Point3; 4], tt: 
     (0..3).any(|m| !tt.contains(&ti[m]) && point_in_closed_tetrahedron(&tri[m], t))
 }
 
+/// True when segment `pq` (vertex indices `s`) meets the closed tetrahedron `t`
+/// (indices `tt`) anywhere other than in their shared vertices, and is not one of its
+/// edges: the test a tetrahedron must pass to sit in a tetrahedralization that has `pq`
+/// as an edge.
+///
+/// ```
+/// use tetrakit::geom::segment_meets_tet_improperly;
+/// let t = [[0.0, 0.0, 0.0], [4.0, 0.0, 0.0], [0.0, 4.0, 0.0], [0.0, 0.0, 4.0]];
+/// let (tt, far) = ([0, 1, 2, 3], [9.0, 9.0, 9.0]);
+/// // An edge of the tetrahedron, and a segment that leaves a corner outwards: fine.
+/// assert!(!segment_meets_tet_improperly(&t[0], &t[1], [0, 1], &t, &tt));
+/// assert!(!segment_meets_tet_improperly(&t[0], &[-1.0, -1.0, -1.0], [0, 4], &t, &tt));
+/// // Through the tetrahedron, or across one of its edges: improper.
+/// assert!(segment_meets_tet_improperly(&t[0], &far, [0, 4], &t, &tt));
+/// assert!(segment_meets_tet_improperly(&[2.0, -1.0, 2.0], &[2.0, 1.0, -2.0], [4, 5], &t, &tt));
+/// ```
+pub fn segment_meets_tet_improperly(
+    p: &Point3,
+    q: &Point3,
+    s: [u32; 2],
+    t: &[Point3; 4],
+    tt: &[u32; 4],
+) -> bool {
+    if tt.contains(&s[0]) && tt.contains(&s[1]) {
+        return false;
+    }
+    if segment_meets_open_tetrahedron(p, q, t) {
+        return true;
+    }
+    let faces = [(1, 2, 3), (0, 3, 2), (0, 1, 3), (0, 2, 1)];
+    if faces
+        .iter()
+        .any(|&(i, j, k)| segment_meets_open_triangle(p, q, &t[i], &t[j], &t[k]))
+    {
+        return true;
+    }
+    let edges = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)];
+    edges
+        .iter()
+        .any(|&(i, j)| segments_meet(p, q, &t[i], &t[j]).is_some())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -22,13 +22,13 @@ pub use hull3::{Hull3, affine_dimension};
 pub use intersect::{
     SegmentMeet, cones_overlap, coplanar_triangles_overlap, point_in_closed_tetrahedron,
     point_in_segment_interior, segment_meets_open_tetrahedron, segment_meets_open_triangle,
-    segment_punctures_triangle, segments_meet, tetrahedra_overlap, triangle_meets_tet,
-    triangles_meet_improperly,
+    segment_meets_tet_improperly, segment_punctures_triangle, segments_meet, tetrahedra_overlap,
+    triangle_meets_tet, triangles_meet_improperly,
 };
 pub use predicates::{
     ApexPlane, ApexSpheres, Dir, Frame, MAX_MAGNITUDE, MIN_MAGNITUDE, Plane, Point2, Point3,
     bounding_box, collinear3, coordinate_in_range, drop_axis, incircle, insphere, lex_cmp,
-    orient2d, orient2d_drop, orient3d, projection_axis, strictly_between,
+    orient2d, orient2d_drop, orient3d, project_to_plane, projection_axis, strictly_between,
 };
 pub use proximity::{
     DiamondHit, Ratio, RatioError, cmp_length, corner_dot_sign, diamond_hit, in_beta_region,

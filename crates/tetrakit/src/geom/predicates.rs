@@ -454,6 +454,25 @@ pub fn drop_axis(p: &Point3, axis: usize) -> Point2 {
     }
 }
 
+/// Coplanar points dropped to 2D along an axis their plane is not parallel to, so that
+/// orientations are preserved for one fixed normal; `None` when they are collinear (or
+/// fewer than three distinct). The orientation of planar triangulations in this crate
+/// (counter-clockwise) is taken in this projection.
+///
+/// ```
+/// use tetrakit::geom::project_to_plane;
+/// let p = project_to_plane(&[[0.0, 0.0, 1.0], [1.0, 0.0, 1.0], [0.0, 1.0, 1.0]]).unwrap();
+/// assert_eq!(p[1], [1.0, 0.0]);
+/// assert!(project_to_plane(&[[0.0; 3], [1.0; 3], [2.0; 3]]).is_none());
+/// ```
+pub fn project_to_plane(points: &[Point3]) -> Option<Vec<Point2>> {
+    let a = points.first()?;
+    let b = points.iter().find(|p| *p != a)?;
+    let c = points.iter().find(|c| projection_axis(a, b, c).is_some())?;
+    let axis = projection_axis(a, b, c)?;
+    Some(points.iter().map(|p| drop_axis(p, axis)).collect())
+}
+
 /// True when three points lie on one line (exact).
 pub fn collinear3(a: &Point3, b: &Point3, c: &Point3) -> bool {
     (0..3).all(|ax| orient2d_drop(a, b, c, ax) == 0)

@@ -1,0 +1,182 @@
+//! The reasons for a NO, each checkable by a person from the named vertices and
+//! segments.
+
+use crate::control::Control;
+use crate::exact::Obstacle;
+use crate::geom::{Hull3, Point3, SegmentMeet, point_in_segment_interior, segments_meet};
+use serde::Serialize;
+use std::collections::HashSet;
+
+/// The kind of reason.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum WitnessKind {
+    /// Two constraint segments meet other than at a shared endpoint.
+    CrossingConstraints,
+    /// A point lies in the relative interior of a constraint segment.
+    ConstraintThroughVertex,
+    /// Two consecutive points along an edge of the convex hull are not joined by a
+    /// segment (every tetrahedralization has that edge).
+    MissingHullEdge,
+    /// A point is in no candidate tetrahedron (one with its edges allowed, no other point
+    /// in it, meeting no constraint improperly), so no tetrahedralization uses it.
+    UncoveredVertex,
+    /// A constraint is an edge of no candidate tetrahedron.
+    UnusableConstraint,
+    /// There is no candidate tetrahedron at all.
+    NoCandidate,
+    /// The formula of the candidates is unsatisfiable (`prove_infeasible` writes a DRAT
+    /// proof of it).
+    Unsatisfiable,
+}
+
+impl std::fmt::Display for WitnessKind {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let v = serde_json::to_value(self).ok();
+        f.write_str(v.as_ref().and_then(|v| v.as_str()).unwrap_or("witness"))
+    }
+}
+
+/// A checkable reason for a NO (0-based point indices).
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct Witness {
+    /// What kind of reason.
+    pub kind: WitnessKind,
+    /// The vertices it names.
+    pub vertices: Vec<u32>,
+    /// The segments it names.
+    pub segments: Vec<[u32; 2]>,
+    /// A sentence for a person.
+    pub detail: String,
+}
+
+impl Witness {
+    fn new(kind: WitnessKind, vertices: Vec<u32>, segments: Vec<[u32; 2]>, detail: String) -> Self {
+        Witness {
+            kind,
+            vertices,
+            segments,
+            detail,
+        }
+    }
+
+    pub(super) fn unsatisfiable(candidates: usize) -> Self {
+        Witness::new(
+            WitnessKind::Unsatisfiable,
+            vec![],
+            vec![],
+            format!(
+                "no set of the {candidates} candidate tetrahedra covers the hull face to face (the SAT formula is unsatisfiable; --proof writes it with a DRAT refutation)"
+            ),
+        )
+    }
+
+    /// The indices named, shifted for printing in the input's numbering.
+    pub fn shifted(&self, base: u32) -> Witness {
+        Witness {
+            vertices: self.vertices.iter().map(|v| v + base).collect(),
+            segments: self.segments.iter().map(|s| s.map(|v| v + base)).collect(),
+            ..self.clone()
+        }
+    }
+}
+
+/// A pair of consecutive points along an edge of the hull of `points` that `allowed`
+/// does not join.
+pub(super) fn missing_hull_edge(points: &[Point3], allowed: &[[u32; 2]]) -> Option<Witness> {
+    let have: HashSet<[u32; 2]> = allowed.iter().map(|&[a, b]| [a.min(b), a.max(b)]).collect();
+    let hull = Hull3::new(points);
+    for chain in hull.polytope_edges(points) {
+        for w in chain.windows(2) {
+            let e = [w[0].min(w[1]), w[0].max(w[1])];
+            if !have.contains(&e) {
+                return Some(Witness::new(
+                    WitnessKind::MissingHullEdge,
+                    e.to_vec(),
+                    vec![e],
+                    format!(
+                        "#{} and #{} are consecutive points on an edge of the convex hull, so every tetrahedralization joins them, but no segment does",
+                        e[0], e[1]
+                    ),
+                ));
+            }
+        }
+    }
+    None
+}
+
+/// A constraint through a point, or two constraints that meet improperly.
+pub(super) fn bad_constraints(
+    points: &[Point3],
+    segments: &[[u32; 2]],
+    ctl: &Control,
+) -> Option<Witness> {
+    let p = |i: u32| &points[i as usize];
+    for &s in segments {
+        let inside =
+            (0..points.len() as u32).find(|&v| point_in_segment_interior(p(v), p(s[0]), p(s[1])));
+        if let Some(v) = inside {
+            return Some(Witness::new(
+                WitnessKind::ConstraintThroughVertex,
+                vec![v],
+                vec![s],
+                format!("point #{v} lies inside constraint (#{}, #{})", s[0], s[1]),
+            ));
+        }
+    }
+    for (i, &s) in segments.iter().enumerate() {
+        if i % 256 == 0 && ctl.is_stopped() {
+            return None;
+        }
+        for &t in &segments[i + 1..] {
+            if let Some(how) = segments_meet(p(s[0]), p(s[1]), p(t[0]), p(t[1])) {
+                let how = match how {
+                    SegmentMeet::Cross => "cross",
+                    SegmentMeet::Overlap => "overlap",
+                    SegmentMeet::Touch => "touch",
+                };
+                return Some(Witness::new(
+                    WitnessKind::CrossingConstraints,
+                    vec![],
+                    vec![s, t],
+                    format!(
+                        "constraints (#{}, #{}) and (#{}, #{}) {how}: no tetrahedralization has both as edges",
+                        s[0], s[1], t[0], t[1]
+                    ),
+                ));
+            }
+        }
+    }
+    None
+}
+
+/// The witness of an obstacle the solver found before searching (`n` input points; the
+/// apex of a planar cone is never named).
+pub(super) fn from_obstacle(o: &Obstacle, n: usize) -> Witness {
+    match *o {
+        Obstacle::NoCandidate => Witness::new(
+            WitnessKind::NoCandidate,
+            vec![],
+            vec![],
+            "no tetrahedron on the points is a candidate (edges allowed, no other point in it, no constraint crossing it)".into(),
+        ),
+        Obstacle::UncoveredVertex(v) => Witness::new(
+            WitnessKind::UncoveredVertex,
+            vec![v],
+            vec![],
+            format!("point #{v} is in no candidate tetrahedron (edges allowed, no other point in it, no constraint crossing it), so no tetrahedralization uses it"),
+        ),
+        Obstacle::UnusableSegment(s) => Witness::new(
+            WitnessKind::UnusableConstraint,
+            vec![],
+            vec![s],
+            format!("constraint (#{}, #{}) is an edge of no candidate tetrahedron", s[0], s[1]),
+        ),
+        Obstacle::UncoveredFacet(f) => Witness::new(
+            WitnessKind::NoCandidate,
+            f.iter().copied().filter(|&v| (v as usize) < n).collect(),
+            vec![],
+            format!("facet (#{}, #{}, #{}) is a face of no candidate", f[0], f[1], f[2]),
+        ),
+    }
+}
