@@ -12,6 +12,7 @@ macro_rules! out {
     }};
 }
 
+mod constrain;
 mod demo;
 mod exit;
 mod planar;
@@ -25,6 +26,7 @@ use exit::CmdResult;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Duration;
+use tetrakit::constrain::Question;
 
 #[derive(Parser)]
 #[command(
@@ -52,6 +54,14 @@ enum Cmd {
     /// without Steiner points, by an exact SAT solver; with --minimal, with the fewest
     /// tetrahedra. Exit 1 with a proof when impossible, 3 at the time limit.
     Tetrahedralize(TetrahedralizeArgs),
+    /// Does a segment set contain the edge set of a tetrahedralization of its points
+    /// (TETRAD, thesis §2.5; for planar points, of a triangulation: TRID)? Exact (SAT),
+    /// with a witness or a DRAT proof for NO.
+    Contains(ContainsArgs),
+    /// Is there a tetrahedralization of the points with every given segment as an edge
+    /// (CT, thesis §2.6; a triangulation for planar points)? Exact, with a witness or a
+    /// DRAT proof for NO.
+    Constrained(ConstrainedArgs),
     /// β-skeleton of planar points, exact for any rational β (circle-based by default,
     /// thesis ch. 5; --lune for the lune-based one).
     Skeleton(SkeletonArgs),
@@ -144,6 +154,52 @@ struct TetrahedralizeArgs {
     /// Write the tetrahedra: .ele (with .node), .vtk or .json.
     #[arg(long)]
     output: Option<PathBuf>,
+    /// On NO, write the SAT formula to P.cnf and a DRAT refutation of it to P.drat.
+    #[arg(long, value_name = "P.drat")]
+    proof: Option<PathBuf>,
+}
+
+/// What `contains` and `constrained` share.
+#[derive(Args)]
+struct DecideArgs {
+    /// Find a tetrahedralization with the fewest tetrahedra among the allowed ones.
+    #[arg(long)]
+    minimal: bool,
+    /// Give up after this many seconds (exit 3, verdict "undecided").
+    #[arg(long, value_parser = seconds)]
+    time_limit: Option<Duration>,
+    /// Print one JSON object on stdout.
+    #[arg(long)]
+    json: bool,
+    /// Write the tetrahedra (.ele with .node, .vtk, .json) or, for planar input, the
+    /// triangles (.off, .obj, .json, .edge, .svg).
+    #[arg(long, short)]
+    output: Option<PathBuf>,
+    /// On NO, write the SAT formula to P.cnf (DIMACS, each candidate named) and a DRAT
+    /// refutation of it to P.drat (check with `rate P.cnf P.drat` or drat-trim).
+    #[arg(long, value_name = "P.drat")]
+    proof: Option<PathBuf>,
+}
+
+#[derive(Args)]
+struct ContainsArgs {
+    /// The segments and their points: X.edge (with X.node), .obj with `v`/`l` lines,
+    /// or .json with "points" and "segments".
+    input: PathBuf,
+    #[command(flatten)]
+    decide: DecideArgs,
+}
+
+#[derive(Args)]
+struct ConstrainedArgs {
+    /// The points, with the constraint segments unless SEGMENTS is given: .node (with
+    /// .edge), .obj, .json, .xyz.
+    input: PathBuf,
+    /// The constraints, from a file on the same points (.edge with its .node, .obj,
+    /// .json).
+    segments: Option<PathBuf>,
+    #[command(flatten)]
+    decide: DecideArgs,
 }
 
 #[derive(Args)]
@@ -322,8 +378,12 @@ enum GenKind {
         #[command(flatten)]
         bp: BpArgs,
     },
-    /// Schönhardt's twisted prism: no tetrahedralization.
+    /// Schönhardt's twisted prism: no tetrahedralization. With --twist, the prism
+    /// twisted by that many degrees (positive: Schönhardt's, negative: convex).
     Schonhardt {
+        /// Twist of the top triangle in degrees, in (-120, 120).
+        #[arg(long, allow_negative_numbers = true)]
+        twist: Option<f64>,
         #[command(flatten)]
         out: PolyOut,
     },
@@ -503,7 +563,15 @@ fn run(cmd: Cmd) -> CmdResult {
             time_limit: a.time_limit,
             as_json: a.json,
             output: a.output.as_deref(),
+            proof: a.proof.as_deref(),
         }),
+        Cmd::Contains(a) => decide(Question::Contains, &a.input, None, &a.decide),
+        Cmd::Constrained(a) => decide(
+            Question::Constrained,
+            &a.input,
+            a.segments.as_deref(),
+            &a.decide,
+        ),
         Cmd::Skeleton(a) => {
             planar::skeleton(&a.input, a.xy, &a.beta, a.lune, a.json, a.output.as_deref())
         }
@@ -563,6 +631,24 @@ fn run(cmd: Cmd) -> CmdResult {
     }
 }
 
+fn decide(
+    question: Question,
+    input: &std::path::Path,
+    segments: Option<&std::path::Path>,
+    a: &DecideArgs,
+) -> CmdResult {
+    constrain::run(constrain::Args {
+        question,
+        input,
+        segments,
+        minimal: a.minimal,
+        time_limit: a.time_limit,
+        as_json: a.json,
+        output: a.output.as_deref(),
+        proof: a.proof.as_deref(),
+    })
+}
+
 /// Splits the polyhedron generators from the mesh generators.
 fn polyhedron_kind(kind: GenKind) -> Result<(poly::PolyGen, PolyOut), GenKind> {
     use tetrakit::polyhedra::generate::BpParams;
@@ -584,7 +670,7 @@ fn polyhedron_kind(kind: GenKind) -> Result<(poly::PolyGen, PolyOut), GenKind> {
         GenKind::BpPolyhedron(a) => bp(a, 1, false),
         GenKind::TwoLevel(a) => bp(a, 2, false),
         GenKind::HLevel { levels, bp: a } => bp(a, levels, true),
-        GenKind::Schonhardt { out } => (poly::PolyGen::Schonhardt, out),
+        GenKind::Schonhardt { twist, out } => (poly::PolyGen::Schonhardt { twist }, out),
         GenKind::SchonhardtBp { out } => (poly::PolyGen::SchonhardtBp, out),
         other => return Err(other),
     })

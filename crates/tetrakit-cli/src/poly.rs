@@ -170,6 +170,7 @@ pub struct TetraArgs<'a> {
     pub time_limit: Option<Duration>,
     pub as_json: bool,
     pub output: Option<&'a Path>,
+    pub proof: Option<&'a Path>,
 }
 
 pub fn tetrahedralize(a: TetraArgs) -> CmdResult {
@@ -234,10 +235,21 @@ pub fn tetrahedralize(a: TetraArgs) -> CmdResult {
         }
         Outcome::Infeasible => {
             v["verdict"] = json!("no");
-            v["witness"] = json!({
-                "kind": "unsatisfiable",
-                "detail": "no set of candidate tetrahedra (no other vertex inside, on the inner side of the boundary) satisfies the face-pairing clauses: no tetrahedralization without Steiner points exists",
-            });
+            v["witness"] = match &stats.obstacle {
+                Some(o) => json!({
+                    "kind": "obstacle",
+                    "detail": tetrakit::numbering::renumber_text(&o.to_string(), base),
+                }),
+                None => json!({
+                    "kind": "unsatisfiable",
+                    "detail": "no set of candidate tetrahedra (no other vertex inside, on the inner side of the boundary) satisfies the face-pairing clauses: no tetrahedralization without Steiner points exists",
+                }),
+            };
+            if let Some(path) = a.proof {
+                v["proof"] = crate::constrain::write_proof(path, |formula, proof| {
+                    exact::prove_infeasible(domain, exact::Edges::default(), formula, proof, &ctl)
+                })?;
+            }
             (Verdict::No, None)
         }
         Outcome::Undecided { best, lower } => {
@@ -294,10 +306,21 @@ fn print_tetrahedralize(v: &Value) {
                 "NO: {} cannot be tetrahedralized without Steiner points",
                 v["domain"].as_str().unwrap_or("")
             );
-            out!(
-                "  proof: the SAT formula is unsatisfiable ({} candidate tetrahedra)",
-                v["candidates"]
-            );
+            if v["witness"]["kind"] == "obstacle" {
+                out!("  proof: {}", v["witness"]["detail"].as_str().unwrap_or(""));
+            } else {
+                out!(
+                    "  proof: the SAT formula is unsatisfiable ({} candidate tetrahedra)",
+                    v["candidates"]
+                );
+            }
+            if let Some(p) = v["proof"].get("drat") {
+                out!(
+                    "  DRAT refutation: {} of {}",
+                    p.as_str().unwrap_or(""),
+                    v["proof"]["formula"].as_str().unwrap_or("")
+                );
+            }
         }
         _ => match v["upper_bound"].as_u64() {
             Some(upper) => out!(
@@ -328,7 +351,7 @@ pub enum PolyGen {
     Stacked { n: usize },
     Bipyramid { m: usize },
     Bp(generate::BpParams),
-    Schonhardt,
+    Schonhardt { twist: Option<f64> },
     SchonhardtBp,
 }
 
@@ -373,7 +396,13 @@ pub fn generate(kind: PolyGen, seed: u64, output: &Path) -> CmdResult {
             };
             (p, format!(", {polar} BP-net(s) glued{note}"))
         }
-        PolyGen::Schonhardt => (generate::schonhardt(), String::new()),
+        PolyGen::Schonhardt { twist: None } => (generate::schonhardt(), String::new()),
+        PolyGen::Schonhardt { twist: Some(deg) } => {
+            let p =
+                generate::twisted_prism(deg).map_err(|e| CliError::new(format!("--twist: {e}")))?;
+            let reflex = generate::reflex_edges(&p).len();
+            (p, format!(", {reflex} reflex edge(s)"))
+        }
         PolyGen::SchonhardtBp => (generate::schonhardt_bp(), String::new()),
     };
     io::write_surface(output, &p.points, &p.faces, 1).written(output)?;

@@ -160,11 +160,7 @@ pub fn contains(
     if let Some(w) = witness::missing_hull_edge(&problem.points, &problem.allowed) {
         return Ok(problem.decided(Answer::No(w), Route::Precheck));
     }
-    let edges = Edges {
-        allowed: Some(&problem.allowed),
-        required: &[],
-    };
-    problem.solve(edges, options, ctl)
+    problem.solve(problem.edges(Question::Contains, segments), options, ctl)
 }
 
 /// CT: is there a tetrahedralization of `points` (every point a vertex) with every one of
@@ -192,11 +188,54 @@ pub fn constrained(
     if let Some(w) = witness::bad_constraints(points, segments, ctl) {
         return Ok(problem.decided(Answer::No(w), Route::Precheck));
     }
-    let edges = Edges {
-        allowed: None,
-        required: segments,
+    problem.solve(problem.edges(Question::Constrained, segments), options, ctl)
+}
+
+/// Which of the two problems.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Question {
+    /// [`contains`].
+    Contains,
+    /// [`constrained`].
+    Constrained,
+}
+
+/// Writes the formula that [`contains`] or [`constrained`] decides (DIMACS, each
+/// candidate named in a comment) and, when it is unsatisfiable, a DRAT refutation
+/// ([`exact::prove_infeasible`]). Every NO of either has one, short witnesses included:
+/// the formula is unsatisfiable whenever no tetrahedralization obeys the edge rules.
+///
+/// ```
+/// use tetrakit::constrain::{Question, prove};
+/// use tetrakit::control::Control;
+/// use tetrakit::exact::Proof;
+/// let p = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0], [0.5, 0.5, 1.0]];
+/// let (mut cnf, mut drat) = (Vec::new(), Vec::new());
+/// let r = prove(Question::Constrained, &p, &[[1, 3], [0, 2]], &mut cnf, &mut drat, &Control::new());
+/// assert!(matches!(r, Ok(Proof::Refuted { .. })));
+/// ```
+pub fn prove(
+    question: Question,
+    points: &[Point3],
+    segments: &[[u32; 2]],
+    formula: &mut impl std::io::Write,
+    proof: impl std::io::Write,
+    ctl: &Control,
+) -> Result<exact::Proof, ConstrainError> {
+    validate(points, segments)?;
+    let allowed: &[[u32; 2]] = match question {
+        Question::Contains => segments,
+        Question::Constrained => &[],
     };
-    problem.solve(edges, options, ctl)
+    let problem = Problem::new(points, allowed)?;
+    let edges = problem.edges(question, segments);
+    Ok(exact::prove_infeasible(
+        Domain::Points(&problem.points),
+        edges,
+        formula,
+        proof,
+        ctl,
+    )?)
 }
 
 fn decided(answer: Answer, route: Route, minimum: bool, planar: bool) -> Decision {
@@ -252,6 +291,20 @@ impl Problem {
             n,
             planar,
         })
+    }
+
+    /// The edge rules of `question` on this problem.
+    fn edges<'a>(&'a self, question: Question, segments: &'a [[u32; 2]]) -> Edges<'a> {
+        match question {
+            Question::Contains => Edges {
+                allowed: Some(&self.allowed),
+                required: &[],
+            },
+            Question::Constrained => Edges {
+                allowed: None,
+                required: segments,
+            },
+        }
     }
 
     fn decided(&self, answer: Answer, route: Route) -> Decision {

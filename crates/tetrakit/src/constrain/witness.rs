@@ -71,12 +71,24 @@ impl Witness {
         )
     }
 
-    /// The indices named, shifted for printing in the input's numbering.
+    /// The witness in an input's numbering from `base` (its lists and its sentence).
+    ///
+    /// ```
+    /// use tetrakit::constrain::{Answer, Options, constrained};
+    /// use tetrakit::control::Control;
+    /// let p = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0], [0.5, 0.5, 1.0]];
+    /// let no = constrained(&p, &[[1, 3], [0, 2]], &Options::default(), &Control::new()).unwrap();
+    /// let Answer::No(w) = no.answer else { panic!() };
+    /// let w = w.shifted(1);
+    /// assert_eq!(w.segments, [[2, 4], [1, 3]]);
+    /// assert!(w.detail.starts_with("constraints (#2, #4) and (#1, #3)"));
+    /// ```
     pub fn shifted(&self, base: u32) -> Witness {
         Witness {
+            kind: self.kind,
             vertices: self.vertices.iter().map(|v| v + base).collect(),
             segments: self.segments.iter().map(|s| s.map(|v| v + base)).collect(),
-            ..self.clone()
+            detail: crate::numbering::renumber_text(&self.detail, base),
         }
     }
 }

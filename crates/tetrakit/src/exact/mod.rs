@@ -132,6 +132,28 @@ pub enum Obstacle {
     UncoveredFacet([u32; 3]),
 }
 
+impl std::fmt::Display for Obstacle {
+    /// A sentence naming vertices `#v` (0-based).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Obstacle::NoCandidate => f.write_str("no candidate tetrahedron exists"),
+            Obstacle::UncoveredVertex(v) => write!(f, "vertex #{v} is in no candidate tetrahedron"),
+            Obstacle::UnusableSegment([a, b]) => {
+                write!(
+                    f,
+                    "segment (#{a}, #{b}) is an edge of no candidate tetrahedron"
+                )
+            }
+            Obstacle::UncoveredFacet([a, b, c]) => {
+                write!(
+                    f,
+                    "facet (#{a}, #{b}, #{c}) is a face of no candidate tetrahedron"
+                )
+            }
+        }
+    }
+}
+
 impl Obstacle {
     /// The first obstacle of the candidates, if any.
     fn of(domain: Domain, edges: Edges, cand: &Candidates) -> Option<Obstacle> {

@@ -504,6 +504,43 @@ pub fn schonhardt() -> Polyhedron {
     unreachable!("one diagonal choice gives Schönhardt's polyhedron")
 }
 
+/// A triangular prism whose top is twisted by `degrees` about the axis, each side
+/// quadrilateral split by the diagonal from its bottom-left to its top-right corner. A
+/// positive twist makes the three diagonals reflex: Schönhardt's polyhedron, with no
+/// tetrahedralization. A negative twist makes it convex (tetrahedralizable). Twists of
+/// 120° or more (either way) are refused: the sides would cross.
+///
+/// ```
+/// use tetrakit::polyhedra::generate::{reflex_edges, twisted_prism};
+/// assert_eq!(reflex_edges(&twisted_prism(30.0).unwrap()).len(), 3);
+/// assert!(reflex_edges(&twisted_prism(-30.0).unwrap()).is_empty());
+/// assert!(twisted_prism(130.0).is_err());
+/// ```
+pub fn twisted_prism(degrees: f64) -> Result<Polyhedron, String> {
+    if !(degrees.abs() < 120.0) {
+        return Err(format!(
+            "a twist of {degrees}°: the prism's sides cross at 120° or more (and NaN is no angle)"
+        ));
+    }
+    let twist = degrees.to_radians();
+    let tri = |z: f64, twist: f64| -> Vec<Point3> {
+        (0..3)
+            .map(|i| {
+                let a = std::f64::consts::TAU * i as f64 / 3.0 + twist;
+                [a.cos(), a.sin(), z]
+            })
+            .collect()
+    };
+    let mut points = tri(0.0, 0.0);
+    points.extend(tri(2.0, twist));
+    let mut faces = vec![[0, 2, 1], [3, 4, 5]];
+    for i in 0..3u32 {
+        let j = (i + 1) % 3;
+        faces.extend([[i, j, j + 3], [i, j + 3, i + 3]]);
+    }
+    Polyhedron::new(points, faces).map_err(|e| e.describe(0))
+}
+
 /// Edges whose dihedral angle exceeds π: `pq` with faces `pqs`, `qpt` and `t` strictly
 /// outside face `pqs`.
 pub fn reflex_edges(p: &Polyhedron) -> Vec<[u32; 2]> {
