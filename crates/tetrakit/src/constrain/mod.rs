@@ -385,10 +385,8 @@ impl Problem {
             .iter()
             .map(|t| {
                 let mut f = [0u32; 3];
-                let mut k = 0;
-                for &v in t.iter().filter(|&&v| v != apex) {
+                for (k, &v) in t.iter().filter(|&&v| v != apex).enumerate() {
                     f[k] = v;
-                    k += 1;
                 }
                 let [a, b, c] = f.map(|v| &flat[v as usize]);
                 if orient2d(a, b, c) > 0 {

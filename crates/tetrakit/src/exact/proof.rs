@@ -11,7 +11,7 @@
 
 use super::{Domain, Edges, ExactError, Formula};
 use crate::control::Control;
-use rustsat::instances::ManageVars;
+use rustsat::instances::{Cnf, ManageVars};
 use std::io::{self, Write};
 use varisat::ExtendFormula;
 
@@ -54,12 +54,7 @@ pub fn prove_infeasible(
     let Some(f) = Formula::new(domain, edges, ctl)? else {
         return Ok(Proof::Stopped);
     };
-    let mut cnf = f.cnf;
-    if f.cand.tets.is_empty() {
-        // No candidate at all: the clause "some tetrahedron is chosen" is empty.
-        cnf.add_clause(rustsat::types::Clause::new());
-    }
-    let variables = f.vars.n_used();
+    let (cnf, variables) = without_empty_clauses(f.cnf, f.vars.n_used(), f.cand.tets.is_empty());
     let clauses = cnf.len();
     write_dimacs(formula, &f.cand.tets, &cnf, variables)
         .map_err(|e| ExactError::Io(e.to_string()))?;
@@ -97,12 +92,30 @@ pub fn prove_infeasible(
     }
 }
 
+/// The formula with each empty clause (a facet or a required segment that no candidate
+/// has; with `no_candidate`, the clause "some candidate is chosen") written as the pair
+/// `z`, `¬z` on a fresh variable `z`: the same unsatisfiability, in a form every checker
+/// reads (some reject an empty input clause). Returns the formula and its variable count.
+fn without_empty_clauses(cnf: Cnf, variables: u32, no_candidate: bool) -> (Cnf, u32) {
+    if !no_candidate && cnf.iter().all(|c| !c.is_empty()) {
+        return (cnf, variables);
+    }
+    let z = rustsat::types::Var::new(variables).pos_lit();
+    let mut out = Cnf::new();
+    for c in cnf.into_iter().filter(|c| !c.is_empty()) {
+        out.add_clause(c);
+    }
+    out.add_clause([z].into_iter().collect());
+    out.add_clause([!z].into_iter().collect());
+    (out, variables + 1)
+}
+
 /// The formula in DIMACS, after comments naming each candidate's variable (`c tet 7: 0 1
 /// 2 5`, vertices 0-based) so that a person can read a model or a core.
 fn write_dimacs(
     out: &mut impl Write,
     tets: &[[u32; 4]],
-    cnf: &rustsat::instances::Cnf,
+    cnf: &Cnf,
     variables: u32,
 ) -> io::Result<()> {
     let mut w = io::BufWriter::new(out);

@@ -517,7 +517,7 @@ pub fn schonhardt() -> Polyhedron {
 /// assert!(twisted_prism(130.0).is_err());
 /// ```
 pub fn twisted_prism(degrees: f64) -> Result<Polyhedron, String> {
-    if !(degrees.abs() < 120.0) {
+    if degrees.is_nan() || degrees.abs() >= 120.0 {
         return Err(format!(
             "a twist of {degrees}°: the prism's sides cross at 120° or more (and NaN is no angle)"
         ));
