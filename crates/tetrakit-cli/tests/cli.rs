@@ -960,3 +960,135 @@ fn shell_flips_on_a_bern_disk() {
         (before, true)
     );
 }
+
+/// `contains`: YES through detect on an exact edge set, NO with a witness in the file's
+/// numbering and a DRAT proof beside it, YES from the solver when a diagonal is added.
+#[test]
+fn contains_answers_with_witness_and_proof() {
+    let d = dir("contains");
+    let pyramid = |extra: &str| {
+        format!(
+            "{{\"points\":[[0,0,0],[1,0,0],[1,1,0],[0,1,0],[0.5,0.5,1]],\"segments\":[[0,1],[1,2],[2,3],[3,0],[0,4],[1,4],[2,4],[3,4]{extra}]}}"
+        )
+    };
+    let no = d.join("no.json");
+    std::fs::write(&no, pyramid("")).unwrap();
+    let drat = d.join("no.drat");
+    let o = run(&["contains", s(&no), "--json", "--proof", s(&drat)]);
+    assert_eq!(
+        o.status.code(),
+        Some(1),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let v = json(&o);
+    assert_eq!(v["verdict"], "no");
+    assert_eq!(v["witness"]["kind"], "no_candidate");
+    let cnf = std::fs::read_to_string(d.join("no.cnf")).unwrap();
+    assert!(cnf.lines().any(|l| l.starts_with("p cnf ")));
+    assert_eq!(v["proof"]["formula"], s(&d.join("no.cnf")));
+    let yes = d.join("yes.json");
+    std::fs::write(&yes, pyramid(",[0,2],[1,3]")).unwrap();
+    let out = d.join("yes.ele");
+    let o = run(&[
+        "contains",
+        s(&yes),
+        "--json",
+        "--minimal",
+        "--output",
+        s(&out),
+    ]);
+    assert_eq!(o.status.code(), Some(0));
+    let v = json(&o);
+    assert_eq!(
+        (v["route"].as_str(), v["tetrahedra"].as_u64()),
+        (Some("solver"), Some(2))
+    );
+    assert_eq!(v["minimum"], true);
+    let o = run(&["check", s(&out), "--convex", "--json"]);
+    assert_eq!(o.status.code(), Some(0));
+    // An exact edge set: detect answers.
+    let exact = d.join("exact.json");
+    std::fs::write(&exact, pyramid(",[0,2]")).unwrap();
+    let v = json(&run(&["contains", s(&exact), "--json"]));
+    assert_eq!(
+        (v["verdict"].as_str(), v["route"].as_str()),
+        (Some("yes"), Some("detect"))
+    );
+}
+
+/// `constrained`: crossing constraints are a NO naming both in the file's (1-based)
+/// numbering, read beside the points or from a second file; planar points get
+/// triangles; a zero time limit is undecided (exit 3).
+#[test]
+fn constrained_witnesses_planar_and_time_limit() {
+    let d = dir("constrained");
+    let node = d.join("c.node");
+    std::fs::write(
+        &node,
+        "5 3 0 0\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n5 0.5 0.5 1\n",
+    )
+    .unwrap();
+    std::fs::write(d.join("c.edge"), "2 0\n1 1 3\n2 2 4\n").unwrap();
+    let o = run(&["constrained", s(&node), "--json"]);
+    assert_eq!(o.status.code(), Some(1));
+    let v = json(&o);
+    assert_eq!(v["witness"]["kind"], "crossing_constraints");
+    assert_eq!(
+        v["witness"]["segments"],
+        serde_json::json!([[1, 3], [2, 4]])
+    );
+    assert!(
+        v["witness"]["detail"]
+            .as_str()
+            .unwrap()
+            .contains("(#1, #3)")
+    );
+    let flat = d.join("flat.json");
+    std::fs::write(
+        &flat,
+        "{\"points\":[[0,0],[2,0],[2,2],[0,2],[1,0.5]],\"segments\":[[0,2]]}",
+    )
+    .unwrap();
+    let o = run(&["constrained", s(&flat), "--json"]);
+    assert_eq!(o.status.code(), Some(0));
+    let v = json(&o);
+    assert_eq!(
+        (v["planar"].as_bool(), v["triangles"].as_u64()),
+        (Some(true), Some(4))
+    );
+    // The constraints from a second file on the same points.
+    let o = run(&["constrained", s(&node), s(&d.join("c.edge")), "--json"]);
+    assert_eq!(json(&o)["witness"]["kind"], "crossing_constraints");
+    let o = run(&["constrained", s(&flat), "--time-limit", "0", "--json"]);
+    assert_eq!(o.status.code(), Some(3));
+    assert_eq!(json(&o)["verdict"], "undecided");
+}
+
+/// Bad input to the new commands: one line, exit 2.
+#[test]
+fn contains_and_constrained_bad_input() {
+    let d = dir("constrain-bad");
+    let bad = d.join("bad.json");
+    std::fs::write(
+        &bad,
+        "{\"points\":[[0,0,0],[1,0,0],[0,1,0],[0,0,1]],\"segments\":[[0,9]]}",
+    )
+    .unwrap();
+    for cmd in ["contains", "constrained"] {
+        let o = run(&[cmd, s(&bad)]);
+        assert_eq!(o.status.code(), Some(2), "{cmd}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(err.lines().count(), 1, "{cmd}: {err}");
+        assert!(err.contains("bad.json"), "{err}");
+    }
+    let o = run(&[
+        "generate",
+        "schonhardt",
+        "--twist",
+        "-130",
+        "-o",
+        s(&d.join("x.off")),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+}

@@ -188,7 +188,17 @@ fn bases(d: &Path) -> Vec<Base> {
         Base {
             files: vec![("k.node", node.clone()), ("k.ele", read("k.ele"))],
             target: "k.edge",
-            commands: vec![detect.clone()],
+            commands: vec![
+                detect.clone(),
+                vec![
+                    "contains",
+                    "{}",
+                    "--time-limit",
+                    "5",
+                    "--output",
+                    "{out}.ele",
+                ],
+            ],
         },
         Base {
             files: vec![("k.node", node.clone()), ("k.edge", read("k.edge"))],
@@ -233,7 +243,11 @@ fn bases(d: &Path) -> Vec<Base> {
         Base {
             files: vec![],
             target: "r.json",
-            commands: vec![detect, vec!["check", "{}", "--convex"]],
+            commands: vec![
+                detect,
+                vec!["check", "{}", "--convex"],
+                vec!["constrained", "{}", "--time-limit", "5"],
+            ],
         },
         Base {
             files: vec![("o.xyz", read("o.xyz"))],
