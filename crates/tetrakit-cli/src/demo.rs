@@ -96,6 +96,7 @@ pub fn run() -> CmdResult {
         strict.is_valid()
     );
     minimal_tetrahedralizations();
+    prescribed_edges_section();
     shell_section();
     planar_section();
     out!("\nTry: tetrakit generate kuhn --size 10 -o /tmp/k.ele && tetrakit detect /tmp/k.edge");
@@ -166,12 +167,128 @@ fn minimal_tetrahedralizations() {
     );
 }
 
+/// Thesis ch. 2 §2.5–2.6: tetrahedralizations with prescribed edges, NP-complete,
+/// decided exactly with witnesses and DRAT proofs.
+fn prescribed_edges_section() {
+    use tetrakit::constrain::{Answer, Options, constrained, contains};
+    use tetrakit::exact::{self, Domain, Proof};
+    out!("\n6. Prescribed edges (thesis §2.5–2.6, NP-complete): exact answers, checkable proofs.");
+    let ctl = Control::new();
+    for deg in [30.0, -30.0] {
+        let p = tetrakit::polyhedra::generate::twisted_prism(deg).expect("a valid twist");
+        let opts = exact::Options::default();
+        match exact::minimal_tetrahedralization(Domain::Polyhedron(&p), &opts, &ctl) {
+            Ok((exact::Outcome::Optimal { tets, .. }, _)) => out!(
+                "  prism twisted {deg:+}°: YES, convex; {} tetrahedra at least (`tetrahedralize --minimal`)",
+                tets.len()
+            ),
+            Ok((exact::Outcome::Infeasible, stats)) => out!(
+                "  prism twisted {deg:+}°: NO, Schönhardt's polyhedron: {}",
+                stats
+                    .obstacle
+                    .map_or("the formula is unsatisfiable".into(), |o| o.to_string())
+            ),
+            other => out!("  prism twisted {deg:+}°: {other:?}"),
+        }
+    }
+    // Seven random points and three quarters of their pairs, until the answer needs the
+    // SAT solver and is NO: then its refutation.
+    let mut rng = tetrakit::rng::Rng::new(7);
+    for _ in 0..200 {
+        let pts: Vec<[f64; 3]> = (0..7)
+            .map(|_| [0, 1, 2].map(|_| (rng.unit() * 64.0).round() / 64.0))
+            .collect();
+        let l: Vec<[u32; 2]> = (0..7u32)
+            .flat_map(|a| (a + 1..7).map(move |b| [a, b]))
+            .filter(|_| rng.below(4) < 3)
+            .collect();
+        let Ok(d) = contains(&pts, &l, &Options::default(), &ctl) else {
+            continue;
+        };
+        if !matches!(d.answer, Answer::No(_)) || d.route != tetrakit::constrain::Route::Solver {
+            continue;
+        }
+        let (mut cnf, mut drat) = (Vec::new(), Vec::new());
+        let q = tetrakit::constrain::Question::Contains;
+        if let Ok(Proof::Refuted { variables, clauses }) =
+            tetrakit::constrain::prove(q, &pts, &l, &mut cnf, &mut drat, &ctl)
+        {
+            out!(
+                "  7 random points, {} of their 21 pairs (`contains --proof`): NO, no short reason; {} candidate tetrahedra, DRAT refutation of {} lines for {variables} variables and {clauses} clauses",
+                l.len(),
+                d.stats.candidates,
+                drat.split(|&b| b == b'\n')
+                    .filter(|x| !x.is_empty())
+                    .count()
+            );
+            break;
+        }
+    }
+    let cube: Vec<[f64; 3]> = (0..8)
+        .map(|i| [(i & 1) as f64, ((i >> 1) & 1) as f64, (i >> 2) as f64])
+        .chain([[0.5, 0.5, 0.5]])
+        .collect();
+    let show = |name: &str, a: &Answer| match a {
+        Answer::Yes(tetrakit::detect::Cells::Tetrahedra(t)) => {
+            out!("  {name}: YES, {} tetrahedra, certified", t.len())
+        }
+        Answer::Yes(tetrakit::detect::Cells::Triangles(t)) => {
+            out!("  {name}: YES, {} triangles, certified", t.len())
+        }
+        Answer::No(w) => out!("  {name}: NO, {}: {}", w.kind, w.detail),
+        Answer::Undecided => out!("  {name}: undecided"),
+    };
+    let opts = Options::default();
+    let through = constrained(&cube, &[[0, 7]], &opts, &ctl).expect("valid input");
+    show(
+        "cube and centre, constraint along a long diagonal (`constrained`)",
+        &through.answer,
+    );
+    let star: Vec<[u32; 2]> = (0..8).map(|v| [v, 8]).collect();
+    let fine = constrained(&cube, &star, &opts, &ctl).expect("valid input");
+    show("the same, every corner joined to the centre", &fine.answer);
+    // Every pair but the cube's face diagonals through corner 0: the solver decides.
+    let l: Vec<[u32; 2]> = (0..9u32)
+        .flat_map(|a| (a + 1..9).map(move |b| [a, b]))
+        .filter(|&[a, b]| !(a == 0 && [3, 5, 6].contains(&b)))
+        .collect();
+    let d = contains(&cube, &l, &Options { minimal: true }, &ctl).expect("valid input");
+    show(
+        "all 33 pairs but corner 0's face diagonals (`contains --minimal`)",
+        &d.answer,
+    );
+    let square = [
+        [0.0, 0.0, 0.0],
+        [2.0, 0.0, 0.0],
+        [2.0, 2.0, 0.0],
+        [0.0, 2.0, 0.0],
+        [1.0, 0.5, 0.0],
+    ];
+    let ring = [
+        [0, 1],
+        [1, 2],
+        [2, 3],
+        [3, 0],
+        [0, 4],
+        [1, 4],
+        [2, 4],
+        [3, 4],
+    ];
+    let trid = contains(&square, &ring, &opts, &ctl).expect("valid input");
+    show(
+        "planar (TRID): a square, a point inside, the spokes",
+        &trid.answer,
+    );
+    let no_spoke = contains(&square, &ring[..7], &opts, &ctl).expect("valid input");
+    show("the same without one spoke", &no_spoke.answer);
+}
+
 /// Thesis ch. 4: the region between two nested convex polytopes, no Steiner point.
 fn shell_section() {
     use tetrakit::shell::generate::{NestedParams, Shape, bern_disk, nested};
     use tetrakit::shell::{Method, Shell};
     out!(
-        "\n6. Shells (thesis ch. 4): the region between nested convex polytopes, no Steiner point."
+        "\n7. Shells (thesis ch. 4): the region between nested convex polytopes, no Steiner point."
     );
     let shell_of = |p: NestedParams| {
         let (outer, inner, _) = nested(&p).ok()?;
@@ -274,7 +391,7 @@ fn planar_section() {
     use tetrakit::planar::{self, Distribution, MwtOptions, Region};
     let (ctl, opts) = (Control::new(), MwtOptions::default());
     out!(
-        "\n7. Planar proximity (thesis ch. 5): β-skeleton and exact minimum weight triangulation."
+        "\n8. Planar proximity (thesis ch. 5): β-skeleton and exact minimum weight triangulation."
     );
     let pts = planar::points2d(Distribution::Uniform, 2000, 7);
     let start = Instant::now();
