@@ -233,7 +233,6 @@ fn structure(
     inner: Option<&(super::separate::Convex, Vec<u32>)>,
 ) -> Candidates {
     let pts = domain.points();
-    let n = pts.len() as u32;
     let facets = domain.faces();
     let mut triangles: HashMap<[u32; 3], TriangleUse> = HashMap::new();
     let mut holders: HashMap<[u32; 2], Vec<u32>> = HashMap::new();
@@ -283,17 +282,7 @@ fn structure(
         .chain(facets.iter().map(|&f| crate::mesh::sorted_face(f)))
         .flat_map(|f| [[f[0], f[1]], [f[0], f[2]], [f[1], f[2]]])
         .collect();
-    let offset = match domain {
-        // χ = 1 for a ball: t = χ − n + e_b − f_b / 2 + e_i = e_i + n − 3.
-        Domain::Polyhedron(_) => n as i64 - 3,
-        Domain::Points(_) => {
-            let hull = crate::geom::Hull3::new(pts);
-            let nb = (0..pts.len()).filter(|&i| hull.on_boundary(i)).count();
-            2 * nb as i64 - n as i64 - 3
-        }
-        // Lemma 4.9's n − 6 needs simplicial, disjoint polytopes; 1 is always below.
-        Domain::Shell { .. } => 1,
-    };
+    let offset = euler_offset(domain);
     let required = edges
         .required
         .iter()
@@ -315,6 +304,24 @@ fn structure(
         interior_edges,
         required,
         offset,
+    }
+}
+
+/// The number of tetrahedra minus the interior edges used, the same for every
+/// tetrahedralization of `domain` (see the module docs); a lower bound for a shell.
+pub(crate) fn euler_offset(domain: Domain) -> i64 {
+    let pts = domain.points();
+    let n = pts.len() as i64;
+    match domain {
+        // χ = 1 for a ball: t = χ − n + e_b − f_b / 2 + e_i = e_i + n − 3.
+        Domain::Polyhedron(_) => n - 3,
+        Domain::Points(_) => {
+            let hull = crate::geom::Hull3::new(pts);
+            let nb = (0..pts.len()).filter(|&i| hull.on_boundary(i)).count();
+            2 * nb as i64 - n - 3
+        }
+        // Lemma 4.9's n − 6 needs simplicial, disjoint polytopes; 1 is always below.
+        Domain::Shell { .. } => 1,
     }
 }
 

@@ -306,13 +306,8 @@ pub fn solve(
     ctl: &Control,
 ) -> Result<(Outcome, Stats), ExactError> {
     let Some(f) = Formula::new(domain, edges, ctl)? else {
-        return Ok((
-            Outcome::Undecided {
-                best: None,
-                lower: 1,
-            },
-            Stats::default(),
-        ));
+        let lower = encode::euler_offset(domain).max(1) as usize;
+        return Ok((Outcome::Undecided { best: None, lower }, Stats::default()));
     };
     let (cand, pts) = (&f.cand, domain.points());
     let mut stats = Stats {

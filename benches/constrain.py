@@ -1,0 +1,142 @@
+#!/usr/bin/env python3
+"""The chapter 2 §2.5–2.6 part of BENCHMARKS.md: how large an instance `contains`,
+`constrained` and `tetrahedralize` decide within 60 s, with the size of the formula and of
+the DRAT proof of each NO, and TetGen -pY on the same polyhedra.
+
+Usage: python3 benches/constrain.py [--quick]   (run from the repository root, after
+`cargo build --release`; TetGen from Debian for the last table).
+"""
+import json
+import os
+import random
+import shutil
+import subprocess
+import sys
+import time
+
+TK = "target/release/tetrakit"
+WORK = os.environ.get("WORK", "/tmp/tetrakit-bench-constrain")
+LIMIT = "60"
+QUICK = "--quick" in sys.argv
+
+
+def run(args):
+    """Runs tetrakit; returns its JSON and wall seconds."""
+    t = time.perf_counter()
+    out = subprocess.run([TK] + args + ["--json"], capture_output=True, text=True)
+    secs = time.perf_counter() - t
+    if out.returncode == 2:
+        raise SystemExit(f"{args}: {out.stderr}")
+    return json.loads(out.stdout), secs
+
+
+def proof_row(v, drat):
+    p = v.get("proof")
+    if isinstance(p, dict):
+        return f"{p['variables']} / {p['clauses']}", f"{os.path.getsize(drat) / 1e3:.1f} kB"
+    return "-", "-"
+
+
+def decide(cmd, path, label, n, m):
+    drat = os.path.join(WORK, "p.drat")
+    v, secs = run([cmd, path, "--time-limit", LIMIT, "--proof", drat])
+    formula, size = proof_row(v, drat)
+    print(
+        f"| {label} | {n} | {m} | {v['candidates']} | {v['verdict']} ({v['route']}) | "
+        f"{formula} | {size} | {secs:.2f} |"
+    )
+    return v, secs
+
+
+def random_instance(n, planar, seed, keep=0.75):
+    rng = random.Random(seed)
+    pts = set()
+    while len(pts) < n:
+        pts.add(tuple(rng.randrange(1 << 20) / (1 << 20) for _ in range(2 if planar else 3)))
+    pts = sorted(pts)
+    pairs = [[a, b] for a in range(n) for b in range(a + 1, n) if rng.random() < keep]
+    return [list(p) for p in pts], pairs
+
+
+def with_hull_edges(name, points, segments):
+    """Adds the hull edges `contains` names as missing until none is (a NO for that reason
+    alone says nothing about the solver)."""
+    segments = list(segments)
+    while True:
+        path = write(name, points, segments)
+        v, _ = run(["contains", path])
+        w = v.get("witness", {})
+        if w.get("kind") != "missing_hull_edge":
+            return path, segments
+        segments.append(w["segments"][0])
+
+
+def write(name, points, segments):
+    path = os.path.join(WORK, name)
+    with open(path, "w") as f:
+        json.dump({"points": points, "segments": segments}, f)
+    return path
+
+
+def header(title):
+    print(f"\n{title}\n")
+    print("| instance | points | segments | candidates | verdict (route) | proof variables / clauses | DRAT | seconds |")
+    print("|---|---|---|---|---|---|---|---|")
+
+
+def main():
+    os.makedirs(WORK, exist_ok=True)
+    header("contains (TETRAD): Kuhn grids with one segment added across, or one removed")
+    for k in [8, 16] if QUICK else [8, 16, 24, 32]:
+        for corrupt in ["add-crossing", "drop-edge"]:
+            base = os.path.join(WORK, f"k{k}{corrupt}.ele")
+            subprocess.run([TK, "generate", "kuhn", "--size", str(k), "--corrupt", corrupt, "-o", base],
+                           check=True, capture_output=True)
+            edge = base[:-4] + ".edge"
+            m = sum(1 for _ in open(edge)) - 1
+            decide("contains", edge, f"kuhn {k} {corrupt}", (k + 1) ** 3, m)
+    header("contains (TETRAD): random points in space, each pair a segment with probability 0.85, hull edges added")
+    for n in [10, 14, 18] if QUICK else [10, 14, 18, 22, 26, 30, 34, 38]:
+        for seed in range(2):
+            pts, segs = random_instance(n, False, 1000 * n + seed, keep=0.85)
+            path, segs = with_hull_edges("r.json", pts, segs)
+            decide("contains", path, f"random {n} #{seed}", n, len(segs))
+    header("contains (TRID, planar): random points in the plane, each pair with probability 0.85, hull edges added")
+    for n in [10, 20, 30] if QUICK else [10, 20, 30, 40, 50, 60]:
+        for seed in range(2):
+            pts, segs = random_instance(n, True, 2000 * n + seed, keep=0.85)
+            path, segs = with_hull_edges("t.json", pts, segs)
+            decide("contains", path, f"planar {n} #{seed}", n, len(segs))
+    header("constrained (CT): random points in space, n/2 random pairs as constraints")
+    for n in [10, 20] if QUICK else [10, 20, 30, 40, 50, 59]:
+        for seed in range(2):
+            pts, pairs = random_instance(n, False, 3000 * n + seed, keep=1.0)
+            rng = random.Random(seed)
+            cons = rng.sample(pairs, n // 2)
+            decide("constrained", write("c.json", pts, cons), f"random {n} #{seed}", n, len(cons))
+    tetgen_table()
+
+
+def tetgen_table():
+    print("\ntetrahedralize against TetGen -pY (keep the boundary; Steiner points only inside)\n")
+    print("| polyhedron | tetrakit | seconds | TetGen -pY | Steiner points |")
+    print("|---|---|---|---|---|")
+    for name, args in [("prism twisted +30°", ["--twist", "30"]), ("prism twisted -30°", ["--twist", "-30"]),
+                       ("Schönhardt (generate schonhardt)", [])]:
+        off = os.path.join(WORK, "s.off")
+        subprocess.run([TK, "generate", "schonhardt", *args, "-o", off], check=True, capture_output=True)
+        v, secs = run(["tetrahedralize", off])
+        ours = f"{v['verdict']}" + (f", {v['tetrahedra']} tetrahedra" if v["verdict"] == "yes" else "")
+        tg = "not installed"
+        steiner = "-"
+        if shutil.which("tetgen"):
+            out = subprocess.run(["tetgen", "-pYV", off], capture_output=True, text=True)
+            for line in out.stdout.splitlines():
+                if "Steiner points" in line or "steiner" in line.lower():
+                    steiner = line.strip()
+            tg = "ok" if out.returncode == 0 else f"exit {out.returncode}"
+        print(f"| {name} | {ours} | {secs:.3f} | {tg} | {steiner} |")
+
+
+if __name__ == "__main__":
+    main()
