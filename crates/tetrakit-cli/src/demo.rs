@@ -281,6 +281,19 @@ fn prescribed_edges_section() {
     );
     let no_spoke = contains(&square, &ring[..7], &opts, &ctl).expect("valid input");
     show("the same without one spoke", &no_spoke.answer);
+    // Theorem 2.9: the same two instances carried to space.
+    let flat: Vec<[f64; 2]> = square.iter().map(|p| [p[0], p[1]]).collect();
+    for (name, e) in [("with every spoke", &ring[..]), ("without one", &ring[..7])] {
+        let r = tetrakit::reduce::trid_to_tetrad(&flat, e).expect("no three collinear");
+        let d = contains(&r.points, &r.segments, &opts, &ctl).expect("valid input");
+        show(
+            &format!(
+                "reduced to space (`reduce trid-to-tetrad`, {} points), {name}",
+                r.points.len()
+            ),
+            &d.answer,
+        );
+    }
 }
 
 /// Thesis ch. 4: the region between two nested convex polytopes, no Steiner point.

@@ -75,6 +75,8 @@ enum Cmd {
     /// points (thesis ch. 4), certified: every tetrahedron, the boundary on both hulls,
     /// the exact volume.
     Shell(ShellCliArgs),
+    /// The constructions of thesis ch. 2 (reductions between the NP-complete problems).
+    Reduce(ReduceArgs),
     /// Write a generated instance.
     Generate(GenerateArgs),
     /// A short tour on built-in examples.
@@ -200,6 +202,29 @@ struct ConstrainedArgs {
     segments: Option<PathBuf>,
     #[command(flatten)]
     decide: DecideArgs,
+}
+
+#[derive(Args)]
+struct ReduceArgs {
+    #[command(subcommand)]
+    kind: ReduceKind,
+}
+
+#[derive(Subcommand)]
+enum ReduceKind {
+    /// Theorem 2.9: a planar segment set (TRID) to a spatial one (TETRAD) that contains a
+    /// tetrahedralization exactly when the planar one contains a triangulation; the
+    /// construction's conditions are checked exactly.
+    TridToTetrad {
+        /// Planar points (z = 0) with segments: .json, .obj with `l` lines, .edge (with
+        /// .node).
+        input: PathBuf,
+        /// The spatial segment set: .json, .obj or .edge (with .node).
+        output: PathBuf,
+        /// Print one JSON object on stdout.
+        #[arg(long)]
+        json: bool,
+    },
 }
 
 #[derive(Args)]
@@ -602,6 +627,14 @@ fn run(cmd: Cmd) -> CmdResult {
             as_json: a.json,
             output: a.output.as_deref(),
         }),
+        Cmd::Reduce(ReduceArgs {
+            kind:
+                ReduceKind::TridToTetrad {
+                    input,
+                    output,
+                    json,
+                },
+        }) => constrain::trid_to_tetrad(&input, &output, json),
         Cmd::Generate(GenerateArgs {
             kind: GenKind::Nested(a),
         }) => shell::generate_nested(&a.params(), &a.out.outer_output, &a.out.inner_output),

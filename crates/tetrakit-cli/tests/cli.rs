@@ -1095,3 +1095,56 @@ fn contains_and_constrained_bad_input() {
     ]);
     assert_eq!(o.status.code(), Some(2));
 }
+
+/// `reduce trid-to-tetrad`: the spatial instance has the planar one's answer; collinear
+/// points are refused with exit 2 and one line.
+#[test]
+fn trid_to_tetrad_keeps_the_answer() {
+    let d = dir("reduce");
+    let planar = d.join("e.json");
+    let spokes = "[0,1],[1,2],[2,3],[3,0],[0,4],[1,4],[2,4]";
+    for (extra, verdict) in [(",[3,4]", "yes"), ("", "no")] {
+        std::fs::write(
+            &planar,
+            format!(
+                "{{\"points\":[[0,0],[2,0],[2,2],[0,2],[1,0.5]],\"segments\":[{spokes}{extra}]}}"
+            ),
+        )
+        .unwrap();
+        let spatial = d.join("l.json");
+        let o = run(&[
+            "reduce",
+            "trid-to-tetrad",
+            s(&planar),
+            s(&spatial),
+            "--json",
+        ]);
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        assert_eq!(json(&o)["points"], 7);
+        assert_eq!(
+            json(&run(&["contains", s(&planar), "--json"]))["verdict"],
+            verdict
+        );
+        assert_eq!(
+            json(&run(&["contains", s(&spatial), "--json"]))["verdict"],
+            verdict
+        );
+    }
+    std::fs::write(
+        &planar,
+        "{\"points\":[[0,0],[1,0],[2,0],[0,1]],\"segments\":[[0,1]]}",
+    )
+    .unwrap();
+    let o = run(&["reduce", "trid-to-tetrad", s(&planar), s(&d.join("x.json"))]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.lines().count() == 1 && err.contains("collinear"),
+        "{err}"
+    );
+}

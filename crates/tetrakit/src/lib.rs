@@ -36,6 +36,7 @@ pub mod mesh;
 pub mod numbering;
 pub mod planar;
 pub mod polyhedra;
+pub mod reduce;
 pub mod rng;
 mod rows;
 pub mod shell;

@@ -556,3 +556,65 @@ fn a_stopped_control_is_undecided() {
     let d = constrained(&pts, &[[1, 3]], &Options::default(), &ctl).unwrap();
     assert_eq!(d.answer, Answer::Undecided);
 }
+
+/// Theorem 2.9's reduction (`reduce::trid_to_tetrad`) on 200 random TRID instances: the
+/// planar answer equals the spatial answer on the reduction; a planar YES lifts to a
+/// certified tetrahedralization within the reduction's segments, and a spatial YES
+/// projects (the link of the top apex) to a triangulation within the planar segments.
+#[test]
+fn trid_to_tetrad_keeps_the_answer() {
+    use tetrakit::reduce::trid_to_tetrad;
+    let mut rng = Rng::new(2_609);
+    let (mut yes, mut no) = (0, 0);
+    let ctl = Control::new();
+    let opts = Options::default();
+    for k in 0..200 {
+        let n = 5 + rng.below(4);
+        let pts: Vec<Point3> = (0..n).map(|_| [rng.unit(), rng.unit(), 0.0]).collect();
+        let flat: Vec<Point2> = pts.iter().map(|p| [p[0], p[1]]).collect();
+        let keep = 5 + rng.below(4);
+        let e: Vec<[u32; 2]> = all_pairs(n)
+            .into_iter()
+            .filter(|_| rng.below(8) < keep)
+            .collect();
+        let r = trid_to_tetrad(&flat, &e).expect("random points are in general position");
+        let planar = contains(&pts, &e, &opts, &ctl).unwrap();
+        let spatial = contains(&r.points, &r.segments, &opts, &ctl).unwrap();
+        let allowed = |tets: &[[u32; 4]]| {
+            edges_of(tets)
+                .iter()
+                .all(|&(a, b)| r.segments.iter().any(|s| key(*s) == [a, b]))
+        };
+        match (&planar.answer, &spatial.answer) {
+            (Answer::Yes(Cells::Triangles(tris)), Answer::Yes(Cells::Tetrahedra(tets))) => {
+                yes += 1;
+                let lifted = r.lift(tris);
+                assert!(
+                    certify_hull(&r.points, &lifted).is_ok() && allowed(&lifted),
+                    "#{k}"
+                );
+                let back = r.project(tets).expect("the top apex is a vertex");
+                let ccw: Vec<[u32; 3]> = back
+                    .iter()
+                    .map(|t| {
+                        let [a, b, c] = t.map(|v| &flat[v as usize]);
+                        if orient2d(a, b, c) > 0 {
+                            *t
+                        } else {
+                            [t[0], t[2], t[1]]
+                        }
+                    })
+                    .collect();
+                assert!(verify_triangulation(&flat, &ccw).is_valid(), "#{k}");
+                let in_e = |x: [u32; 2]| e.iter().any(|s| key(*s) == key(x));
+                assert!(
+                    ccw.iter()
+                        .all(|t| in_e([t[0], t[1]]) && in_e([t[1], t[2]]) && in_e([t[0], t[2]]))
+                );
+            }
+            (Answer::No(_), Answer::No(_)) => no += 1,
+            (a, b) => panic!("#{k}: planar {a:?}, spatial {b:?}"),
+        }
+    }
+    assert!(yes >= 30 && no >= 30, "yes {yes}, no {no}");
+}
