@@ -101,10 +101,10 @@ def main():
             pts, segs = random_instance(n, False, 1000 * n + seed, keep=0.85)
             path, segs = with_hull_edges("r.json", pts, segs)
             decide("contains", path, f"random {n} #{seed}", n, len(segs))
-    header("contains (TRID, planar): random points in the plane, each pair with probability 0.85, hull edges added")
+    header("contains (TRID, planar): random points in the plane, each pair with probability 0.95, hull edges added")
     for n in [10, 20, 30] if QUICK else [10, 20, 30, 40, 50, 60]:
         for seed in range(2):
-            pts, segs = random_instance(n, True, 2000 * n + seed, keep=0.85)
+            pts, segs = random_instance(n, True, 2000 * n + seed, keep=0.95)
             path, segs = with_hull_edges("t.json", pts, segs)
             decide("contains", path, f"planar {n} #{seed}", n, len(segs))
     header("constrained (CT): random points in space, n/2 random pairs as constraints")
