@@ -2,7 +2,7 @@
 
 use crate::control::Control;
 use crate::geom::{
-    Point3, orient2d_drop, orient3d, point_in_closed_tetrahedron, projection_axis,
+    Hull3, Point3, orient2d_drop, orient3d, point_in_closed_tetrahedron, projection_axis,
     segment_meets_tet_improperly, triangle_meets_tet,
 };
 use crate::mesh::Polyhedron;
@@ -261,16 +261,31 @@ fn structure(
             }
         }
     }
-    // Free boundary triangles, and Euler: t = e_i + offset (see the module docs).
+    // Free boundary triangles, and Euler: t = e_i + offset (see the module docs). A
+    // candidate triangle's plane supports the points exactly when its corners share a
+    // facet of their hull.
+    let free_hull = match domain {
+        Domain::Points(_)
+        | Domain::Shell {
+            outer_faces: None, ..
+        } => Some(Hull3::new(pts)),
+        _ => None,
+    };
+    let supporting = |f: &[u32; 3]| {
+        free_hull.as_ref().is_some_and(|h| {
+            h.common_facet(f[0] as usize, f[1] as usize, f[2] as usize)
+                .is_some()
+        })
+    };
     for (f, usage) in triangles.iter_mut() {
         usage.on_hull = match (domain, inner) {
-            (Domain::Points(_), _) => supporting(pts, f),
+            (Domain::Points(_), _) => supporting(f),
             (Domain::Shell { outer_faces, .. }, Some((q, local))) => {
                 let on_q = f.map(|v| local[v as usize]);
                 let on_q = !on_q.contains(&u32::MAX)
                     && q.common_facet(on_q[0] as usize, on_q[1] as usize, on_q[2] as usize)
                         .is_some();
-                on_q || (outer_faces.is_none() && supporting(pts, f))
+                on_q || (outer_faces.is_none() && supporting(f))
             }
             _ => false,
         };
@@ -316,7 +331,7 @@ pub(crate) fn euler_offset(domain: Domain) -> i64 {
         // χ = 1 for a ball: t = χ − n + e_b − f_b / 2 + e_i = e_i + n − 3.
         Domain::Polyhedron(_) => n - 3,
         Domain::Points(_) => {
-            let hull = crate::geom::Hull3::new(pts);
+            let hull = Hull3::new(pts);
             let nb = (0..pts.len()).filter(|&i| hull.on_boundary(i)).count();
             2 * nb as i64 - n - 3
         }
@@ -359,22 +374,6 @@ fn inner_polytope(domain: Domain) -> Option<(super::separate::Convex, Vec<u32>)>
     }
     let q = inner.iter().map(|&v| points[v as usize]).collect();
     Some((super::separate::Convex::new(q), local))
-}
-
-/// True when the plane of `f` supports the point set (all points on one closed side).
-fn supporting(pts: &[Point3], f: &[u32; 3]) -> bool {
-    let [a, b, c] = f.map(|v| &pts[v as usize]);
-    let mut seen = 0i8;
-    for p in pts {
-        let s = orient3d(a, b, c, p);
-        if s != 0 {
-            if seen != 0 && s != seen {
-                return false;
-            }
-            seen = s;
-        }
-    }
-    true
 }
 
 fn fits_polyhedron(
