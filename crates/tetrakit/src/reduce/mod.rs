@@ -1,4 +1,5 @@
-//! Constructions of thesis ch. 2 §2.5: the reduction of TRID (does a planar segment set
+//! Constructions of thesis ch. 2 §2.5: Lemma 2.6's flips ([`hull_gap`]), and the
+//! reduction of TRID (does a planar segment set
 //! contain a triangulation?) to TETRAD (does a spatial one contain a tetrahedralization?),
 //! with its conditions checked exactly on every output.
 //!
@@ -32,6 +33,10 @@
 //! one of its triangles, below that triangle's plane, which (C2) forbids; so the link
 //! uses every point, its triangles have their edges in `E`, and they triangulate the
 //! points ([`Reduction::project`]).
+
+mod hull_gap;
+
+pub use hull_gap::{HullGapError, hull_gap};
 
 use crate::geom::{Hull3, Point2, Point3, orient2d, orient3d};
 

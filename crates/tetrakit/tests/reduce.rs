@@ -1,0 +1,95 @@
+//! The constructions of thesis ch. 2 §2.5: Lemma 2.6's flips on polyhedra peeled from
+//! tetrahedralizations of points in convex position.
+
+use tetrakit::generate::tetrahedralize_points;
+use tetrakit::geom::{Point3, orient3d};
+use tetrakit::mesh::{Polyhedron, certify_hull};
+use tetrakit::reduce::{HullGapError, hull_gap};
+use tetrakit::rng::Rng;
+
+/// The faces of `tets` that only one of them has, oriented outward (the fourth vertex
+/// behind).
+fn boundary(pts: &[Point3], tets: &[[u32; 4]]) -> Vec<[u32; 3]> {
+    let mut count = std::collections::HashMap::new();
+    for t in tets {
+        for k in 0..4 {
+            let mut f: Vec<u32> = (0..4).filter(|&j| j != k).map(|j| t[j]).collect();
+            f.sort_unstable();
+            count.entry([f[0], f[1], f[2]]).or_insert((0, t[k])).0 += 1;
+        }
+    }
+    count
+        .into_iter()
+        .filter(|(_, (k, _))| *k == 1)
+        .map(|([a, b, c], (_, x))| {
+            let p = |v: u32| &pts[v as usize];
+            if orient3d(p(a), p(b), p(c), p(x)) > 0 {
+                [a, c, b]
+            } else {
+                [a, b, c]
+            }
+        })
+        .collect()
+}
+
+/// Points on a sphere, a tetrahedralization of their hull, some tetrahedra on the
+/// boundary peeled off while the rest stays a simple polyhedron on every point: Lemma
+/// 2.6's flips fill the gap, and with the rest it tetrahedralizes the hull.
+#[test]
+fn hull_gap_fills_peeled_hulls() {
+    let mut rng = Rng::new(26);
+    let mut flipped = 0;
+    for k in 0..120 {
+        let n = 8 + rng.below(10);
+        let pts: Vec<Point3> = (0..n)
+            .map(|_| {
+                let (z, a) = (2.0 * rng.unit() - 1.0, std::f64::consts::TAU * rng.unit());
+                let r = (1.0 - z * z).sqrt();
+                [r * a.cos(), r * a.sin(), z]
+            })
+            .collect();
+        let mut tets = tetrahedralize_points(pts.clone(), k).tets;
+        for _ in 0..1 + rng.below(tets.len()) {
+            let i = rng.below(tets.len());
+            let mut rest = tets.clone();
+            rest.swap_remove(i);
+            let used: std::collections::HashSet<u32> = rest.iter().flatten().copied().collect();
+            if used.len() == n && Polyhedron::new(pts.clone(), boundary(&pts, &rest)).is_ok() {
+                tets = rest;
+            }
+        }
+        let q = Polyhedron::new(pts.clone(), boundary(&pts, &tets)).unwrap();
+        let gap = hull_gap(&q).unwrap_or_else(|e| panic!("#{k}: {e}"));
+        flipped += gap.len();
+        let mut all = tets;
+        all.extend(gap);
+        assert!(certify_hull(&pts, &all).is_ok(), "#{k}");
+    }
+    assert!(
+        flipped > 200,
+        "the peeling left too little to flip: {flipped}"
+    );
+}
+
+/// A vertex inside the hull is refused (the lemma's condition), naming it.
+#[test]
+fn hull_gap_needs_every_vertex_on_the_hull() {
+    let pts = vec![
+        [0.0, 0.0, 0.0],
+        [4.0, 0.0, 0.0],
+        [0.0, 4.0, 0.0],
+        [0.0, 0.0, 4.0],
+        [0.5, 0.5, 0.5],
+    ];
+    // The tetrahedron 0-1-2-3 with its face 1-2-3 dented to the inner point 4.
+    let faces = vec![
+        [0, 2, 1],
+        [0, 1, 3],
+        [0, 3, 2],
+        [1, 2, 4],
+        [2, 3, 4],
+        [3, 1, 4],
+    ];
+    let q = Polyhedron::new(pts, faces).unwrap();
+    assert_eq!(hull_gap(&q), Err(HullGapError::NotHullVertex(4)));
+}
