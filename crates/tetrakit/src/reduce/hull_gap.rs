@@ -72,15 +72,13 @@ pub fn hull_gap(q: &Polyhedron) -> Result<Vec<[u32; 4]>, HullGapError> {
         let Some(&first) = reflex.first() else {
             break;
         };
-        let flip = reflex
-            .iter()
-            .find_map(|&(a, b, fi, fj)| try_flip(pts, &faces, a, b, fi, fj));
-        let Some((tet, fi, fj, new)) = flip else {
-            return Err(HullGapError::Stuck([first.0, first.1]));
+        let Some(flip) = reflex.iter().find_map(|r| try_flip(pts, &faces, r)) else {
+            return Err(HullGapError::Stuck(first.edge));
         };
-        tets.push(tet);
-        faces[fi] = new[0];
-        faces[fj] = new[1];
+        tets.push(flip.tet);
+        for (k, f) in flip.faces.into_iter().zip(flip.new) {
+            faces[k] = f;
+        }
     }
     if tets.is_empty() {
         return Ok(tets);
@@ -113,8 +111,21 @@ pub fn hull_gap(q: &Polyhedron) -> Result<Vec<[u32; 4]>, HullGapError> {
     Ok(tets)
 }
 
-/// Reflex edges `(a, b, face abc, face bad)`: `d` strictly outside face `abc`.
-fn reflex_edges(pts: &[[f64; 3]], faces: &[[u32; 3]]) -> Vec<(u32, u32, usize, usize)> {
+/// A reflex edge `ab` and its faces `abc`, `bad` (indices).
+struct Reflex {
+    edge: [u32; 2],
+    faces: [usize; 2],
+}
+
+/// A flip: the tetrahedron added, the two faces it replaces, their replacements.
+struct Flip {
+    tet: [u32; 4],
+    faces: [usize; 2],
+    new: [[u32; 3]; 2],
+}
+
+/// Reflex edges: `d` strictly outside face `abc`, in a fixed order.
+fn reflex_edges(pts: &[[f64; 3]], faces: &[[u32; 3]]) -> Vec<Reflex> {
     let mut by_edge: HashMap<(u32, u32), usize> = HashMap::new();
     for (i, f) in faces.iter().enumerate() {
         for k in 0..3 {
@@ -134,24 +145,21 @@ fn reflex_edges(pts: &[[f64; 3]], faces: &[[u32; 3]]) -> Vec<(u32, u32, usize, u
         };
         let (c, d) = (third(&faces[i], a, b), third(&faces[j], a, b));
         if orient3d(p(a), p(b), p(c), p(d)) > 0 {
-            out.push((a, b, i, j));
+            out.push(Reflex {
+                edge: [a, b],
+                faces: [i, j],
+            });
         }
     }
-    out.sort_unstable();
+    out.sort_unstable_by_key(|r| r.edge);
     out
 }
 
-/// The flip of reflex edge `ab` (faces `fi = abc`, `fj = bad`) if its tetrahedron
-/// `abcd` holds no other vertex and meets no other face improperly: the tetrahedron
-/// (positively oriented) and the two new faces `acd`, `bdc`.
-fn try_flip(
-    pts: &[[f64; 3]],
-    faces: &[[u32; 3]],
-    a: u32,
-    b: u32,
-    fi: usize,
-    fj: usize,
-) -> Option<([u32; 4], usize, usize, [[u32; 3]; 2])> {
+/// The flip of reflex edge `ab` (faces `abc`, `bad`) if its tetrahedron `abcd` holds no
+/// other vertex and meets no other face improperly: the tetrahedron (positively
+/// oriented) and the two new faces `acd`, `bdc`.
+fn try_flip(pts: &[[f64; 3]], faces: &[[u32; 3]], r: &Reflex) -> Option<Flip> {
+    let ([a, b], [fi, fj]) = (r.edge, r.faces);
     let rotate = |f: [u32; 3], v: u32| {
         let k = f.iter().position(|&x| x == v).expect("vertex of face");
         [f[k], f[(k + 1) % 3], f[(k + 2) % 3]]
@@ -191,5 +199,9 @@ fn try_flip(
             [x, y, z]
         }
     };
-    Some((tet, fi, fj, [outward([a, c, d], b), outward([b, d, c], a)]))
+    Some(Flip {
+        tet,
+        faces: [fi, fj],
+        new: [outward([a, c, d], b), outward([b, d, c], a)],
+    })
 }
