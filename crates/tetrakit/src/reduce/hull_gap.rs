@@ -69,7 +69,7 @@ pub fn hull_gap(q: &Polyhedron) -> Result<Vec<[u32; 4]>, HullGapError> {
     let mut tets = Vec::new();
     loop {
         let reflex = reflex_edges(pts, &faces);
-        let Some(&first) = reflex.first() else {
+        let Some(first) = reflex.first() else {
             break;
         };
         let Some(flip) = reflex.iter().find_map(|r| try_flip(pts, &faces, r)) else {
