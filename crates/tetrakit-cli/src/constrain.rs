@@ -135,6 +135,34 @@ pub fn write_proof<E: std::fmt::Display>(
     })
 }
 
+/// `generate niche`.
+pub fn generate_niche(
+    twist: f64,
+    extra: usize,
+    in_view: bool,
+    seed: u64,
+    output: &Path,
+) -> CmdResult {
+    let (pts, segs, n) =
+        constrain::generate::niche(twist, extra, in_view, seed).map_err(CliError::new)?;
+    let pairs: Vec<(u32, u32)> = segs.iter().map(|&[a, b]| (a, b)).collect();
+    io::write_edges(output, &pts, &pairs, 1).written(output)?;
+    out!(
+        "wrote {}: {} points, {} constraints; niche top {:?}, base {:?} (0-based), {} point in its view",
+        output.display(),
+        pts.len(),
+        segs.len(),
+        n.top,
+        n.base,
+        if n.vertex_in_view(&pts).is_some() {
+            "a"
+        } else {
+            "no"
+        }
+    );
+    Ok(Verdict::Yes)
+}
+
 /// `reduce trid-to-tetrad IN OUT`.
 pub fn trid_to_tetrad(input: &Path, output: &Path, as_json: bool) -> CmdResult {
     let start = Instant::now();

@@ -450,6 +450,25 @@ enum GenKind {
         #[command(flatten)]
         out: PairOutput,
     },
+    /// A CT instance for `constrained`: Schönhardt's polyhedron's twelve edges as
+    /// constraints, among random points outside its niche's view (Theorem 2.10: NO).
+    Niche {
+        /// Twist in degrees, in (0, 60).
+        #[arg(long, default_value_t = 30.0)]
+        twist: f64,
+        /// Random points around the prism, outside the view.
+        #[arg(long, default_value_t = 8)]
+        extra: usize,
+        /// Add the prism's centre, which sees both niches' bases (then YES).
+        #[arg(long)]
+        in_view: bool,
+        /// Seed.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// Output: .json, .edge (with .node) or .obj.
+        #[arg(long, short)]
+        output: PathBuf,
+    },
     /// Points on two skew lines: Θ(n²) tetrahedra, the thesis's worst case for m.
     SkewLines {
         /// Number of points (half on each line).
@@ -635,6 +654,16 @@ fn run(cmd: Cmd) -> CmdResult {
                     json,
                 },
         }) => constrain::trid_to_tetrad(&input, &output, json),
+        Cmd::Generate(GenerateArgs {
+            kind:
+                GenKind::Niche {
+                    twist,
+                    extra,
+                    in_view,
+                    seed,
+                    output,
+                },
+        }) => constrain::generate_niche(twist, extra, in_view, seed, &output),
         Cmd::Generate(GenerateArgs {
             kind: GenKind::Nested(a),
         }) => shell::generate_nested(&a.params(), &a.out.outer_output, &a.out.inner_output),

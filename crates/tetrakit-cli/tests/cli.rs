@@ -1148,3 +1148,33 @@ fn trid_to_tetrad_keeps_the_answer() {
         "{err}"
     );
 }
+
+/// `generate niche`: without a point in the view the constraints are a NO explained by
+/// the niche; with the centre they are tetrahedralizable; a twist whose faces cross is
+/// refused.
+#[test]
+fn niche_instances() {
+    let d = dir("niche");
+    let no = d.join("no.json");
+    assert!(
+        run(&["generate", "niche", "--extra", "5", "-o", s(&no)])
+            .status
+            .success()
+    );
+    let o = run(&["constrained", s(&no), "--json"]);
+    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(json(&o)["witness"]["kind"], "empty_niche_view");
+    let yes = d.join("yes.edge");
+    assert!(
+        run(&["generate", "niche", "--in-view", "-o", s(&yes)])
+            .status
+            .success()
+    );
+    assert_eq!(
+        run(&["constrained", s(&d.join("yes.node"))]).status.code(),
+        Some(0)
+    );
+    let o = run(&["generate", "niche", "--twist", "70", "-o", s(&no)]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("not a simple polyhedron"));
+}

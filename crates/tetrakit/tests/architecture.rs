@@ -23,10 +23,10 @@ fn allowed(top: &str) -> Vec<&'static str> {
     };
     // `io` writes planar results; the shell hands pieces no cone tiles to the exact
     // solver and improves its meshes by flips; `constrain` asks `detect` first and the
-    // exact solver after.
+    // exact solver after, and builds its niche instances on `polyhedra`'s twisted prism.
     let extra: &[&str] = match top {
         "io" => &["planar"],
-        "constrain" => &["detect", "exact"],
+        "constrain" => &["detect", "exact", "polyhedra"],
         "shell" => &["exact", "flip"],
         _ => &[],
     };

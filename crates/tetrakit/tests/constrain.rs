@@ -618,3 +618,38 @@ fn trid_to_tetrad_keeps_the_answer() {
     }
     assert!(yes >= 30 && no >= 30, "yes {yes}, no {no}");
 }
+
+/// Theorem 2.10 on niche instances: Schönhardt's edges as constraints among random
+/// points outside the niche's view are a NO, explained by the niche (and refuted by the
+/// formula, whose proof `rate` verifies); with the prism's centre, which sees both
+/// niches' bases, every instance is tetrahedralizable.
+#[test]
+fn niches_with_an_empty_view_are_no() {
+    use tetrakit::constrain::generate::niche;
+    let (mut yes_with_point, mut tried) = (0, 0);
+    for (k, twist) in [15.0, 30.0, 45.0, 55.0].into_iter().enumerate() {
+        for seed in 0..6u64 {
+            let (pts, segs, n) = niche(twist, 3 + seed as usize, false, seed).unwrap();
+            assert!(n.vertex_in_view(&pts).is_none());
+            let d = constrained(&pts, &segs, &Options::default(), &Control::new()).unwrap();
+            let Answer::No(w) = &d.answer else {
+                panic!("twist {twist} seed {seed}: {:?}", d.answer)
+            };
+            assert_eq!(w.kind, WitnessKind::EmptyNicheView);
+            if seed == 0 {
+                check_proof(Question::Constrained, &pts, &segs, &format!("niche-{k}"));
+            }
+            let (pts, segs, n) = niche(twist, 3 + seed as usize, true, seed).unwrap();
+            assert!(n.vertex_in_view(&pts).is_some());
+            let d = constrained(&pts, &segs, &Options::default(), &Control::new()).unwrap();
+            tried += 1;
+            match &d.answer {
+                Answer::Yes(_) => yes_with_point += 1,
+                Answer::No(w) => assert_ne!(w.kind, WitnessKind::EmptyNicheView),
+                Answer::Undecided => panic!("no time limit"),
+            }
+        }
+    }
+    // With the centre, which sees both bases, every instance is tetrahedralizable.
+    assert_eq!(yes_with_point, tried);
+}

@@ -21,8 +21,11 @@
 //! formula's unsatisfiability, which [`crate::exact::prove_infeasible`] turns into a DRAT
 //! proof.
 
+pub mod generate;
+mod niche;
 mod witness;
 
+pub use niche::{Niche, find_niches};
 pub use witness::{Witness, WitnessKind};
 
 use crate::control::Control;
@@ -188,7 +191,16 @@ pub fn constrained(
     if let Some(w) = witness::bad_constraints(points, segments, ctl) {
         return Ok(problem.decided(Answer::No(w), Route::Precheck));
     }
-    problem.solve(problem.edges(Question::Constrained, segments), options, ctl)
+    let mut d = problem.solve(problem.edges(Question::Constrained, segments), options, ctl)?;
+    if let Answer::No(w) = &mut d.answer
+        && w.kind == WitnessKind::Unsatisfiable
+        && let Some(n) = find_niches(points, segments)
+            .into_iter()
+            .find(|n| n.vertex_in_view(points).is_none())
+    {
+        *w = witness::empty_niche_view(&n, d.stats.candidates);
+    }
+    Ok(d)
 }
 
 /// Which of the two problems.

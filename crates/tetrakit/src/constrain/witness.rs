@@ -25,6 +25,9 @@ pub enum WitnessKind {
     UnusableConstraint,
     /// There is no candidate tetrahedron at all.
     NoCandidate,
+    /// The constraints hold a niche whose view holds no point (Theorem 2.10); the
+    /// formula is unsatisfiable as well.
+    EmptyNicheView,
     /// The formula of the candidates is unsatisfiable (`prove_infeasible` writes a DRAT
     /// proof of it).
     Unsatisfiable,
@@ -160,6 +163,20 @@ pub(super) fn bad_constraints(
         }
     }
     None
+}
+
+/// The niche explanation of a NO the solver proved (Theorem 2.10's premise asks the
+/// base to be a face; the refutation does not depend on it).
+pub(super) fn empty_niche_view(n: &super::Niche, candidates: usize) -> Witness {
+    let ([a, b, c], [a1, b1, c1]) = (n.top, n.base);
+    Witness::new(
+        WitnessKind::EmptyNicheView,
+        vec![a, b, c, a1, b1, c1],
+        n.edges().to_vec(),
+        format!(
+            "the constraints hold a niche, Schönhardt's polyhedron on top (#{a}, #{b}, #{c}) and base (#{a1}, #{b1}, #{c1}) without its top face, and no point sees the whole base (Theorem 2.10); the SAT formula of the {candidates} candidates is unsatisfiable too (--proof)"
+        ),
+    )
 }
 
 /// The witness of an obstacle the solver found before searching (`n` input points; the

@@ -508,7 +508,8 @@ pub fn schonhardt() -> Polyhedron {
 /// quadrilateral split by the diagonal from its bottom-left to its top-right corner. A
 /// positive twist makes the three diagonals reflex: Schönhardt's polyhedron, with no
 /// tetrahedralization. A negative twist makes it convex (tetrahedralizable). Twists of
-/// 120° or more (either way) are refused: the sides would cross.
+/// 120° or more (either way) are refused, and so is any prism whose faces cross (a
+/// positive twist of 60° or more: the dented sides pass through each other).
 ///
 /// ```
 /// use tetrakit::polyhedra::generate::{reflex_edges, twisted_prism};

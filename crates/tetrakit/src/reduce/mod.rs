@@ -1,4 +1,4 @@
-//! Constructions of thesis ch. 2 §2.5: Lemma 2.6's flips ([`hull_gap`]), and the
+//! Constructions of thesis ch. 2 §2.5: Lemma 2.6's flips ([`hull_gap`]) and the
 //! reduction of TRID (does a planar segment set
 //! contain a triangulation?) to TETRAD (does a spatial one contain a tetrahedralization?),
 //! with its conditions checked exactly on every output.
