@@ -143,8 +143,8 @@ pub fn generate_niche(
     seed: u64,
     output: &Path,
 ) -> CmdResult {
-    let (pts, segs, n) =
-        constrain::generate::niche(twist, extra, in_view, seed).map_err(CliError::new)?;
+    let g = constrain::generate::niche(twist, extra, in_view, seed).map_err(CliError::new)?;
+    let (pts, segs, n) = (g.points, g.constraints, g.niche);
     let pairs: Vec<(u32, u32)> = segs.iter().map(|&[a, b]| (a, b)).collect();
     io::write_edges(output, &pts, &pairs, 1).written(output)?;
     out!(

@@ -629,8 +629,9 @@ fn niches_with_an_empty_view_are_no() {
     let (mut yes_with_point, mut tried) = (0, 0);
     for (k, twist) in [15.0, 30.0, 45.0, 55.0].into_iter().enumerate() {
         for seed in 0..6u64 {
-            let (pts, segs, n) = niche(twist, 3 + seed as usize, false, seed).unwrap();
-            assert!(n.vertex_in_view(&pts).is_none());
+            let g = niche(twist, 3 + seed as usize, false, seed).unwrap();
+            let (pts, segs) = (g.points, g.constraints);
+            assert!(g.niche.vertex_in_view(&pts).is_none());
             let d = constrained(&pts, &segs, &Options::default(), &Control::new()).unwrap();
             let Answer::No(w) = &d.answer else {
                 panic!("twist {twist} seed {seed}: {:?}", d.answer)
@@ -639,8 +640,9 @@ fn niches_with_an_empty_view_are_no() {
             if seed == 0 {
                 check_proof(Question::Constrained, &pts, &segs, &format!("niche-{k}"));
             }
-            let (pts, segs, n) = niche(twist, 3 + seed as usize, true, seed).unwrap();
-            assert!(n.vertex_in_view(&pts).is_some());
+            let g = niche(twist, 3 + seed as usize, true, seed).unwrap();
+            let (pts, segs) = (g.points, g.constraints);
+            assert!(g.niche.vertex_in_view(&pts).is_some());
             let d = constrained(&pts, &segs, &Options::default(), &Control::new()).unwrap();
             tried += 1;
             match &d.answer {

@@ -4,27 +4,32 @@ use super::niche::{Niche, find_niches};
 use crate::geom::Point3;
 use crate::rng::Rng;
 
+/// A generated CT instance and the niche it was built around.
+#[derive(Clone, Debug, PartialEq)]
+pub struct NicheInstance {
+    /// The points: Schönhardt's six, then the others.
+    pub points: Vec<Point3>,
+    /// Schönhardt's twelve edges.
+    pub constraints: Vec<[u32; 2]>,
+    /// Its bottom niche.
+    pub niche: Niche,
+}
+
 /// A CT instance: Schönhardt's polyhedron (the prism twisted by `twist` degrees, in
 /// (0°, 120°)) with its twelve edges as constraints, and `extra` random points around it
 /// outside the view of its bottom niche; with `in_view`, one more point at the prism's
-/// centre, which sees both niches' bases (refused if it does not). Returns the points,
-/// the constraints and the bottom niche.
+/// centre, which sees both niches' bases (refused if it does not).
 ///
 /// ```
 /// use tetrakit::constrain::{Answer, Options, WitnessKind, constrained, generate::niche};
 /// use tetrakit::control::Control;
-/// let (pts, segs, n) = niche(30.0, 6, false, 1).unwrap();
-/// assert!(n.vertex_in_view(&pts).is_none());
-/// let d = constrained(&pts, &segs, &Options::default(), &Control::new()).unwrap();
+/// let g = niche(30.0, 6, false, 1).unwrap();
+/// assert!(g.niche.vertex_in_view(&g.points).is_none());
+/// let d = constrained(&g.points, &g.constraints, &Options::default(), &Control::new()).unwrap();
 /// let Answer::No(w) = d.answer else { panic!() };
 /// assert_eq!(w.kind, WitnessKind::EmptyNicheView);
 /// ```
-pub fn niche(
-    twist: f64,
-    extra: usize,
-    in_view: bool,
-    seed: u64,
-) -> Result<(Vec<Point3>, Vec<[u32; 2]>, Niche), String> {
+pub fn niche(twist: f64, extra: usize, in_view: bool, seed: u64) -> Result<NicheInstance, String> {
     if !(twist > 0.0 && twist < 120.0) {
         return Err(format!(
             "a twist of {twist}°: a niche needs a twist in (0°, 120°)"
@@ -67,5 +72,9 @@ pub fn niche(
             ));
         }
     }
-    Ok((pts, segs, n))
+    Ok(NicheInstance {
+        points: pts,
+        constraints: segs,
+        niche: n,
+    })
 }
