@@ -215,6 +215,20 @@ fn search2(
     false
 }
 
+/// The triangles turned counter-clockwise in the plane.
+fn counter_clockwise(flat: &[Point2], tris: &[[u32; 3]]) -> Vec<[u32; 3]> {
+    tris.iter()
+        .map(|t| {
+            let [a, b, c] = t.map(|v| &flat[v as usize]);
+            if orient2d(a, b, c) > 0 {
+                *t
+            } else {
+                [t[0], t[2], t[1]]
+            }
+        })
+        .collect()
+}
+
 fn key([a, b]: [u32; 2]) -> [u32; 2] {
     [a.min(b), a.max(b)]
 }
@@ -342,17 +356,7 @@ fn agree(
                 }
                 Cells::Triangles(tris) => {
                     let flat: Vec<Point2> = pts.iter().map(|q| [q[0], q[1]]).collect();
-                    let ccw: Vec<[u32; 3]> = tris
-                        .iter()
-                        .map(|t| {
-                            let [a, b, c] = t.map(|v| &flat[v as usize]);
-                            if orient2d(a, b, c) > 0 {
-                                *t
-                            } else {
-                                [t[0], t[2], t[1]]
-                            }
-                        })
-                        .collect();
+                    let ccw = counter_clockwise(&flat, tris);
                     assert!(verify_triangulation(&flat, &ccw).is_valid(), "{tag}");
                     ccw.iter()
                         .flat_map(|t| [[t[0], t[1]], [t[1], t[2]], [t[0], t[2]]].map(key))
@@ -594,17 +598,7 @@ fn trid_to_tetrad_keeps_the_answer() {
                     "#{k}"
                 );
                 let back = r.project(tets).expect("the top apex is a vertex");
-                let ccw: Vec<[u32; 3]> = back
-                    .iter()
-                    .map(|t| {
-                        let [a, b, c] = t.map(|v| &flat[v as usize]);
-                        if orient2d(a, b, c) > 0 {
-                            *t
-                        } else {
-                            [t[0], t[2], t[1]]
-                        }
-                    })
-                    .collect();
+                let ccw = counter_clockwise(&flat, &back);
                 assert!(verify_triangulation(&flat, &ccw).is_valid(), "#{k}");
                 let in_e = |x: [u32; 2]| e.iter().any(|s| key(*s) == key(x));
                 assert!(

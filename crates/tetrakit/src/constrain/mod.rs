@@ -341,10 +341,17 @@ impl Problem {
             Outcome::Optimal { tets, .. } => (Answer::Yes(self.cells(tets)), true),
             Outcome::Found { tets } => (Answer::Yes(self.cells(tets)), false),
             Outcome::Infeasible => {
-                let w = match &stats.obstacle {
+                let mut w = match &stats.obstacle {
                     Some(o) => witness::from_obstacle(o, self.n),
                     None => Witness::unsatisfiable(stats.candidates),
                 };
+                if self.planar {
+                    // The cone's tetrahedra are the apex over the plane's triangles.
+                    w.detail = w
+                        .detail
+                        .replace("tetrahedron", "triangle")
+                        .replace("tetrahedra", "triangles");
+                }
                 (Answer::No(w), false)
             }
             Outcome::Undecided { .. } => (Answer::Undecided, false),
