@@ -1178,3 +1178,22 @@ fn niche_instances() {
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("not a simple polyhedron"));
 }
+
+/// A planar NO speaks of triangles and triangulations, not of the cone's tetrahedra.
+#[test]
+fn planar_witnesses_speak_of_triangles() {
+    let d = dir("planar-witness");
+    let p = d.join("w.json");
+    std::fs::write(
+        &p,
+        "{\"points\":[[0,0],[2,0],[2,2],[0,2],[1,0.5]],\"segments\":[[0,1],[1,2],[2,3],[3,0],[0,4],[1,4],[2,4]]}",
+    )
+    .unwrap();
+    let o = run(&["contains", s(&p), "--json"]);
+    assert_eq!(o.status.code(), Some(1));
+    let detail = json(&o)["witness"]["detail"].as_str().unwrap().to_string();
+    assert!(
+        detail.contains("triangulation") && !detail.contains("tetrahedr"),
+        "{detail}"
+    );
+}

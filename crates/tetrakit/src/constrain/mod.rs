@@ -349,6 +349,7 @@ impl Problem {
                     // The cone's tetrahedra are the apex over the plane's triangles.
                     w.detail = w
                         .detail
+                        .replace("tetrahedralization", "triangulation")
                         .replace("tetrahedron", "triangle")
                         .replace("tetrahedra", "triangles");
                 }
