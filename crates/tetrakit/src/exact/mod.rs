@@ -27,6 +27,17 @@
 //! implied, which keeps the formula near-linear in the number of candidates. Every answer
 //! is still certified afterwards by [`mesh::verify`].
 //!
+//! **Prescribed edges** ([`Edges`], thesis §2.5–2.6). With allowed segments (TETRAD) the
+//! candidates are those whose six edges are allowed; with required segments (CT) those
+//! that meet no required segment other than in shared vertices or as an edge. The
+//! formula is still exact. A satisfying choice is a tetrahedralization, as above; its
+//! edges are allowed, being candidates' edges; and each required segment is an edge of
+//! it: a point inside the segment lies in some chosen tetrahedron, which the segment
+//! meets only as one of its edges. Conversely a tetrahedralization obeying the rules
+//! uses only candidates (its tetrahedra are empty, have allowed edges, and meet its own
+//! edges face to face), so it satisfies the clauses. The clause "some chosen
+//! tetrahedron has this required segment" is implied and added to help the solver.
+//!
 //! **A region with a hole** ([`Domain::Shell`], the region between nested polytopes
 //! `Q ⊆ P`): candidates are also kept off the interior of `Q` (an exact separating-axis
 //! test), triangles on a facet of `Q` (and on a facet of `P`, unless its triangles are
