@@ -187,6 +187,7 @@ pub fn trid_to_tetrad(input: &Path, output: &Path, as_json: bool) -> CmdResult {
     let pairs: Vec<(u32, u32)> = r.segments.iter().map(|&[a, b]| (a, b)).collect();
     io::write_edges(output, &r.points, &pairs, inp.index_base).written(output)?;
     let v = json!({
+        "verdict": "written",
         "points": r.points.len(),
         "segments": r.segments.len(),
         "planar_points": flat.len(),

@@ -93,3 +93,17 @@ fn hull_gap_needs_every_vertex_on_the_hull() {
     let q = Polyhedron::new(pts, faces).unwrap();
     assert_eq!(hull_gap(&q), Err(HullGapError::NotHullVertex(4)));
 }
+
+/// Three points, and four on a circle (whose lifts lie in one plane), are TRID instances
+/// the reduction takes (it used to refuse them as "not an upper-hull vertex"), and their
+/// triangulations lift to certified tetrahedralizations.
+#[test]
+fn trid_to_tetrad_takes_tiny_and_cocircular_sets() {
+    use tetrakit::reduce::trid_to_tetrad;
+    let tri = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]];
+    let r = trid_to_tetrad(&tri, &[[0, 1], [1, 2], [0, 2]]).unwrap();
+    assert!(certify_hull(&r.points, &r.lift(&[[0, 1, 2]])).is_ok());
+    let square = [[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]];
+    let r = trid_to_tetrad(&square, &[[0, 1], [1, 2], [2, 3], [3, 0], [0, 2]]).unwrap();
+    assert!(certify_hull(&r.points, &r.lift(&[[0, 1, 2], [0, 2, 3]])).is_ok());
+}

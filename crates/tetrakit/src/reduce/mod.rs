@@ -267,7 +267,12 @@ fn orientations_kept(points: &[Point2], lifted: &[Point3], top: Point3) -> bool 
 fn not_upper_hull_vertex(lifted: &[Point3]) -> Option<u32> {
     let hull = Hull3::new(lifted);
     if hull.dimension < 3 {
-        return Some(0);
+        // The lifted points lie in one plane (three points, or points on a circle up to
+        // the lift's rounding): (C2) asks no lifted point below a triangle of others,
+        // which holds exactly when the planar points are in convex position.
+        let flat: Vec<Point2> = lifted.iter().map(|p| [p[0], p[1]]).collect();
+        let corners = crate::geom::Hull2::new(&flat).vertices;
+        return (0..lifted.len() as u32).find(|v| !corners.contains(v));
     }
     // Facet planes are oriented with the hull on their non-positive side: a facet faces
     // up when the point straight above one of its corners is on the positive side.
