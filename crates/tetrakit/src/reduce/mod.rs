@@ -35,8 +35,10 @@
 //! points ([`Reduction::project`]).
 
 mod hull_gap;
+mod quasi_prism;
 
 pub use hull_gap::{HullGapError, hull_gap};
+pub use quasi_prism::{QuasiPrism, QuasiPrismError, Staircase};
 
 use crate::geom::{Hull3, Point2, Point3, orient2d, orient3d};
 
