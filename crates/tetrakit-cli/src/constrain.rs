@@ -164,54 +164,6 @@ pub fn generate_niche(
 }
 
 /// `reduce trid-to-tetrad IN OUT`.
-pub fn trid_to_tetrad(input: &Path, output: &Path, as_json: bool) -> CmdResult {
-    let start = Instant::now();
-    let inp = io::read_input(input)?;
-    if let Some(k) = inp.points.iter().position(|p| p[2] != 0.0) {
-        return Err(CliError::at(
-            input,
-            format!(
-                "point {} has z = {}: TRID is planar (z = 0)",
-                k as u32 + inp.index_base,
-                inp.points[k][2]
-            ),
-        ));
-    }
-    let flat: Vec<[f64; 2]> = inp.points.iter().map(|p| [p[0], p[1]]).collect();
-    let r = tetrakit::reduce::trid_to_tetrad(&flat, &inp.segments).map_err(|e| {
-        CliError::at(
-            input,
-            tetrakit::numbering::renumber_text(&e.to_string(), inp.index_base),
-        )
-    })?;
-    let pairs: Vec<(u32, u32)> = r.segments.iter().map(|&[a, b]| (a, b)).collect();
-    io::write_edges(output, &r.points, &pairs, inp.index_base).written(output)?;
-    let v = json!({
-        "verdict": "written",
-        "points": r.points.len(),
-        "segments": r.segments.len(),
-        "planar_points": flat.len(),
-        "planar_segments": inp.segments.len(),
-        "apex_height": r.height,
-        "output": output.display().to_string(),
-        "checked": ["no three planar points collinear", "every orientation kept from both apexes", "every lifted point a vertex of the upper hull"],
-        "seconds": start.elapsed().as_secs_f64(),
-    });
-    if as_json {
-        out!("{v}");
-    } else {
-        out!(
-            "wrote {}: {} points, {} segments (the {} planar points lifted to a paraboloid, apexes at height ±{}); conditions checked exactly",
-            output.display(),
-            r.points.len(),
-            r.segments.len(),
-            flat.len(),
-            r.height
-        );
-    }
-    Ok(Verdict::Yes)
-}
-
 fn decision_json(d: &Decision, n: usize, m: usize, base: u32) -> Value {
     let shift = |v: u32| v + base;
     let mut v = json!({

@@ -18,6 +18,7 @@ mod exit;
 mod planar;
 mod poly;
 mod progress;
+mod reduce;
 mod run;
 mod shell;
 
@@ -224,6 +225,36 @@ enum ReduceKind {
         /// Print one JSON object on stdout.
         #[arg(long)]
         json: bool,
+    },
+    /// Lemma 2.6: tetrahedralize the gap between a polyhedron whose vertices are all
+    /// vertices of its convex hull and that hull, by flipping reflex edges outward.
+    HullGap {
+        /// The polyhedron: .off, .obj, .face (with .node) or .json with "faces".
+        input: PathBuf,
+        /// Write the tetrahedra: .ele (with .node), .vtk or .json.
+        #[arg(long, short)]
+        output: Option<PathBuf>,
+        /// Print one JSON object on stdout.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Algorithm QUASI-PRISM-TETRAHEDRALIZATION (Lemma 2.7): cut a quasi-prism (a layer
+    /// of prisms between two isomorphic triangulated surfaces) into tetrahedra keeping
+    /// all its edges, three per prism when the sides' diagonals allow (regularity checked
+    /// first), else by the exact solver.
+    QuasiPrism {
+        /// The upper surface's points, then their images in the same order, with the
+        /// upper surface's triangles: .off, .obj, .json with "faces", .face (with .node).
+        input: PathBuf,
+        /// Write the tetrahedra: .ele (with .node), .vtk or .json.
+        #[arg(long, short)]
+        output: Option<PathBuf>,
+        /// Print one JSON object on stdout.
+        #[arg(long)]
+        json: bool,
+        /// Give up after this many seconds (exit 3).
+        #[arg(long, value_parser = seconds)]
+        time_limit: Option<Duration>,
     },
 }
 
@@ -469,6 +500,23 @@ enum GenKind {
         #[arg(long, short)]
         output: PathBuf,
     },
+    /// A quasi-prism for `reduce quasi-prism`: RING points on the unit circle and INNER
+    /// random ones inside, Delaunay-triangulated, on two caps of a lens, the lower one
+    /// turned by TWIST degrees. Writes the upper points, then their images, with the
+    /// upper triangles.
+    QuasiPrism {
+        /// Points on the rim.
+        #[arg(long, default_value_t = 8)]
+        ring: usize,
+        /// Random points inside the rim.
+        #[arg(long, default_value_t = 8)]
+        inner: usize,
+        /// Turn of the lower cap in degrees, in (-90, 90).
+        #[arg(long, default_value_t = 3.0, allow_negative_numbers = true)]
+        twist: f64,
+        #[command(flatten)]
+        out: PolyOut,
+    },
     /// Points on two skew lines: Θ(n²) tetrahedra, the thesis's worst case for m.
     SkewLines {
         /// Number of points (half on each line).
@@ -653,7 +701,33 @@ fn run(cmd: Cmd) -> CmdResult {
                     output,
                     json,
                 },
-        }) => constrain::trid_to_tetrad(&input, &output, json),
+        }) => reduce::trid_to_tetrad(&input, &output, json),
+        Cmd::Reduce(ReduceArgs {
+            kind:
+                ReduceKind::HullGap {
+                    input,
+                    output,
+                    json,
+                },
+        }) => reduce::hull_gap(&input, output.as_deref(), json),
+        Cmd::Reduce(ReduceArgs {
+            kind:
+                ReduceKind::QuasiPrism {
+                    input,
+                    output,
+                    json,
+                    time_limit,
+                },
+        }) => reduce::quasi_prism(&input, output.as_deref(), json, time_limit),
+        Cmd::Generate(GenerateArgs {
+            kind:
+                GenKind::QuasiPrism {
+                    ring,
+                    inner,
+                    twist,
+                    out,
+                },
+        }) => reduce::generate_quasi_prism(ring, inner, twist, out.seed, &out.output),
         Cmd::Generate(GenerateArgs {
             kind:
                 GenKind::Niche {

@@ -1149,6 +1149,94 @@ fn trid_to_tetrad_keeps_the_answer() {
     );
 }
 
+/// `reduce quasi-prism`: a straight lens takes the thesis's vertex order, a twisted one
+/// the SAT orientation, a strongly twisted one (not regular) the exact solver, each
+/// certified and written; an odd number of points and a triangle on a lower point are
+/// refused with exit 2 and one line naming the file.
+#[test]
+fn quasi_prism_routes() {
+    let d = dir("quasi-prism");
+    for (twist, route) in [("0", "order"), ("3", "orientation"), ("20", "exact")] {
+        let f = d.join(format!("q{twist}.off"));
+        let o = run(&[
+            "generate",
+            "quasi-prism",
+            "--ring",
+            "8",
+            "--inner",
+            "6",
+            "--twist",
+            twist,
+            "-o",
+            s(&f),
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let ele = d.join(format!("q{twist}.ele"));
+        let o = run(&["reduce", "quasi-prism", s(&f), "--json", "-o", s(&ele)]);
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        let v = json(&o);
+        assert_eq!(
+            (v["route"].as_str(), v["certified"].as_bool()),
+            (Some(route), Some(true))
+        );
+        assert_eq!(v["regular"], twist != "20");
+        let check = run(&["check", s(&ele), "--json"]);
+        assert_eq!(json(&check)["verdict"], "yes");
+    }
+    let bad = d.join("odd.off");
+    std::fs::write(&bad, "OFF\n3 1 0\n0 0 1\n1 0 1\n0 1 1\n3 0 1 2\n").unwrap();
+    let o = run(&["reduce", "quasi-prism", s(&bad)]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        err.lines().count() == 1 && err.contains("odd.off") && err.contains("images"),
+        "{err}"
+    );
+    std::fs::write(&bad, "OFF\n4 1 0\n0 0 1\n1 0 1\n0 0 0\n1 0 0\n3 0 1 2\n").unwrap();
+    let err = String::from_utf8_lossy(&run(&["reduce", "quasi-prism", s(&bad)]).stderr).to_string();
+    assert!(err.contains("#2, not an upper vertex"), "{err}");
+}
+
+/// `reduce hull-gap`: Schönhardt's polyhedron's gap to its hull is three tetrahedra; a
+/// polyhedron with a vertex inside its hull is refused (Lemma 2.6's condition).
+#[test]
+fn hull_gap_command() {
+    let d = dir("hull-gap");
+    let f = d.join("s.off");
+    assert!(
+        run(&["generate", "schonhardt", "-o", s(&f)])
+            .status
+            .success()
+    );
+    let o = run(&[
+        "reduce",
+        "hull-gap",
+        s(&f),
+        "--json",
+        "-o",
+        s(&d.join("g.vtk")),
+    ]);
+    assert_eq!(o.status.code(), Some(0));
+    assert_eq!(json(&o)["tetrahedra"], 3);
+    assert!(
+        std::fs::read_to_string(d.join("g.vtk"))
+            .unwrap()
+            .contains("CELL_TYPES 3")
+    );
+    // A tetrahedron with a dent: vertex 4 inside the hull.
+    let dent = "OFF\n5 6 0\n0 0 0\n4 0 0\n0 4 0\n0 0 4\n1 1 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 4\n3 2 3 4\n3 3 1 4\n";
+    std::fs::write(&f, dent).unwrap();
+    let o = run(&["reduce", "hull-gap", s(&f)]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(err.lines().count() == 1 && err.contains("#4"), "{err}");
+}
+
 /// `generate niche`: without a point in the view the constraints are a NO explained by
 /// the niche; with the centre they are tetrahedralizable; a twist whose faces cross is
 /// refused.

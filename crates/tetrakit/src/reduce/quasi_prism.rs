@@ -319,7 +319,9 @@ impl QuasiPrism {
         }
     }
 
-    fn certify(&self, surface: &Polyhedron, tets: &[[u32; 4]]) -> Result<(), QuasiPrismError> {
+    /// Certifies that `tets` tetrahedralize `surface` (this quasi-prism's boundary) and
+    /// have every edge of [`QuasiPrism::edges`].
+    pub fn certify(&self, surface: &Polyhedron, tets: &[[u32; 4]]) -> Result<(), QuasiPrismError> {
         certify_polyhedron(surface, tets)
             .map_err(|p| QuasiPrismError::Uncertified(p.detail.clone()))?;
         let have: HashSet<(u32, u32)> = edges_of(tets).into_iter().collect();

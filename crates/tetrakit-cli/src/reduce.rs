@@ -1,0 +1,244 @@
+//! `reduce`: the constructions of thesis ch. 2 §2.5 (Theorem 2.9's reduction, Lemma
+//! 2.6's flips, Algorithm QUASI-PRISM-TETRAHEDRALIZATION).
+
+use crate::exit::{CliError, CmdResult, Verdict, WriteContext};
+use crate::progress::Run;
+use serde_json::{Value, json};
+use std::path::Path;
+use std::time::{Duration, Instant};
+use tetrakit::exact::{self, Domain, Edges, Outcome};
+use tetrakit::io;
+use tetrakit::numbering::renumber_text;
+use tetrakit::reduce::{QuasiPrism, QuasiPrismError};
+
+pub fn trid_to_tetrad(input: &Path, output: &Path, as_json: bool) -> CmdResult {
+    let start = Instant::now();
+    let inp = io::read_input(input)?;
+    if let Some(k) = inp.points.iter().position(|p| p[2] != 0.0) {
+        return Err(CliError::at(
+            input,
+            format!(
+                "point {} has z = {}: TRID is planar (z = 0)",
+                k as u32 + inp.index_base,
+                inp.points[k][2]
+            ),
+        ));
+    }
+    let flat: Vec<[f64; 2]> = inp.points.iter().map(|p| [p[0], p[1]]).collect();
+    let r = tetrakit::reduce::trid_to_tetrad(&flat, &inp.segments)
+        .map_err(|e| CliError::at(input, renumber_text(&e.to_string(), inp.index_base)))?;
+    let pairs: Vec<(u32, u32)> = r.segments.iter().map(|&[a, b]| (a, b)).collect();
+    io::write_edges(output, &r.points, &pairs, inp.index_base).written(output)?;
+    let v = json!({
+        "verdict": "written",
+        "points": r.points.len(),
+        "segments": r.segments.len(),
+        "planar_points": flat.len(),
+        "planar_segments": inp.segments.len(),
+        "apex_height": r.height,
+        "output": output.display().to_string(),
+        "checked": ["no three planar points collinear", "every orientation kept from both apexes", "every lifted point a vertex of the upper hull"],
+        "seconds": start.elapsed().as_secs_f64(),
+    });
+    if as_json {
+        out!("{v}");
+    } else {
+        out!(
+            "wrote {}: {} points, {} segments (the {} planar points lifted to a paraboloid, apexes at height ±{}); conditions checked exactly",
+            output.display(),
+            r.points.len(),
+            r.segments.len(),
+            flat.len(),
+            r.height
+        );
+    }
+    Ok(Verdict::Yes)
+}
+
+/// `reduce hull-gap POLY`: Lemma 2.6's reflex-edge flips fill `CH(Q) − Q`.
+pub fn hull_gap(input: &Path, output: Option<&Path>, as_json: bool) -> CmdResult {
+    let start = Instant::now();
+    let (inp, poly) = io::read_polyhedron(input)?;
+    let base = inp.index_base;
+    let tets = tetrakit::reduce::hull_gap(&poly)
+        .map_err(|e| CliError::at(input, renumber_text(&e.to_string(), base)))?;
+    if let Some(out) = output {
+        io::write_mesh(out, &poly.points, &tets, base).written(out)?;
+    }
+    let v = json!({
+        "verdict": "yes",
+        "vertices": poly.points.len(),
+        "faces": poly.faces.len(),
+        "tetrahedra": tets.len(),
+        "certified": true,
+        "seconds": start.elapsed().as_secs_f64(),
+    });
+    if as_json {
+        out!("{v}");
+    } else {
+        out!(
+            "YES: {} tetrahedra fill the gap between the polyhedron ({} vertices) and its convex hull, by reflex-edge flips (Lemma 2.6); certified",
+            tets.len(),
+            poly.points.len()
+        );
+    }
+    Ok(Verdict::Yes)
+}
+
+/// `reduce quasi-prism FILE`: the points are `S₁`'s then their images, the faces `S₁`'s.
+pub fn quasi_prism(
+    input: &Path,
+    output: Option<&Path>,
+    as_json: bool,
+    time_limit: Option<Duration>,
+) -> CmdResult {
+    let start = Instant::now();
+    let inp = io::read_input(input)?;
+    let base = inp.index_base;
+    let at = |e: &dyn std::fmt::Display| CliError::at(input, renumber_text(&e.to_string(), base));
+    if inp.points.len() % 2 == 1 {
+        return Err(at(&format!(
+            "{} points: a quasi-prism has S₁'s vertices, then as many images",
+            inp.points.len()
+        )));
+    }
+    let n = inp.points.len() / 2;
+    let q = QuasiPrism::new(
+        inp.points[..n].to_vec(),
+        inp.points[n..].to_vec(),
+        inp.faces.clone(),
+    )
+    .map_err(|e| at(&e))?;
+    let mut v = json!({
+        "points": q.points.len(),
+        "prisms": q.triangles.len(),
+        "regular": true,
+    });
+    let (verdict, tets) = match q.tetrahedralize() {
+        Ok(s) => {
+            v["verdict"] = json!("yes");
+            v["route"] = json!(if s.by_order { "order" } else { "orientation" });
+            (Verdict::Yes, Some(s.tets))
+        }
+        Err(e @ (QuasiPrismError::Irregular { .. } | QuasiPrismError::NoStaircase)) => {
+            v["regular"] = json!(!matches!(e, QuasiPrismError::Irregular { .. }));
+            v["staircase"] = json!(renumber_text(&e.to_string(), base));
+            v["route"] = json!("exact");
+            by_exact(&q, time_limit, &mut v).map_err(|e| at(&e))?
+        }
+        Err(QuasiPrismError::Uncertified(e)) => return Err(CliError::internal(e)),
+        Err(e) => return Err(at(&e)),
+    };
+    if let Some(tets) = &tets {
+        v["tetrahedra"] = json!(tets.len());
+        v["certified"] = json!(true);
+        if let Some(out) = output {
+            io::write_mesh(out, &q.points, tets, base).written(out)?;
+        }
+    }
+    v["seconds"] = json!(start.elapsed().as_secs_f64());
+    if as_json {
+        out!("{v}");
+    } else {
+        print_quasi_prism(&v);
+    }
+    Ok(verdict)
+}
+
+/// The exact solver on the quasi-prism's boundary with all its edges required.
+fn by_exact(
+    q: &QuasiPrism,
+    time_limit: Option<Duration>,
+    v: &mut Value,
+) -> Result<(Verdict, Option<Vec<[u32; 4]>>), String> {
+    let poly = q.boundary().map_err(|e| e.to_string())?;
+    let required = q.edges();
+    let run = Run::new(time_limit, q.points.len(), 40);
+    run.stage("exact solver");
+    let edges = Edges {
+        allowed: None,
+        required: &required,
+    };
+    let opts = exact::Options {
+        any: true,
+        ..exact::Options::default()
+    };
+    let (outcome, stats) = exact::solve(Domain::Polyhedron(&poly), edges, &opts, &run.ctl)
+        .map_err(|e| e.to_string())?;
+    v["candidates"] = json!(stats.candidates);
+    Ok(match outcome {
+        Outcome::Optimal { tets, .. } | Outcome::Found { tets } => {
+            q.certify(&poly, &tets).map_err(|e| e.to_string())?;
+            v["verdict"] = json!("yes");
+            (Verdict::Yes, Some(tets))
+        }
+        Outcome::Infeasible => {
+            v["verdict"] = json!("no");
+            (Verdict::No, None)
+        }
+        Outcome::Undecided { .. } => {
+            v["verdict"] = json!("undecided");
+            (Verdict::Undecided, None)
+        }
+    })
+}
+
+fn print_quasi_prism(v: &Value) {
+    let prisms = &v["prisms"];
+    match (v["verdict"].as_str(), v["route"].as_str()) {
+        (Some("yes"), Some(route @ ("order" | "orientation"))) => out!(
+            "YES: {} tetrahedra, three per prism ({prisms} prism(s)), by {}; certified",
+            v["tetrahedra"],
+            if route == "order" {
+                "one vertex order (Algorithm QUASI-PRISM-TETRAHEDRALIZATION)"
+            } else {
+                "an orientation of the sides' diagonals with no cyclic prism (SAT)"
+            }
+        ),
+        (Some(verdict), _) => {
+            let why = v["staircase"].as_str().unwrap_or("");
+            match verdict {
+                "yes" => out!(
+                    "YES: {} tetrahedra from the exact solver ({prisms} prism(s); no staircase: {why}); certified",
+                    v["tetrahedra"]
+                ),
+                "no" => out!(
+                    "NO: no tetrahedralization keeps every edge of the quasi-prism (exact solver, {} candidates; {why})",
+                    v["candidates"]
+                ),
+                _ => out!("UNDECIDED: the exact solver ran out of time ({why})"),
+            }
+        }
+        _ => {}
+    }
+}
+
+/// `generate quasi-prism`.
+pub fn generate_quasi_prism(
+    ring: usize,
+    inner: usize,
+    twist: f64,
+    seed: u64,
+    output: &Path,
+) -> CmdResult {
+    if !(3..=1_000_000).contains(&ring) || inner > 1_000_000 {
+        return Err(CliError::new(
+            "--ring must be between 3 and 1000000 and --inner at most 1000000",
+        ));
+    }
+    if !(twist.abs() < 90.0) {
+        return Err(CliError::new(format!(
+            "--twist {twist}: a turn in (-90°, 90°)"
+        )));
+    }
+    let q = QuasiPrism::lens(ring, inner, twist, seed);
+    io::write_surface(output, &q.points, &q.triangles, 1).written(output)?;
+    out!(
+        "wrote {}: {} points (the upper {} first, then their images), {} triangles",
+        output.display(),
+        q.points.len(),
+        q.n(),
+        q.triangles.len()
+    );
+    Ok(Verdict::Yes)
+}
