@@ -145,12 +145,14 @@ pub fn quasi_prism(
     Ok(verdict)
 }
 
+type Tets = Vec<[u32; 4]>;
+
 /// The exact solver on the quasi-prism's boundary with all its edges required.
 fn by_exact(
     q: &QuasiPrism,
     time_limit: Option<Duration>,
     v: &mut Value,
-) -> Result<(Verdict, Option<Vec<[u32; 4]>>), String> {
+) -> Result<(Verdict, Option<Tets>), String> {
     let poly = q.boundary().map_err(|e| e.to_string())?;
     let required = q.edges();
     let run = Run::new(time_limit, q.points.len(), 40);
@@ -226,7 +228,7 @@ pub fn generate_quasi_prism(
             "--ring must be between 3 and 1000000 and --inner at most 1000000",
         ));
     }
-    if !(twist.abs() < 90.0) {
+    if twist.is_nan() || twist.abs() >= 90.0 {
         return Err(CliError::new(format!(
             "--twist {twist}: a turn in (-90°, 90°)"
         )));
