@@ -135,6 +135,28 @@ pub fn write_proof<E: std::fmt::Display>(
     })
 }
 
+/// `generate gadget-grid`.
+pub fn generate_gadget_grid(
+    rows: usize,
+    cols: usize,
+    layers: usize,
+    twist: f64,
+    spacing: f64,
+    output: &Path,
+) -> CmdResult {
+    let (pts, segs) = constrain::generate::gadget_grid(rows, cols, layers, twist, spacing)
+        .map_err(CliError::new)?;
+    let pairs: Vec<(u32, u32)> = segs.iter().map(|&[a, b]| (a, b)).collect();
+    io::write_edges(output, &pts, &pairs, 1).written(output)?;
+    out!(
+        "wrote {}: {} points, {} constraints ({rows} × {cols} towers of {layers} Schönhardt gadget(s))",
+        output.display(),
+        pts.len(),
+        segs.len()
+    );
+    Ok(Verdict::Yes)
+}
+
 /// `generate niche`.
 pub fn generate_niche(
     twist: f64,
@@ -163,7 +185,6 @@ pub fn generate_niche(
     Ok(Verdict::Yes)
 }
 
-/// `reduce trid-to-tetrad IN OUT`.
 fn decision_json(d: &Decision, n: usize, m: usize, base: u32) -> Value {
     let shift = |v: u32| v + base;
     let mut v = json!({

@@ -443,6 +443,61 @@ enum GenKind {
         #[command(flatten)]
         out: PolyOut,
     },
+    /// Schönhardt's prism stacked LAYERS high, each layer turned TWIST degrees further
+    /// (a hard family for `tetrahedralize`; one layer is Schönhardt's polyhedron).
+    SchonhardtTower {
+        /// Layers (prisms stacked).
+        #[arg(long, default_value_t = 2)]
+        layers: usize,
+        /// Turn per layer in degrees, in (-60, 60).
+        #[arg(long, default_value_t = 30.0, allow_negative_numbers = true)]
+        twist: f64,
+        #[command(flatten)]
+        out: PolyOut,
+    },
+    /// Chazelle's polyhedron: a box with GROOVES grooves in its top and as many across
+    /// its bottom, their floors passing close on a saddle (12·GROOVES + 8 vertices).
+    Chazelle {
+        /// Grooves on each side.
+        #[arg(long, default_value_t = 2)]
+        grooves: usize,
+        #[command(flatten)]
+        out: PolyOut,
+    },
+    /// A dented convex polyhedron: N random points on a sphere, their hull's surface,
+    /// half the vertices pushed inward by up to DENT.
+    Perturbed {
+        /// Vertices.
+        #[arg(long)]
+        n: usize,
+        /// The largest inward push, as a fraction of the radius, in [0, 1).
+        #[arg(long, default_value_t = 0.5)]
+        dent: f64,
+        #[command(flatten)]
+        out: PolyOut,
+    },
+    /// A CT instance for `constrained`: ROWS × COLS towers of LAYERS Schönhardt gadgets
+    /// (all their edges as constraints) side by side, and no other point.
+    GadgetGrid {
+        /// Rows of gadgets.
+        #[arg(long, default_value_t = 2)]
+        rows: usize,
+        /// Columns of gadgets.
+        #[arg(long, default_value_t = 2)]
+        cols: usize,
+        /// Gadgets stacked in each tower (a chain).
+        #[arg(long, default_value_t = 1)]
+        layers: usize,
+        /// Twist of each prism in degrees, in (0, 60).
+        #[arg(long, default_value_t = 30.0)]
+        twist: f64,
+        /// Distance between neighbouring axes (at least 2.5).
+        #[arg(long, default_value_t = 3.0)]
+        spacing: f64,
+        /// Output: .json, .edge (with .node) or .obj.
+        #[arg(long, short)]
+        output: PathBuf,
+    },
     /// Schönhardt's polyhedron with three BP-nets, convex (Figure 3.21).
     SchonhardtBp {
         #[command(flatten)]
@@ -730,6 +785,17 @@ fn run(cmd: Cmd) -> CmdResult {
         }) => reduce::generate_quasi_prism(ring, inner, twist, out.seed, &out.output),
         Cmd::Generate(GenerateArgs {
             kind:
+                GenKind::GadgetGrid {
+                    rows,
+                    cols,
+                    layers,
+                    twist,
+                    spacing,
+                    output,
+                },
+        }) => constrain::generate_gadget_grid(rows, cols, layers, twist, spacing, &output),
+        Cmd::Generate(GenerateArgs {
+            kind:
                 GenKind::Niche {
                     twist,
                     extra,
@@ -808,6 +874,11 @@ fn polyhedron_kind(kind: GenKind) -> Result<(poly::PolyGen, PolyOut), GenKind> {
         GenKind::HLevel { levels, bp: a } => bp(a, levels, true),
         GenKind::Schonhardt { twist, out } => (poly::PolyGen::Schonhardt { twist }, out),
         GenKind::SchonhardtBp { out } => (poly::PolyGen::SchonhardtBp, out),
+        GenKind::SchonhardtTower { layers, twist, out } => {
+            (poly::PolyGen::Tower { layers, twist }, out)
+        }
+        GenKind::Chazelle { grooves, out } => (poly::PolyGen::Chazelle { grooves }, out),
+        GenKind::Perturbed { n, dent, out } => (poly::PolyGen::Perturbed { n, dent }, out),
         other => return Err(other),
     })
 }

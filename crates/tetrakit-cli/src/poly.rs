@@ -8,7 +8,7 @@ use tetrakit::control::Control;
 use tetrakit::exact::{self, Domain, Options, Outcome};
 use tetrakit::io;
 use tetrakit::mesh::{Polyhedron, certify_polyhedron};
-use tetrakit::polyhedra::{self, Checks, Mintetra, generate};
+use tetrakit::polyhedra::{self, Checks, Mintetra, generate, hard};
 
 fn shift<const N: usize>(v: &[[u32; N]], base: u32) -> Vec<[u32; N]> {
     v.iter().map(|x| x.map(|i| i + base)).collect()
@@ -353,6 +353,9 @@ pub enum PolyGen {
     Bp(generate::BpParams),
     Schonhardt { twist: Option<f64> },
     SchonhardtBp,
+    Tower { layers: usize, twist: f64 },
+    Chazelle { grooves: usize },
+    Perturbed { n: usize, dent: f64 },
 }
 
 pub fn generate(kind: PolyGen, seed: u64, output: &Path) -> CmdResult {
@@ -404,6 +407,9 @@ pub fn generate(kind: PolyGen, seed: u64, output: &Path) -> CmdResult {
             (p, format!(", {reflex} reflex edge(s)"))
         }
         PolyGen::SchonhardtBp => (generate::schonhardt_bp(), String::new()),
+        PolyGen::Tower { layers, twist } => hard_family(hard::schonhardt_tower(layers, twist))?,
+        PolyGen::Chazelle { grooves } => hard_family(hard::chazelle(grooves))?,
+        PolyGen::Perturbed { n, dent } => hard_family(hard::perturbed(n, dent, seed))?,
     };
     io::write_surface(output, &p.points, &p.faces, 1).written(output)?;
     out!(
@@ -413,6 +419,13 @@ pub fn generate(kind: PolyGen, seed: u64, output: &Path) -> CmdResult {
         p.faces.len()
     );
     Ok(Verdict::Yes)
+}
+
+/// A polyhedron of [`hard`] with its reflex edges counted, or its refusal.
+fn hard_family(p: Result<Polyhedron, String>) -> Result<(Polyhedron, String), CliError> {
+    let p = p.map_err(CliError::new)?;
+    let reflex = generate::reflex_edges(&p).len();
+    Ok((p, format!(", {reflex} reflex edge(s)")))
 }
 
 /// An augmented BP-polyhedron with the levels asked for: MINTETRA must find exactly

@@ -11,6 +11,7 @@ use tetrakit::io;
 use tetrakit::numbering::renumber_text;
 use tetrakit::reduce::{QuasiPrism, QuasiPrismError};
 
+/// `reduce trid-to-tetrad IN OUT`.
 pub fn trid_to_tetrad(input: &Path, output: &Path, as_json: bool) -> CmdResult {
     let start = Instant::now();
     let inp = io::read_input(input)?;

@@ -78,3 +78,46 @@ pub fn niche(twist: f64, extra: usize, in_view: bool, seed: u64) -> Result<Niche
         niche: n,
     })
 }
+
+/// A grid of Schönhardt gadgets for [`super::constrained`]: `rows × cols` towers of
+/// `layers` prisms ([`schonhardt_tower`](crate::polyhedra::hard::schonhardt_tower), each
+/// layer twisted by `twist` degrees, in (0°, 60°)), their axes `spacing` apart (at least
+/// 2.5, so that the towers are disjoint), with all their edges as constraints. No other
+/// point: each gadget's niches must find a vertex of another one in their view, which
+/// looks along the axis: a chain (one tower) sees its neighbours, a flat grid does not.
+///
+/// ```
+/// use tetrakit::constrain::generate::gadget_grid;
+/// let (points, constraints) = gadget_grid(2, 3, 1, 30.0, 3.0).unwrap();
+/// assert_eq!((points.len(), constraints.len()), (36, 72));
+/// ```
+pub fn gadget_grid(
+    rows: usize,
+    cols: usize,
+    layers: usize,
+    twist: f64,
+    spacing: f64,
+) -> Result<(Vec<Point3>, Vec<[u32; 2]>), String> {
+    if !(twist > 0.0 && twist < 60.0) || !(spacing >= 2.5) || rows * cols == 0 {
+        return Err(format!(
+            "a {rows} × {cols} grid at twist {twist}° and spacing {spacing}: at least one gadget, a twist in (0°, 60°), a spacing of at least 2.5"
+        ));
+    }
+    if rows.saturating_mul(cols).saturating_mul(layers) > 100_000 {
+        return Err(format!(
+            "{rows} × {cols} × {layers} gadgets: at most 100000"
+        ));
+    }
+    let s = crate::polyhedra::hard::schonhardt_tower(layers, twist)?;
+    let edges = s.edges();
+    let (mut points, mut constraints) = (Vec::new(), Vec::new());
+    for r in 0..rows {
+        for c in 0..cols {
+            let base = points.len() as u32;
+            let (dx, dy) = (spacing * c as f64, spacing * r as f64);
+            points.extend(s.points.iter().map(|p| [p[0] + dx, p[1] + dy, p[2]]));
+            constraints.extend(edges.iter().map(|&[a, b]| [a + base, b + base]));
+        }
+    }
+    Ok((points, constraints))
+}

@@ -211,7 +211,7 @@ impl std::fmt::Display for ExactError {
             ExactError::Flat => write!(f, "the points span no volume"),
             ExactError::TooLarge(n) => write!(
                 f,
-                "{n} vertices: the exact solver enumerates C(n,4) candidate tetrahedra and accepts at most {MAX_VERTICES}"
+                "{n} vertices: the exact solver enumerates candidate tetrahedra and accepts at most {MAX_VERTICES} points (all C(n,4) subsets), {MAX_POLYHEDRON_VERTICES} polyhedron vertices, {MAX_RESTRICTED_VERTICES} with allowed segments"
             ),
             ExactError::TooManyCandidates(k) => write!(
                 f,
@@ -249,6 +249,11 @@ impl Domain<'_> {
 /// The largest input the candidate enumeration accepts when every 4-subset is a
 /// candidate (no [`Edges::allowed`]).
 pub const MAX_VERTICES: usize = 60;
+
+/// The largest polyhedron (without [`Edges::allowed`]): its candidates are the
+/// 4-cliques of the vertex pairs whose segment crosses no facet (found in `O(n² f)`), at
+/// most [`MAX_CANDIDATES`] of them.
+pub const MAX_POLYHEDRON_VERTICES: usize = 1000;
 
 /// The largest input with [`Edges::allowed`] (its 4-cliques are the candidates, at most
 /// [`MAX_CANDIDATES`] of them).
@@ -447,9 +452,10 @@ impl Formula {
     /// `None` when `ctl` stopped the enumeration.
     fn new(domain: Domain, edges: Edges, ctl: &Control) -> Result<Option<Formula>, ExactError> {
         let pts = domain.points();
-        let limit = match edges.allowed {
-            None => MAX_VERTICES,
-            Some(_) => MAX_RESTRICTED_VERTICES,
+        let limit = match (domain, edges.allowed) {
+            (_, Some(_)) => MAX_RESTRICTED_VERTICES,
+            (Domain::Polyhedron(_), None) => MAX_POLYHEDRON_VERTICES,
+            _ => MAX_VERTICES,
         };
         if pts.len() > limit {
             return Err(ExactError::TooLarge(pts.len()));
@@ -457,6 +463,20 @@ impl Formula {
         if crate::geom::affine_dimension(pts) < 3 {
             return Err(ExactError::Flat);
         }
+        let unobstructed;
+        let edges = match (domain, edges.allowed) {
+            (Domain::Polyhedron(p), None) => {
+                let Some(pairs) = encode::unobstructed_pairs(pts, &p.faces, ctl) else {
+                    return Ok(None);
+                };
+                unobstructed = pairs;
+                Edges {
+                    allowed: Some(&unobstructed),
+                    ..edges
+                }
+            }
+            _ => edges,
+        };
         let cand = match candidates(domain, edges, ctl) {
             Ok(Some(c)) => c,
             Ok(None) => return Ok(None),

@@ -518,28 +518,7 @@ pub fn schonhardt() -> Polyhedron {
 /// assert!(twisted_prism(130.0).is_err());
 /// ```
 pub fn twisted_prism(degrees: f64) -> Result<Polyhedron, String> {
-    if degrees.is_nan() || degrees.abs() >= 120.0 {
-        return Err(format!(
-            "a twist of {degrees}°: the prism's sides cross at 120° or more (and NaN is no angle)"
-        ));
-    }
-    let twist = degrees.to_radians();
-    let tri = |z: f64, twist: f64| -> Vec<Point3> {
-        (0..3)
-            .map(|i| {
-                let a = std::f64::consts::TAU * i as f64 / 3.0 + twist;
-                [a.cos(), a.sin(), z]
-            })
-            .collect()
-    };
-    let mut points = tri(0.0, 0.0);
-    points.extend(tri(2.0, twist));
-    let mut faces = vec![[0, 2, 1], [3, 4, 5]];
-    for i in 0..3u32 {
-        let j = (i + 1) % 3;
-        faces.extend([[i, j, j + 3], [i, j + 3, i + 3]]);
-    }
-    Polyhedron::new(points, faces).map_err(|e| e.describe(0))
+    super::hard::schonhardt_tower(1, degrees)
 }
 
 /// Edges whose dihedral angle exceeds π: `pq` with faces `pqs`, `qpt` and `t` strictly

@@ -8,10 +8,13 @@
 //! * [`certify_polyhedron`]: the independent check of a tetrahedralization of a
 //!   polyhedron (from [`mesh`](crate::mesh)).
 //! * [`generate`]: stacked polyhedra, bipyramids, BP-polyhedra, Schönhardt.
+//! * [`hard`]: hard families for the exact solvers: Schönhardt towers, Chazelle's
+//!   polyhedron, dented convex polyhedra.
 
 mod bpnet;
 pub mod generate;
 mod graph;
+pub mod hard;
 mod mintetra;
 
 pub use crate::mesh::{Polyhedron, SurfaceError, certify_polyhedron};
