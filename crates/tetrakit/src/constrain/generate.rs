@@ -98,7 +98,8 @@ pub fn gadget_grid(
     twist: f64,
     spacing: f64,
 ) -> Result<(Vec<Point3>, Vec<[u32; 2]>), String> {
-    if !(twist > 0.0 && twist < 60.0) || !(spacing >= 2.5) || rows * cols == 0 {
+    let ok = twist > 0.0 && twist < 60.0 && spacing >= 2.5 && rows * cols * layers > 0;
+    if !ok {
         return Err(format!(
             "a {rows} × {cols} grid at twist {twist}° and spacing {spacing}: at least one gadget, a twist in (0°, 60°), a spacing of at least 2.5"
         ));
