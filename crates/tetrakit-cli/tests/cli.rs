@@ -1202,6 +1202,95 @@ fn quasi_prism_routes() {
     assert!(err.contains("#2, not an upper vertex"), "{err}");
 }
 
+/// The hard families' generators: Chazelle's polyhedron past 60 vertices and a
+/// Schönhardt tower are NO for `tetrahedralize`, a dented convex polyhedron is YES, a
+/// grid of gadgets is NO for `constrained` with the niche as witness; bad parameters
+/// exit 2 with one line.
+#[test]
+fn hard_family_generators() {
+    let d = dir("hard");
+    let verdict = |args: &[&str], cmd: &str, file: &Path| {
+        let o = run(args);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        json(&run(&[cmd, s(file), "--json"]))
+    };
+    let f = d.join("c.off");
+    let v = verdict(
+        &["generate", "chazelle", "--grooves", "5", "-o", s(&f)],
+        "tetrahedralize",
+        &f,
+    );
+    assert_eq!(
+        (v["verdict"].as_str(), v["vertices"].as_u64()),
+        (Some("no"), Some(68))
+    );
+    let f = d.join("t.off");
+    let v = verdict(
+        &["generate", "schonhardt-tower", "--layers", "3", "-o", s(&f)],
+        "tetrahedralize",
+        &f,
+    );
+    assert_eq!(v["verdict"], "no");
+    let f = d.join("p.off");
+    let v = verdict(
+        &[
+            "generate",
+            "perturbed",
+            "--n",
+            "30",
+            "--seed",
+            "2",
+            "-o",
+            s(&f),
+        ],
+        "tetrahedralize",
+        &f,
+    );
+    assert_eq!(
+        (v["verdict"].as_str(), v["certified"].as_bool()),
+        (Some("yes"), Some(true))
+    );
+    let f = d.join("g.json");
+    let v = verdict(
+        &[
+            "generate",
+            "gadget-grid",
+            "--rows",
+            "1",
+            "--cols",
+            "2",
+            "-o",
+            s(&f),
+        ],
+        "constrained",
+        &f,
+    );
+    assert_eq!(
+        (v["verdict"].as_str(), v["witness"]["kind"].as_str()),
+        (Some("no"), Some("empty_niche_view"))
+    );
+    for bad in [
+        vec!["generate", "chazelle", "--grooves", "0", "-o", s(&f)],
+        vec!["generate", "schonhardt-tower", "--twist", "70", "-o", s(&f)],
+        vec![
+            "generate",
+            "perturbed",
+            "--n",
+            "10",
+            "--dent",
+            "1.5",
+            "-o",
+            s(&f),
+        ],
+        vec!["generate", "gadget-grid", "--spacing", "1", "-o", s(&f)],
+    ] {
+        let o = run(&bad);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{bad:?}");
+        assert_eq!(err.lines().count(), 1, "{bad:?}: {err}");
+    }
+}
+
 /// `reduce hull-gap`: Schönhardt's polyhedron's gap to its hull is three tetrahedra; a
 /// polyhedron with a vertex inside its hull is refused (Lemma 2.6's condition).
 #[test]
