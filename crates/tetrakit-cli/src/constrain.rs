@@ -135,6 +135,13 @@ pub fn write_proof<E: std::fmt::Display>(
     })
 }
 
+/// A generated CT instance: points and constraints, numbered from 1 where the format
+/// numbers.
+fn write_constraints(output: &Path, pts: &[[f64; 3]], segs: &[[u32; 2]]) -> Result<(), CliError> {
+    let pairs: Vec<(u32, u32)> = segs.iter().map(|&[a, b]| (a, b)).collect();
+    io::write_edges(output, pts, &pairs, 1).written(output)
+}
+
 /// `generate gadget-grid`.
 pub fn generate_gadget_grid(
     rows: usize,
@@ -146,8 +153,7 @@ pub fn generate_gadget_grid(
 ) -> CmdResult {
     let (pts, segs) = constrain::generate::gadget_grid(rows, cols, layers, twist, spacing)
         .map_err(CliError::new)?;
-    let pairs: Vec<(u32, u32)> = segs.iter().map(|&[a, b]| (a, b)).collect();
-    io::write_edges(output, &pts, &pairs, 1).written(output)?;
+    write_constraints(output, &pts, &segs)?;
     out!(
         "wrote {}: {} points, {} constraints ({rows} × {cols} towers of {layers} Schönhardt gadget(s))",
         output.display(),
@@ -167,8 +173,7 @@ pub fn generate_niche(
 ) -> CmdResult {
     let g = constrain::generate::niche(twist, extra, in_view, seed).map_err(CliError::new)?;
     let (pts, segs, n) = (g.points, g.constraints, g.niche);
-    let pairs: Vec<(u32, u32)> = segs.iter().map(|&[a, b]| (a, b)).collect();
-    io::write_edges(output, &pts, &pairs, 1).written(output)?;
+    write_constraints(output, &pts, &segs)?;
     out!(
         "wrote {}: {} points, {} constraints; niche top {:?}, base {:?} (0-based), {} point in its view",
         output.display(),

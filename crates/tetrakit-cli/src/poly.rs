@@ -235,16 +235,7 @@ pub fn tetrahedralize(a: TetraArgs) -> CmdResult {
         }
         Outcome::Infeasible => {
             v["verdict"] = json!("no");
-            v["witness"] = match &stats.obstacle {
-                Some(o) => json!({
-                    "kind": "obstacle",
-                    "detail": tetrakit::numbering::renumber_text(&o.to_string(), base),
-                }),
-                None => json!({
-                    "kind": "unsatisfiable",
-                    "detail": "no set of candidate tetrahedra (no other vertex inside, on the inner side of the boundary) satisfies the face-pairing clauses: no tetrahedralization without Steiner points exists",
-                }),
-            };
+            v["witness"] = exact_witness(&stats, base);
             if let Some(path) = a.proof {
                 v["proof"] = crate::constrain::write_proof(path, |formula, proof| {
                     exact::prove_infeasible(domain, exact::Edges::default(), formula, proof, &ctl)
@@ -279,6 +270,21 @@ pub fn tetrahedralize(a: TetraArgs) -> CmdResult {
         print_tetrahedralize(&v);
     }
     Ok(verdict)
+}
+
+/// The witness of the exact solver's NO: the short obstacle found before any SAT call,
+/// or the unsatisfiable formula (`--proof` writes its refutation).
+pub fn exact_witness(stats: &exact::Stats, base: u32) -> Value {
+    match &stats.obstacle {
+        Some(o) => json!({
+            "kind": "obstacle",
+            "detail": tetrakit::numbering::renumber_text(&o.to_string(), base),
+        }),
+        None => json!({
+            "kind": "unsatisfiable",
+            "detail": "no set of candidate tetrahedra (no other vertex inside, on the inner side of the boundary) satisfies the face-pairing clauses: no tetrahedralization without Steiner points exists",
+        }),
+    }
 }
 
 fn print_tetrahedralize(v: &Value) {

@@ -167,6 +167,26 @@ impl Control {
     }
 }
 
+/// The run-control, asked by the SAT solver (batsat) at its periodic stop check.
+#[derive(Default)]
+pub(crate) struct SatStop(Control);
+
+impl batsat::Callbacks for SatStop {
+    fn stop(&self) -> bool {
+        self.0.is_stopped()
+    }
+}
+
+/// The SAT solver every exact decision uses, stopped through a [`Control`].
+pub(crate) type SatSolver = rustsat_batsat::Solver<SatStop>;
+
+/// A SAT solver that answers `Interrupted` once `ctl` stops.
+pub(crate) fn sat_solver(ctl: &Control) -> SatSolver {
+    let mut solver = SatSolver::default();
+    solver.batsat_mut().cb_mut().0 = ctl.clone();
+    solver
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

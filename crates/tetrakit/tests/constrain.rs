@@ -305,6 +305,17 @@ fn rate() -> PathBuf {
 
 /// Writes the formula and proof of a NO and has `rate` verify them.
 fn check_proof(question: Question, pts: &[Point3], segs: &[[u32; 2]], tag: &str) {
+    verified_by_rate(tag, |cnf, drat| {
+        prove(question, pts, segs, cnf, drat, &Control::new()).map_err(|e| e.to_string())
+    });
+}
+
+/// Writes a formula and its proof with `write` to files named by `tag`, and has `rate`
+/// check them.
+fn verified_by_rate(
+    tag: &str,
+    write: impl FnOnce(&mut std::fs::File, std::fs::File) -> Result<Proof, String>,
+) {
     let dir = std::env::temp_dir().join("tetrakit-constrain-proofs");
     std::fs::create_dir_all(&dir).unwrap();
     let (cnf, drat) = (
@@ -313,8 +324,8 @@ fn check_proof(question: Question, pts: &[Point3], segs: &[[u32; 2]], tag: &str)
     );
     let mut f = std::fs::File::create(&cnf).unwrap();
     let p = std::fs::File::create(&drat).unwrap();
-    let r = prove(question, pts, segs, &mut f, p, &Control::new()).unwrap();
-    assert!(matches!(r, Proof::Refuted { .. }), "{tag}: {r:?}");
+    let r = write(&mut f, p);
+    assert!(matches!(r, Ok(Proof::Refuted { .. })), "{tag}: {r:?}");
     let out = std::process::Command::new(rate())
         .arg(&cnf)
         .arg(&drat)
@@ -324,33 +335,18 @@ fn check_proof(question: Question, pts: &[Point3], segs: &[[u32; 2]], tag: &str)
     assert!(text.contains("s VERIFIED"), "{tag}: rate says {text}");
 }
 
-/// Writes `exact::prove_infeasible`'s formula and proof for a polyhedron and has `rate`
-/// check them.
+/// Has `rate` check `exact::prove_infeasible`'s refutation for a polyhedron.
 fn check_polyhedron_proof(p: &tetrakit::mesh::Polyhedron, tag: &str) {
-    use tetrakit::exact::prove_infeasible;
-    let dir = std::env::temp_dir().join("tetrakit-constrain-proofs");
-    std::fs::create_dir_all(&dir).unwrap();
-    let (cnf, drat) = (
-        dir.join(format!("{tag}.cnf")),
-        dir.join(format!("{tag}.drat")),
-    );
-    let mut f = std::fs::File::create(&cnf).unwrap();
-    let d = std::fs::File::create(&drat).unwrap();
-    let r = prove_infeasible(
-        Domain::Polyhedron(p),
-        Edges::default(),
-        &mut f,
-        d,
-        &Control::new(),
-    );
-    assert!(matches!(r, Ok(Proof::Refuted { .. })), "{tag}: {r:?}");
-    let out = std::process::Command::new(rate())
-        .arg(&cnf)
-        .arg(&drat)
-        .output()
-        .unwrap();
-    let text = String::from_utf8_lossy(&out.stdout);
-    assert!(text.contains("s VERIFIED"), "{tag}: rate says {text}");
+    verified_by_rate(tag, |cnf, drat| {
+        exact::prove_infeasible(
+            Domain::Polyhedron(p),
+            Edges::default(),
+            cnf,
+            drat,
+            &Control::new(),
+        )
+        .map_err(|e| e.to_string())
+    });
 }
 
 /// The hard families: Chazelle's polyhedron has no tetrahedralization (up to 68

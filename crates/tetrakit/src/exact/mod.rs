@@ -259,17 +259,7 @@ pub const MAX_POLYHEDRON_VERTICES: usize = 1000;
 /// [`MAX_CANDIDATES`] of them).
 pub const MAX_RESTRICTED_VERTICES: usize = 1_000_000;
 
-/// The run-control, asked by the SAT solver at its periodic stop check.
-#[derive(Default)]
-struct Stop(Control);
-
-impl batsat::Callbacks for Stop {
-    fn stop(&self) -> bool {
-        self.0.is_stopped()
-    }
-}
-
-type Solver = rustsat_batsat::Solver<Stop>;
+type Solver = crate::control::SatSolver;
 
 /// The minimum number of tetrahedra over all tetrahedralizations of `domain` without
 /// Steiner points, with one that attains it, or a proof that none exists. Once `ctl`
@@ -336,8 +326,7 @@ pub fn solve(
     if stats.obstacle.is_some() {
         return Ok((Outcome::Infeasible, stats));
     }
-    let mut solver = Solver::default();
-    solver.batsat_mut().cb_mut().0 = ctl.clone();
+    let mut solver = crate::control::sat_solver(ctl);
     let Formula {
         cand,
         cnf,
