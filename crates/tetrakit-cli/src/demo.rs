@@ -294,6 +294,51 @@ fn prescribed_edges_section() {
             &d.answer,
         );
     }
+    constructions(&ctl);
+}
+
+/// Lemma 2.6, Lemma 2.7 and the hard families, one line each.
+fn constructions(ctl: &Control) {
+    use tetrakit::exact::{self, Domain};
+    use tetrakit::polyhedra::{generate, hard};
+    let s = generate::schonhardt();
+    match tetrakit::reduce::hull_gap(&s, ctl) {
+        Ok(gap) => out!(
+            "  Schönhardt's gap to its hull (`reduce hull-gap`, Lemma 2.6): {} tetrahedra by reflex-edge flips, certified",
+            gap.len()
+        ),
+        Err(e) => out!("  Schönhardt's gap to its hull: {e}"),
+    }
+    for twist in [0.0, 3.0, 20.0] {
+        let q = tetrakit::reduce::QuasiPrism::lens(8, 6, twist, 1);
+        let how = match q.tetrahedralize(ctl) {
+            Ok(st) if st.by_order => format!("{} tetrahedra by one vertex order", st.tets.len()),
+            Ok(st) => format!(
+                "{} tetrahedra by a SAT orientation of the diagonals",
+                st.tets.len()
+            ),
+            Err(e) => format!("no staircase ({e}); `reduce quasi-prism` asks the exact solver"),
+        };
+        out!(
+            "  quasi-prism of {} prisms twisted {twist}° (Lemma 2.7): {how}",
+            q.triangles.len()
+        );
+    }
+    let c = hard::chazelle(5).expect("valid grooves");
+    let opts = exact::Options {
+        any: true,
+        ..exact::Options::default()
+    };
+    match exact::minimal_tetrahedralization(Domain::Polyhedron(&c), &opts, ctl) {
+        Ok((exact::Outcome::Infeasible, stats)) => out!(
+            "  Chazelle's polyhedron, 5 grooves ({} vertices, `generate chazelle`): NO, {}",
+            c.points.len(),
+            stats
+                .obstacle
+                .map_or("the formula is unsatisfiable".into(), |o| o.to_string())
+        ),
+        other => out!("  Chazelle's polyhedron: {other:?}"),
+    }
 }
 
 /// Thesis ch. 4: the region between two nested convex polytopes, no Steiner point.

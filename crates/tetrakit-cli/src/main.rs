@@ -237,6 +237,9 @@ enum ReduceKind {
         /// Print one JSON object on stdout.
         #[arg(long)]
         json: bool,
+        /// Give up after this many seconds (exit 3).
+        #[arg(long, value_parser = seconds)]
+        time_limit: Option<Duration>,
     },
     /// Algorithm QUASI-PRISM-TETRAHEDRALIZATION (Lemma 2.7): cut a quasi-prism (a layer
     /// of prisms between two isomorphic triangulated surfaces) into tetrahedra keeping
@@ -763,8 +766,9 @@ fn run(cmd: Cmd) -> CmdResult {
                     input,
                     output,
                     json,
+                    time_limit,
                 },
-        }) => reduce::hull_gap(&input, output.as_deref(), json),
+        }) => reduce::hull_gap(&input, output.as_deref(), json, time_limit),
         Cmd::Reduce(ReduceArgs {
             kind:
                 ReduceKind::QuasiPrism {

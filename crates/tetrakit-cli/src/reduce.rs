@@ -56,34 +56,67 @@ pub fn trid_to_tetrad(input: &Path, output: &Path, as_json: bool) -> CmdResult {
     Ok(Verdict::Yes)
 }
 
-/// `reduce hull-gap POLY`: Lemma 2.6's reflex-edge flips fill `CH(Q) − Q`.
-pub fn hull_gap(input: &Path, output: Option<&Path>, as_json: bool) -> CmdResult {
+/// `reduce hull-gap POLY`: Lemma 2.6's reflex-edge flips fill `CH(Q) − Q`. A vertex
+/// inside the hull is refused (exit 2: the lemma does not apply); flips that all fail
+/// their exact checks are a NO naming the first reflex edge (exit 1).
+pub fn hull_gap(
+    input: &Path,
+    output: Option<&Path>,
+    as_json: bool,
+    time_limit: Option<Duration>,
+) -> CmdResult {
+    use tetrakit::reduce::HullGapError;
     let start = Instant::now();
     let (inp, poly) = io::read_polyhedron(input)?;
     let base = inp.index_base;
-    let tets = tetrakit::reduce::hull_gap(&poly)
-        .map_err(|e| CliError::at(input, renumber_text(&e.to_string(), base)))?;
-    if let Some(out) = output {
-        io::write_mesh(out, &poly.points, &tets, base).written(out)?;
-    }
-    let v = json!({
-        "verdict": "yes",
-        "vertices": poly.points.len(),
-        "faces": poly.faces.len(),
-        "tetrahedra": tets.len(),
-        "certified": true,
-        "seconds": start.elapsed().as_secs_f64(),
+    let run = Run::new(time_limit, poly.points.len(), 2000);
+    run.stage("flipping reflex edges");
+    let mut v = json!({ "vertices": poly.points.len(), "faces": poly.faces.len() });
+    let verdict = match tetrakit::reduce::hull_gap(&poly, &run.ctl) {
+        Ok(tets) => {
+            if let Some(out) = output {
+                io::write_mesh(out, &poly.points, &tets, base).written(out)?;
+            }
+            v["verdict"] = json!("yes");
+            v["tetrahedra"] = json!(tets.len());
+            v["certified"] = json!(true);
+            Verdict::Yes
+        }
+        Err(e @ HullGapError::Stuck([a, b])) => {
+            v["verdict"] = json!("no");
+            v["witness"] = json!({
+                "kind": "stuck",
+                "edge": [a + base, b + base],
+                "detail": renumber_text(&e.to_string(), base),
+            });
+            Verdict::No
+        }
+        Err(HullGapError::Stopped) => {
+            v["verdict"] = json!("undecided");
+            Verdict::Undecided
+        }
+        Err(HullGapError::Uncertified(e)) => return Err(CliError::internal(e)),
+        Err(e) => return Err(CliError::at(input, renumber_text(&e.to_string(), base))),
+    };
+    v["seconds"] = json!(start.elapsed().as_secs_f64());
+    emit(&v, as_json, |v| match verdict {
+        Verdict::Yes => format!(
+            "YES: {} tetrahedra fill the gap between the polyhedron ({} vertices) and its convex hull, by reflex-edge flips (Lemma 2.6); certified",
+            v["tetrahedra"], v["vertices"]
+        ),
+        Verdict::No => format!("NO: {}", v["witness"]["detail"].as_str().unwrap_or("")),
+        Verdict::Undecided => "UNDECIDED: the time limit stopped the flips".to_string(),
     });
+    Ok(verdict)
+}
+
+/// One JSON object, or the text `line` makes of it.
+fn emit(v: &Value, as_json: bool, line: impl Fn(&Value) -> String) {
     if as_json {
         out!("{v}");
     } else {
-        out!(
-            "YES: {} tetrahedra fill the gap between the polyhedron ({} vertices) and its convex hull, by reflex-edge flips (Lemma 2.6); certified",
-            tets.len(),
-            poly.points.len()
-        );
+        out!("{}", line(v));
     }
-    Ok(Verdict::Yes)
 }
 
 /// `reduce quasi-prism FILE`: the points are `S₁`'s then their images, the faces `S₁`'s.
@@ -110,12 +143,14 @@ pub fn quasi_prism(
         inp.faces.clone(),
     )
     .map_err(|e| at(&e))?;
+    let run = Run::new(time_limit, q.points.len(), 40);
+    run.stage("staircases");
     let mut v = json!({
         "points": q.points.len(),
         "prisms": q.triangles.len(),
         "regular": true,
     });
-    let (verdict, tets) = match q.tetrahedralize() {
+    let (verdict, tets) = match q.tetrahedralize(&run.ctl) {
         Ok(s) => {
             v["verdict"] = json!("yes");
             v["route"] = json!(if s.by_order { "order" } else { "orientation" });
@@ -125,7 +160,12 @@ pub fn quasi_prism(
             v["regular"] = json!(!matches!(e, QuasiPrismError::Irregular { .. }));
             v["staircase"] = json!(renumber_text(&e.to_string(), base));
             v["route"] = json!("exact");
-            by_exact(&q, time_limit, &mut v).map_err(|e| at(&e))?
+            run.stage("exact solver");
+            by_exact(&q, &run, base, &mut v).map_err(|e| at(&e))?
+        }
+        Err(QuasiPrismError::Stopped) => {
+            v["verdict"] = json!("undecided");
+            (Verdict::Undecided, None)
         }
         Err(QuasiPrismError::Uncertified(e)) => return Err(CliError::internal(e)),
         Err(e) => return Err(at(&e)),
@@ -138,11 +178,7 @@ pub fn quasi_prism(
         }
     }
     v["seconds"] = json!(start.elapsed().as_secs_f64());
-    if as_json {
-        out!("{v}");
-    } else {
-        print_quasi_prism(&v);
-    }
+    emit(&v, as_json, quasi_prism_line);
     Ok(verdict)
 }
 
@@ -151,13 +187,12 @@ type Tets = Vec<[u32; 4]>;
 /// The exact solver on the quasi-prism's boundary with all its edges required.
 fn by_exact(
     q: &QuasiPrism,
-    time_limit: Option<Duration>,
+    run: &Run,
+    base: u32,
     v: &mut Value,
 ) -> Result<(Verdict, Option<Tets>), String> {
     let poly = q.boundary().map_err(|e| e.to_string())?;
     let required = q.edges();
-    let run = Run::new(time_limit, q.points.len(), 40);
-    run.stage("exact solver");
     let edges = Edges {
         allowed: None,
         required: &required,
@@ -177,6 +212,7 @@ fn by_exact(
         }
         Outcome::Infeasible => {
             v["verdict"] = json!("no");
+            v["witness"] = crate::poly::exact_witness(&stats, base);
             (Verdict::No, None)
         }
         Outcome::Undecided { .. } => {
@@ -186,10 +222,12 @@ fn by_exact(
     })
 }
 
-fn print_quasi_prism(v: &Value) {
+/// The text line of `reduce quasi-prism`.
+fn quasi_prism_line(v: &Value) -> String {
     let prisms = &v["prisms"];
+    let why = v["staircase"].as_str().unwrap_or("");
     match (v["verdict"].as_str(), v["route"].as_str()) {
-        (Some("yes"), Some(route @ ("order" | "orientation"))) => out!(
+        (Some("yes"), Some(route @ ("order" | "orientation"))) => format!(
             "YES: {} tetrahedra, three per prism ({prisms} prism(s)), by {}; certified",
             v["tetrahedra"],
             if route == "order" {
@@ -198,21 +236,15 @@ fn print_quasi_prism(v: &Value) {
                 "an orientation of the sides' diagonals with no cyclic prism (SAT)"
             }
         ),
-        (Some(verdict), _) => {
-            let why = v["staircase"].as_str().unwrap_or("");
-            match verdict {
-                "yes" => out!(
-                    "YES: {} tetrahedra from the exact solver ({prisms} prism(s); no staircase: {why}); certified",
-                    v["tetrahedra"]
-                ),
-                "no" => out!(
-                    "NO: no tetrahedralization keeps every edge of the quasi-prism (exact solver, {} candidates; {why})",
-                    v["candidates"]
-                ),
-                _ => out!("UNDECIDED: the exact solver ran out of time ({why})"),
-            }
-        }
-        _ => {}
+        (Some("yes"), _) => format!(
+            "YES: {} tetrahedra from the exact solver ({prisms} prism(s); no staircase: {why}); certified",
+            v["tetrahedra"]
+        ),
+        (Some("no"), _) => format!(
+            "NO: no tetrahedralization keeps every edge of the quasi-prism: {} ({why})",
+            v["witness"]["detail"].as_str().unwrap_or("")
+        ),
+        _ => format!("UNDECIDED: the time limit stopped the work {why}"),
     }
 }
 

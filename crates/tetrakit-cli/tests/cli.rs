@@ -1188,6 +1188,50 @@ fn quasi_prism_routes() {
         let check = run(&["check", s(&ele), "--json"]);
         assert_eq!(json(&check)["verdict"], "yes");
     }
+    // Not regular, and no tetrahedralization keeps its edges: a NO with the exact
+    // solver's witness; stopped at once: undecided.
+    let f = d.join("no.off");
+    let make = [
+        "generate",
+        "quasi-prism",
+        "--ring",
+        "3",
+        "--inner",
+        "2",
+        "--twist",
+        "20",
+        "--seed",
+        "30",
+        "-o",
+        s(&f),
+    ];
+    assert!(run(&make).status.success());
+    let o = run(&["reduce", "quasi-prism", s(&f), "--json"]);
+    assert_eq!(o.status.code(), Some(1));
+    let v = json(&o);
+    assert_eq!(
+        (v["verdict"].as_str(), v["route"].as_str()),
+        (Some("no"), Some("exact"))
+    );
+    assert!(
+        v["witness"]["detail"]
+            .as_str()
+            .unwrap()
+            .contains("no candidate"),
+        "{v}"
+    );
+    let o = run(&[
+        "reduce",
+        "quasi-prism",
+        s(&d.join("q3.off")),
+        "--time-limit",
+        "0",
+        "--json",
+    ]);
+    assert_eq!(
+        (o.status.code(), json(&o)["verdict"].as_str()),
+        (Some(3), Some("undecided"))
+    );
     let bad = d.join("odd.off");
     std::fs::write(&bad, "OFF\n3 1 0\n0 0 1\n1 0 1\n0 1 1\n3 0 1 2\n").unwrap();
     let o = run(&["reduce", "quasi-prism", s(&bad)]);
@@ -1316,6 +1360,11 @@ fn hull_gap_command() {
         std::fs::read_to_string(d.join("g.vtk"))
             .unwrap()
             .contains("CELL_TYPES 3")
+    );
+    let o = run(&["reduce", "hull-gap", s(&f), "--time-limit", "0", "--json"]);
+    assert_eq!(
+        (o.status.code(), json(&o)["verdict"].as_str()),
+        (Some(3), Some("undecided"))
     );
     // A tetrahedron with a dent: vertex 4 inside the hull.
     let dent = "OFF\n5 6 0\n0 0 0\n4 0 0\n0 4 0\n0 0 4\n1 1 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 4\n3 2 3 4\n3 3 1 4\n";

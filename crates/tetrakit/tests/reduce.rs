@@ -59,7 +59,8 @@ fn hull_gap_fills_peeled_hulls() {
             }
         }
         let q = Polyhedron::new(pts.clone(), boundary(&pts, &tets)).unwrap();
-        let gap = hull_gap(&q).unwrap_or_else(|e| panic!("#{k}: {e}"));
+        let gap = hull_gap(&q, &tetrakit::control::Control::new())
+            .unwrap_or_else(|e| panic!("#{k}: {e}"));
         flipped += gap.len();
         let mut all = tets;
         all.extend(gap);
@@ -91,7 +92,10 @@ fn hull_gap_needs_every_vertex_on_the_hull() {
         [3, 1, 4],
     ];
     let q = Polyhedron::new(pts, faces).unwrap();
-    assert_eq!(hull_gap(&q), Err(HullGapError::NotHullVertex(4)));
+    assert_eq!(
+        hull_gap(&q, &tetrakit::control::Control::new()),
+        Err(HullGapError::NotHullVertex(4))
+    );
 }
 
 /// Three points, and four on a circle (whose lifts lie in one plane), are TRID instances
@@ -143,7 +147,7 @@ fn quasi_prisms_by_staircases_and_the_exact_solver() {
                 twist,
                 seed,
             );
-            match q.tetrahedralize() {
+            match q.tetrahedralize(&Control::new()) {
                 Ok(s) => {
                     assert_eq!(s.tets.len(), 3 * q.triangles.len());
                     assert_eq!(s.by_order, twist == 0.0, "seed {seed}, twist {twist}");

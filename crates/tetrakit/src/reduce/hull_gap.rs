@@ -9,6 +9,7 @@
 //! improperly), tries the next reflex edge when a check fails, and refuses only when
 //! none passes. Ends when no edge is reflex: the polyhedron is then its hull.
 
+use crate::control::Control;
 use crate::geom::{Hull3, orient3d, point_in_closed_tetrahedron, triangle_meets_tet};
 use crate::mesh::{Polyhedron, certify_boundary};
 use std::collections::HashMap;
@@ -21,6 +22,8 @@ pub enum HullGapError {
     /// Reflex edges remain but no flip passes the exact checks (a counterexample to the
     /// lemma's proof, or a degenerate input it does not cover: coplanar faces).
     Stuck([u32; 2]),
+    /// The run-control stopped the flips.
+    Stopped,
     /// The tetrahedra failed the certificate (a bug).
     Uncertified(String),
 }
@@ -37,6 +40,7 @@ impl std::fmt::Display for HullGapError {
             HullGapError::Stuck([a, b]) => {
                 write!(f, "no reflex edge can be flipped (first: (#{a}, #{b}))")
             }
+            HullGapError::Stopped => write!(f, "stopped before the gap was filled"),
             HullGapError::Uncertified(e) => write!(f, "internal error: {e}"),
         }
     }
@@ -56,10 +60,10 @@ impl std::error::Error for HullGapError {}
 /// let pts = vec![[0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [0.0, 2.0, 0.0], [2.0, 2.0, 0.5], [1.0, 1.0, 3.0]];
 /// let faces = vec![[0, 2, 3], [0, 3, 1], [0, 1, 4], [1, 3, 4], [3, 2, 4], [2, 0, 4]];
 /// let q = Polyhedron::new(pts, faces).unwrap();
-/// let gap = hull_gap(&q).unwrap();
+/// let gap = hull_gap(&q, &tetrakit::control::Control::new()).unwrap();
 /// assert_eq!(gap.len(), 1);
 /// ```
-pub fn hull_gap(q: &Polyhedron) -> Result<Vec<[u32; 4]>, HullGapError> {
+pub fn hull_gap(q: &Polyhedron, ctl: &Control) -> Result<Vec<[u32; 4]>, HullGapError> {
     let pts = &q.points;
     let hull = Hull3::new(pts);
     if let Some(v) = (0..pts.len()).find(|&v| hull.facets_of(v).len() < 3) {
@@ -68,6 +72,9 @@ pub fn hull_gap(q: &Polyhedron) -> Result<Vec<[u32; 4]>, HullGapError> {
     let mut faces = q.faces.clone();
     let mut tets = Vec::new();
     loop {
+        if ctl.is_stopped() {
+            return Err(HullGapError::Stopped);
+        }
         let reflex = reflex_edges(pts, &faces);
         let Some(first) = reflex.first() else {
             break;

@@ -39,6 +39,7 @@
 //! Every result is certified: the tetrahedra tile the surface exactly
 //! ([`certify_polyhedron`]) and every edge of the quasi-prism is one of theirs.
 
+use crate::control::Control;
 use crate::geom::{Hull3, Point3, collinear3, orient3d};
 use crate::mesh::{Polyhedron, SurfaceError, certify_polyhedron, edges_of};
 use rustsat::instances::{BasicVarManager, ManageVars};
@@ -78,6 +79,8 @@ pub enum QuasiPrismError {
     Surface(SurfaceError),
     /// No orientation of the sides' diagonals leaves every prism without a cycle.
     NoStaircase,
+    /// The run-control stopped the work.
+    Stopped,
     /// The tetrahedra failed the certificate (a bug, or a regular quasi-prism on which
     /// Lemma 2.7 fails).
     Uncertified(String),
@@ -106,6 +109,7 @@ impl std::fmt::Display for QuasiPrismError {
                 f,
                 "no choice of the sides' diagonals leaves every prism without a cycle (the convex diagonals force one)"
             ),
+            QuasiPrismError::Stopped => write!(f, "stopped before a staircase was found"),
             QuasiPrismError::Uncertified(e) => write!(f, "internal error: {e}"),
         }
     }
@@ -244,20 +248,20 @@ impl QuasiPrism {
     /// ```
     /// use tetrakit::reduce::QuasiPrism;
     /// let q = QuasiPrism::lens(8, 6, 3.0, 2);
-    /// let s = q.tetrahedralize().unwrap();
+    /// let s = q.tetrahedralize(&tetrakit::control::Control::new()).unwrap();
     /// assert_eq!(s.tets.len(), 3 * q.triangles.len());
     /// assert!(!s.by_order); // the twist turns the convex diagonals one way round
     /// ```
-    pub fn tetrahedralize(&self) -> Result<Staircase, QuasiPrismError> {
+    pub fn tetrahedralize(&self, ctl: &Control) -> Result<Staircase, QuasiPrismError> {
         self.check_regular()?;
         let fixed = self.fixed_directions()?;
         let (orientation, by_order) = match self.by_order(&fixed) {
             Some(o) => (o, true),
-            None => (
-                self.by_sat(&fixed).ok_or(QuasiPrismError::NoStaircase)?,
-                false,
-            ),
+            None => (self.by_sat(&fixed, ctl)?, false),
         };
+        if ctl.is_stopped() {
+            return Err(QuasiPrismError::Stopped);
+        }
         let surface = Polyhedron::new(self.points.clone(), self.surface(&orientation))
             .map_err(QuasiPrismError::Surface)?;
         let tets = self.staircases(&orientation);
@@ -403,11 +407,11 @@ impl QuasiPrism {
     /// An orientation extending `fixed` with no cyclic triangle, by SAT: for each
     /// triangle `a < b < c` with edge variables `ab`, `bc`, `ac` (true: low to high), the
     /// cycles are `ab ∧ bc ∧ ¬ac` and `¬ab ∧ ¬bc ∧ ac`.
-    fn by_sat(&self, fixed: &Orientation) -> Option<Orientation> {
+    fn by_sat(&self, fixed: &Orientation, ctl: &Control) -> Result<Orientation, QuasiPrismError> {
         let edges: Vec<[u32; 2]> = self.edge_counts().into_keys().collect();
         let mut vars = BasicVarManager::default();
         let lits: HashMap<[u32; 2], Lit> = edges.iter().map(|&e| (e, vars.new_lit())).collect();
-        let mut solver = rustsat_batsat::BasicSolver::default();
+        let mut solver = crate::control::sat_solver(ctl);
         let mut add = |c: &[Lit]| {
             solver
                 .add_clause(c.iter().copied().collect::<Clause>())
@@ -424,20 +428,13 @@ impl QuasiPrism {
             add(&[!ab, !bc, ac]);
             add(&[ab, bc, !ac]);
         }
-        if solver.solve().expect("batsat") != SolverResult::Sat {
-            return None;
+        match solver.solve().expect("batsat") {
+            SolverResult::Sat => {}
+            SolverResult::Unsat => return Err(QuasiPrismError::NoStaircase),
+            SolverResult::Interrupted => return Err(QuasiPrismError::Stopped),
         }
-        Some(
-            edges
-                .iter()
-                .map(|e| {
-                    (
-                        *e,
-                        solver.lit_val(lits[e]).expect("sat") == TernaryVal::True,
-                    )
-                })
-                .collect(),
-        )
+        let value = |e: &[u32; 2]| solver.lit_val(lits[e]).expect("sat") == TernaryVal::True;
+        Ok(edges.iter().map(|e| (*e, value(e))).collect())
     }
 
     /// Whether the hulls of the sides over `vx` and `vy` meet only in `v ψ(v)`: their
@@ -501,7 +498,9 @@ impl QuasiPrism {
     /// on the hull. A twist of 0 gives planar sides.
     pub fn lens(ring: usize, inner: usize, twist: f64, seed: u64) -> QuasiPrism {
         let flat = lens_points(ring.max(3), inner, seed);
-        let triangles = delaunay(&flat);
+        let triangles = crate::planar::delaunay(&flat)
+            .expect("distinct finite points")
+            .triangles;
         let (c, s) = (twist.to_radians().cos(), twist.to_radians().sin());
         let cap = |x: f64, y: f64, top: bool| {
             let h = 1.0 - (x * x + y * y) / 10.0;
@@ -665,19 +664,6 @@ fn lens_points(ring: usize, inner: usize, seed: u64) -> Vec<[f64; 2]> {
     pts
 }
 
-fn delaunay(pts: &[[f64; 2]]) -> Vec<[u32; 3]> {
-    use spade::{DelaunayTriangulation, Triangulation};
-    let mut dt: DelaunayTriangulation<spade::Point2<f64>> = DelaunayTriangulation::new();
-    let mut index = HashMap::new();
-    for (i, p) in pts.iter().enumerate() {
-        let h = dt.insert(spade::Point2::new(p[0], p[1])).expect("finite");
-        index.insert(h.index(), i as u32);
-    }
-    dt.inner_faces()
-        .map(|f| f.vertices().map(|v| index[&v.fix().index()]))
-        .collect()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -687,7 +673,7 @@ mod tests {
         // One interior vertex: the twisted ring's diagonals all turn one way, no vertex
         // order gives them, spokes pointing out do.
         let q = QuasiPrism::lens(5, 1, 4.0, 3);
-        let s = q.tetrahedralize().unwrap();
+        let s = q.tetrahedralize(&Control::new()).unwrap();
         assert!(!s.by_order);
         assert_eq!(s.tets.len(), 15);
     }
@@ -695,7 +681,7 @@ mod tests {
     #[test]
     fn straight_prisms_take_the_thesis_order() {
         let q = QuasiPrism::lens(7, 5, 0.0, 4);
-        let s = q.tetrahedralize().unwrap();
+        let s = q.tetrahedralize(&Control::new()).unwrap();
         assert!(s.by_order);
     }
 
@@ -704,7 +690,7 @@ mod tests {
         // One triangle: its three sides are all on the boundary and turn one way.
         let q = QuasiPrism::lens(3, 0, 20.0, 1);
         assert_eq!(
-            q.tetrahedralize().unwrap_err(),
+            q.tetrahedralize(&Control::new()).unwrap_err(),
             QuasiPrismError::NoStaircase
         );
     }
