@@ -3,8 +3,9 @@
 `constrained` and `tetrahedralize` decide within 60 s, with the size of the formula and of
 the DRAT proof of each NO, and TetGen -pY on the same polyhedra.
 
-Usage: python3 benches/constrain.py [--quick]   (run from the repository root, after
-`cargo build --release`; TetGen from Debian for the last table).
+Usage: python3 benches/constrain.py [--quick] [--tetgen-only]   (run from the repository
+root, after `cargo build --release`; TetGen from Debian for the last two tables; with
+--tetgen-only, only those).
 """
 import json
 import os
@@ -18,6 +19,7 @@ TK = "target/release/tetrakit"
 WORK = os.environ.get("WORK", "/tmp/tetrakit-bench-constrain")
 LIMIT = "60"
 QUICK = "--quick" in sys.argv
+TETGEN_ONLY = "--tetgen-only" in sys.argv
 
 
 def run(args):
@@ -86,6 +88,10 @@ def header(title):
 
 def main():
     os.makedirs(WORK, exist_ok=True)
+    if TETGEN_ONLY:
+        tetgen_table()
+        hard_table()
+        return
     header("contains (TETRAD): Kuhn grids with one segment added across, or one removed")
     for k in [8, 16] if QUICK else [8, 16, 24, 32]:
         for corrupt in ["add-crossing", "drop-edge"]:
@@ -115,6 +121,7 @@ def main():
             cons = rng.sample(pairs, n // 2)
             decide("constrained", write("c.json", pts, cons), f"random {n} #{seed}", n, len(cons))
     tetgen_table()
+    hard_table()
 
 
 def tetgen_table():
@@ -136,6 +143,62 @@ def tetgen_table():
                     steiner = line.strip()
             tg = "ok" if out.returncode == 0 else f"exit {out.returncode}"
         print(f"| {name} | {ours} | {secs:.3f} | {tg} | {steiner} |")
+
+
+def tetgen_pY(off):
+    """TetGen -pYQ on a polyhedron: (outcome, Steiner points, seconds). Steiner points are the
+    output's vertices beyond the input's (-Y keeps the boundary, so they are all inside)."""
+    t = time.perf_counter()
+    try:
+        out = subprocess.run(["tetgen", "-pYQ", off], capture_output=True, text=True, timeout=float(LIMIT))
+    except subprocess.TimeoutExpired:
+        return f"no result in {LIMIT} s (killed)", "-", float(LIMIT)
+    secs = time.perf_counter() - t
+    node = off[:-4] + ".1.node"
+    if out.returncode != 0 or not os.path.exists(node):
+        last = (out.stdout + out.stderr).strip().splitlines()
+        return f"fails (exit {out.returncode}: {last[-1] if last else ''})", "-", secs
+    with open(off) as f:
+        f.readline()
+        n_in = int(f.readline().split()[0])
+    with open(node) as f:
+        n_out = int(f.readline().split()[0])
+    with open(off[:-4] + ".1.ele") as f:
+        tets = int(f.readline().split()[0])
+    return f"{tets} tetrahedra", str(n_out - n_in), secs
+
+
+def hard_table():
+    """The hard polyhedron families side by side with TetGen -pY, same run."""
+    print("\nhard polyhedra: tetrahedralize against TetGen -pYQ, same run\n")
+    print("| polyhedron | vertices | candidates | tetrakit | seconds | TetGen -pY | Steiner points | TetGen s |")
+    print("|---|---|---|---|---|---|---|---|")
+    fams = [(f"Chazelle K = {k}", ["chazelle", "--grooves", str(k)]) for k in [1, 2, 4, 8, 16, 32]]
+    fams += [(f"Schönhardt tower {l} × {d}°", ["schonhardt-tower", "--layers", str(l), "--twist", str(d)])
+             for l, d in [(2, 30), (8, 5), (8, 30), (32, 10)]]
+    fams += [(f"dented sphere N = {n}", ["perturbed", "--n", str(n), "--dent", "0.5"])
+             for n in ([50] if QUICK else [50, 80, 120, 160, 250, 400])]
+    for name, gen in fams:
+        off = os.path.join(WORK, "h.off")
+        for ext in [".1.node", ".1.ele", ".1.face", ".1.edge"]:
+            if os.path.exists(off[:-4] + ext):
+                os.remove(off[:-4] + ext)
+        subprocess.run([TK, "generate", *gen, "-o", off], check=True, capture_output=True)
+        v, secs = run(["tetrahedralize", off, "--time-limit", LIMIT])
+        ours = v["verdict"]
+        if v["verdict"] == "yes":
+            ours += f", {v['tetrahedra']} tetrahedra"
+            if v.get("short_pairs_budget") is not None:
+                ours += f" (short pairs, m = {v['short_pairs_budget']})"
+        elif v.get("witness"):
+            ours += f" ({v['witness'].get('kind', 'proof')})"
+        tg, steiner, tsecs = ("not installed", "-", 0.0)
+        if shutil.which("tetgen"):
+            tg, steiner, tsecs = tetgen_pY(off)
+        with open(off) as f:
+            f.readline()
+            n = int(f.readline().split()[0])
+        print(f"| {name} | {n} | {v.get('candidates', '-')} | {ours} | {secs:.3f} | {tg} | {steiner} | {tsecs:.3f} |")
 
 
 if __name__ == "__main__":

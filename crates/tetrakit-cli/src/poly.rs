@@ -211,6 +211,7 @@ pub fn tetrahedralize(a: TetraArgs) -> CmdResult {
         "faces_beside_not_read": faces_beside,
         "candidates": stats.candidates,
         "sat_calls": stats.calls,
+        "short_pairs_budget": stats.short,
     });
     let base = input.index_base;
     let (verdict, tets) = match &outcome {

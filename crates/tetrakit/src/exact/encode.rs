@@ -432,6 +432,38 @@ pub(crate) fn unobstructed_pairs(
     Some(out)
 }
 
+/// The pairs among `pairs` whose diametral ball holds at most `m` vertices strictly
+/// inside (short, Delaunay-like segments: every Gabriel edge has `m = 0`), with every
+/// facet edge, sorted. The balls are measured in floating point: this only chooses which
+/// candidates to try first and decides nothing.
+pub(crate) fn short_pairs(
+    pts: &[Point3],
+    pairs: &[[u32; 2]],
+    facets: &[[u32; 3]],
+    m: usize,
+) -> Vec<[u32; 2]> {
+    let d2 = |x: &Point3, c: &Point3| -> f64 { (0..3).map(|i| (x[i] - c[i]).powi(2)).sum() };
+    let mut out: Vec<[u32; 2]> = pairs
+        .iter()
+        .filter(|&&[a, b]| {
+            let (p, q) = (&pts[a as usize], &pts[b as usize]);
+            let c = [0, 1, 2].map(|i| (p[i] + q[i]) / 2.0);
+            let r2 = d2(p, &c);
+            pts.iter().filter(|x| d2(x, &c) < r2).take(m + 1).count() <= m
+        })
+        .copied()
+        .collect();
+    for f in facets {
+        out.extend((0..3).map(|i| {
+            let (a, b) = (f[i], f[(i + 1) % 3]);
+            [a.min(b), a.max(b)]
+        }));
+    }
+    out.sort_unstable();
+    out.dedup();
+    out
+}
+
 /// Whether segment `pq` (vertices `s`) meets facet `f` beyond their shared vertices and
 /// edge: through its interior, or across, along or onto one of its edges.
 fn segment_meets_facet(p: &Point3, q: &Point3, s: [u32; 2], f: &[u32; 3], pts: &[Point3]) -> bool {

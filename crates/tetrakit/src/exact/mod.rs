@@ -46,6 +46,12 @@
 //! region's interior (connected), 1 at the anchor; so the region is covered exactly
 //! once, and its boundary triangles are those where the count changes.
 //!
+//! **Short pairs first.** When any tetrahedralization of a polyhedron of at least 40
+//! vertices will do, the formula is first built over the candidates whose edges are short
+//! (few vertices in their diametral ball) and solved; it is the same formula over fewer
+//! candidates, so a model is a tetrahedralization by the argument above, and when it has
+//! none the full formula decides. NOs and minima always come from the full formula.
+//!
 //! **Minimising.** By Euler's formula the number of tetrahedra is `e_i + c`, with `e_i`
 //! the interior edges used. For a point set `c = 2·n_b − n − 3` (`n_b` vertices on the
 //! boundary). For a region with boundary triangles `f_b` on `e_b` edges and Euler
@@ -127,6 +133,10 @@ pub struct Stats {
     pub calls: usize,
     /// With [`Outcome::Infeasible`]: the short reason found before any SAT call, if any.
     pub obstacle: Option<Obstacle>,
+    /// `Some(m)` when the answer came from the formula over the short pairs with at most
+    /// `m` vertices in their diametral ball (a large polyhedron, any tetrahedralization
+    /// asked for); the sizes above are then that formula's.
+    pub short: Option<usize>,
 }
 
 /// A short reason that no tetrahedralization exists, found from the candidates alone
@@ -311,10 +321,126 @@ pub fn solve(
     options: &Options,
     ctl: &Control,
 ) -> Result<(Outcome, Stats), ExactError> {
-    let Some(f) = Formula::new(domain, edges, ctl)? else {
-        let lower = encode::euler_offset(domain).max(1) as usize;
-        return Ok((Outcome::Undecided { best: None, lower }, Stats::default()));
+    check_size(domain, edges)?;
+    let Ok(pairs) = polyhedron_pairs(domain, edges, ctl) else {
+        return Ok(stopped(domain));
     };
+    let edges = restricted(edges, pairs.as_deref());
+    if let Some(answer) = short_first(domain, edges, options, pairs.as_deref(), ctl)? {
+        return Ok(answer);
+    }
+    let Some(f) = Formula::over(domain, edges, ctl)? else {
+        return Ok(stopped(domain));
+    };
+    search(f, domain, edges, options, ctl)
+}
+
+/// The answer when `ctl` stopped before any formula was built.
+fn stopped(domain: Domain) -> (Outcome, Stats) {
+    let lower = encode::euler_offset(domain).max(1) as usize;
+    (Outcome::Undecided { best: None, lower }, Stats::default())
+}
+
+/// The diametral-ball budgets of [`short_first`], tried in turn.
+const SHORT_BUDGETS: [usize; 3] = [4, 8, 16];
+
+/// Polyhedra from this many vertices try [`short_first`].
+const SHORT_FROM: usize = 40;
+
+/// A fast route to a YES for a large polyhedron when any tetrahedralization will do: the
+/// formula over the candidates whose six edges are short unobstructed pairs (at most `m`
+/// vertices inside their diametral ball, [`encode::short_pairs`], for each budget `m` of
+/// [`SHORT_BUDGETS`]) and facet edges. A model of it is a tetrahedralization: its clauses
+/// are those of the full formula restricted to fewer candidates, so the module's argument
+/// applies unchanged. No model proves nothing, and `None` sends the caller on to the full
+/// formula. Most candidates of a large polyhedron are long and crossed by many others, so
+/// these formulas are far smaller (dented spheres of 120 vertices: 5,614 candidates at
+/// `m = 4` against 813,295).
+fn short_first(
+    domain: Domain,
+    edges: Edges,
+    options: &Options,
+    pairs: Option<&[[u32; 2]]>,
+    ctl: &Control,
+) -> Result<Option<(Outcome, Stats)>, ExactError> {
+    let (Domain::Polyhedron(p), Some(pairs)) = (domain, pairs) else {
+        return Ok(None);
+    };
+    if !options.any || !edges.required.is_empty() || p.points.len() < SHORT_FROM {
+        return Ok(None);
+    }
+    for m in SHORT_BUDGETS {
+        let short = encode::short_pairs(&p.points, pairs, &p.faces, m);
+        if short.len() == pairs.len() {
+            break; // the full formula itself
+        }
+        let sparse = Edges {
+            allowed: Some(&short),
+            ..edges
+        };
+        let Some(f) = Formula::over(domain, sparse, ctl)? else {
+            return Ok(Some(stopped(domain)));
+        };
+        let (out, mut stats) = search(f, domain, sparse, options, ctl)?;
+        if out != Outcome::Infeasible {
+            stats.short = Some(m);
+            return Ok(Some((out, stats)));
+        }
+    }
+    Ok(None)
+}
+
+/// Fails when `domain` is too large for the candidate enumeration or spans no volume.
+fn check_size(domain: Domain, edges: Edges) -> Result<(), ExactError> {
+    let pts = domain.points();
+    let limit = match (domain, edges.allowed) {
+        (_, Some(_)) => MAX_RESTRICTED_VERTICES,
+        (Domain::Polyhedron(_), None) => MAX_POLYHEDRON_VERTICES,
+        _ => MAX_VERTICES,
+    };
+    if pts.len() > limit {
+        return Err(ExactError::TooLarge(pts.len()));
+    }
+    if crate::geom::affine_dimension(pts) < 3 {
+        return Err(ExactError::Flat);
+    }
+    Ok(())
+}
+
+/// A polyhedron's unobstructed vertex pairs ([`encode::unobstructed_pairs`]) when `edges`
+/// allows every segment, else `None` (nothing to restrict). `Err` once `ctl` stops.
+fn polyhedron_pairs(
+    domain: Domain,
+    edges: Edges,
+    ctl: &Control,
+) -> Result<Option<Vec<[u32; 2]>>, ()> {
+    match (domain, edges.allowed) {
+        (Domain::Polyhedron(p), None) => encode::unobstructed_pairs(&p.points, &p.faces, ctl)
+            .map(Some)
+            .ok_or(()),
+        _ => Ok(None),
+    }
+}
+
+/// `edges` with its allowed segments replaced by `pairs` when there are any.
+fn restricted<'a>(edges: Edges<'a>, pairs: Option<&'a [[u32; 2]]>) -> Edges<'a> {
+    match pairs {
+        Some(p) => Edges {
+            allowed: Some(p),
+            ..edges
+        },
+        None => edges,
+    }
+}
+
+/// Solves the formula `f` built for `domain` and `edges`: the search of [`solve`].
+fn search(
+    f: Formula,
+    domain: Domain,
+    edges: Edges,
+    options: &Options,
+    ctl: &Control,
+) -> Result<(Outcome, Stats), ExactError> {
     let (cand, pts) = (&f.cand, domain.points());
     let mut stats = Stats {
         candidates: cand.tets.len(),
@@ -322,6 +448,7 @@ pub fn solve(
         interior_edges: cand.interior_edges.len(),
         calls: 0,
         obstacle: Obstacle::of(domain, edges, cand),
+        short: None,
     };
     if stats.obstacle.is_some() {
         return Ok((Outcome::Infeasible, stats));
@@ -440,32 +567,15 @@ struct Formula {
 impl Formula {
     /// `None` when `ctl` stopped the enumeration.
     fn new(domain: Domain, edges: Edges, ctl: &Control) -> Result<Option<Formula>, ExactError> {
-        let pts = domain.points();
-        let limit = match (domain, edges.allowed) {
-            (_, Some(_)) => MAX_RESTRICTED_VERTICES,
-            (Domain::Polyhedron(_), None) => MAX_POLYHEDRON_VERTICES,
-            _ => MAX_VERTICES,
+        check_size(domain, edges)?;
+        let Ok(pairs) = polyhedron_pairs(domain, edges, ctl) else {
+            return Ok(None);
         };
-        if pts.len() > limit {
-            return Err(ExactError::TooLarge(pts.len()));
-        }
-        if crate::geom::affine_dimension(pts) < 3 {
-            return Err(ExactError::Flat);
-        }
-        let unobstructed;
-        let edges = match (domain, edges.allowed) {
-            (Domain::Polyhedron(p), None) => {
-                let Some(pairs) = encode::unobstructed_pairs(pts, &p.faces, ctl) else {
-                    return Ok(None);
-                };
-                unobstructed = pairs;
-                Edges {
-                    allowed: Some(&unobstructed),
-                    ..edges
-                }
-            }
-            _ => edges,
-        };
+        Formula::over(domain, restricted(edges, pairs.as_deref()), ctl)
+    }
+
+    /// [`Formula::new`] once the size is checked and a polyhedron's pairs restricted.
+    fn over(domain: Domain, edges: Edges, ctl: &Control) -> Result<Option<Formula>, ExactError> {
         let cand = match candidates(domain, edges, ctl) {
             Ok(Some(c)) => c,
             Ok(None) => return Ok(None),
@@ -659,5 +769,37 @@ mod tests {
         let (out, _) =
             minimal_tetrahedralization(Domain::Points(&cube), &opts, &Control::new()).unwrap();
         assert!(matches!(out, Outcome::Optimal { ref tets, .. } if tets.len() == 5));
+    }
+
+    /// Large dented polyhedra are answered from the short pairs' formula, certified; a
+    /// polyhedron with no tetrahedralization still gets its NO from the full formula
+    /// (the short formulas prove nothing); and asking for the minimum never takes the
+    /// short route.
+    #[test]
+    fn short_pairs_answer_large_polyhedra_and_never_decide_a_no() {
+        let any = Options {
+            any: true,
+            ..Options::default()
+        };
+        let ctl = Control::new();
+        for seed in 0..4 {
+            let p = crate::polyhedra::hard::perturbed(90, 0.5, seed).unwrap();
+            let (out, stats) = solve(Domain::Polyhedron(&p), Edges::default(), &any, &ctl).unwrap();
+            let tets = match out {
+                Outcome::Found { tets } | Outcome::Optimal { tets, .. } => tets,
+                other => panic!("seed {seed}: {other:?}"),
+            };
+            assert!(stats.short.is_some(), "seed {seed}");
+            mesh::certify_polyhedron(&p, &tets).unwrap();
+        }
+        let c = crate::polyhedra::hard::chazelle(3).unwrap();
+        let (out, stats) = solve(Domain::Polyhedron(&c), Edges::default(), &any, &ctl).unwrap();
+        assert_eq!((out, stats.short), (Outcome::Infeasible, None));
+        let small = crate::polyhedra::hard::perturbed(44, 0.5, 1).unwrap();
+        let brief = Control::new().with_time_limit(std::time::Duration::from_millis(300));
+        let (_, stats) =
+            minimal_tetrahedralization(Domain::Polyhedron(&small), &Options::default(), &brief)
+                .unwrap();
+        assert_eq!(stats.short, None);
     }
 }
