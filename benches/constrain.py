@@ -3,9 +3,10 @@
 `constrained` and `tetrahedralize` decide within 60 s, with the size of the formula and of
 the DRAT proof of each NO, and TetGen -pY on the same polyhedra.
 
-Usage: python3 benches/constrain.py [--quick] [--tetgen-only]   (run from the repository
-root, after `cargo build --release`; TetGen from Debian for the last two tables; with
---tetgen-only, only those).
+Usage: python3 benches/constrain.py [--quick] [--tetgen-only | --reductions-only]   (run
+from the repository root, after `cargo build --release`; TetGen from Debian for the last
+two tables; --tetgen-only runs only those, --reductions-only only the Theorem 2.9 and
+gadget tables).
 """
 import json
 import os
@@ -92,6 +93,10 @@ def main():
         tetgen_table()
         hard_table()
         return
+    if "--reductions-only" in sys.argv:
+        reduction_table()
+        gadget_table()
+        return
     header("contains (TETRAD): Kuhn grids with one segment added across, or one removed")
     for k in [8, 16] if QUICK else [8, 16, 24, 32]:
         for corrupt in ["add-crossing", "drop-edge"]:
@@ -120,8 +125,45 @@ def main():
             rng = random.Random(seed)
             cons = rng.sample(pairs, n // 2)
             decide("constrained", write("c.json", pts, cons), f"random {n} #{seed}", n, len(cons))
+    reduction_table()
+    gadget_table()
     tetgen_table()
     hard_table()
+
+
+def reduction_table():
+    """Theorem 2.9 carried through: random planar segment sets, their TETRAD images from
+    `reduce trid-to-tetrad`, both decided by `contains`; the answers must agree."""
+    header("contains on `reduce trid-to-tetrad` images of random planar sets (pairs kept with probability 0.97, hull edges added); planar answer in the label")
+    for n in [10, 20] if QUICK else [10, 20, 30, 40, 50, 60, 70]:
+        for seed in range(2):
+            pts, segs = random_instance(n, True, 4000 * n + seed, keep=0.97)
+            path, segs = with_hull_edges("t2.json", pts, segs)
+            planar, _ = run(["contains", path, "--time-limit", LIMIT])
+            out = os.path.join(WORK, "t3.json")
+            subprocess.run([TK, "reduce", "trid-to-tetrad", path, out], check=True, capture_output=True)
+            with open(out) as f:
+                lifted = json.load(f)
+            v, _ = decide("contains", out, f"planar {n} #{seed}: {planar['verdict']}",
+                          len(lifted["points"]), len(lifted["segments"]))
+            if "undecided" not in (v["verdict"], planar["verdict"]) and v["verdict"] != planar["verdict"]:
+                raise SystemExit(f"Theorem 2.9 broken on planar {n} #{seed}")
+
+
+def gadget_table():
+    """Chains (towers) and grids of Schönhardt gadgets for `constrained`, up to its
+    60-point limit."""
+    header("constrained (CT): gadget chains (one tower of L gadgets) and grids (R × C gadgets)")
+    shapes = [(1, 1, l) for l in ([4, 8] if QUICK else [4, 8, 12, 16, 19])]
+    shapes += [(r, c, 1) for r, c in ([(2, 2)] if QUICK else [(2, 2), (2, 3), (3, 3)])]
+    for r, c, l in shapes:
+        path = os.path.join(WORK, "g.json")
+        subprocess.run([TK, "generate", "gadget-grid", "--rows", str(r), "--cols", str(c), "--layers", str(l),
+                        "-o", path], check=True, capture_output=True)
+        with open(path) as f:
+            g = json.load(f)
+        label = f"chain of {l}" if r == c == 1 else f"grid {r} × {c}"
+        decide("constrained", path, label, len(g["points"]), len(g["segments"]))
 
 
 def tetgen_table():
