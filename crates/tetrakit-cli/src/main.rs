@@ -222,6 +222,11 @@ enum ReduceKind {
         input: PathBuf,
         /// The spatial segment set: .json, .obj or .edge (with .node).
         output: PathBuf,
+        /// `apexes`: the lifted points between two apexes (proven); `sphere`: the
+        /// thesis's own construction (a sphere, a twisted lower copy, regular
+        /// quasi-prisms, the apex x*).
+        #[arg(long, value_enum, default_value_t = reduce::Construction::Apexes)]
+        construction: reduce::Construction,
         /// Print one JSON object on stdout.
         #[arg(long)]
         json: bool,
@@ -757,9 +762,10 @@ fn run(cmd: Cmd) -> CmdResult {
                 ReduceKind::TridToTetrad {
                     input,
                     output,
+                    construction,
                     json,
                 },
-        }) => reduce::trid_to_tetrad(&input, &output, json),
+        }) => reduce::trid_to_tetrad(&input, &output, construction, json),
         Cmd::Reduce(ReduceArgs {
             kind:
                 ReduceKind::HullGap {

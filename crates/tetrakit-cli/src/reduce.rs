@@ -11,8 +11,22 @@ use tetrakit::io;
 use tetrakit::numbering::renumber_text;
 use tetrakit::reduce::{QuasiPrism, QuasiPrismError};
 
-/// `reduce trid-to-tetrad IN OUT`.
-pub fn trid_to_tetrad(input: &Path, output: &Path, as_json: bool) -> CmdResult {
+/// Which construction `reduce trid-to-tetrad` builds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Construction {
+    /// The lifted points between two apexes (`reduce::trid_to_tetrad`).
+    Apexes,
+    /// The thesis's sphere and twisted lower copy (`reduce::sphere_reduction`).
+    Sphere,
+}
+
+/// `reduce trid-to-tetrad IN OUT [--construction]`.
+pub fn trid_to_tetrad(
+    input: &Path,
+    output: &Path,
+    construction: Construction,
+    as_json: bool,
+) -> CmdResult {
     let start = Instant::now();
     let inp = io::read_input(input)?;
     if let Some(k) = inp.points.iter().position(|p| p[2] != 0.0) {
@@ -26,31 +40,58 @@ pub fn trid_to_tetrad(input: &Path, output: &Path, as_json: bool) -> CmdResult {
         ));
     }
     let flat: Vec<[f64; 2]> = inp.points.iter().map(|p| [p[0], p[1]]).collect();
-    let r = tetrakit::reduce::trid_to_tetrad(&flat, &inp.segments)
-        .map_err(|e| CliError::at(input, renumber_text(&e.to_string(), inp.index_base)))?;
-    let pairs: Vec<(u32, u32)> = r.segments.iter().map(|&[a, b]| (a, b)).collect();
-    io::write_edges(output, &r.points, &pairs, inp.index_base).written(output)?;
-    let v = json!({
-        "verdict": "written",
-        "points": r.points.len(),
-        "segments": r.segments.len(),
-        "planar_points": flat.len(),
-        "planar_segments": inp.segments.len(),
-        "apex_height": r.height,
-        "output": output.display().to_string(),
-        "checked": ["no three planar points collinear", "every orientation kept from both apexes", "every lifted point a vertex of the upper hull"],
-        "seconds": start.elapsed().as_secs_f64(),
-    });
+    let refused = |e: tetrakit::reduce::ReduceError| {
+        CliError::at(input, renumber_text(&e.to_string(), inp.index_base))
+    };
+    let (points, segments, mut v, how) = match construction {
+        Construction::Apexes => {
+            let r = tetrakit::reduce::trid_to_tetrad(&flat, &inp.segments).map_err(refused)?;
+            let v = json!({
+                "construction": "apexes",
+                "apex_height": r.height,
+                "checked": ["no three planar points collinear", "every orientation kept from both apexes", "every lifted point a vertex of the upper hull"],
+            });
+            let how = format!("lifted to a paraboloid, apexes at height ±{}", r.height);
+            (r.points, r.segments, v, how)
+        }
+        Construction::Sphere => {
+            let r = tetrakit::reduce::sphere_reduction(&flat, &inp.segments).map_err(refused)?;
+            let v = json!({
+                "construction": "sphere",
+                "radius": r.radius,
+                "twist_radians": r.twist,
+                "apex_height": r.height,
+                "checked": ["no three planar points collinear", "no four points coplanar", "every prism over a triangle of E a regular quasi-prism", "x* sees the upper points as the plane does", "every hull edge a segment (or a missing planar hull edge lifted)"],
+            });
+            let how = format!(
+                "on a sphere of radius {}, the lower copy twisted by {} rad, x* at height {}",
+                r.radius, r.twist, r.height
+            );
+            (r.points, r.segments, v, how)
+        }
+    };
+    let pairs: Vec<(u32, u32)> = segments.iter().map(|&[a, b]| (a, b)).collect();
+    io::write_edges(output, &points, &pairs, inp.index_base).written(output)?;
+    for (key, value) in [
+        ("verdict", json!("written")),
+        ("points", json!(points.len())),
+        ("segments", json!(segments.len())),
+        ("planar_points", json!(flat.len())),
+        ("planar_segments", json!(inp.segments.len())),
+        ("output", json!(output.display().to_string())),
+        ("seconds", json!(start.elapsed().as_secs_f64())),
+    ] {
+        v[key] = value;
+    }
     if as_json {
         out!("{v}");
     } else {
         out!(
-            "wrote {}: {} points, {} segments (the {} planar points lifted to a paraboloid, apexes at height ±{}); conditions checked exactly",
+            "wrote {}: {} points, {} segments (the {} planar points {how}); conditions checked exactly",
             output.display(),
-            r.points.len(),
-            r.segments.len(),
+            points.len(),
+            segments.len(),
             flat.len(),
-            r.height
         );
     }
     Ok(Verdict::Yes)

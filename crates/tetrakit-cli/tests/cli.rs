@@ -1134,6 +1134,19 @@ fn trid_to_tetrad_keeps_the_answer() {
             json(&run(&["contains", s(&spatial), "--json"]))["verdict"],
             verdict
         );
+        // The thesis's construction: 5 upper, 5 lower points and x*, the same answer.
+        let args = ["reduce", "trid-to-tetrad", s(&planar), s(&spatial)];
+        let o = run(&[&args[..], &["--construction", "sphere", "--json"]].concat());
+        let v = json(&o);
+        assert_eq!(
+            (v["points"].as_u64(), v["construction"].as_str()),
+            (Some(11), Some("sphere"))
+        );
+        assert!(v["twist_radians"].as_f64().unwrap() > 0.0);
+        assert_eq!(
+            json(&run(&["contains", s(&spatial), "--json"]))["verdict"],
+            verdict
+        );
     }
     std::fs::write(
         &planar,

@@ -3,6 +3,11 @@
 //! contain a triangulation?) to TETRAD (does a spatial one contain a tetrahedralization?),
 //! with its conditions checked exactly on every output.
 //!
+//! Two constructions: [`trid_to_tetrad`] below (proven), and the thesis's own, with the
+//! sphere, the twisted lower copy and regular quasi-prisms, in [`sphere_reduction`]
+//! (its conditions checked exactly; its agreement measured, since its proof leans on
+//! Lemma 2.7).
+//!
 //! **The construction** ([`trid_to_tetrad`]). The thesis lifts the points to the upper
 //! and lower halves of a large sphere, twists the lower copy, joins every lower pair and
 //! every upper–lower pair, and puts an apex `x*` above. This module keeps the thesis's
@@ -36,9 +41,11 @@
 
 mod hull_gap;
 mod quasi_prism;
+mod sphere;
 
 pub use hull_gap::{HullGapError, hull_gap};
 pub use quasi_prism::{QuasiPrism, QuasiPrismError, Staircase};
+pub use sphere::{SphereReduction, sphere_reduction};
 
 use crate::geom::{Hull3, Point2, Point3, orient2d, orient3d};
 
@@ -67,6 +74,13 @@ pub enum ReduceError {
     NoHeight,
     /// A lifted point is not a vertex of the upper hull (C2).
     NotConvex(u32),
+    /// [`sphere_reduction`]: four of the points are coplanar for every twist tried (S1).
+    Coplanar([u32; 4]),
+    /// [`sphere_reduction`]: no twist tried makes the prism over this triangle of `E` a
+    /// regular quasi-prism (S2), or `None` when not known.
+    NoTwist(Option<[u32; 3]>),
+    /// [`sphere_reduction`]: this hull edge is not a segment (S4, not expected).
+    HullEdgeMissing([u32; 2]),
 }
 
 impl std::fmt::Display for ReduceError {
@@ -89,6 +103,19 @@ impl std::fmt::Display for ReduceError {
             ReduceError::NotConvex(v) => write!(
                 f,
                 "point #{v} lifted is not a vertex of the upper hull (points nearly collinear for the rounded lift)"
+            ),
+            ReduceError::Coplanar([a, b, c, d]) => write!(
+                f,
+                "points #{a}, #{b}, #{c} and #{d} of the construction are coplanar for every twist tried (upper points are #v, lower ones #(n + v), the apex #2n)"
+            ),
+            ReduceError::NoTwist(Some([a, b, c])) => write!(
+                f,
+                "no twist tried makes the prism over triangle (#{a}, #{b}, #{c}) a regular quasi-prism"
+            ),
+            ReduceError::NoTwist(None) => write!(f, "no twist was tried"),
+            ReduceError::HullEdgeMissing([a, b]) => write!(
+                f,
+                "hull edge (#{a}, #{b}) of the construction is not a segment (not expected)"
             ),
         }
     }
@@ -179,27 +206,37 @@ impl Reduction {
     /// The triangulation of the planar points that a tetrahedralization within the
     /// segments gives: the link of `x*` (`None` if no tetrahedron has `x*`).
     pub fn project(&self, tets: &[[u32; 4]]) -> Option<Vec<[u32; 3]>> {
-        let (top, _) = self.apexes();
-        let link: Vec<[u32; 3]> = tets
-            .iter()
-            .filter(|t| t.contains(&top))
-            .map(|t| {
-                let mut f = [0u32; 3];
-                for (k, &v) in t.iter().filter(|&&v| v != top).enumerate() {
-                    f[k] = v;
-                }
-                f
-            })
-            .collect();
-        (!link.is_empty()).then_some(link)
+        link(self.apexes().0, tets)
     }
 }
 
+/// The triangles opposite `apex` in the tetrahedra that have it (`None` if none has).
+fn link(apex: u32, tets: &[[u32; 4]]) -> Option<Vec<[u32; 3]>> {
+    let link: Vec<[u32; 3]> = tets
+        .iter()
+        .filter(|t| t.contains(&apex))
+        .map(|t| {
+            let mut f = [0u32; 3];
+            for (k, &v) in t.iter().filter(|&&v| v != apex).enumerate() {
+                f[k] = v;
+            }
+            f
+        })
+        .collect();
+    (!link.is_empty()).then_some(link)
+}
+
 /// A point strictly inside the convex hull of `points` and on no line through two of
-/// them (checked exactly): the centroid of all of them, else of a triangle of them.
+/// them (checked exactly): the first of [`centres`].
 fn centre(points: &[Point2]) -> Option<Point2> {
+    centres(points).next()
+}
+
+/// Points strictly inside the convex hull of `points` and on no line through two of them
+/// (checked exactly): the centroid of all of them, then of triangles `0 i j`.
+fn centres(points: &[Point2]) -> impl Iterator<Item = Point2> + '_ {
     let ring = crate::geom::Hull2::new(points).vertices;
-    let inside = |c: &Point2| {
+    let inside = move |c: &Point2| {
         let k = ring.len();
         k >= 3
             && (0..k).all(|i| {
@@ -214,19 +251,18 @@ fn centre(points: &[Point2]) -> Option<Point2> {
         (0..points.len())
             .all(|a| (a + 1..points.len()).all(|b| orient2d(&points[a], &points[b], c) != 0))
     };
-    let mean = |idx: &[usize]| -> Point2 {
+    let mean = move |idx: &[usize]| -> Point2 {
         let k = idx.len() as f64;
         [0, 1].map(|d| idx.iter().map(|&i| points[i][d]).sum::<f64>() / k)
     };
-    let all: Vec<usize> = (0..points.len()).collect();
     let n = points.len();
-    std::iter::once(mean(&all))
+    std::iter::once(mean(&(0..n).collect::<Vec<_>>()))
         .chain(
             (1..n)
-                .flat_map(|i| (i + 1..n).map(move |j| (i, j)))
-                .map(|(i, j)| mean(&[0, i, j])),
+                .flat_map(move |i| (i + 1..n).map(move |j| (i, j)))
+                .map(move |(i, j)| mean(&[0, i, j])),
         )
-        .find(|c| inside(c) && off_lines(c))
+        .filter(move |c| inside(c) && off_lines(c))
 }
 
 /// Three collinear points, if any (`O(n³)`).
