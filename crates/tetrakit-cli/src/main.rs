@@ -544,6 +544,24 @@ enum GenKind {
         #[command(flatten)]
         out: PairOutput,
     },
+    /// A shell whose inner polytope touches the outer one at a vertex, along an edge,
+    /// along a facet, or with a vertex inside a facet (the cube), and nowhere else.
+    Contact {
+        /// How the two polytopes touch.
+        #[arg(long, value_enum)]
+        kind: tetrakit::shell::generate::Contact,
+        /// Points on the outer sphere (ignored for facet-point: the cube's corners).
+        #[arg(long, default_value_t = 40)]
+        n_outer: usize,
+        /// Inner points: the shared ones, then points strictly inside.
+        #[arg(long, default_value_t = 20)]
+        n_inner: usize,
+        /// Seed.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        #[command(flatten)]
+        out: PairOutput,
+    },
     /// A CT instance for `constrained`: Schönhardt's polyhedron's twelve edges as
     /// constraints, among random points outside its niche's view (Theorem 2.10: NO).
     Niche {
@@ -817,6 +835,22 @@ fn run(cmd: Cmd) -> CmdResult {
         Cmd::Generate(GenerateArgs {
             kind: GenKind::Nested(a),
         }) => shell::generate_nested(&a.params(), &a.out.outer_output, &a.out.inner_output),
+        Cmd::Generate(GenerateArgs {
+            kind:
+                GenKind::Contact {
+                    kind,
+                    n_outer,
+                    n_inner,
+                    seed,
+                    out,
+                },
+        }) => shell::generate_contact(
+            kind,
+            [n_outer, n_inner],
+            seed,
+            &out.outer_output,
+            &out.inner_output,
+        ),
         Cmd::Generate(GenerateArgs {
             kind:
                 GenKind::BernDisk {

@@ -192,6 +192,19 @@ pub fn generate_bern_disk(
     write_pair(&o, outer, &i, inner, "")
 }
 
+/// `generate contact`.
+pub fn generate_contact(
+    kind: tetrakit::shell::generate::Contact,
+    [n_outer, n_inner]: [usize; 2],
+    seed: u64,
+    outer: &Path,
+    inner: &Path,
+) -> CmdResult {
+    let (o, i) =
+        tetrakit::shell::generate::contact(kind, n_outer, n_inner, seed).map_err(CliError::new)?;
+    write_pair(&o, outer, &i, inner, "")
+}
+
 fn write_pair(o: &[Point3], outer: &Path, i: &[Point3], inner: &Path, note: &str) -> CmdResult {
     io::write_points(outer, o).written(outer)?;
     io::write_points(inner, i).written(inner)?;

@@ -927,6 +927,30 @@ fn shell_bad_input_and_time_limit() {
         ])
     };
     one_line(&disk("2"), "at least 3 ridge and 3 ring points");
+    let touch = |kind: &str, n: &str| {
+        run(&[
+            "generate",
+            "contact",
+            "--kind",
+            kind,
+            "--n-inner",
+            n,
+            "--outer-output",
+            s(&o),
+            "--inner-output",
+            s(&i),
+        ])
+    };
+    one_line(&touch("edge", "3"), "at least 4 outer and 4 inner points");
+    for kind in ["vertex", "edge", "facet", "facet-point"] {
+        assert!(touch(kind, "12").status.success(), "{kind}");
+        let v = json(&run(&["shell", s(&o), s(&i), "--json"]));
+        assert_eq!(v["verdict"], "yes", "{kind}: {v}");
+        assert!(
+            v["tetrahedra"].as_u64() <= v["bound"].as_u64(),
+            "{kind}: {v}"
+        );
+    }
 }
 
 /// A Bern disk: the removals exceed 9n − 6, the flips (on by default) bring the mesh

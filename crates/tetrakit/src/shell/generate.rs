@@ -194,3 +194,68 @@ pub fn bern_disk(
     inner.push([0.0, 0.0, -APEX_HEIGHT]);
     Ok((outer, inner))
 }
+
+/// How the inner polytope of [`contact`] touches the outer one.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
+pub enum Contact {
+    /// At one shared vertex.
+    Vertex,
+    /// Along one shared edge.
+    Edge,
+    /// Along one shared facet.
+    Facet,
+    /// A vertex of `Q` inside a facet of `P` (the cube `[−1, 1]³`, its top facet).
+    FacetPoint,
+}
+
+/// A shell whose inner polytope touches the outer one as `kind` says, and nowhere else:
+/// `P` is the hull of `n_outer` random points on the unit sphere (the cube `[−1, 1]³` for
+/// [`Contact::FacetPoint`]), and `Q` the hull of the shared part (a vertex, the two ends
+/// of an edge, or a facet's corners of `P`; the point `(0.25, 0.5, 1)` on the cube's top)
+/// with `n_inner` points strictly inside `P` (outer points pulled halfway to the centroid
+/// of `P`'s vertices). Returns `(outer, inner)`.
+///
+/// ```
+/// use tetrakit::shell::{Shell, generate::{Contact, contact}};
+/// let (outer, inner) = contact(Contact::FacetPoint, 8, 6, 1).unwrap();
+/// let shell = Shell::new(&outer, &inner).unwrap();
+/// assert_eq!(shell.touching.len(), 1);
+/// ```
+pub fn contact(
+    kind: Contact,
+    n_outer: usize,
+    n_inner: usize,
+    seed: u64,
+) -> Result<(Vec<Point3>, Vec<Point3>), String> {
+    if n_outer < 4 || n_inner < 4 {
+        return Err(format!(
+            "a contact shell needs at least 4 outer and 4 inner points, not {n_outer} and {n_inner}"
+        ));
+    }
+    let mut rng = Rng::new(seed);
+    let outer: Vec<Point3> = match kind {
+        Contact::FacetPoint => shape_points(Shape::Cube, 8, 3f64.sqrt(), &mut rng),
+        _ => (0..n_outer).map(|_| on_sphere(&mut rng)).collect(),
+    };
+    let hull = crate::geom::Hull3::new(&outer);
+    if hull.dimension < 3 {
+        return Err("the outer points are flat".into());
+    }
+    let corners: Vec<usize> = (0..outer.len()).filter(|&v| hull.on_boundary(v)).collect();
+    let k = corners.len() as f64;
+    let centre: Point3 = [0, 1, 2].map(|d| corners.iter().map(|&v| outer[v][d]).sum::<f64>() / k);
+    let f = hull.facet_planes[0];
+    let mut inner: Vec<Point3> = match kind {
+        Contact::Vertex => vec![outer[f[0] as usize]],
+        Contact::Edge => vec![outer[f[0] as usize], outer[f[1] as usize]],
+        Contact::Facet => f.iter().map(|&v| outer[v as usize]).collect(),
+        Contact::FacetPoint => vec![[0.25, 0.5, 1.0]],
+    };
+    while inner.len() < n_inner {
+        let p = outer[corners[rng.below(corners.len())]];
+        let q = on_sphere(&mut rng).map(|x| 0.2 * x);
+        inner.push([0, 1, 2].map(|d| centre[d] + 0.5 * (p[d] - centre[d]) + q[d] * 0.1));
+    }
+    Ok((outer, inner))
+}
