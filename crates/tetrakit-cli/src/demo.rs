@@ -293,6 +293,15 @@ fn prescribed_edges_section() {
             ),
             &d.answer,
         );
+        let r = tetrakit::reduce::sphere_reduction(&flat, e).expect("the conditions hold");
+        let d = contains(&r.points, &r.segments, &opts, &ctl).expect("valid input");
+        show(
+            &format!(
+                "the thesis's sphere construction (`--construction sphere`, {} points), {name}",
+                r.points.len()
+            ),
+            &d.answer,
+        );
     }
     constructions(&ctl);
 }

@@ -672,19 +672,26 @@ fn trid_to_tetrad_keeps_the_answer() {
                     "#{k}"
                 );
                 let back = r.project(tets).expect("the top apex is a vertex");
-                let ccw = counter_clockwise(&flat, &back);
-                assert!(verify_triangulation(&flat, &ccw).is_valid(), "#{k}");
-                let in_e = |x: [u32; 2]| e.iter().any(|s| key(*s) == key(x));
-                assert!(
-                    ccw.iter()
-                        .all(|t| in_e([t[0], t[1]]) && in_e([t[1], t[2]]) && in_e([t[0], t[2]]))
-                );
+                assert_triangulation_within(&flat, &e, &back, k);
             }
             (Answer::No(_), Answer::No(_)) => no += 1,
             (a, b) => panic!("#{k}: planar {a:?}, spatial {b:?}"),
         }
     }
     assert!(yes >= 30 && no >= 30, "yes {yes}, no {no}");
+}
+
+/// `tris` (a reduction's projection back to the plane) triangulate `flat` with every
+/// side in `e`.
+fn assert_triangulation_within(flat: &[Point2], e: &[[u32; 2]], tris: &[[u32; 3]], k: usize) {
+    let ccw = counter_clockwise(flat, tris);
+    assert!(verify_triangulation(flat, &ccw).is_valid(), "#{k}");
+    let in_e = |x: [u32; 2]| e.iter().any(|s| key(*s) == key(x));
+    assert!(
+        ccw.iter()
+            .all(|t| (0..3).all(|i| in_e([t[i], t[(i + 1) % 3]]))),
+        "#{k}"
+    );
 }
 
 /// A random TRID instance on `n` points: the points (in space, z = 0, and in the plane)
@@ -721,13 +728,7 @@ fn the_thesis_reduction_keeps_the_answer() {
             (Answer::Yes(_), Answer::Yes(Cells::Tetrahedra(tets))) => {
                 yes += 1;
                 let back = r.project(tets).expect("x* is a vertex");
-                let ccw = counter_clockwise(&flat, &back);
-                assert!(verify_triangulation(&flat, &ccw).is_valid(), "#{k}");
-                let in_e = |x: [u32; 2]| e.iter().any(|s| key(*s) == key(x));
-                assert!(
-                    ccw.iter()
-                        .all(|t| (0..3).all(|i| in_e([t[i], t[(i + 1) % 3]])))
-                );
+                assert_triangulation_within(&flat, &e, &back, k);
             }
             (Answer::No(_), Answer::No(_)) => no += 1,
             (a, b) => panic!("#{k}: planar {a:?}, spatial {b:?}"),
