@@ -7,6 +7,7 @@ use tetrakit::io::read_input;
 
 const NODE: &str = "5 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 1 1\n";
 const EDGE: &str = "9 0\n1 1 2\n2 1 3\n3 1 4\n4 2 3\n5 2 4\n6 3 4\n7 2 5\n8 3 5\n9 4 5\n";
+const MESH: &str = "MeshVersionFormatted 2\nDimension 3\nVertices\n5\n0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\n1 1 1 1\nTetrahedra\n2\n1 2 3 4 0\n2 3 4 5 0\nTriangles\n1\n1 2 3 0\nEdges\n1\n1 5 0\nCorners\n1\n1\nEnd\n";
 
 fn write(name: &str, text: &str) -> std::path::PathBuf {
     let dir = std::env::temp_dir().join(format!("tetrakit-malformed-{}", std::process::id()));
@@ -71,9 +72,54 @@ proptest! {
     }
 
     #[test]
-    fn arbitrary_text_never_panics(text in "[ -~\n]{0,200}", ext in prop::sample::select(vec!["node", "edge", "ele", "obj", "json", "xyz"])) {
+    fn mutated_medit_files_never_panic(mesh in mutate(MESH)) {
+        let p = write("m.mesh", &mesh);
+        if let Err(e) = read_input(&p) {
+            prop_assert!(e.file.ends_with("m.mesh") && e.line <= mesh.lines().count());
+        }
+    }
+
+    #[test]
+    fn arbitrary_text_never_panics(text in "[ -~\n]{0,200}", ext in prop::sample::select(vec!["node", "edge", "ele", "obj", "json", "xyz", "mesh"])) {
         write("a.node", NODE);
         let p = write(&format!("a.{ext}"), &text);
         let _ = read_input(&p);
+    }
+}
+
+/// Medit `.mesh`: a valid file reads with its sections (1-based corners, references
+/// dropped, annotations skipped); each kind of damage is one error naming the line.
+#[test]
+fn medit_files_read_and_fail_with_the_line() {
+    let input = read_input(&write("ok.mesh", MESH)).unwrap();
+    assert_eq!(
+        (
+            input.points.len(),
+            input.tets.clone(),
+            input.faces.len(),
+            input.segments.clone()
+        ),
+        (5, vec![[0, 1, 2, 3], [1, 2, 3, 4]], 1, vec![[0, 4]])
+    );
+    let cases = [
+        ("1 0 0 1", "1 0 x 1", 6, "'x' is not a number"),
+        ("2 3 4 5 0", "2 3 4 6 0", 13, "vertex 6 is out of range"),
+        ("Corners", "Hexahedra", 20, "1 hexahedra besides tetrahedra"),
+        ("Corners", "Bricks", 20, "unknown keyword 'Bricks'"),
+        ("End\n", "", 22, "missing 'End'"),
+        (
+            "Tetrahedra\n2",
+            "Tetrahedra\n-2",
+            11,
+            "negative number of tetrahedra",
+        ),
+        ("Dimension 3", "Dimension 4", 2, "dimension 4"),
+    ];
+    for (from, to, line, needle) in cases {
+        let e = read_input(&write("bad.mesh", &MESH.replacen(from, to, 1))).unwrap_err();
+        assert!(
+            e.line == line && e.message.contains(needle),
+            "{from} -> {to}: {e}"
+        );
     }
 }

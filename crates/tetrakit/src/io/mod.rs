@@ -1,5 +1,5 @@
 //! Reading and writing meshes and segment sets: TetGen `.node/.edge/.ele/.face`, OBJ
-//! (`v`, `l`, `f`), the JSON of the README, plain `.xyz` point lists, and a legacy VTK
+//! (`v`, `l`, `f`), Medit `.mesh` (read), the JSON of the README, plain `.xyz` point lists, and a legacy VTK
 //! writer.
 //!
 //! Every reader validates as it goes and fails with an [`InputError`] naming the file, the
@@ -9,6 +9,7 @@
 //! size an allocation.
 
 mod json;
+mod medit;
 mod obj;
 mod off;
 mod planar;
@@ -114,7 +115,7 @@ impl Input {
 
 /// Reads `path`, choosing the format by extension: `.node` (with sibling `.edge`, `.ele`
 /// and `.face` when present), `.edge`/`.ele`/`.face` (with the sibling `.node`), `.obj`,
-/// `.json`, `.xyz`/`.txt`.
+/// `.off`, `.mesh` (Medit), `.json`, `.xyz`/`.txt`.
 ///
 /// ```
 /// let dir = std::env::temp_dir().join("tetrakit-doc-read");
@@ -137,6 +138,7 @@ pub fn read_input(path: &Path) -> Result<Input, InputError> {
         "node" | "edge" | "ele" | "face" => tetgen::read(path, &ext)?,
         "obj" => obj::read(path)?,
         "off" => off::read(path)?,
+        "mesh" => medit::read(path)?,
         "json" => json::read(path)?,
         "xyz" | "txt" => read_xyz(path)?,
         _ => {
@@ -144,7 +146,7 @@ pub fn read_input(path: &Path) -> Result<Input, InputError> {
                 path,
                 0,
                 format!(
-                    "unknown input format '.{ext}' (expected .node, .edge, .ele, .face, .obj, .off, .json, .xyz or .txt)"
+                    "unknown input format '.{ext}' (expected .node, .edge, .ele, .face, .obj, .off, .mesh, .json, .xyz or .txt)"
                 ),
             ));
         }

@@ -1,0 +1,214 @@
+//! Medit / INRIA `.mesh` (ASCII), as Gmsh, MMG, TetGen (`-g`) and meshio write it:
+//! `MeshVersionFormatted v`, `Dimension 3` (or 2: planar points), then sections, each a
+//! keyword, a count and that many entries, until `End`. Read: `Vertices` (coordinates and
+//! a reference), `Tetrahedra`, `Triangles` and `Edges` (1-based corners and a reference,
+//! which is not kept). Sections that only annotate (`Corners`, `Ridges`, `Required…`,
+//! `Normals`, `Tangents`, …) are skipped; cells other than tetrahedra and triangles
+//! (`Quadrilaterals`, `Hexahedra`, `Prisms`, `Pyramids`) are an error that counts them,
+//! never a silent drop. Tokens are read as a stream, so an entry may span lines; every
+//! error names the line. Counts are checked against what is read, never used to size an
+//! allocation.
+
+use super::{Input, InputError, check_segments, parse_coord, parse_int, read_text, vertex_ref};
+use std::path::Path;
+
+/// Sections skipped, with the number of tokens of one entry (`None`: depends on the
+/// dimension, one vector per entry).
+const ANNOTATIONS: [(&str, Option<usize>); 10] = [
+    ("Corners", Some(1)),
+    ("Ridges", Some(1)),
+    ("RequiredVertices", Some(1)),
+    ("RequiredEdges", Some(1)),
+    ("RequiredTriangles", Some(1)),
+    ("RequiredTetrahedra", Some(1)),
+    ("Normals", None),
+    ("Tangents", None),
+    ("NormalAtVertices", Some(2)),
+    ("TangentAtVertices", Some(2)),
+];
+
+/// Cells this reader refuses.
+const OTHER_CELLS: [&str; 4] = ["Quadrilaterals", "Hexahedra", "Prisms", "Pyramids"];
+
+/// A stream of `(line, token)`.
+struct Stream<'a> {
+    toks: Box<dyn Iterator<Item = (usize, &'a str)> + 'a>,
+    path: &'a Path,
+    line: usize,
+}
+
+impl<'a> Stream<'a> {
+    fn next(&mut self) -> Option<(usize, &'a str)> {
+        let t = self.toks.next();
+        if let Some((l, _)) = t {
+            self.line = l;
+        }
+        t
+    }
+
+    /// The next token, or an error saying what was expected.
+    fn want(&mut self, what: &str) -> Result<(usize, &'a str), InputError> {
+        let line = self.line;
+        self.next().ok_or_else(|| {
+            InputError::new(
+                self.path,
+                line,
+                format!("the file ends where {what} was expected"),
+            )
+        })
+    }
+
+    /// A section's count: a non-negative integer.
+    fn count(&mut self, section: &str) -> Result<usize, InputError> {
+        let (line, tok) = self.want(&format!("the number of {section}"))?;
+        let k = parse_int(tok, self.path, line, &format!("the number of {section}"))?;
+        usize::try_from(k)
+            .map_err(|_| InputError::new(self.path, line, format!("negative number of {section}")))
+    }
+
+    /// `k` vertex references (1-based) then a reference number, checked.
+    fn corners<const K: usize>(
+        &mut self,
+        n: usize,
+        what: &str,
+    ) -> Result<(usize, [u32; K]), InputError> {
+        let mut out = [0u32; K];
+        let mut at = self.line;
+        for slot in out.iter_mut() {
+            let (line, tok) = self.want(what)?;
+            at = line;
+            let raw = parse_int(tok, self.path, line, "vertex")?;
+            *slot = vertex_ref(raw, 1, n, self.path, line)?;
+        }
+        let (line, tok) = self.want(&format!("the reference of a {what}"))?;
+        parse_int(tok, self.path, line, "reference")?;
+        Ok((at, out))
+    }
+}
+
+pub(super) fn read(path: &Path) -> Result<Input, InputError> {
+    let text = read_text(path)?;
+    let mut s = Stream {
+        // Tokens as `token_lines` cuts them (`#` starts a comment), without a copy.
+        toks: Box::new(text.lines().enumerate().flat_map(|(i, l)| {
+            let l = l.split('#').next().unwrap_or("");
+            l.split_ascii_whitespace().map(move |x| (i + 1, x))
+        })),
+        path,
+        line: 0,
+    };
+    let mut input = Input {
+        dim: 3,
+        index_base: 1,
+        point_file: path.to_path_buf(),
+        tet_file: path.to_path_buf(),
+        ..Default::default()
+    };
+    let mut seg_lines = Vec::new();
+    let mut ended = false;
+    while let Some((line, key)) = s.next() {
+        match key {
+            "MeshVersionFormatted" => {
+                s.want("the version")?;
+            }
+            "Dimension" => {
+                let (l, tok) = s.want("the dimension")?;
+                input.dim = match parse_int(tok, path, l, "dimension")? {
+                    d @ (2 | 3) if input.points.is_empty() => d as usize,
+                    d @ (2 | 3) => {
+                        return Err(InputError::new(
+                            path,
+                            l,
+                            format!("'Dimension {d}' after the vertices"),
+                        ));
+                    }
+                    d => {
+                        return Err(InputError::new(
+                            path,
+                            l,
+                            format!("dimension {d}: only 2 and 3 are meshes of points"),
+                        ));
+                    }
+                };
+            }
+            "Vertices" => {
+                if !input.points.is_empty() {
+                    return Err(InputError::new(path, line, "a second 'Vertices' section"));
+                }
+                for _ in 0..s.count("vertices")? {
+                    let mut p = [0.0; 3];
+                    let mut at = line;
+                    for c in p.iter_mut().take(input.dim) {
+                        let (l, tok) = s.want("a coordinate")?;
+                        at = l;
+                        *c = parse_coord(tok, path, l)?;
+                    }
+                    let (l, tok) = s.want("the reference of a vertex")?;
+                    parse_int(tok, path, l, "reference")?;
+                    input.points.push(p);
+                    input.point_lines.push(at);
+                }
+            }
+            "Tetrahedra" => {
+                for _ in 0..s.count("tetrahedra")? {
+                    let (at, t) = s.corners::<4>(input.points.len(), "tetrahedron")?;
+                    input.tets.push(t);
+                    input.tet_lines.push(at as u32);
+                }
+            }
+            "Triangles" => {
+                for _ in 0..s.count("triangles")? {
+                    let (_, t) = s.corners::<3>(input.points.len(), "triangle")?;
+                    input.faces.push(t);
+                }
+            }
+            "Edges" => {
+                for _ in 0..s.count("edges")? {
+                    let (at, e) = s.corners::<2>(input.points.len(), "edge")?;
+                    input.segments.push(e);
+                    seg_lines.push(at as u32);
+                }
+            }
+            "End" => {
+                ended = true;
+                break;
+            }
+            other => skip_or_refuse(&mut s, other, line, input.dim)?,
+        }
+    }
+    if !ended {
+        return Err(InputError::new(path, s.line, "missing 'End'"));
+    }
+    if input.points.is_empty() {
+        return Err(InputError::new(path, 0, "no 'Vertices' section"));
+    }
+    check_segments(&input.segments, &seg_lines, 1, path)?;
+    Ok(input)
+}
+
+/// Skips an annotation section; refuses other cells (counting them) and unknown keywords.
+fn skip_or_refuse(s: &mut Stream, key: &str, line: usize, dim: usize) -> Result<(), InputError> {
+    if let Some(&(_, per)) = ANNOTATIONS.iter().find(|(k, _)| *k == key) {
+        let k = s.count(key)?;
+        for _ in 0..k * per.unwrap_or(dim) {
+            s.want(&format!("an entry of '{key}'"))?;
+        }
+        return Ok(());
+    }
+    if OTHER_CELLS.contains(&key) {
+        let k = s.count(key)?;
+        return Err(InputError::new(
+            s.path,
+            line,
+            format!(
+                "{k} {} besides tetrahedra and triangles: only those are read",
+                key.to_lowercase()
+            ),
+        ));
+    }
+    Err(InputError::new(
+        s.path,
+        line,
+        format!("unknown keyword {}", super::quote(key)),
+    ))
+}
