@@ -7,6 +7,8 @@ use tetrakit::io::read_input;
 
 const NODE: &str = "5 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 1 1\n";
 const EDGE: &str = "9 0\n1 1 2\n2 1 3\n3 1 4\n4 2 3\n5 2 4\n6 3 4\n7 2 5\n8 3 5\n9 4 5\n";
+const VTK4: &str = "# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 5 double\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\nCELLS 3 12\n4 0 1 2 3\n4 1 2 3 4\n2 0 4\nCELL_TYPES 3\n10\n10\n3\nCELL_DATA 3\n";
+const VTK5: &str = "# vtk DataFile Version 5.1\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 5 double\n0 0 0 1 0 0 0 1 0\n0 0 1 1 1 1\nCELLS 4 11\nOFFSETS vtktypeint64\n0 4 8 11\nCONNECTIVITY vtktypeint64\n0 1 2 3\n1 2 3 4\n0 1 2\nCELL_TYPES 3\n10 10 5\n";
 const MESH: &str = "MeshVersionFormatted 2\nDimension 3\nVertices\n5\n0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\n1 1 1 1\nTetrahedra\n2\n1 2 3 4 0\n2 3 4 5 0\nTriangles\n1\n1 2 3 0\nEdges\n1\n1 5 0\nCorners\n1\n1\nEnd\n";
 
 fn write(name: &str, text: &str) -> std::path::PathBuf {
@@ -80,7 +82,16 @@ proptest! {
     }
 
     #[test]
-    fn arbitrary_text_never_panics(text in "[ -~\n]{0,200}", ext in prop::sample::select(vec!["node", "edge", "ele", "obj", "json", "xyz", "mesh"])) {
+    fn mutated_vtk_files_never_panic(v4 in mutate(VTK4), v5 in mutate(VTK5)) {
+        for (name, text) in [("m4.vtk", &v4), ("m5.vtk", &v5)] {
+            if let Err(e) = read_input(&write(name, text)) {
+                prop_assert!(e.file.ends_with(name) && e.line <= text.lines().count());
+            }
+        }
+    }
+
+    #[test]
+    fn arbitrary_text_never_panics(text in "[ -~\n]{0,200}", ext in prop::sample::select(vec!["node", "edge", "ele", "obj", "json", "xyz", "mesh", "vtk"])) {
         write("a.node", NODE);
         let p = write(&format!("a.{ext}"), &text);
         let _ = read_input(&p);
@@ -117,6 +128,53 @@ fn medit_files_read_and_fail_with_the_line() {
     ];
     for (from, to, line, needle) in cases {
         let e = read_input(&write("bad.mesh", &MESH.replacen(from, to, 1))).unwrap_err();
+        assert!(
+            e.line == line && e.message.contains(needle),
+            "{from} -> {to}: {e}"
+        );
+    }
+}
+
+/// Legacy VTK in both layouts (4.x cell lists, 5.x offsets and connectivity) reads the
+/// same cells; tetrakit's own writer reads back; damage is one error naming the line.
+#[test]
+fn vtk_files_read_and_fail_with_the_line() {
+    let old = read_input(&write("ok4.vtk", VTK4)).unwrap();
+    assert_eq!(
+        (old.points.len(), old.tets.clone(), old.segments.clone()),
+        (5, vec![[0, 1, 2, 3], [1, 2, 3, 4]], vec![[0, 4]])
+    );
+    let new = read_input(&write("ok5.vtk", VTK5)).unwrap();
+    assert_eq!(
+        (new.tets.clone(), new.faces.clone()),
+        (old.tets.clone(), vec![[0, 1, 2]])
+    );
+    let path = write("own.vtk", "");
+    tetrakit::io::write_vtk(&path, &old.points, &old.tets).unwrap();
+    assert_eq!(read_input(&path).unwrap().tets, old.tets);
+    let cases = [
+        (VTK4, "1 0 0\n0 1", "1 0 x\n0 1", 7, "'x' is not a number"),
+        (VTK4, "4 1 2 3 4", "4 1 2 3 5", 13, "out of range"),
+        (VTK4, "10\n3", "12\n3", 13, "1 cells of VTK type 12"),
+        (
+            VTK4,
+            "CELL_TYPES 3",
+            "CELL_TYPES 2",
+            15,
+            "2 cell types for 3 cells",
+        ),
+        (VTK4, "ASCII", "BINARY", 3, "binary legacy VTK"),
+        (VTK5, "0 4 8 11", "0 8 4 11", 10, "offset 4 out of order"),
+        (
+            VTK5,
+            "DATASET UNSTRUCTURED_GRID",
+            "DATASET POLYDATA",
+            4,
+            "only UNSTRUCTURED_GRID",
+        ),
+    ];
+    for (base, from, to, line, needle) in cases {
+        let e = read_input(&write("bad.vtk", &base.replacen(from, to, 1))).unwrap_err();
         assert!(
             e.line == line && e.message.contains(needle),
             "{from} -> {to}: {e}"

@@ -9,6 +9,7 @@
 //! error names the line. Counts are checked against what is read, never used to size an
 //! allocation.
 
+use super::stream::Stream;
 use super::{Input, InputError, check_segments, parse_coord, parse_int, read_text, vertex_ref};
 use std::path::Path;
 
@@ -30,42 +31,7 @@ const ANNOTATIONS: [(&str, Option<usize>); 10] = [
 /// Cells this reader refuses.
 const OTHER_CELLS: [&str; 4] = ["Quadrilaterals", "Hexahedra", "Prisms", "Pyramids"];
 
-/// A stream of `(line, token)`.
-struct Stream<'a> {
-    toks: Box<dyn Iterator<Item = (usize, &'a str)> + 'a>,
-    path: &'a Path,
-    line: usize,
-}
-
-impl<'a> Stream<'a> {
-    fn next(&mut self) -> Option<(usize, &'a str)> {
-        let t = self.toks.next();
-        if let Some((l, _)) = t {
-            self.line = l;
-        }
-        t
-    }
-
-    /// The next token, or an error saying what was expected.
-    fn want(&mut self, what: &str) -> Result<(usize, &'a str), InputError> {
-        let line = self.line;
-        self.next().ok_or_else(|| {
-            InputError::new(
-                self.path,
-                line,
-                format!("the file ends where {what} was expected"),
-            )
-        })
-    }
-
-    /// A section's count: a non-negative integer.
-    fn count(&mut self, section: &str) -> Result<usize, InputError> {
-        let (line, tok) = self.want(&format!("the number of {section}"))?;
-        let k = parse_int(tok, self.path, line, &format!("the number of {section}"))?;
-        usize::try_from(k)
-            .map_err(|_| InputError::new(self.path, line, format!("negative number of {section}")))
-    }
-
+impl Stream<'_> {
     /// `k` vertex references (1-based) then a reference number, checked.
     fn corners<const K: usize>(
         &mut self,
@@ -88,15 +54,7 @@ impl<'a> Stream<'a> {
 
 pub(super) fn read(path: &Path) -> Result<Input, InputError> {
     let text = read_text(path)?;
-    let mut s = Stream {
-        // Tokens as `token_lines` cuts them (`#` starts a comment), without a copy.
-        toks: Box::new(text.lines().enumerate().flat_map(|(i, l)| {
-            let l = l.split('#').next().unwrap_or("");
-            l.split_ascii_whitespace().map(move |x| (i + 1, x))
-        })),
-        path,
-        line: 0,
-    };
+    let mut s = Stream::new(&text, 0, Some('#'), path);
     let mut input = Input {
         dim: 3,
         index_base: 1,

@@ -1,5 +1,5 @@
 //! Reading and writing meshes and segment sets: TetGen `.node/.edge/.ele/.face`, OBJ
-//! (`v`, `l`, `f`), Medit `.mesh` (read), the JSON of the README, plain `.xyz` point lists, and a legacy VTK
+//! (`v`, `l`, `f`), Medit `.mesh` and legacy VTK `.vtk` (read; VTK is also written), the JSON of the README, plain `.xyz` point lists, and a legacy VTK
 //! writer.
 //!
 //! Every reader validates as it goes and fails with an [`InputError`] naming the file, the
@@ -13,7 +13,9 @@ mod medit;
 mod obj;
 mod off;
 mod planar;
+mod stream;
 mod tetgen;
+mod vtk;
 mod write;
 
 pub use planar::{Svg, keil_svg, write_planar_edges, write_planar_triangulation, write_points2d};
@@ -115,7 +117,7 @@ impl Input {
 
 /// Reads `path`, choosing the format by extension: `.node` (with sibling `.edge`, `.ele`
 /// and `.face` when present), `.edge`/`.ele`/`.face` (with the sibling `.node`), `.obj`,
-/// `.off`, `.mesh` (Medit), `.json`, `.xyz`/`.txt`.
+/// `.off`, `.mesh` (Medit), `.vtk` (legacy ASCII), `.json`, `.xyz`/`.txt`.
 ///
 /// ```
 /// let dir = std::env::temp_dir().join("tetrakit-doc-read");
@@ -139,6 +141,7 @@ pub fn read_input(path: &Path) -> Result<Input, InputError> {
         "obj" => obj::read(path)?,
         "off" => off::read(path)?,
         "mesh" => medit::read(path)?,
+        "vtk" => vtk::read(path)?,
         "json" => json::read(path)?,
         "xyz" | "txt" => read_xyz(path)?,
         _ => {
@@ -146,7 +149,7 @@ pub fn read_input(path: &Path) -> Result<Input, InputError> {
                 path,
                 0,
                 format!(
-                    "unknown input format '.{ext}' (expected .node, .edge, .ele, .face, .obj, .off, .mesh, .json, .xyz or .txt)"
+                    "unknown input format '.{ext}' (expected .node, .edge, .ele, .face, .obj, .off, .mesh, .vtk, .json, .xyz or .txt)"
                 ),
             ));
         }

@@ -1,0 +1,65 @@
+//! A token stream over a text file that remembers the line of each token, for the
+//! readers whose entries may span lines (Medit, legacy VTK).
+
+use super::{InputError, parse_int};
+use std::path::Path;
+
+/// A stream of `(line, token)`.
+pub(super) struct Stream<'a> {
+    toks: Box<dyn Iterator<Item = (usize, &'a str)> + 'a>,
+    pub(super) path: &'a Path,
+    pub(super) line: usize,
+}
+
+impl<'a> Stream<'a> {
+    /// The tokens of `text` (whose first line is line `skipped + 1` of the file), with
+    /// everything from `comment` to the end of a line left out.
+    pub(super) fn new(
+        text: &'a str,
+        skipped: usize,
+        comment: Option<char>,
+        path: &'a Path,
+    ) -> Self {
+        let toks = text.lines().enumerate().flat_map(move |(i, l)| {
+            let l = match comment {
+                Some(c) => l.split(c).next().unwrap_or(""),
+                None => l,
+            };
+            l.split_ascii_whitespace()
+                .map(move |x| (skipped + i + 1, x))
+        });
+        Stream {
+            toks: Box::new(toks),
+            path,
+            line: skipped,
+        }
+    }
+
+    pub(super) fn next(&mut self) -> Option<(usize, &'a str)> {
+        let t = self.toks.next();
+        if let Some((l, _)) = t {
+            self.line = l;
+        }
+        t
+    }
+
+    /// The next token, or an error saying what was expected.
+    pub(super) fn want(&mut self, what: &str) -> Result<(usize, &'a str), InputError> {
+        let line = self.line;
+        self.next().ok_or_else(|| {
+            InputError::new(
+                self.path,
+                line,
+                format!("the file ends where {what} was expected"),
+            )
+        })
+    }
+
+    /// A section's count: a non-negative integer.
+    pub(super) fn count(&mut self, section: &str) -> Result<usize, InputError> {
+        let (line, tok) = self.want(&format!("the number of {section}"))?;
+        let k = parse_int(tok, self.path, line, &format!("the number of {section}"))?;
+        usize::try_from(k)
+            .map_err(|_| InputError::new(self.path, line, format!("negative number of {section}")))
+    }
+}

@@ -1,0 +1,218 @@
+//! Legacy VTK `.vtk`, ASCII, `DATASET UNSTRUCTURED_GRID` (what tetrakit, meshio with
+//! `binary=False`, ParaView and VTK write): `POINTS n type`, then `CELLS` in the 4.x
+//! layout (`CELLS m size`, one `k i0 … ik−1` per cell) or the 5.x one (`CELLS m+1 size`
+//! with `OFFSETS` and `CONNECTIVITY` arrays), then `CELL_TYPES`. Indices are 0-based.
+//! Tetrahedra (type 10) and triangles (5) are read, lines (3) as segments and vertices (1)
+//! ignored; any other cell type is an error that counts the cells of that type.
+//! `POINT_DATA`/`CELL_DATA` and what follows are not read. Binary files are refused with
+//! that reason. Counts are checked against what is read, never used to size an
+//! allocation.
+
+use super::stream::Stream;
+use super::{Input, InputError, check_segments, parse_coord, parse_int, read_text, vertex_ref};
+use std::path::Path;
+
+pub(super) fn read(path: &Path) -> Result<Input, InputError> {
+    let text = read_text(path)?;
+    let mut head = text.lines();
+    let version = head.next().unwrap_or("");
+    if !version.starts_with("# vtk DataFile Version") {
+        return Err(InputError::new(
+            path,
+            1,
+            "expected '# vtk DataFile Version …'",
+        ));
+    }
+    head.next(); // the title
+    match head.next().map(str::trim) {
+        Some("ASCII") => {}
+        Some("BINARY") => {
+            return Err(InputError::new(
+                path,
+                3,
+                "binary legacy VTK is not read: write it as ASCII, or as .mesh/.ele",
+            ));
+        }
+        _ => return Err(InputError::new(path, 3, "expected 'ASCII'")),
+    }
+    let rest = text.splitn(4, '\n').nth(3).unwrap_or("");
+    let mut s = Stream::new(rest, 3, None, path);
+    let mut input = Input {
+        dim: 3,
+        index_base: 0,
+        point_file: path.to_path_buf(),
+        tet_file: path.to_path_buf(),
+        ..Default::default()
+    };
+    let (mut cells, mut cell_lines) = (Vec::new(), Vec::new());
+    let mut seg_lines = Vec::new();
+    while let Some((line, key)) = s.next() {
+        match key {
+            "DATASET" => {
+                let (l, kind) = s.want("the dataset type")?;
+                if kind != "UNSTRUCTURED_GRID" {
+                    return Err(InputError::new(
+                        path,
+                        l,
+                        format!(
+                            "dataset {}: only UNSTRUCTURED_GRID is read",
+                            super::quote(kind)
+                        ),
+                    ));
+                }
+            }
+            "POINTS" => {
+                let n = s.count("points")?;
+                s.want("the coordinate type")?;
+                for _ in 0..n {
+                    let mut p = [0.0; 3];
+                    let mut at = line;
+                    for c in p.iter_mut() {
+                        let (l, tok) = s.want("a coordinate")?;
+                        at = l;
+                        *c = parse_coord(tok, path, l)?;
+                    }
+                    input.points.push(p);
+                    input.point_lines.push(at);
+                }
+            }
+            "CELLS" => (cells, cell_lines) = read_cells(&mut s, input.points.len())?,
+            "CELL_TYPES" => {
+                let m = s.count("cell types")?;
+                if m != cells.len() {
+                    return Err(InputError::new(
+                        path,
+                        line,
+                        format!("{m} cell types for {} cells", cells.len()),
+                    ));
+                }
+                let mut other: Option<(i64, usize, usize)> = None;
+                for (k, cell) in cells.iter().enumerate() {
+                    let (l, tok) = s.want("a cell type")?;
+                    let t = parse_int(tok, path, l, "cell type")?;
+                    let at = cell_lines[k];
+                    match (t, cell.len()) {
+                        (10, 4) => {
+                            input.tets.push([cell[0], cell[1], cell[2], cell[3]]);
+                            input.tet_lines.push(at as u32);
+                        }
+                        (5, 3) => input.faces.push([cell[0], cell[1], cell[2]]),
+                        (3, 2) => {
+                            input.segments.push([cell[0], cell[1]]);
+                            seg_lines.push(at as u32);
+                        }
+                        (1, 1) => {}
+                        (10 | 5 | 3 | 1, k) => {
+                            return Err(InputError::new(
+                                path,
+                                at,
+                                format!("a cell of type {t} with {k} points"),
+                            ));
+                        }
+                        _ => match &mut other {
+                            Some((ty, count, _)) if *ty == t => *count += 1,
+                            Some(_) => {}
+                            None => other = Some((t, 1, at)),
+                        },
+                    }
+                }
+                if let Some((t, count, at)) = other {
+                    return Err(InputError::new(
+                        path,
+                        at,
+                        format!(
+                            "{count} cells of VTK type {t} (not a tetrahedron, triangle or line): only those are read"
+                        ),
+                    ));
+                }
+            }
+            "POINT_DATA" | "CELL_DATA" | "FIELD" => break,
+            other => {
+                return Err(InputError::new(
+                    path,
+                    line,
+                    format!("unknown keyword {}", super::quote(other)),
+                ));
+            }
+        }
+    }
+    if input.points.is_empty() {
+        return Err(InputError::new(path, 0, "no POINTS"));
+    }
+    check_segments(&input.segments, &seg_lines, 0, path)?;
+    Ok(input)
+}
+
+/// The `CELLS` section in either layout: each cell's points and its line.
+fn read_cells(s: &mut Stream, n: usize) -> Result<(Vec<Vec<u32>>, Vec<usize>), InputError> {
+    let m = s.count("cells")?;
+    s.count("cell list entries")?;
+    let mut cells = Vec::new();
+    let mut lines = Vec::new();
+    let vertex = |s: &mut Stream| -> Result<u32, InputError> {
+        let (l, tok) = s.want("a point index")?;
+        vertex_ref(parse_int(tok, s.path, l, "point index")?, 0, n, s.path, l)
+    };
+    // A cell of `k` points and the line its first point is on.
+    let cell = |s: &mut Stream, k: i64| -> Result<(Vec<u32>, usize), InputError> {
+        let mut at = s.line;
+        let mut c = Vec::new();
+        for j in 0..k {
+            c.push(vertex(s)?);
+            if j == 0 {
+                at = s.line;
+            }
+        }
+        Ok((c, at))
+    };
+    let Some((l, first)) = s.next() else {
+        return Ok((cells, lines));
+    };
+    if first != "OFFSETS" {
+        // 4.x: `k i0 … ik−1` per cell; `first` is the first cell's `k`.
+        let mut k_tok = Some((l, first));
+        for _ in 0..m {
+            let (l, tok) = match k_tok.take() {
+                Some(t) => t,
+                None => s.want("a cell's point count")?,
+            };
+            let k = parse_int(tok, s.path, l, "cell size")?;
+            if !(1..=27).contains(&k) {
+                return Err(InputError::new(s.path, l, format!("a cell of {k} points")));
+            }
+            cells.push(cell(s, k)?.0);
+            lines.push(l);
+        }
+        return Ok((cells, lines));
+    }
+    // 5.x: OFFSETS type, m offsets (the first 0), CONNECTIVITY type, the indices.
+    s.want("the offsets' type")?;
+    let mut offsets = Vec::new();
+    for _ in 0..m {
+        let (l, tok) = s.want("an offset")?;
+        let o = parse_int(tok, s.path, l, "offset")?;
+        if o < offsets.last().copied().unwrap_or(0) || (offsets.is_empty() && o != 0) {
+            return Err(InputError::new(
+                s.path,
+                l,
+                format!("offset {o} out of order"),
+            ));
+        }
+        offsets.push(o);
+    }
+    let (l, key) = s.want("CONNECTIVITY")?;
+    if key != "CONNECTIVITY" {
+        return Err(InputError::new(
+            s.path,
+            l,
+            format!("expected CONNECTIVITY, found {}", super::quote(key)),
+        ));
+    }
+    s.want("the connectivity's type")?;
+    for w in offsets.windows(2) {
+        let (c, at) = cell(s, w[1] - w[0])?;
+        cells.push(c);
+        lines.push(at);
+    }
+    Ok((cells, lines))
+}
