@@ -78,53 +78,14 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
             }
             "CELLS" => (cells, cell_lines) = read_cells(&mut s, input.points.len())?,
             "CELL_TYPES" => {
-                let m = s.count("cell types")?;
-                if m != cells.len() {
-                    return Err(InputError::new(
-                        path,
-                        line,
-                        format!("{m} cell types for {} cells", cells.len()),
-                    ));
-                }
-                let mut other: Option<(i64, usize, usize)> = None;
-                for (k, cell) in cells.iter().enumerate() {
-                    let (l, tok) = s.want("a cell type")?;
-                    let t = parse_int(tok, path, l, "cell type")?;
-                    let at = cell_lines[k];
-                    match (t, cell.len()) {
-                        (10, 4) => {
-                            input.tets.push([cell[0], cell[1], cell[2], cell[3]]);
-                            input.tet_lines.push(at as u32);
-                        }
-                        (5, 3) => input.faces.push([cell[0], cell[1], cell[2]]),
-                        (3, 2) => {
-                            input.segments.push([cell[0], cell[1]]);
-                            seg_lines.push(at as u32);
-                        }
-                        (1, 1) => {}
-                        (10 | 5 | 3 | 1, k) => {
-                            return Err(InputError::new(
-                                path,
-                                at,
-                                format!("a cell of type {t} with {k} points"),
-                            ));
-                        }
-                        _ => match &mut other {
-                            Some((ty, count, _)) if *ty == t => *count += 1,
-                            Some(_) => {}
-                            None => other = Some((t, 1, at)),
-                        },
-                    }
-                }
-                if let Some((t, count, at)) = other {
-                    return Err(InputError::new(
-                        path,
-                        at,
-                        format!(
-                            "{count} cells of VTK type {t} (not a tetrahedron, triangle or line): only those are read"
-                        ),
-                    ));
-                }
+                read_types(
+                    &mut s,
+                    line,
+                    &cells,
+                    &cell_lines,
+                    &mut input,
+                    &mut seg_lines,
+                )?;
             }
             "POINT_DATA" | "CELL_DATA" | "FIELD" => break,
             other => {
@@ -215,4 +176,57 @@ fn read_cells(s: &mut Stream, n: usize) -> Result<(Vec<Vec<u32>>, Vec<usize>), I
         lines.push(at);
     }
     Ok((cells, lines))
+}
+
+/// The `CELL_TYPES` section: files each cell of `cells` (on `lines`) as a tetrahedron,
+/// triangle or segment of `input`, or refuses the first other type with its count.
+fn read_types(
+    s: &mut Stream,
+    line: usize,
+    cells: &[Vec<u32>],
+    lines: &[usize],
+    input: &mut Input,
+    seg_lines: &mut Vec<u32>,
+) -> Result<(), InputError> {
+    let m = s.count("cell types")?;
+    if m != cells.len() {
+        let why = format!("{m} cell types for {} cells", cells.len());
+        return Err(InputError::new(s.path, line, why));
+    }
+    let mut other: Option<(i64, usize, usize)> = None;
+    for (cell, &at) in cells.iter().zip(lines) {
+        let (l, tok) = s.want("a cell type")?;
+        let t = parse_int(tok, s.path, l, "cell type")?;
+        match (t, cell.len()) {
+            (10, 4) => {
+                input.tets.push([cell[0], cell[1], cell[2], cell[3]]);
+                input.tet_lines.push(at as u32);
+            }
+            (5, 3) => input.faces.push([cell[0], cell[1], cell[2]]),
+            (3, 2) => {
+                input.segments.push([cell[0], cell[1]]);
+                seg_lines.push(at as u32);
+            }
+            (1, 1) => {}
+            (10 | 5 | 3 | 1, k) => {
+                let why = format!("a cell of type {t} with {k} points");
+                return Err(InputError::new(s.path, at, why));
+            }
+            _ => match &mut other {
+                Some((ty, count, _)) if *ty == t => *count += 1,
+                Some(_) => {}
+                None => other = Some((t, 1, at)),
+            },
+        }
+    }
+    match other {
+        Some((t, count, at)) => Err(InputError::new(
+            s.path,
+            at,
+            format!(
+                "{count} cells of VTK type {t} (not a tetrahedron, triangle or line): only those are read"
+            ),
+        )),
+        None => Ok(()),
+    }
 }
