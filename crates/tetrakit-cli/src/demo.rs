@@ -284,24 +284,23 @@ fn prescribed_edges_section() {
     // Theorem 2.9: the same two instances carried to space.
     let flat: Vec<[f64; 2]> = square.iter().map(|p| [p[0], p[1]]).collect();
     for (name, e) in [("with every spoke", &ring[..]), ("without one", &ring[..7])] {
-        let r = tetrakit::reduce::trid_to_tetrad(&flat, e).expect("no three collinear");
-        let d = contains(&r.points, &r.segments, &opts, &ctl).expect("valid input");
-        show(
-            &format!(
-                "reduced to space (`reduce trid-to-tetrad`, {} points), {name}",
-                r.points.len()
+        let apexes = tetrakit::reduce::trid_to_tetrad(&flat, e).expect("no three collinear");
+        let sphere = tetrakit::reduce::sphere_reduction(&flat, e).expect("the conditions hold");
+        for (how, pts, segs) in [
+            (
+                "reduced to space (`reduce trid-to-tetrad`",
+                &apexes.points,
+                &apexes.segments,
             ),
-            &d.answer,
-        );
-        let r = tetrakit::reduce::sphere_reduction(&flat, e).expect("the conditions hold");
-        let d = contains(&r.points, &r.segments, &opts, &ctl).expect("valid input");
-        show(
-            &format!(
-                "the thesis's sphere construction (`--construction sphere`, {} points), {name}",
-                r.points.len()
+            (
+                "the thesis's sphere construction (`--construction sphere`",
+                &sphere.points,
+                &sphere.segments,
             ),
-            &d.answer,
-        );
+        ] {
+            let d = contains(pts, segs, &opts, &ctl).expect("valid input");
+            show(&format!("{how}, {} points), {name}", pts.len()), &d.answer);
+        }
     }
     constructions(&ctl);
 }
@@ -407,6 +406,17 @@ fn shell_section() {
     {
         out!(
             "  a Bern disk (n = {}), where minimum-degree cap removal is Θ(n log n); the flips recover:",
+            shell.n()
+        );
+        shell_line(&shell, Method::Cap);
+    }
+    use tetrakit::shell::generate::{Contact, contact};
+    if let Some(shell) = contact(Contact::Edge, 30, 12, 1)
+        .ok()
+        .and_then(|(o, i)| Shell::new(&o, &i).ok())
+    {
+        out!(
+            "  Q touching P along one shared edge (`generate contact --kind edge`, n = {}):",
             shell.n()
         );
         shell_line(&shell, Method::Cap);

@@ -1177,13 +1177,23 @@ fn trid_to_tetrad_keeps_the_answer() {
         "{\"points\":[[0,0],[1,0],[2,0],[0,1]],\"segments\":[[0,1]]}",
     )
     .unwrap();
-    let o = run(&["reduce", "trid-to-tetrad", s(&planar), s(&d.join("x.json"))]);
-    assert_eq!(o.status.code(), Some(2));
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert!(
-        err.lines().count() == 1 && err.contains("collinear"),
-        "{err}"
-    );
+    for construction in ["apexes", "sphere"] {
+        let x = d.join("x.json");
+        let o = run(&[
+            "reduce",
+            "trid-to-tetrad",
+            s(&planar),
+            s(&x),
+            "--construction",
+            construction,
+        ]);
+        assert_eq!(o.status.code(), Some(2));
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(
+            err.lines().count() == 1 && err.contains("e.json") && err.contains("collinear"),
+            "{construction}: {err}"
+        );
+    }
 }
 
 /// `reduce quasi-prism`: a straight lens takes the thesis's vertex order, a twisted one

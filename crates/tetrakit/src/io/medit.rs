@@ -10,7 +10,7 @@
 //! allocation.
 
 use super::stream::Stream;
-use super::{Input, InputError, check_segments, parse_coord, parse_int, read_text, vertex_ref};
+use super::{Input, InputError, check_segments, parse_int, read_text, vertex_ref};
 use std::path::Path;
 
 /// Sections skipped, with the number of tokens of one entry (`None`: depends on the
@@ -94,13 +94,7 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
                     return Err(InputError::new(path, line, "a second 'Vertices' section"));
                 }
                 for _ in 0..s.count("vertices")? {
-                    let mut p = [0.0; 3];
-                    let mut at = line;
-                    for c in p.iter_mut().take(input.dim) {
-                        let (l, tok) = s.want("a coordinate")?;
-                        at = l;
-                        *c = parse_coord(tok, path, l)?;
-                    }
+                    let (at, p) = s.point(input.dim)?;
                     let (l, tok) = s.want("the reference of a vertex")?;
                     parse_int(tok, path, l, "reference")?;
                     input.points.push(p);

@@ -1,7 +1,8 @@
 //! A token stream over a text file that remembers the line of each token, for the
 //! readers whose entries may span lines (Medit, legacy VTK).
 
-use super::{InputError, parse_int};
+use super::{InputError, parse_coord, parse_int};
+use crate::geom::Point3;
 use std::path::Path;
 
 /// A stream of `(line, token)`.
@@ -61,5 +62,17 @@ impl<'a> Stream<'a> {
         let k = parse_int(tok, self.path, line, &format!("the number of {section}"))?;
         usize::try_from(k)
             .map_err(|_| InputError::new(self.path, line, format!("negative number of {section}")))
+    }
+
+    /// `dim` coordinates (the rest 0) and the line of the last one.
+    pub(super) fn point(&mut self, dim: usize) -> Result<(usize, Point3), InputError> {
+        let mut p = [0.0; 3];
+        let mut at = self.line;
+        for c in p.iter_mut().take(dim) {
+            let (l, tok) = self.want("a coordinate")?;
+            at = l;
+            *c = parse_coord(tok, self.path, l)?;
+        }
+        Ok((at, p))
     }
 }

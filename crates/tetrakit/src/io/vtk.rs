@@ -9,7 +9,7 @@
 //! allocation.
 
 use super::stream::Stream;
-use super::{Input, InputError, check_segments, parse_coord, parse_int, read_text, vertex_ref};
+use super::{Input, InputError, check_segments, parse_int, read_text, vertex_ref};
 use std::path::Path;
 
 pub(super) fn read(path: &Path) -> Result<Input, InputError> {
@@ -65,13 +65,7 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
                 let n = s.count("points")?;
                 s.want("the coordinate type")?;
                 for _ in 0..n {
-                    let mut p = [0.0; 3];
-                    let mut at = line;
-                    for c in p.iter_mut() {
-                        let (l, tok) = s.want("a coordinate")?;
-                        at = l;
-                        *c = parse_coord(tok, path, l)?;
-                    }
+                    let (at, p) = s.point(3)?;
                     input.points.push(p);
                     input.point_lines.push(at);
                 }
