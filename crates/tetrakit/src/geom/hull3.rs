@@ -14,6 +14,7 @@
 //! conflict points need only be tested against new triangles.
 
 use super::predicates::{Plane, Point3, collinear3, lex_cmp, orient3d};
+use crate::partition;
 use rayon::prelude::*;
 use std::collections::{HashMap, HashSet};
 
@@ -155,14 +156,7 @@ impl Hull3 {
 
     fn build_facets(&mut self, pts: &[Point3]) {
         let n = self.triangles.len();
-        let mut parent: Vec<usize> = (0..n).collect();
-        fn find(p: &mut [usize], mut x: usize) -> usize {
-            while p[x] != x {
-                p[x] = p[p[x]];
-                x = p[x];
-            }
-            x
-        }
+        let mut parent = partition::singletons(n);
         let edges = self.triangle_edges();
         for (&(a, b), &(t, _)) in &edges {
             let Some(&(u, _)) = edges.get(&(b, a)) else {
@@ -175,14 +169,13 @@ impl Hull3 {
                 .unwrap();
             let p = |i: u32| &pts[i as usize];
             if orient3d(p(tv[0]), p(tv[1]), p(tv[2]), p(apex)) == 0 {
-                let (rt, ru) = (find(&mut parent, t), find(&mut parent, u));
-                parent[rt] = ru;
+                partition::union(&mut parent, t as u32, u as u32);
             }
         }
         let mut id = HashMap::new();
         self.triangle_facet = (0..n)
             .map(|t| {
-                let r = find(&mut parent, t);
+                let r = partition::find(&mut parent, t as u32) as usize;
                 let next = id.len() as u32;
                 *id.entry(r).or_insert_with(|| {
                     self.facet_planes.push(self.triangles[r]);

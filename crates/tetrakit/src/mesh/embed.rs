@@ -23,6 +23,7 @@ use super::grid::{Aabb, TriangleGrid, aabb, boxes_meet};
 use super::report::{Problem, ProblemKind};
 use crate::geom::{Point3, cones_overlap, point_in_closed_tetrahedron};
 use crate::numbering::ids;
+use crate::partition;
 use rayon::prelude::*;
 
 /// Overlaps near vertices. `tets` are positively oriented (degenerate ones are skipped by
@@ -227,29 +228,20 @@ pub(super) fn nested_overlaps(
 /// One `(vertex, tet)` per connected component of the boundary surface (faces joined
 /// across edges): a vertex of the component's first face and that face's tetrahedron.
 pub(super) fn boundary_components(faces: &[([u32; 3], u32)]) -> Vec<(u32, u32)> {
-    let mut parent: Vec<usize> = (0..faces.len()).collect();
-    fn find(p: &mut [usize], mut x: usize) -> usize {
-        while p[x] != x {
-            p[x] = p[p[x]];
-            x = p[x];
-        }
-        x
-    }
-    let mut by_edge: std::collections::HashMap<(u32, u32), usize> =
-        std::collections::HashMap::new();
+    let mut parent = partition::singletons(faces.len());
+    let mut by_edge: std::collections::HashMap<(u32, u32), u32> = std::collections::HashMap::new();
     for (i, (f, _)) in faces.iter().enumerate() {
         for k in 0..3 {
             let (a, b) = (f[k].min(f[(k + 1) % 3]), f[k].max(f[(k + 1) % 3]));
             if let Some(&j) = by_edge.get(&(a, b)) {
-                let (ri, rj) = (find(&mut parent, i), find(&mut parent, j));
-                parent[ri] = rj;
+                partition::union(&mut parent, i as u32, j);
             } else {
-                by_edge.insert((a, b), i);
+                by_edge.insert((a, b), i as u32);
             }
         }
     }
     (0..faces.len())
-        .filter(|&i| find(&mut parent, i) == i)
+        .filter(|&i| partition::find(&mut parent, i as u32) == i as u32)
         .map(|i| (faces[i].0[0], faces[i].1))
         .collect()
 }

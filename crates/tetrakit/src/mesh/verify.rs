@@ -41,6 +41,29 @@ use rayon::prelude::*;
 /// assert!(!verify(&pts, &[[0, 2, 1, 3]], Some(&hull)).is_valid()); // inverted
 /// ```
 pub fn verify(points: &[Point3], tets: &[[u32; 4]], hull: Option<&Hull3>) -> Report {
+    let (mut report, boundary) = verify_faces(points, tets);
+    if report
+        .problems
+        .iter()
+        .any(|p| p.kind == ProblemKind::BadIndex)
+    {
+        return report;
+    }
+    if let Some(h) = hull {
+        for p in check_hull(points, tets, &boundary, h) {
+            report.push(p);
+        }
+    } else if report.is_valid() {
+        check_embedding(points, tets, &boundary, &mut report);
+    }
+    report
+}
+
+/// Conditions 1–3 (orientation, face pairing, a closed boundary) and the boundary faces,
+/// outward; nothing about the domain. A certificate that pins the covering degree by
+/// other means ([`certify_shell`](super::certify_shell)) adds its own checks to these.
+/// With a bad index the boundary is empty and the report names the index.
+pub(crate) fn verify_faces(points: &[Point3], tets: &[[u32; 4]]) -> (Report, Vec<BoundaryFace>) {
     let mut report = Report::default();
     let (problems, signs) = check_tets(points, tets);
     for p in problems {
@@ -51,7 +74,7 @@ pub fn verify(points: &[Point3], tets: &[[u32; 4]], hull: Option<&Hull3>) -> Rep
         .iter()
         .any(|p| p.kind == ProblemKind::BadIndex)
     {
-        return report;
+        return (report, Vec::new());
     }
     let (boundary, pairing) = pair_faces(points.len(), tets, &signs);
     for p in pairing {
@@ -63,14 +86,7 @@ pub fn verify(points: &[Point3], tets: &[[u32; 4]], hull: Option<&Hull3>) -> Rep
         report.push(p);
     }
     report.non_manifold = non_manifold;
-    if let Some(h) = hull {
-        for p in check_hull(points, tets, &boundary, h) {
-            report.push(p);
-        }
-    } else if report.is_valid() {
-        check_embedding(points, tets, &boundary, &mut report);
-    }
-    report
+    (report, boundary)
 }
 
 /// Without a convex domain: local injectivity at every vertex and an embedded boundary.
@@ -154,9 +170,11 @@ fn tet_problem(i: u32, t: &[u32; 4], sign: i8, n: u32) -> Problem {
 
 /// A boundary face, oriented outward, with its tetrahedron.
 #[derive(Clone, Copy, Debug)]
-struct BoundaryFace {
-    v: [u32; 3],
-    tet: u32,
+pub(crate) struct BoundaryFace {
+    /// The face's vertices, outward (counterclockwise seen from outside).
+    pub(crate) v: [u32; 3],
+    /// The tetrahedron it is a face of.
+    pub(crate) tet: u32,
 }
 
 /// Sorts a triangle's vertices, returning them and whether the sort was an odd permutation.

@@ -35,15 +35,7 @@ pub use mwt::{
 pub use oracle::triangulations;
 pub use skeleton::{Region, Skeleton, beta_skeleton};
 
-/// Union-find root with path halving (cells of cocircular Delaunay triangles, faces of
-/// the certain edges).
-pub(crate) fn find(parent: &mut [u32], mut x: u32) -> u32 {
-    while parent[x as usize] != x {
-        parent[x as usize] = parent[parent[x as usize] as usize];
-        x = parent[x as usize];
-    }
-    x
-}
+pub(crate) use crate::partition::find;
 
 /// The edge `ab` as `[min, max]`.
 pub(crate) fn edge_key(a: u32, b: u32) -> [u32; 2] {
