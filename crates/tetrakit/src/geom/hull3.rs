@@ -71,13 +71,13 @@ impl Hull3 {
         };
         b.start(seed);
         b.run();
-        let triangles: Vec<[u32; 3]> = b.tris.iter().filter(|t| t.alive).map(|t| t.v).collect();
+        let (triangles, neighbours) = b.alive();
         let mut h = Hull3 {
             dimension,
             triangles,
             ..Default::default()
         };
-        h.build_facets(points);
+        h.build_facets(points, &neighbours);
         h.assign_points(points);
         h
     }
@@ -154,22 +154,22 @@ impl Hull3 {
         m
     }
 
-    fn build_facets(&mut self, pts: &[Point3]) {
+    /// Joins neighbouring coplanar triangles into facets (`neighbours[t][i]` is the
+    /// triangle across edge `i` of triangle `t`).
+    fn build_facets(&mut self, pts: &[Point3], neighbours: &[[u32; 3]]) {
         let n = self.triangles.len();
         let mut parent = partition::singletons(n);
-        let edges = self.triangle_edges();
-        for (&(a, b), &(t, _)) in &edges {
-            let Some(&(u, _)) = edges.get(&(b, a)) else {
-                continue;
-            };
+        let p = |i: u32| &pts[i as usize];
+        for (t, nb) in neighbours.iter().enumerate() {
             let tv = self.triangles[t];
-            let apex = *self.triangles[u]
-                .iter()
-                .find(|&&x| x != a && x != b)
-                .unwrap();
-            let p = |i: u32| &pts[i as usize];
-            if orient3d(p(tv[0]), p(tv[1]), p(tv[2]), p(apex)) == 0 {
-                partition::union(&mut parent, t as u32, u as u32);
+            for &u in nb.iter().filter(|&&u| u as usize > t) {
+                let apex = *self.triangles[u as usize]
+                    .iter()
+                    .find(|x| !tv.contains(x))
+                    .expect("neighbouring triangles share two corners");
+                if orient3d(p(tv[0]), p(tv[1]), p(tv[2]), p(apex)) == 0 {
+                    partition::union(&mut parent, t as u32, u);
+                }
             }
         }
         let mut id = HashMap::new();
@@ -185,6 +185,22 @@ impl Hull3 {
             .collect();
     }
 
+    /// The facets of the triangles at each point, sorted (empty for points that are no
+    /// triangle's corner).
+    fn incident_facets(&self, n: usize) -> Vec<Vec<u32>> {
+        let mut incident = vec![Vec::new(); n];
+        for (t, &f) in self.triangles.iter().zip(&self.triangle_facet) {
+            for &v in t {
+                incident[v as usize].push(f);
+            }
+        }
+        for l in &mut incident {
+            l.sort_unstable();
+            l.dedup();
+        }
+        incident
+    }
+
     fn assign_points(&mut self, pts: &[Point3]) {
         let planes: Vec<Plane> = self
             .facet_planes
@@ -197,8 +213,14 @@ impl Hull3 {
                 )
             })
             .collect();
+        let incident = self.incident_facets(pts.len());
         let grid = FacetGrid::new(pts, self);
-        let on = |x: &Point3| -> Vec<u32> {
+        let on = |(i, x): (usize, &Point3)| -> Vec<u32> {
+            // A corner of three facets is a corner of each facet it lies on, so the
+            // triangles at it name them all; any other point is looked up.
+            if incident[i].len() >= 3 {
+                return incident[i].clone();
+            }
             grid.candidates(x)
                 .iter()
                 .copied()
@@ -207,9 +229,9 @@ impl Hull3 {
         };
         // Small hulls (the shell's local ones, thousands a second) stay on this thread.
         let lists: Vec<Vec<u32>> = if pts.len() < 4096 {
-            pts.iter().map(on).collect()
+            pts.iter().enumerate().map(on).collect()
         } else {
-            pts.par_iter().map(on).collect()
+            pts.par_iter().enumerate().map(on).collect()
         };
         self.facet_start = Vec::with_capacity(pts.len() + 1);
         self.facet_start.push(0);
@@ -408,6 +430,23 @@ impl Builder<'_> {
                 self.tris[t].conflicts.push(q);
             }
         }
+    }
+
+    /// The live triangles, renumbered, and their neighbours across each edge.
+    fn alive(&self) -> (Vec<[u32; 3]>, Vec<[u32; 3]>) {
+        let mut index = vec![NONE; self.tris.len()];
+        let mut triangles = Vec::new();
+        for (i, t) in self.tris.iter().enumerate().filter(|(_, t)| t.alive) {
+            index[i] = triangles.len() as u32;
+            triangles.push(t.v);
+        }
+        let neighbours = self
+            .tris
+            .iter()
+            .filter(|t| t.alive)
+            .map(|t| t.nb.map(|n| index[n as usize]))
+            .collect();
+        (triangles, neighbours)
     }
 
     fn run(&mut self) {

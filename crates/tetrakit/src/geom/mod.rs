@@ -35,3 +35,15 @@ pub use proximity::{
     in_lune, squared_length,
 };
 pub use radical::{DoubleDouble, Interval, compare_root_sums};
+
+/// The exact identity of a point, for hashing: equal keys mean equal coordinates
+/// (`-0.0` and `0.0` are one coordinate).
+///
+/// ```
+/// use tetrakit::geom::point_key;
+/// assert_eq!(point_key(&[0.0, 1.0, 2.0]), point_key(&[-0.0, 1.0, 2.0]));
+/// assert_ne!(point_key(&[0.0, 1.0, 2.0]), point_key(&[0.0, 1.0, 2.5]));
+/// ```
+pub fn point_key(p: &Point3) -> [u64; 3] {
+    p.map(|x| (x + 0.0).to_bits())
+}

@@ -5,10 +5,13 @@
 //! rest on [`verify`]; every tetrahedralization a solver returns passes one of them.
 
 use super::report::{Problem, ProblemKind};
-use super::{Polyhedron, rotated_face, sorted_face, verify};
-use crate::geom::{Expansion, Hull3, Point3, orient2d_drop, orient3d_value, projection_axis};
+use super::shell_degree::{OuterFace, check_inner_degree, check_outer_degree, used_vertices};
+use super::{Polyhedron, rotated_face, sorted_face, verify, verify_faces};
+use crate::geom::point_key;
+use crate::geom::{Hull3, Point3, orient2d_drop, projection_axis};
 use crate::numbering::ids;
 use rayon::prelude::*;
+use std::collections::HashSet;
 
 /// Certifies that `tets` tetrahedralize the convex hull of `points` with every point a
 /// vertex ([`verify`] with the hull). Returns the first problem found.
@@ -91,16 +94,18 @@ pub fn certify_boundary(
 /// full-dimensional and inside `P`, and may touch it).
 ///
 /// The checks, all exact:
-/// 1. [`verify`]: every tetrahedron positively oriented, faces paired on opposite sides,
-///    no overlap near any vertex, the boundary a closed embedded surface.
-/// 2. Every boundary triangle lies in a facet of `P`, facing out of `P`, or in a facet of
-///    `Q`, facing into `Q`.
-/// 3. Every vertex of a tetrahedron lies on `∂P` or `∂Q` (no Steiner point).
-/// 4. The volumes: `Σ vol(t) = vol(P) − vol(Q)` exactly (sums of exact determinants).
+/// 1. conditions 1–3 of [`verify`]: every tetrahedron positively oriented, faces paired on
+///    opposite sides, the boundary closed; no two vertices at one point;
+/// 2. every vertex of a tetrahedron lies on `∂P` or `∂Q` (no Steiner point);
+/// 3. every boundary triangle lies in a facet of `P`, facing out of `P`, or in a facet of
+///    `Q`, facing into `Q`;
+/// 4. the covering degree just inside `∂P` is 1 on every component of `∂P − Q`, read off
+///    one corner of `P` per component (`shell_degree`'s module docs give the argument);
+/// 5. the volumes: `Σ vol(t) = vol(P) − vol(Q)` exactly (sums of exact determinants),
+///    which with 4 leaves no tetrahedron over `Q`.
 ///
-/// By 1 and 2 the tetrahedra tile a region whose boundary lies in `∂P ∪ ∂Q`, so a union
-/// of the pieces `∂P ∪ ∂Q` cuts space into; the orientations exclude `Q` and the outside,
-/// and the volume leaves only `P − int(Q)`.
+/// Together they make the number of tetrahedra over a point 1 on `P − Q` and 0 elsewhere,
+/// without the vertex-by-vertex overlap test a domain of unknown shape needs.
 ///
 /// ```
 /// use tetrakit::mesh::certify_shell;
@@ -111,7 +116,9 @@ pub fn certify_boundary(
 /// assert!(certify_shell(&pts, &[[8, 9, 10, 11]], &[8, 9, 10, 11]).is_err());
 /// ```
 pub fn certify_shell(points: &[Point3], tets: &[[u32; 4]], inner: &[u32]) -> Result<(), Problem> {
-    first_problem(verify(points, tets, None).problems)?;
+    let (report, boundary) = verify_faces(points, tets);
+    first_problem(report.problems)?;
+    let used = used_vertices(points, tets)?;
     let outer_hull = Hull3::new(points);
     let inner_points: Vec<Point3> = inner.iter().map(|&i| points[i as usize]).collect();
     let inner_hull = Hull3::new(&inner_points);
@@ -150,10 +157,10 @@ pub fn certify_shell(points: &[Point3], tets: &[[u32; 4]], inner: &[u32]) -> Res
             orient2d_drop(q(0), q(1), q(2), axis) == orient2d_drop(f[0], f[1], f[2], axis)
         })
     };
-    let outer_side = |f: &[u32; 3]| -> bool {
-        let facet = outer_hull.common_facet(f[0] as usize, f[1] as usize, f[2] as usize);
+    let outer_facet = |f: &[u32; 3]| -> Option<u32> {
+        let facet = outer_hull.common_facet(f[0] as usize, f[1] as usize, f[2] as usize)?;
         let tri = f.map(|v| &points[v as usize]);
-        facet.is_some_and(|g| same_way(points, outer_hull.facet_planes[g as usize], tri))
+        same_way(points, outer_hull.facet_planes[facet as usize], tri).then_some(facet)
     };
     let inner_side = |f: &[u32; 3]| -> bool {
         if !f.iter().all(|&v| on_inner(v)) {
@@ -166,11 +173,25 @@ pub fn certify_shell(points: &[Point3], tets: &[[u32; 4]], inner: &[u32]) -> Res
         facet
             .is_some_and(|g| same_way(&inner_points, inner_hull.facet_planes[g as usize], reversed))
     };
-    let boundary = boundary_faces(tets);
-    if let Some(f) = boundary
+    let sides: Vec<Side> = boundary
         .par_iter()
-        .find_first(|f| !outer_side(f) && !inner_side(f))
-    {
+        .map(|f| match outer_facet(&f.v) {
+            Some(facet) => Side::Outer(OuterFace {
+                v: f.v,
+                facet,
+                tet: f.tet,
+            }),
+            None if inner_side(&f.v) => {
+                let [a, b, c] = f.v.map(|v| v as usize);
+                Side::Inner {
+                    off_p: outer_hull.common_facet(a, b, c).is_none(),
+                }
+            }
+            None => Side::Neither,
+        })
+        .collect();
+    if let Some(k) = sides.iter().position(|s| matches!(s, Side::Neither)) {
+        let f = &boundary[k].v;
         return Err(shell_problem(
             f.to_vec(),
             format!(
@@ -179,37 +200,29 @@ pub fn certify_shell(points: &[Point3], tets: &[[u32; 4]], inner: &[u32]) -> Res
             ),
         ));
     }
-    let p = |v: u32| &points[v as usize];
-    let tets_volume = exact_sum(
-        tets.par_iter()
-            .map(|t| orient3d_value(p(t[0]), p(t[1]), p(t[2]), p(t[3]))),
-    );
-    let expected = hull_volume(points, &outer_hull).sub(&hull_volume(&inner_points, &inner_hull));
-    if tets_volume.sub(&expected).sign() != 0 {
-        return Err(shell_problem(
-            Vec::new(),
-            format!(
-                "the tetrahedra's volume ({:.6e}) is not the outer hull's minus the inner hull's ({:.6e})",
-                tets_volume.estimate() / 6.0,
-                expected.estimate() / 6.0
-            ),
-        ));
-    }
-    Ok(())
+    let off_p = sides
+        .iter()
+        .any(|s| matches!(s, Side::Inner { off_p: true }));
+    let outer_faces: Vec<OuterFace> = sides
+        .into_iter()
+        .filter_map(|s| match s {
+            Side::Outer(f) => Some(f),
+            _ => None,
+        })
+        .collect();
+    let in_q: HashSet<[u64; 3]> = inner_points.iter().map(point_key).collect();
+    let components = check_outer_degree(points, &outer_hull, inner, &in_q, &used, &outer_faces)?;
+    check_inner_degree(components, tets.len(), off_p)
 }
 
-/// The exact sum of expansions, added pairwise in parallel.
-fn exact_sum(terms: impl ParallelIterator<Item = Expansion>) -> Expansion {
-    terms.reduce(Expansion::default, |a, b| a.add(&b))
-}
-
-/// Six times the volume of a hull: the cones from its first point over its outward
-/// triangles.
-fn hull_volume(pts: &[Point3], h: &Hull3) -> Expansion {
-    exact_sum(h.triangles.par_iter().map(|t| {
-        let q = |k: usize| &pts[t[k] as usize];
-        orient3d_value(q(0), q(2), q(1), &pts[0])
-    }))
+/// Where a boundary triangle lies.
+enum Side {
+    /// In a facet of `P`, facing out.
+    Outer(OuterFace),
+    /// In a facet of `Q`, facing in; `off_p` when not also in a facet of `P`.
+    Inner { off_p: bool },
+    /// Anywhere else: not a shell.
+    Neither,
 }
 
 fn shell_problem(vertices: Vec<u32>, detail: String) -> Problem {
@@ -288,6 +301,43 @@ mod tests {
         assert!(
             certify_shell(&block.points, &inner_tets_only(&inner, &block.tets), &inner).is_err()
         );
+    }
+
+    /// A cube around the tetrahedron on four of its corners leaves four corner regions.
+    /// Meshing one of them twice and another not at all keeps orientation, pairing, the
+    /// boundary's sides and the volume; only the covering degree tells.
+    #[test]
+    fn a_corner_covered_twice_and_one_left_empty_is_refused() {
+        let [a, b, c, d, e] = [
+            [2.0, 0.0, 0.0],
+            [0.0; 3],
+            [2.0, 2.0, 0.0],
+            [2.0, 0.0, 2.0],
+            [0.0, 2.0, 2.0],
+        ];
+        let (f, g, h) = ([0.0, 2.0, 0.0], [0.0, 0.0, 2.0], [2.0, 2.0, 2.0]);
+        // 0 a, 1 b, 2 c, 3 d, 4 e, 5..7 the other corners, 8 m = mid ab, 9 m' = mid cd.
+        let pts = vec![a, b, c, d, e, f, g, h, [1.0, 0.0, 0.0], [2.0, 1.0, 1.0]];
+        let inner = [1, 2, 3, 4, 9]; // m' lies on a facet of Q
+        let positive = |t: [u32; 4]| {
+            let q = t.map(|v| &pts[v as usize]);
+            if crate::geom::orient3d(q[0], q[1], q[2], q[3]) > 0 {
+                t
+            } else {
+                [t[1], t[0], t[2], t[3]]
+            }
+        };
+        let corners = [[0, 1, 2, 3], [5, 1, 2, 4], [6, 1, 3, 4], [7, 2, 3, 4]].map(positive);
+        assert_eq!(certify_shell(&pts, &corners, &inner), Ok(()));
+        let twice: Vec<[u32; 4]> = [[0, 8, 2, 3], [8, 1, 2, 3], [0, 1, 2, 9], [0, 1, 9, 3]]
+            .map(positive)
+            .into_iter()
+            .chain([corners[1], corners[2]])
+            .collect();
+        assert!(verify_faces(&pts, &twice).0.is_valid());
+        let err = certify_shell(&pts, &twice, &inner).unwrap_err();
+        assert_eq!(err.kind, ProblemKind::Overlap, "{err:?}");
+        assert!(!verify(&pts, &twice, None).is_valid());
     }
 
     fn inner_tets_only(inner: &[u32], tets: &[[u32; 4]]) -> Vec<[u32; 4]> {

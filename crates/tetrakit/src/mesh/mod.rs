@@ -8,6 +8,7 @@ mod certify;
 mod embed;
 pub(crate) mod grid;
 mod report;
+mod shell_degree;
 pub(crate) mod surface;
 mod verify;
 mod verify_planar;
@@ -17,6 +18,7 @@ pub use certify::{certify_boundary, certify_hull, certify_polyhedron, certify_sh
 pub use report::{Problem, ProblemKind, Report};
 pub use surface::{Polyhedron, SurfaceError};
 pub use verify::verify;
+pub(crate) use verify::verify_faces;
 pub use verify_planar::verify_triangulation;
 
 use crate::geom::{Point3, orient3d};

@@ -74,7 +74,7 @@ mod removal;
 mod surface;
 
 use crate::control::{Control, Stopped};
-use crate::geom::{Hull3, Point3};
+use crate::geom::{Hull3, Point3, point_key};
 pub use improve::{DELAUNAY_ABOVE, Improvement, improve};
 pub use optimum::optimum;
 use std::collections::{HashMap, HashSet};
@@ -175,7 +175,7 @@ fn extreme_points(pts: &[Point3]) -> Result<(Vec<u32>, Vec<u32>), usize> {
     for (i, p) in pts.iter().enumerate() {
         // A corner of a 3-polytope lies on three facets or more; a point inside an edge
         // on two, inside a facet on one.
-        let corner = hull.facets_of(i).len() >= 3 && seen.insert(key(p));
+        let corner = hull.facets_of(i).len() >= 3 && seen.insert(point_key(p));
         if corner {
             vertices.push(i as u32)
         } else {
@@ -183,11 +183,6 @@ fn extreme_points(pts: &[Point3]) -> Result<(Vec<u32>, Vec<u32>), usize> {
         }
     }
     Ok((vertices, others))
-}
-
-/// A point's exact coordinates as a hash key (`-0.0` and `0.0` are one point).
-fn key(p: &Point3) -> [u64; 3] {
-    p.map(|x| (x + 0.0).to_bits())
 }
 
 impl Shell {
@@ -211,12 +206,12 @@ impl Shell {
         let index: HashMap<[u64; 3], u32> = points
             .iter()
             .enumerate()
-            .map(|(k, p)| (key(p), k as u32))
+            .map(|(k, p)| (point_key(p), k as u32))
             .collect();
         let mut inner_idx = Vec::with_capacity(inner_v.len());
         for &i in &inner_v {
             let p = inner[i as usize];
-            inner_idx.push(*index.get(&key(&p)).unwrap_or(&(points.len() as u32)));
+            inner_idx.push(*index.get(&point_key(&p)).unwrap_or(&(points.len() as u32)));
             if inner_idx.last() == Some(&(points.len() as u32)) {
                 points.push(p);
             }
