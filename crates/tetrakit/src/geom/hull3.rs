@@ -16,7 +16,7 @@
 use super::predicates::{Plane, Point3, collinear3, lex_cmp, orient3d};
 use crate::partition;
 use rayon::prelude::*;
-use std::collections::{HashMap, HashSet};
+use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
 const NONE: u32 = u32::MAX;
 
@@ -113,7 +113,7 @@ impl Hull3 {
     /// Points lying on each edge of the polytope, sorted along the edge: consecutive
     /// entries must be joined in any tetrahedralization of the points.
     pub fn polytope_edges(&self, points: &[Point3]) -> Vec<Vec<u32>> {
-        let mut adjacent: HashSet<(u32, u32)> = HashSet::new();
+        let mut adjacent: HashSet<(u32, u32)> = HashSet::default();
         let edges = self.triangle_edges();
         for (&(a, b), &(t, _)) in &edges {
             if let Some(&(u, _)) = edges.get(&(b, a)) {
@@ -123,7 +123,7 @@ impl Hull3 {
                 }
             }
         }
-        let mut groups: HashMap<(u32, u32), Vec<u32>> = HashMap::new();
+        let mut groups: HashMap<(u32, u32), Vec<u32>> = HashMap::default();
         for p in 0..points.len() {
             let fs = self.facets_of(p);
             for (k, &f) in fs.iter().enumerate() {
@@ -144,7 +144,7 @@ impl Hull3 {
     }
 
     fn triangle_edges(&self) -> HashMap<(u32, u32), (usize, usize)> {
-        let mut m = HashMap::with_capacity(self.triangles.len() * 3);
+        let mut m = HashMap::with_capacity_and_hasher(self.triangles.len() * 3, Default::default());
         for (t, tri) in self.triangles.iter().enumerate() {
             for i in 0..3 {
                 let [a, b] = edge_of(tri, i);
@@ -172,7 +172,7 @@ impl Hull3 {
                 }
             }
         }
-        let mut id = HashMap::new();
+        let mut id = HashMap::default();
         self.triangle_facet = (0..n)
             .map(|t| {
                 let r = partition::find(&mut parent, t as u32) as usize;
@@ -410,7 +410,7 @@ impl Builder<'_> {
                 conflicts: Vec::new(),
             });
         }
-        let mut edges = HashMap::new();
+        let mut edges = HashMap::default();
         for t in 0..4 {
             for i in 0..3 {
                 edges.insert(edge_of(&self.tris[t].v, i), (t, i));
@@ -480,7 +480,7 @@ impl Builder<'_> {
     /// Adds `p` (strictly beyond triangle `t0`); returns the new triangles.
     fn insert(&mut self, t0: usize, p: u32) -> Vec<usize> {
         let mut visible = vec![t0];
-        let mut seen: HashSet<usize> = HashSet::from([t0]);
+        let mut seen: HashSet<usize> = std::iter::once(t0).collect();
         let mut horizon = Vec::new(); // (a, b, outer triangle, its edge index)
         let mut k = 0;
         while k < visible.len() {
@@ -506,7 +506,7 @@ impl Builder<'_> {
             self.tris[t].alive = false;
             orphans.append(&mut self.tris[t].conflicts);
         }
-        let mut by_start = HashMap::with_capacity(horizon.len());
+        let mut by_start = HashMap::with_capacity_and_hasher(horizon.len(), Default::default());
         let mut new = Vec::with_capacity(horizon.len());
         for &(a, b, n, j) in &horizon {
             let id = self.tris.len();

@@ -11,7 +11,7 @@ use crate::geom::point_key;
 use crate::geom::{Hull3, Point3, orient2d_drop, projection_axis};
 use crate::numbering::ids;
 use rayon::prelude::*;
-use std::collections::HashSet;
+use rustc_hash::FxHashSet as HashSet;
 
 /// Certifies that `tets` tetrahedralize the convex hull of `points` with every point a
 /// vertex ([`verify`] with the hull). Returns the first problem found.

@@ -48,7 +48,7 @@
 use super::report::{Problem, ProblemKind};
 use crate::geom::{Hull3, Point3, coplanar_triangles_overlap, point_key};
 use crate::partition;
-use std::collections::{HashMap, HashSet};
+use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
 /// An outer boundary triangle: its vertices (outward) and the facet of `P` it lies in.
 #[derive(Clone, Copy, Debug)]
@@ -68,7 +68,7 @@ pub(super) fn used_vertices(
     for &v in tets.iter().flatten() {
         used[v as usize] = true;
     }
-    let mut at = HashMap::with_capacity(points.len());
+    let mut at = HashMap::with_capacity_and_hasher(points.len(), Default::default());
     for v in (0..points.len() as u32).filter(|&v| used[v as usize]) {
         if let Some(&w) = at.get(&point_key(&points[v as usize])) {
             return Err(Problem::new(
@@ -97,7 +97,7 @@ pub(super) fn check_outer_degree(
 ) -> Result<usize, Problem> {
     let is_in_q = |i: u32| in_q.contains(&point_key(&points[i as usize]));
     // The corners of P outside Q, by the vertex the tetrahedra use there.
-    let mut corner_id: HashMap<u32, u32> = HashMap::new();
+    let mut corner_id: HashMap<u32, u32> = HashMap::default();
     let mut corners: Vec<u32> = Vec::new();
     let mut unused: Option<u32> = None;
     for i in 0..points.len() as u32 {
@@ -134,7 +134,7 @@ pub(super) fn check_outer_degree(
         }
     }
     // One representative corner per class, and the outer triangles at it.
-    let mut fan: HashMap<u32, Vec<usize>> = HashMap::new();
+    let mut fan: HashMap<u32, Vec<usize>> = HashMap::default();
     for k in 0..corners.len() as u32 {
         if partition::find(&mut parent, k) == k {
             fan.insert(corners[k as usize], Vec::new());

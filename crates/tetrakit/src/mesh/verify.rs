@@ -289,39 +289,46 @@ fn pair_bucket(a: u32, recs: &mut [[u32; 3]]) -> (Vec<BoundaryFace>, Vec<Problem
 
 /// The boundary edges used unequally in the two directions (the boundary is not closed
 /// there) and those used equally but more than once each way (non-manifold edges).
+///
+/// One sort of the edges by their unordered ends, each record marked with its direction
+/// (`a < b` or not) and its tetrahedron; a group of equal ends counts both directions.
+/// Problems are listed by directed edge, as `(a, b)` ascending.
 fn check_closed(boundary: &[BoundaryFace]) -> (Vec<Problem>, Vec<Problem>) {
-    let mut directed: Vec<(u32, u32, u32)> = boundary
-        .iter()
-        .flat_map(|f| (0..3).map(move |i| (f.v[i], f.v[(i + 1) % 3], f.tet)))
+    let mut edges: Vec<(u32, u32, bool, u32)> = boundary
+        .par_iter()
+        .flat_map_iter(|f| {
+            (0..3).map(move |i| {
+                let (a, b) = (f.v[i], f.v[(i + 1) % 3]);
+                (a.min(b), a.max(b), a > b, f.tet)
+            })
+        })
         .collect();
-    directed.sort_unstable();
-    let count = |a: u32, b: u32| {
-        let lo = directed.partition_point(|e| (e.0, e.1) < (a, b));
-        let hi = directed.partition_point(|e| (e.0, e.1) <= (a, b));
-        hi - lo
-    };
+    edges.par_sort_unstable();
     let (mut open, mut non_manifold) = (Vec::new(), Vec::new());
-    for (k, &(a, b, t)) in directed.iter().enumerate() {
-        if k > 0 && (directed[k - 1].0, directed[k - 1].1) == (a, b) {
-            continue;
-        }
-        let (fw, bw) = (count(a, b), count(b, a));
+    for group in edges.chunk_by(|x, y| (x.0, x.1) == (y.0, y.1)) {
+        let (lo, hi) = (group[0].0, group[0].1);
+        let up = group.partition_point(|e| !e.2);
+        let (fw, bw) = (up, group.len() - up);
         if fw != bw {
-            open.push(Problem::new(
-                ProblemKind::OpenBoundary,
-                vec![t],
-                vec![a, b],
-                format!("boundary edge (#{a}, #{b}) is used {fw} times in one direction and {bw} in the other; the boundary is not a closed surface"),
-            ));
-        } else if fw > 1 && a < b {
+            let sides = [(lo, hi, fw, bw, 0), (hi, lo, bw, fw, up)];
+            for (a, b, fw, bw, first) in sides.into_iter().filter(|s| s.2 > 0) {
+                open.push(Problem::new(
+                    ProblemKind::OpenBoundary,
+                    vec![group[first].3],
+                    vec![a, b],
+                    format!("boundary edge (#{a}, #{b}) is used {fw} times in one direction and {bw} in the other; the boundary is not a closed surface"),
+                ));
+            }
+        } else if fw > 1 {
             non_manifold.push(Problem::new(
                 ProblemKind::NonManifoldEdge,
-                vec![t],
-                vec![a, b],
-                format!("boundary edge (#{a}, #{b}) is used by {} boundary faces ({fw} each way): the domain is not a manifold there", 2 * fw),
+                vec![group[0].3],
+                vec![lo, hi],
+                format!("boundary edge (#{lo}, #{hi}) is used by {} boundary faces ({fw} each way): the domain is not a manifold there", 2 * fw),
             ));
         }
     }
+    open.sort_by_key(|p| (p.vertices[0], p.vertices[1]));
     (open, non_manifold)
 }
 
@@ -389,6 +396,42 @@ fn check_hull(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Two triangles sharing edge (0, 1) the same way round, and a third using it the
+    /// other way: every other edge is open once, listed by directed edge with the
+    /// tetrahedron of its face, and (0, 1) counts 2 against 1.
+    #[test]
+    fn open_edges_are_listed_by_directed_edge_with_their_counts() {
+        let face = |v: [u32; 3], tet| BoundaryFace { v, tet };
+        let boundary = [face([0, 1, 2], 7), face([0, 1, 3], 5), face([1, 0, 4], 9)];
+        let (open, non_manifold) = check_closed(&boundary);
+        assert!(non_manifold.is_empty());
+        let edges: Vec<(u32, u32, u32)> = open
+            .iter()
+            .map(|p| (p.vertices[0], p.vertices[1], p.cells[0]))
+            .collect();
+        let expected = [
+            (0, 1, 5),
+            (0, 4, 9),
+            (1, 0, 9),
+            (1, 2, 7),
+            (1, 3, 5),
+            (2, 0, 7),
+            (3, 0, 5),
+            (4, 1, 9),
+        ];
+        assert_eq!(edges, expected);
+        assert!(
+            open[0]
+                .detail
+                .contains("used 2 times in one direction and 1")
+        );
+        assert!(
+            open[2]
+                .detail
+                .contains("used 1 times in one direction and 2")
+        );
+    }
 
     /// Boxes touching along an edge form a valid mesh of a non-manifold domain, like
     /// boxes touching at a corner; the edge is named as non-manifold, and refused only

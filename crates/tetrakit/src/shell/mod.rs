@@ -77,7 +77,7 @@ use crate::control::{Control, Stopped};
 use crate::geom::{Hull3, Point3, point_key};
 pub use improve::{DELAUNAY_ABOVE, Improvement, improve};
 pub use optimum::optimum;
-use std::collections::{HashMap, HashSet};
+use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use std::fmt;
 use surface::Surface;
 
@@ -170,7 +170,7 @@ fn extreme_points(pts: &[Point3]) -> Result<(Vec<u32>, Vec<u32>), usize> {
     if hull.dimension < 3 {
         return Err(hull.dimension);
     }
-    let mut seen = HashSet::new();
+    let mut seen = HashSet::default();
     let (mut vertices, mut others) = (Vec::new(), Vec::new());
     for (i, p) in pts.iter().enumerate() {
         // A corner of a 3-polytope lies on three facets or more; a point inside an edge

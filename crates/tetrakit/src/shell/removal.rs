@@ -6,8 +6,9 @@ use super::surface::{self, Surface};
 use super::{Method, ShellError};
 use crate::control::Control;
 use crate::geom::{Hull3, Point3};
+use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use std::cmp::Reverse;
-use std::collections::{BinaryHeap, HashMap, HashSet};
+use std::collections::BinaryHeap;
 
 /// The most vertices one bigcap removes (each added vertex costs a local hull).
 const BIGCAP_LIMIT: usize = 32;

@@ -27,7 +27,7 @@
 
 use super::bins::Bins;
 use crate::geom::{Hull3, Point3, bounding_box, orient2d_drop, orient3d, projection_axis};
-use std::collections::{HashMap, HashSet};
+use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
 /// The triangulated surface of the current hull.
 pub(super) struct Surface<'a> {
@@ -124,7 +124,7 @@ impl<'a> Surface<'a> {
             pts,
             tris: Vec::new(),
             alive: Vec::new(),
-            edge: HashMap::new(),
+            edge: HashMap::default(),
             incident: vec![Vec::new(); pts.len()],
             hidden: Bins::new(pts, hidden),
             outer_hull,
@@ -240,7 +240,7 @@ impl<'a> Surface<'a> {
         region.sort_unstable();
         region.dedup();
         // The boundary of the union of the stars, as directed edges of its triangles.
-        let mut inside: HashSet<(u32, u32)> = HashSet::new();
+        let mut inside: HashSet<(u32, u32)> = HashSet::default();
         for &t in &region {
             let tri = self.tris[t as usize];
             for i in 0..3 {
