@@ -92,7 +92,7 @@ struct DetectArgs {
     /// Print one JSON object on stdout.
     #[arg(long)]
     json: bool,
-    /// Write the tetrahedralization found: .ele (with .node), .vtk or .json.
+    /// Write the tetrahedralization found: .ele (with .node), .vtk, .vtu or .json.
     #[arg(long)]
     output: Option<PathBuf>,
     /// How each vertex's link is freed of punctured segments (the verdict never depends
@@ -117,6 +117,16 @@ struct CheckArgs {
     /// "non_manifold_edges" and the mesh is valid).
     #[arg(long)]
     manifold: bool,
+    /// Turn negatively oriented tetrahedra (swap their last two vertices) and count them,
+    /// instead of reporting them as problems: for generators that do not orient their
+    /// cells (scipy, Qhull).
+    #[arg(long)]
+    reorient: bool,
+    /// Write the mesh for a viewer, .vtk or .vtu, with integer fields "problem" on cells
+    /// and points (the first problem naming each, numbered as in `--json`'s
+    /// "problem_codes"; 0 for none).
+    #[arg(long, short)]
+    output: Option<PathBuf>,
     /// Print one JSON object on stdout.
     #[arg(long)]
     json: bool,
@@ -129,7 +139,7 @@ struct MintetraArgs {
     /// Print one JSON object on stdout.
     #[arg(long)]
     json: bool,
-    /// Write the tetrahedra: .ele (with .node), .vtk or .json.
+    /// Write the tetrahedra: .ele (with .node), .vtk, .vtu or .json.
     #[arg(long)]
     output: Option<PathBuf>,
     /// Also run the exact solver (up to 60 vertices) to confirm minimality and uniqueness.
@@ -154,7 +164,7 @@ struct TetrahedralizeArgs {
     /// Print one JSON object on stdout.
     #[arg(long)]
     json: bool,
-    /// Write the tetrahedra: .ele (with .node), .vtk or .json.
+    /// Write the tetrahedra: .ele (with .node), .vtk, .vtu or .json.
     #[arg(long)]
     output: Option<PathBuf>,
     /// On NO, write the SAT formula to P.cnf and a DRAT refutation of it to P.drat.
@@ -236,7 +246,7 @@ enum ReduceKind {
     HullGap {
         /// The polyhedron: .off, .obj, .face (with .node) or .json with "faces".
         input: PathBuf,
-        /// Write the tetrahedra: .ele (with .node), .vtk or .json.
+        /// Write the tetrahedra: .ele (with .node), .vtk, .vtu or .json.
         #[arg(long, short)]
         output: Option<PathBuf>,
         /// Print one JSON object on stdout.
@@ -254,7 +264,7 @@ enum ReduceKind {
         /// The upper surface's points, then their images in the same order, with the
         /// upper surface's triangles: .off, .obj, .json with "faces", .face (with .node).
         input: PathBuf,
-        /// Write the tetrahedra: .ele (with .node), .vtk or .json.
+        /// Write the tetrahedra: .ele (with .node), .vtk, .vtu or .json.
         #[arg(long, short)]
         output: Option<PathBuf>,
         /// Print one JSON object on stdout.
@@ -286,7 +296,7 @@ struct ShellCliArgs {
     /// Print one JSON object on stdout.
     #[arg(long)]
     json: bool,
-    /// Write the tetrahedra: .ele (with .node), .vtk or .json (vertices numbered from
+    /// Write the tetrahedra: .ele (with .node), .vtk, .vtu or .json (vertices numbered from
     /// the outer ones, then the inner ones not shared).
     #[arg(long, short)]
     output: Option<PathBuf>,
@@ -727,7 +737,7 @@ fn run(cmd: Cmd) -> CmdResult {
                 links: a.links,
             },
         ),
-        Cmd::Check(a) => run::check(&a.input, a.convex, a.manifold, a.json),
+        Cmd::Check(a) => run::check(&a),
         Cmd::Mintetra(a) => poly::mintetra(&a.input, a.json, a.output.as_deref(), a.confirm),
         Cmd::Tetrahedralize(a) => poly::tetrahedralize(poly::TetraArgs {
             input: &a.input,

@@ -135,21 +135,28 @@ fn print_detection(d: &Detection, base: u32, from_tets: bool, seconds: f64) {
     }
 }
 
-pub fn check(path: &Path, convex: bool, manifold: bool, as_json: bool) -> CmdResult {
+pub fn check(a: &crate::CheckArgs) -> CmdResult {
+    let (path, convex, as_json) = (a.input.as_path(), a.convex, a.json);
     let start = Instant::now();
-    let input = io::read_input(path)?;
+    let mut input = io::read_input(path)?;
     if input.tets.is_empty() {
         return Err(CliError::at(
             path,
             "no tetrahedra to check (give an .ele file or JSON \"tets\")",
         ));
     }
+    let turned = a
+        .reorient
+        .then(|| mesh::reorient(&input.points, &mut input.tets));
     let hull = convex.then(|| Hull3::new(&input.points));
-    let mut report = mesh::verify(&input.points, &input.tets, hull.as_ref())
-        .relabeled(input.index_base, |t| input.tet_label(t as usize));
-    if manifold {
+    let mut report = mesh::verify(&input.points, &input.tets, hull.as_ref());
+    if a.manifold {
         report = report.require_manifold();
     }
+    if let Some(out) = &a.output {
+        write_problems(out, &input, &report)?;
+    }
+    let report = report.relabeled(input.index_base, |t| input.tet_label(t as usize));
     let seconds = start.elapsed().as_secs_f64();
     if as_json {
         let mut v = json!({
@@ -161,8 +168,16 @@ pub fn check(path: &Path, convex: bool, manifold: bool, as_json: bool) -> CmdRes
             "convex": convex,
             "problem_count": report.problem_count,
             "problems": report.problems,
+            "reoriented": turned,
             "seconds": seconds,
         });
+        if a.output.is_some() {
+            let codes: serde_json::Map<String, serde_json::Value> = mesh::ProblemKind::ALL
+                .iter()
+                .map(|k| (k.to_string(), json!(k.code())))
+                .collect();
+            v["problem_codes"] = json!(codes);
+        }
         // The witness of a NO: the first problem found (the checks run from the most
         // local, a single tetrahedron, outwards).
         if let Some(p) = report.problems.first() {
@@ -170,6 +185,9 @@ pub fn check(path: &Path, convex: bool, manifold: bool, as_json: bool) -> CmdRes
         }
         out!("{v}");
     } else if report.is_valid() {
+        if let Some(k) = turned {
+            out!("  {k} negatively oriented tetrahedra turned (--reorient)");
+        }
         let scope = if convex {
             "a tetrahedralization of the convex hull of its points"
         } else {
@@ -205,6 +223,16 @@ pub fn check(path: &Path, convex: bool, manifold: bool, as_json: bool) -> CmdRes
         }
     }
     Ok(Verdict::from_bool(report.is_valid()))
+}
+
+/// `check --output`: the mesh with its problem codes on cells and points.
+fn write_problems(out: &Path, input: &io::Input, report: &mesh::Report) -> Result<(), CliError> {
+    let (cells, points) = report.fields(input.tets.len(), input.points.len());
+    let fields = io::Fields {
+        cells: vec![("problem", &cells)],
+        points: vec![("problem", &points)],
+    };
+    io::write_mesh_with_fields(out, &input.points, &input.tets, &fields).written(out)
 }
 
 pub fn generate(kind: GenKind) -> CmdResult {

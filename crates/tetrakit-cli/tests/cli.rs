@@ -228,6 +228,64 @@ fn check_names_tetrahedra_by_the_files_numbers() {
     assert!(err.contains("g.ele:2: tetrahedron 7 repeats"), "{err}");
 }
 
+/// `check --reorient` turns the inverted cells of an unoriented mesh and counts them;
+/// `check --output` writes the mesh with the problem codes of its cells and points, in
+/// positions (not the file's labels), readable by the VTK reader.
+#[test]
+fn check_reorients_and_writes_problem_fields_for_a_viewer() {
+    let d = dir("fields");
+    let node = "5 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 1 -1\n";
+    std::fs::write(d.join("g.node"), node).unwrap();
+    // Two tetrahedra sharing face 1 2 3 (labels 10 and 20), the second inverted.
+    std::fs::write(d.join("g.ele"), "2 4 0\n10 1 2 3 4\n20 1 2 3 5\n").unwrap();
+    let ele = d.join("g.ele");
+    let o = run(&["check", s(&ele), "--json"]);
+    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(json(&o)["witness"]["kind"], "inverted");
+    let o = run(&["check", s(&ele), "--reorient", "--json"]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stdout)
+    );
+    assert_eq!(json(&o)["reoriented"], 1);
+    for ext in ["vtu", "vtk"] {
+        let out = d.join(format!("p.{ext}"));
+        let o = run(&["check", s(&ele), "--json", "--output", s(&out)]);
+        assert_eq!(o.status.code(), Some(1));
+        assert_eq!(json(&o)["problem_codes"]["inverted"], 4);
+        let text = std::fs::read_to_string(&out).unwrap();
+        let cells = if ext == "vtu" {
+            text.split("<CellData>")
+                .nth(1)
+                .unwrap()
+                .lines()
+                .nth(2)
+                .unwrap()
+        } else {
+            text.split("LOOKUP_TABLE default\n")
+                .nth(1)
+                .unwrap()
+                .lines()
+                .next()
+                .unwrap()
+        };
+        assert_eq!(cells, "0 4", "{ext}");
+    }
+    // The legacy file reads back as the same mesh, with the same verdict.
+    let o = run(&["check", s(&d.join("p.vtk")), "--json"]);
+    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(json(&o)["tetrahedra"], 2);
+    let o = run(&["check", s(&ele), "--output", s(&d.join("p.ele"))]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("p.ele") && err.contains(".vtk or .vtu"),
+        "{err}"
+    );
+}
+
 #[test]
 fn planar_input_is_a_triangulation_question() {
     let d = dir("planar");

@@ -20,8 +20,8 @@ mod write;
 
 pub use planar::{Svg, keil_svg, write_planar_edges, write_planar_triangulation, write_points2d};
 pub use write::{
-    write_edges, write_instance, write_mesh, write_points, write_surface, write_triangulation,
-    write_vtk,
+    Fields, write_edges, write_instance, write_mesh, write_mesh_with_fields, write_points,
+    write_surface, write_triangulation, write_vtk,
 };
 
 use crate::geom::{Point3, coordinate_in_range, lex_cmp};

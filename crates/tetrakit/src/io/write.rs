@@ -1,4 +1,5 @@
-//! Writers: TetGen `.node/.ele/.edge`, legacy VTK unstructured grids (ParaView), OBJ and
+//! Writers: TetGen `.node/.ele/.edge`, VTK unstructured grids (legacy `.vtk` and XML
+//! `.vtu`, with integer fields for ParaView), OBJ and
 //! JSON. Coordinates are written with Rust's shortest round-trip formatting, so reading a
 //! written file back gives the same `f64` values bit for bit.
 
@@ -20,7 +21,7 @@ fn node_text(points: &[Point3], base: u32) -> String {
 }
 
 /// Writes a tetrahedralization, the format chosen by the extension of `path`:
-/// `.ele` (with `.node` beside it), `.vtk`, `.json`. Indices in TetGen files start at `base`.
+/// `.ele` (with `.node` beside it), `.vtk`, `.vtu` (VTK XML, ASCII), `.json`. Indices in TetGen files start at `base`.
 ///
 /// ```
 /// use tetrakit::io::write_mesh;
@@ -47,12 +48,12 @@ pub fn write_mesh(path: &Path, points: &[Point3], tets: &[[u32; 4]], base: u32) 
             }
             save(path, s)
         }
-        "vtk" => write_vtk(path, points, tets),
+        "vtk" | "vtu" => write_mesh_with_fields(path, points, tets, &Fields::default()),
         "json" => {
             let v = serde_json::json!({ "points": points, "tets": tets });
             save(path, v.to_string())
         }
-        other => Err(unsupported(other, ".ele, .vtk or .json")),
+        other => Err(unsupported(other, ".ele, .vtk, .vtu or .json")),
     }
 }
 
@@ -109,6 +110,47 @@ pub fn write_edges(
 /// assert!(std::fs::read_to_string(&path).unwrap().contains("CELL_TYPES 1"));
 /// ```
 pub fn write_vtk(path: &Path, points: &[Point3], tets: &[[u32; 4]]) -> io::Result<()> {
+    save(path, vtk_text(points, tets, &Fields::default()))
+}
+
+/// Integer fields written beside a mesh for a viewer (ParaView colours cells and points
+/// by them): `(name, values)` pairs, one value per tetrahedron in `cells` and one per
+/// point in `points`. Names are plain words (no spaces or markup).
+#[derive(Clone, Debug, Default)]
+pub struct Fields<'a> {
+    /// Per-tetrahedron fields.
+    pub cells: Vec<(&'a str, &'a [i32])>,
+    /// Per-point fields.
+    pub points: Vec<(&'a str, &'a [i32])>,
+}
+
+/// Writes a tetrahedralization with integer fields, as legacy VTK (`.vtk`, `CELL_DATA`
+/// and `POINT_DATA` scalars) or VTK XML (`.vtu`, ASCII), chosen by the extension.
+///
+/// ```
+/// use tetrakit::io::{Fields, write_mesh_with_fields};
+/// let pts = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+/// let code = [4];
+/// let fields = Fields { cells: vec![("problem", &code)], points: vec![] };
+/// let path = std::env::temp_dir().join("tetrakit-doc-fields.vtu");
+/// write_mesh_with_fields(&path, &pts, &[[0, 2, 1, 3]], &fields).unwrap();
+/// let text = std::fs::read_to_string(&path).unwrap();
+/// assert!(text.contains(r#"<DataArray type="Int32" Name="problem" format="ascii">"#));
+/// ```
+pub fn write_mesh_with_fields(
+    path: &Path,
+    points: &[Point3],
+    tets: &[[u32; 4]],
+    fields: &Fields,
+) -> io::Result<()> {
+    match ext(path).as_str() {
+        "vtk" => save(path, vtk_text(points, tets, fields)),
+        "vtu" => save(path, vtu_text(points, tets, fields)),
+        other => Err(unsupported(other, ".vtk or .vtu")),
+    }
+}
+
+fn vtk_text(points: &[Point3], tets: &[[u32; 4]], fields: &Fields) -> String {
     let mut s = String::from(
         "# vtk DataFile Version 3.0\ntetrakit tetrahedralization\nASCII\nDATASET UNSTRUCTURED_GRID\n",
     );
@@ -124,7 +166,80 @@ pub fn write_vtk(path: &Path, points: &[Point3], tets: &[[u32; 4]]) -> io::Resul
     for _ in tets {
         s.push_str("10\n");
     }
-    save(path, s)
+    let sections = [
+        ("CELL_DATA", tets.len(), &fields.cells),
+        ("POINT_DATA", points.len(), &fields.points),
+    ];
+    for (section, count, list) in sections {
+        if list.is_empty() {
+            continue;
+        }
+        let _ = writeln!(s, "{section} {count}");
+        for (name, values) in list {
+            let _ = writeln!(s, "SCALARS {name} int 1\nLOOKUP_TABLE default");
+            join_lines(&mut s, values.iter());
+        }
+    }
+    s
+}
+
+fn vtu_text(points: &[Point3], tets: &[[u32; 4]], fields: &Fields) -> String {
+    let mut s = String::from(
+        "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n<UnstructuredGrid>\n",
+    );
+    let _ = writeln!(
+        s,
+        "<Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">",
+        points.len(),
+        tets.len()
+    );
+    for (tag, list) in [("PointData", &fields.points), ("CellData", &fields.cells)] {
+        let _ = writeln!(s, "<{tag}>");
+        for (name, values) in list {
+            array(&mut s, "Int32", name, "", values.iter());
+        }
+        let _ = writeln!(s, "</{tag}>");
+    }
+    s.push_str("<Points>\n");
+    let coords = points.iter().flatten();
+    array(
+        &mut s,
+        "Float64",
+        "points",
+        " NumberOfComponents=\"3\"",
+        coords,
+    );
+    s.push_str("</Points>\n<Cells>\n");
+    array(&mut s, "Int64", "connectivity", "", tets.iter().flatten());
+    let offsets = (1..=tets.len()).map(|k| 4 * k);
+    array(&mut s, "Int64", "offsets", "", offsets);
+    array(&mut s, "UInt8", "types", "", tets.iter().map(|_| 10));
+    s.push_str("</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
+    s
+}
+
+/// One ASCII `DataArray` of a `.vtu` file.
+fn array<T: std::fmt::Display>(
+    s: &mut String,
+    kind: &str,
+    name: &str,
+    extra: &str,
+    values: impl Iterator<Item = T>,
+) {
+    let _ = writeln!(
+        s,
+        "<DataArray type=\"{kind}\" Name=\"{name}\"{extra} format=\"ascii\">"
+    );
+    join_lines(s, values);
+    s.push_str("</DataArray>\n");
+}
+
+/// The values on one line, space-separated.
+fn join_lines<T: std::fmt::Display>(s: &mut String, values: impl Iterator<Item = T>) {
+    for (k, v) in values.enumerate() {
+        let _ = write!(s, "{}{v}", if k == 0 { "" } else { " " });
+    }
+    s.push('\n');
 }
 
 pub(super) fn ext(path: &Path) -> String {

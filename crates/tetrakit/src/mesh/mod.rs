@@ -56,15 +56,39 @@ impl Tetrahedralization {
     }
 
     /// Reorders the vertices of every tetrahedron so that it is positively oriented
-    /// (degenerate tetrahedra are left as they are).
+    /// (degenerate tetrahedra are left as they are); see [`reorient`].
     pub fn orient_positively(&mut self) {
-        for t in &mut self.tets {
-            let p = |i: u32| &self.points[i as usize];
-            if orient3d(p(t[0]), p(t[1]), p(t[2]), p(t[3])) < 0 {
-                t.swap(2, 3);
-            }
+        reorient(&self.points, &mut self.tets);
+    }
+}
+
+/// Swaps the last two vertices of every negatively oriented tetrahedron (exact
+/// `orient3d`), for generators that do not orient their cells (scipy's and Qhull's
+/// Delaunay); returns how many were turned. Degenerate tetrahedra and those naming a
+/// vertex out of range are left for [`verify`] to report.
+///
+/// ```
+/// let pts = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+/// let mut tets = [[0, 2, 1, 3], [0, 1, 2, 3], [0, 1, 2, 9]];
+/// assert_eq!(tetrakit::mesh::reorient(&pts, &mut tets), 1);
+/// assert_eq!(tets[0], [0, 2, 3, 1]);
+/// ```
+pub fn reorient(points: &[Point3], tets: &mut [[u32; 4]]) -> usize {
+    let mut turned = 0;
+    for t in tets {
+        let Some(p) = t
+            .map(|i| points.get(i as usize))
+            .into_iter()
+            .collect::<Option<Vec<_>>>()
+        else {
+            continue;
+        };
+        if orient3d(p[0], p[1], p[2], p[3]) < 0 {
+            t.swap(2, 3);
+            turned += 1;
         }
     }
+    turned
 }
 
 /// The sorted, deduplicated edge set of a list of tetrahedra.

@@ -41,6 +41,38 @@ pub enum ProblemKind {
     SteinerPoint,
 }
 
+impl ProblemKind {
+    /// Every kind, in the order of their [`code`](Self::code)s (1, 2, …).
+    pub const ALL: [ProblemKind; 14] = [
+        ProblemKind::BadIndex,
+        ProblemKind::RepeatedVertex,
+        ProblemKind::Degenerate,
+        ProblemKind::Inverted,
+        ProblemKind::FaceSharedByMore,
+        ProblemKind::SameSide,
+        ProblemKind::OpenBoundary,
+        ProblemKind::NonManifoldEdge,
+        ProblemKind::BoundaryNotOnHull,
+        ProblemKind::Overlap,
+        ProblemKind::UnusedVertex,
+        ProblemKind::BoundarySelfIntersection,
+        ProblemKind::BoundaryNotSurface,
+        ProblemKind::SteinerPoint,
+    ];
+
+    /// The kind's number in the `problem` fields `check --output` writes for a viewer:
+    /// 1 for the first kind of [`ALL`](Self::ALL), and so on; 0 is kept for "no problem".
+    ///
+    /// ```
+    /// use tetrakit::mesh::ProblemKind;
+    /// assert_eq!(ProblemKind::BadIndex.code(), 1);
+    /// assert_eq!(ProblemKind::Inverted.code(), 4);
+    /// ```
+    pub fn code(self) -> i32 {
+        self as i32 + 1
+    }
+}
+
 impl fmt::Display for ProblemKind {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let s = serde_json::to_value(self).ok();
@@ -136,6 +168,35 @@ impl Report {
         self
     }
 
+    /// Per-cell and per-vertex problem codes for a viewer ([`ProblemKind::code`], 0 for
+    /// none): each cell and vertex named by a kept problem gets the code of the first
+    /// that names it (the checks run from the most local outwards), non-manifold edges
+    /// included. Call it before [`relabeled`](Self::relabeled): the fields are indexed
+    /// by position, `cells` and `vertices` long. Only the first [`Report::LIMIT`]
+    /// problems are kept, so a mesh with more marks only theirs.
+    ///
+    /// ```
+    /// let pts = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    /// let report = tetrakit::mesh::verify(&pts, &[[0, 2, 1, 3]], None);
+    /// let (cells, vertices) = report.fields(1, 4);
+    /// assert_eq!(cells, [tetrakit::mesh::ProblemKind::Inverted.code()]);
+    /// assert!(vertices.iter().all(|&c| c == cells[0]));
+    /// ```
+    pub fn fields(&self, cells: usize, vertices: usize) -> (Vec<i32>, Vec<i32>) {
+        let mut cell_code = vec![0; cells];
+        let mut vertex_code = vec![0; vertices];
+        for p in self.problems.iter().chain(&self.non_manifold) {
+            let mark = |field: &mut Vec<i32>, k: u32| {
+                if let Some(c) = field.get_mut(k as usize).filter(|c| **c == 0) {
+                    *c = p.kind.code();
+                }
+            };
+            p.cells.iter().for_each(|&t| mark(&mut cell_code, t));
+            p.vertices.iter().for_each(|&v| mark(&mut vertex_code, v));
+        }
+        (cell_code, vertex_code)
+    }
+
     /// True when no problem was found: the mesh is certified.
     pub fn is_valid(&self) -> bool {
         self.problem_count == 0
@@ -146,5 +207,21 @@ impl Report {
         if self.problems.len() < Self::LIMIT {
             self.problems.push(p);
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The codes written for viewers follow `ALL`, and every kind is in it once.
+    #[test]
+    fn codes_follow_the_list_of_kinds() {
+        for (k, kind) in ProblemKind::ALL.iter().enumerate() {
+            assert_eq!(kind.code(), k as i32 + 1, "{kind}");
+        }
+        let names: std::collections::HashSet<String> =
+            ProblemKind::ALL.iter().map(|k| k.to_string()).collect();
+        assert_eq!(names.len(), ProblemKind::ALL.len());
     }
 }
