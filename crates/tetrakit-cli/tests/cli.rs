@@ -286,6 +286,74 @@ fn check_reorients_and_writes_problem_fields_for_a_viewer() {
     );
 }
 
+/// Meshes written by the real Gmsh (a box with a spherical hole, first and second order,
+/// `.msh` 2.2 and 4.1, and Medit `.mesh`) read with the same verdict and the same
+/// tetrahedra; a tetrahedron turned inside out in the `.msh` is named by its element tag.
+/// Needs `gmsh` on the PATH (`.ci/run` installs it and sets `TETRAKIT_REQUIRE_GMSH`).
+#[test]
+fn gmsh_meshes_read_with_one_verdict() {
+    let available = Command::new("gmsh").arg("--version").output().is_ok();
+    if !available {
+        assert!(
+            std::env::var_os("TETRAKIT_REQUIRE_GMSH").is_none(),
+            "gmsh is required here but not on the PATH"
+        );
+        eprintln!("gmsh not on the PATH: skipped");
+        return;
+    }
+    let d = dir("gmsh");
+    let geo = "SetFactory(\"OpenCASCADE\");\nBox(1) = {0,0,0, 1,1,1};\nSphere(2) = {0.5,0.5,0.5, 0.3};\nBooleanDifference{ Volume{1}; Delete; }{ Volume{2}; Delete; }\nPhysical Volume(\"solid\", 5) = {1};\nMesh.MeshSizeMax = 0.2;\n";
+    std::fs::write(d.join("b.geo"), geo).unwrap();
+    let mut counts = Vec::new();
+    for (name, args) in [
+        ("b22.msh", &["-format", "msh22"][..]),
+        ("b41.msh", &["-format", "msh41"]),
+        ("b2.msh", &["-format", "msh41", "-order", "2"]),
+        ("b.mesh", &["-format", "mesh"]),
+    ] {
+        let out = d.join(name);
+        let g = Command::new("gmsh")
+            .arg(d.join("b.geo"))
+            .arg("-3")
+            .args(args)
+            .arg("-o")
+            .arg(&out)
+            .output()
+            .unwrap();
+        assert!(g.status.success(), "{}", String::from_utf8_lossy(&g.stderr));
+        let o = run(&["check", s(&out), "--json"]);
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{name}: {}",
+            String::from_utf8_lossy(&o.stdout)
+        );
+        counts.push(json(&o)["tetrahedra"].as_u64().unwrap());
+    }
+    assert!(
+        counts[0] > 100 && counts.iter().all(|&c| c == counts[0]),
+        "{counts:?}"
+    );
+    // Turn the first tetrahedron of the 2.2 file inside out: swap its last two nodes.
+    let text = std::fs::read_to_string(d.join("b22.msh")).unwrap();
+    let mut lines: Vec<String> = text.lines().map(String::from).collect();
+    let k = lines
+        .iter()
+        .position(|l| l.split(' ').nth(1) == Some("4"))
+        .unwrap();
+    let mut f: Vec<&str> = lines[k].split(' ').collect();
+    let n = f.len();
+    f.swap(n - 1, n - 2);
+    let tag = f[0].to_string();
+    lines[k] = f.join(" ");
+    std::fs::write(d.join("bad.msh"), lines.join("\n")).unwrap();
+    let o = run(&["check", s(&d.join("bad.msh")), "--json"]);
+    assert_eq!(o.status.code(), Some(1));
+    let w = json(&o)["witness"].clone();
+    assert_eq!(w["kind"], "inverted");
+    assert_eq!(w["tets"][0].to_string(), tag, "{w}");
+}
+
 #[test]
 fn planar_input_is_a_triangulation_question() {
     let d = dir("planar");

@@ -9,6 +9,8 @@ const NODE: &str = "5 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 1 1\n";
 const EDGE: &str = "9 0\n1 1 2\n2 1 3\n3 1 4\n4 2 3\n5 2 4\n6 3 4\n7 2 5\n8 3 5\n9 4 5\n";
 const VTK4: &str = "# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 5 double\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\nCELLS 3 12\n4 0 1 2 3\n4 1 2 3 4\n2 0 4\nCELL_TYPES 3\n10\n10\n3\nCELL_DATA 3\n";
 const VTK5: &str = "# vtk DataFile Version 5.1\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 5 double\n0 0 0 1 0 0 0 1 0\n0 0 1 1 1 1\nCELLS 4 11\nOFFSETS vtktypeint64\n0 4 8 11\nCONNECTIVITY vtktypeint64\n0 1 2 3\n1 2 3 4\n0 1 2\nCELL_TYPES 3\n10 10 5\n";
+const MSH22: &str = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n1\n3 7 \"solid\"\n$EndPhysicalNames\n$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 1 1\n$EndNodes\n$Elements\n5\n1 15 2 0 1 1\n2 1 2 0 1 1 5\n3 2 2 0 1 1 2 3\n4 4 2 7 1 1 2 3 4\n5 11 2 7 1 2 3 4 5 1 1 1 1 1 1\n$EndElements\n";
+const MSH41: &str = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n0 0 0 1\n1 0 0 0 1 1 1 0 0\n$EndEntities\n$Nodes\n2 5 1 5\n3 1 0 3\n1\n2\n3\n0 0 0\n1 0 0\n0 1 0\n3 1 0 2\n4\n5\n0 0 1\n1 1 1\n$EndNodes\n$Elements\n3 4 1 4\n1 2 1 1\n1 1 5\n2 3 2 1\n2 1 2 3\n3 1 4 2\n3 1 2 3 4\n4 2 3 4 5\n$EndElements\n";
 const MESH: &str = "MeshVersionFormatted 2\nDimension 3\nVertices\n5\n0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\n1 1 1 1\nTetrahedra\n2\n1 2 3 4 0\n2 3 4 5 0\nTriangles\n1\n1 2 3 0\nEdges\n1\n1 5 0\nCorners\n1\n1\nEnd\n";
 
 fn write(name: &str, text: &str) -> std::path::PathBuf {
@@ -91,7 +93,16 @@ proptest! {
     }
 
     #[test]
-    fn arbitrary_text_never_panics(text in "[ -~\n]{0,200}", ext in prop::sample::select(vec!["node", "edge", "ele", "obj", "json", "xyz", "mesh", "vtk"])) {
+    fn mutated_gmsh_files_never_panic(a in mutate(MSH22), b in mutate(MSH41)) {
+        for (name, text) in [("m22.msh", &a), ("m41.msh", &b)] {
+            if let Err(e) = read_input(&write(name, text)) {
+                prop_assert!(e.file.ends_with(name) && e.line <= text.lines().count());
+            }
+        }
+    }
+
+    #[test]
+    fn arbitrary_text_never_panics(text in "[ -~\n]{0,200}", ext in prop::sample::select(vec!["node", "edge", "ele", "obj", "json", "xyz", "mesh", "vtk", "msh"])) {
         write("a.node", NODE);
         let p = write(&format!("a.{ext}"), &text);
         let _ = read_input(&p);
@@ -128,6 +139,83 @@ fn medit_files_read_and_fail_with_the_line() {
     ];
     for (from, to, line, needle) in cases {
         let e = read_input(&write("bad.mesh", &MESH.replacen(from, to, 1))).unwrap_err();
+        assert!(
+            e.line == line && e.message.contains(needle),
+            "{from} -> {to}: {e}"
+        );
+    }
+}
+
+/// Gmsh `.msh` 2.2 and 4.1 (ASCII) read the same cells: tetrahedra (the 10-node one by
+/// its corners) named by their element tags, with their regions, triangles and lines;
+/// points ignored. Damage is one error naming the line.
+#[test]
+fn gmsh_files_read_and_fail_with_the_line() {
+    let old = read_input(&write("ok22.msh", MSH22)).unwrap();
+    let new = read_input(&write("ok41.msh", MSH41)).unwrap();
+    for (input, labels, regions) in [(&old, [4, 5], [7, 7]), (&new, [3, 4], [1, 1])] {
+        assert_eq!(input.points.len(), 5);
+        assert_eq!(input.tets, vec![[0, 1, 2, 3], [1, 2, 3, 4]]);
+        assert_eq!(
+            (input.tet_label(0), input.tet_label(1)),
+            (labels[0], labels[1])
+        );
+        assert_eq!(input.regions, regions);
+        assert_eq!(
+            (input.faces.clone(), input.segments.clone()),
+            (vec![[0, 1, 2]], vec![[0, 4]])
+        );
+    }
+    let cases = [
+        (MSH22, "2 1 0 0\n", "2 1 x 0\n", 11, "'x' is not a number"),
+        (
+            MSH22,
+            "4 4 2 7 1 1 2 3 4",
+            "4 4 2 7 1 1 2 3 9",
+            21,
+            "vertex 9 is out of range",
+        ),
+        (
+            MSH22,
+            "3 2 2 0 1 1 2 3",
+            "3 3 2 0 1 1 2 3 4",
+            20,
+            "1 quadrangle element(s) besides",
+        ),
+        (
+            MSH22,
+            "3 0 1 0\n",
+            "7 0 1 0\n",
+            12,
+            "node tag 7 where 3 was expected",
+        ),
+        (MSH22, "2.2 0 8", "2.2 1 8", 2, "a binary .msh file"),
+        (MSH22, "2.2 0 8", "3.0 0 8", 2, "only 2.2 and 4.1"),
+        (
+            MSH22,
+            "$EndNodes",
+            "$EndNode",
+            15,
+            "where $EndNodes was expected",
+        ),
+        (
+            MSH41,
+            "3 1 4 2",
+            "3 1 4 3",
+            32,
+            "'$EndElements' is not an integer",
+        ),
+        (
+            MSH41,
+            "2 3 2 1\n2 1 2 3\n",
+            "2 3 6 1\n2 1 2 3 4 5 1\n",
+            28,
+            "1 prism element(s)",
+        ),
+        (MSH41, "3 1 0 2", "3 1 1 2", 17, "parametric nodes"),
+    ];
+    for (base, from, to, line, needle) in cases {
+        let e = read_input(&write("bad.msh", &base.replacen(from, to, 1))).unwrap_err();
         assert!(
             e.line == line && e.message.contains(needle),
             "{from} -> {to}: {e}"

@@ -8,6 +8,7 @@
 //! at the same place. Header counts are checked against what is read but are never used to
 //! size an allocation.
 
+mod gmsh;
 mod json;
 mod medit;
 mod obj;
@@ -90,6 +91,9 @@ pub struct Input {
     pub tet_file: PathBuf,
     /// See [`Input::tet_file`].
     pub tet_lines: Vec<u32>,
+    /// The region of each tetrahedron where the format has them (Gmsh's physical or
+    /// entity tags); empty otherwise.
+    pub regions: Vec<i64>,
     /// The file's own number of each tetrahedron where it is not `k + index_base` (a
     /// `.ele` numbered with gaps, or from another base than its `.node`); empty otherwise.
     /// See [`Input::tet_label`].
@@ -117,7 +121,8 @@ impl Input {
 
 /// Reads `path`, choosing the format by extension: `.node` (with sibling `.edge`, `.ele`
 /// and `.face` when present), `.edge`/`.ele`/`.face` (with the sibling `.node`), `.obj`,
-/// `.off`, `.mesh` (Medit), `.vtk` (legacy ASCII), `.json`, `.xyz`/`.txt`.
+/// `.off`, `.mesh` (Medit), `.msh` (Gmsh 2.2 and 4.1, ASCII), `.vtk` (legacy ASCII),
+/// `.json`, `.xyz`/`.txt`.
 ///
 /// ```
 /// let dir = std::env::temp_dir().join("tetrakit-doc-read");
@@ -142,6 +147,7 @@ pub fn read_input(path: &Path) -> Result<Input, InputError> {
         "off" => off::read(path)?,
         "mesh" => medit::read(path)?,
         "vtk" => vtk::read(path)?,
+        "msh" => gmsh::read(path)?,
         "json" => json::read(path)?,
         "xyz" | "txt" => read_xyz(path)?,
         _ => {
@@ -149,7 +155,7 @@ pub fn read_input(path: &Path) -> Result<Input, InputError> {
                 path,
                 0,
                 format!(
-                    "unknown input format '.{ext}' (expected .node, .edge, .ele, .face, .obj, .off, .mesh, .vtk, .json, .xyz or .txt)"
+                    "unknown input format '.{ext}' (expected .node, .edge, .ele, .face, .obj, .off, .mesh, .msh, .vtk, .json, .xyz or .txt)"
                 ),
             ));
         }

@@ -1,0 +1,324 @@
+//! Gmsh `.msh`, ASCII, in the two layouts Gmsh and meshio write: 2.2 (`$Nodes` as
+//! `tag x y z` lines, `$Elements` as `tag type ntags tags… nodes…`) and 4.1 (entity
+//! blocks: a block's node tags, then its coordinates; a block's elements, each a tag and
+//! its nodes). Read: 4-node tetrahedra (type 4) and the corners of 10-node ones (type 11:
+//! the first four nodes are the corners), triangles (2, and the corners of 9) and lines
+//! (1, and the corners of 8); points (15) are ignored. Each tetrahedron keeps its region
+//! ([`Input::regions`]): its first tag in 2.2 (the physical group, as Gmsh writes them),
+//! the entity tag of its block in 4.1. Any other element
+//! (quadrangles, hexahedra, prisms, pyramids, higher orders) is an error that counts
+//! them, at the line of the first. Other sections (`$PhysicalNames`, `$Entities`, `$NodeData`, …) are skipped.
+//!
+//! Node tags must be `1..=N` in the order of the file (what Gmsh writes unless told not to
+//! renumber), so that messages name vertices by their tags; tetrahedra are named by their
+//! element tags. Binary files (`file-type 1`) are refused with a reason. Counts are
+//! checked against what is read, never used to size an allocation; every error names the
+//! line.
+
+use super::stream::Stream;
+use super::{Input, InputError, check_segments, parse_int, vertex_ref};
+use std::path::Path;
+
+/// Nodes of a Gmsh element type, for the types this reader knows: what it keeps, and
+/// the names of the cells it refuses.
+fn element_nodes(kind: i64) -> Option<(usize, &'static str)> {
+    Some(match kind {
+        1 => (2, "line"),
+        2 => (3, "triangle"),
+        3 => (4, "quadrangle"),
+        4 => (4, "tetrahedron"),
+        5 => (8, "hexahedron"),
+        6 => (6, "prism"),
+        7 => (5, "pyramid"),
+        8 => (3, "line"),
+        9 => (6, "triangle"),
+        10 => (9, "quadrangle"),
+        11 => (10, "tetrahedron"),
+        12 => (27, "hexahedron"),
+        13 => (18, "prism"),
+        14 => (14, "pyramid"),
+        15 => (1, "point"),
+        16 => (8, "quadrangle"),
+        17 => (20, "hexahedron"),
+        18 => (15, "prism"),
+        19 => (13, "pyramid"),
+        _ => return None,
+    })
+}
+
+/// The reason a binary file is refused.
+const BINARY: &str = "a binary .msh file: only ASCII is read (save with `gmsh -save -format msh41` without -bin, or Mesh.Binary = 0)";
+
+/// The error for a binary Gmsh file (its header's file type 1), read from the first
+/// bytes, when the file is not text.
+fn binary(path: &Path) -> Option<InputError> {
+    use std::io::Read;
+    let mut head = Vec::new();
+    std::fs::File::open(path)
+        .ok()?
+        .take(64)
+        .read_to_end(&mut head)
+        .ok()?;
+    let head = String::from_utf8_lossy(&head);
+    let mut lines = head.lines();
+    let is_binary = lines.next()?.trim() == "$MeshFormat"
+        && lines.next()?.split_ascii_whitespace().nth(1) == Some("1");
+    is_binary.then(|| InputError::new(path, 2, BINARY))
+}
+
+/// What is built while reading.
+struct Reader<'a, 'p> {
+    s: Stream<'a>,
+    input: Input,
+    seg_lines: Vec<u32>,
+    /// Cells refused, by name, with their counts and the line of the first.
+    refused: Vec<(&'static str, usize, usize)>,
+    path: &'p Path,
+}
+
+pub(super) fn read(path: &Path) -> Result<Input, InputError> {
+    let text = super::read_text(path).map_err(|e| binary(path).unwrap_or(e))?;
+    let mut r = Reader {
+        s: Stream::new(&text, 0, None, path),
+        input: Input {
+            dim: 3,
+            index_base: 1,
+            point_file: path.to_path_buf(),
+            tet_file: path.to_path_buf(),
+            ..Default::default()
+        },
+        seg_lines: Vec::new(),
+        refused: Vec::new(),
+        path,
+    };
+    let mut version = None;
+    while let Some((line, key)) = r.s.next() {
+        match key {
+            "$MeshFormat" => version = Some(r.format()?),
+            "$Nodes" if version == Some(2) => r.nodes_22()?,
+            "$Nodes" if version == Some(4) => r.nodes_41()?,
+            "$Elements" if version == Some(2) => r.elements_22()?,
+            "$Elements" if version == Some(4) => r.elements_41()?,
+            "$Nodes" | "$Elements" => {
+                return Err(r.err(line, format!("{key} before $MeshFormat")));
+            }
+            k if k.starts_with('$') && !k.starts_with("$End") => r.skip(line, k)?,
+            other => {
+                return Err(r.err(line, format!("{} outside a section", super::quote(other))));
+            }
+        }
+        if matches!(key, "$Nodes" | "$Elements") {
+            r.end(key)?;
+        }
+    }
+    if version.is_none() {
+        return Err(r.err(0, "no $MeshFormat section: not a Gmsh file".into()));
+    }
+    if r.input.points.is_empty() {
+        return Err(r.err(0, "no nodes ($Nodes section)".into()));
+    }
+    if let Some(&(_, _, first)) = r.refused.first() {
+        let all: Vec<String> = r
+            .refused
+            .iter()
+            .map(|(n, k, _)| format!("{k} {n}"))
+            .collect();
+        return Err(r.err(
+            first,
+            format!(
+                "{} element(s) besides tetrahedra, triangles and lines: only those are read",
+                all.join(", ")
+            ),
+        ));
+    }
+    check_segments(&r.input.segments, &r.seg_lines, 1, path)?;
+    Ok(r.input)
+}
+
+impl Reader<'_, '_> {
+    fn err(&self, line: usize, message: String) -> InputError {
+        InputError::new(self.path, line, message)
+    }
+
+    /// An integer token.
+    fn int(&mut self, what: &str) -> Result<(usize, i64), InputError> {
+        let (line, tok) = self.s.want(what)?;
+        Ok((line, parse_int(tok, self.path, line, what)?))
+    }
+
+    /// A count: a non-negative integer.
+    fn count(&mut self, what: &str) -> Result<usize, InputError> {
+        let (line, k) = self.int(what)?;
+        usize::try_from(k).map_err(|_| self.err(line, format!("negative {what}")))
+    }
+
+    /// `$MeshFormat`: the major version (2 or 4), ASCII only.
+    fn format(&mut self) -> Result<u8, InputError> {
+        let (l, v) = self.s.want("the format version")?;
+        let major = match v {
+            "2.2" => 2,
+            "4.1" => 4,
+            other => {
+                return Err(self.err(
+                    l,
+                    format!(
+                        "Gmsh format {}: only 2.2 and 4.1 are read",
+                        super::quote(other)
+                    ),
+                ));
+            }
+        };
+        let (l, kind) = self.int("the file type")?;
+        if kind != 0 {
+            return Err(self.err(l, BINARY.into()));
+        }
+        self.s.want("the data size")?;
+        self.end("$MeshFormat")?;
+        Ok(major)
+    }
+
+    /// The `$End…` of `section`.
+    fn end(&mut self, section: &str) -> Result<(), InputError> {
+        let want = format!("$End{}", &section[1..]);
+        let (l, tok) = self.s.want(&want)?;
+        if tok != want {
+            return Err(self.err(
+                l,
+                format!("{} where {want} was expected", super::quote(tok)),
+            ));
+        }
+        Ok(())
+    }
+
+    /// Skips a section this reader does not use.
+    fn skip(&mut self, line: usize, section: &str) -> Result<(), InputError> {
+        let want = format!("$End{}", &section[1..]);
+        while let Some((_, tok)) = self.s.next() {
+            if tok == want {
+                return Ok(());
+            }
+        }
+        Err(self.err(line, format!("{section} has no {want}")))
+    }
+
+    /// One node: its tag must be the next of `1..=N`.
+    fn node(
+        &mut self,
+        line: usize,
+        tag: i64,
+        p: crate::geom::Point3,
+        at: usize,
+    ) -> Result<(), InputError> {
+        let k = self.input.points.len();
+        if tag != k as i64 + 1 {
+            return Err(self.err(
+                line,
+                format!(
+                    "node tag {tag} where {} was expected: node tags must be 1..N in order (let Gmsh renumber the nodes)",
+                    k + 1
+                ),
+            ));
+        }
+        self.input.points.push(p);
+        self.input.point_lines.push(at);
+        Ok(())
+    }
+
+    fn nodes_22(&mut self) -> Result<(), InputError> {
+        for _ in 0..self.count("the number of nodes")? {
+            let (line, tag) = self.int("a node tag")?;
+            let (at, p) = self.s.point(3)?;
+            self.node(line, tag, p, at)?;
+        }
+        Ok(())
+    }
+
+    fn nodes_41(&mut self) -> Result<(), InputError> {
+        let blocks = self.count("the number of entity blocks")?;
+        for _ in 0..3 {
+            self.int("the node counts of $Nodes")?;
+        }
+        for _ in 0..blocks {
+            self.int("an entity dimension")?;
+            self.int("an entity tag")?;
+            let (l, parametric) = self.int("the parametric flag")?;
+            if parametric != 0 {
+                return Err(self.err(l, "parametric nodes are not read".into()));
+            }
+            let mut tags = Vec::new();
+            for _ in 0..self.count("the number of nodes in a block")? {
+                tags.push(self.int("a node tag")?);
+            }
+            for (line, tag) in tags {
+                let (at, p) = self.s.point(3)?;
+                self.node(line, tag, p, at)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// One element of `kind` with its tag, region and node tags read from the stream.
+    fn element(&mut self, line: usize, tag: i64, kind: i64, region: i64) -> Result<(), InputError> {
+        let Some((n, name)) = element_nodes(kind) else {
+            return Err(self.err(line, format!("element {tag} has unknown type {kind}")));
+        };
+        let mut corners = Vec::with_capacity(n);
+        for _ in 0..n {
+            let (l, t) = self.int("a node tag of an element")?;
+            corners.push(vertex_ref(t, 1, self.input.points.len(), self.path, l)?);
+        }
+        let tag_u32 = u32::try_from(tag)
+            .map_err(|_| self.err(line, format!("element tag {tag} is out of range")))?;
+        match name {
+            "tetrahedron" => {
+                self.input
+                    .tets
+                    .push([corners[0], corners[1], corners[2], corners[3]]);
+                self.input.tet_lines.push(line as u32);
+                self.input.tet_labels.push(tag_u32);
+                self.input.regions.push(region);
+            }
+            "triangle" => self.input.faces.push([corners[0], corners[1], corners[2]]),
+            "line" => {
+                self.input.segments.push([corners[0], corners[1]]);
+                self.seg_lines.push(line as u32);
+            }
+            "point" => {}
+            other => match self.refused.iter_mut().find(|(n, _, _)| *n == other) {
+                Some((_, k, _)) => *k += 1,
+                None => self.refused.push((other, 1, line)),
+            },
+        }
+        Ok(())
+    }
+
+    fn elements_22(&mut self) -> Result<(), InputError> {
+        for _ in 0..self.count("the number of elements")? {
+            let (line, tag) = self.int("an element tag")?;
+            let (_, kind) = self.int("an element type")?;
+            let mut tags = Vec::new();
+            for _ in 0..self.count("the number of tags")? {
+                tags.push(self.int("a tag")?.1);
+            }
+            self.element(line, tag, kind, tags.first().copied().unwrap_or(0))?;
+        }
+        Ok(())
+    }
+
+    fn elements_41(&mut self) -> Result<(), InputError> {
+        let blocks = self.count("the number of entity blocks")?;
+        for _ in 0..3 {
+            self.int("the element counts of $Elements")?;
+        }
+        for _ in 0..blocks {
+            self.int("an entity dimension")?;
+            let (_, entity) = self.int("an entity tag")?;
+            let (_, kind) = self.int("an element type")?;
+            for _ in 0..self.count("the number of elements in a block")? {
+                let (line, tag) = self.int("an element tag")?;
+                self.element(line, tag, kind, entity)?;
+            }
+        }
+        Ok(())
+    }
+}
