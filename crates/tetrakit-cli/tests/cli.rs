@@ -287,7 +287,7 @@ fn check_reorients_and_writes_problem_fields_for_a_viewer() {
 }
 
 /// Meshes written by the real Gmsh (a box with a spherical hole, first and second order,
-/// `.msh` 2.2 and 4.1, and Medit `.mesh`) read with the same verdict and the same
+/// `.msh` 2.2, 4.1 and 4.1 binary, and Medit `.mesh`) read with the same verdict and the same
 /// tetrahedra; a tetrahedron turned inside out in the `.msh` is named by its element tag.
 /// Needs `gmsh` on the PATH (`.ci/run` installs it and sets `TETRAKIT_REQUIRE_GMSH`).
 #[test]
@@ -309,6 +309,8 @@ fn gmsh_meshes_read_with_one_verdict() {
         ("b22.msh", &["-format", "msh22"][..]),
         ("b41.msh", &["-format", "msh41"]),
         ("b2.msh", &["-format", "msh41", "-order", "2"]),
+        ("bbin.msh", &["-format", "msh41", "-bin"]),
+        ("b2bin.msh", &["-format", "msh41", "-bin", "-order", "2"]),
         ("b.mesh", &["-format", "mesh"]),
     ] {
         let out = d.join(name);

@@ -11,14 +11,51 @@ const VTK4: &str = "# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_G
 const VTK5: &str = "# vtk DataFile Version 5.1\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 5 double\n0 0 0 1 0 0 0 1 0\n0 0 1 1 1 1\nCELLS 4 11\nOFFSETS vtktypeint64\n0 4 8 11\nCONNECTIVITY vtktypeint64\n0 1 2 3\n1 2 3 4\n0 1 2\nCELL_TYPES 3\n10 10 5\n";
 const MSH22: &str = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n1\n3 7 \"solid\"\n$EndPhysicalNames\n$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 1 1\n$EndNodes\n$Elements\n5\n1 15 2 0 1 1\n2 1 2 0 1 1 5\n3 2 2 0 1 1 2 3\n4 4 2 7 1 1 2 3 4\n5 11 2 7 1 2 3 4 5 1 1 1 1 1 1\n$EndElements\n";
 const MSH41: &str = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n0 0 0 1\n1 0 0 0 1 1 1 0 0\n$EndEntities\n$Nodes\n2 5 1 5\n3 1 0 3\n1\n2\n3\n0 0 0\n1 0 0\n0 1 0\n3 1 0 2\n4\n5\n0 0 1\n1 1 1\n$EndNodes\n$Elements\n3 4 1 4\n1 2 1 1\n1 1 5\n2 3 2 1\n2 1 2 3\n3 1 4 2\n3 1 2 3 4\n4 2 3 4 5\n$EndElements\n";
+/// A binary Gmsh 4.1 file (as `gmsh -bin` writes it): five nodes in one block, an empty
+/// `$Entities`, two tetrahedra and a triangle.
+fn msh41_binary() -> Vec<u8> {
+    let mut b = b"$MeshFormat\n4.1 1 8\n".to_vec();
+    b.extend(1i32.to_le_bytes());
+    b.extend(b"\n$EndMeshFormat\n$Entities\n");
+    (0..4).for_each(|_| b.extend(0u64.to_le_bytes()));
+    b.extend(b"\n$EndEntities\n$Nodes\n");
+    let size = |b: &mut Vec<u8>, v: &[u64]| v.iter().for_each(|x| b.extend(x.to_le_bytes()));
+    let int = |b: &mut Vec<u8>, v: &[i32]| v.iter().for_each(|x| b.extend(x.to_le_bytes()));
+    size(&mut b, &[1, 5, 1, 5]);
+    int(&mut b, &[3, 1, 0]);
+    size(&mut b, &[5, 1, 2, 3, 4, 5]);
+    for p in [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [0.0, 0.0, 1.0],
+        [1.0f64, 1.0, 1.0],
+    ] {
+        p.iter().for_each(|x| b.extend(x.to_le_bytes()));
+    }
+    b.extend(b"\n$EndNodes\n$Elements\n");
+    size(&mut b, &[2, 3, 1, 3]);
+    int(&mut b, &[2, 1, 2]);
+    size(&mut b, &[1, 1, 1, 2, 3]);
+    int(&mut b, &[3, 1, 4]);
+    size(&mut b, &[2, 2, 1, 2, 3, 4, 3, 2, 3, 4, 5]);
+    b.extend(b"\n$EndElements\n");
+    b
+}
+
 const MESH: &str = "MeshVersionFormatted 2\nDimension 3\nVertices\n5\n0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\n1 1 1 1\nTetrahedra\n2\n1 2 3 4 0\n2 3 4 5 0\nTriangles\n1\n1 2 3 0\nEdges\n1\n1 5 0\nCorners\n1\n1\nEnd\n";
 
 fn write(name: &str, text: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("tetrakit-malformed-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let p = dir.join(name);
+    let p = dir_file(name);
     std::fs::write(&p, text).unwrap();
     p
+}
+
+/// The path of `name` in this run's directory.
+fn dir_file(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("tetrakit-malformed-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir.join(name)
 }
 
 /// A valid file with one token replaced, one line dropped or duplicated, or text appended.
@@ -98,6 +135,19 @@ proptest! {
             if let Err(e) = read_input(&write(name, text)) {
                 prop_assert!(e.file.ends_with(name) && e.line <= text.lines().count());
             }
+        }
+    }
+
+    #[test]
+    fn damaged_binary_gmsh_files_never_panic(at in 0usize..400, byte in any::<u8>(), cut in 0usize..600) {
+        let mut b = msh41_binary();
+        let at = at % b.len();
+        b[at] = byte;
+        b.truncate(cut.max(1));
+        let p = dir_file("mb.msh");
+        std::fs::write(&p, &b).unwrap();
+        if let Err(e) = read_input(&p) {
+            prop_assert!(e.file.ends_with("mb.msh") && e.line <= 1 + b.iter().filter(|&&c| c == b'\n').count());
         }
     }
 
@@ -189,7 +239,13 @@ fn gmsh_files_read_and_fail_with_the_line() {
             12,
             "node tag 7 where 3 was expected",
         ),
-        (MSH22, "2.2 0 8", "2.2 1 8", 2, "a binary .msh file"),
+        (
+            MSH22,
+            "2.2 0 8",
+            "2.2 1 8",
+            2,
+            "binary Gmsh header '2.2 1 8'",
+        ),
         (MSH22, "2.2 0 8", "3.0 0 8", 2, "only 2.2 and 4.1"),
         (
             MSH22,
@@ -220,6 +276,38 @@ fn gmsh_files_read_and_fail_with_the_line() {
             e.line == line && e.message.contains(needle),
             "{from} -> {to}: {e}"
         );
+    }
+}
+
+/// Binary Gmsh 4.1 reads the same cells as ASCII; a count beyond the file, a node out of
+/// range and a big-endian mark are errors with a reason.
+#[test]
+fn binary_gmsh_files_read_and_fail() {
+    let p = dir_file("ok.msh");
+    let b = msh41_binary();
+    std::fs::write(&p, &b).unwrap();
+    let input = read_input(&p).unwrap();
+    assert_eq!(input.tets, vec![[0, 1, 2, 3], [1, 2, 3, 4]]);
+    assert_eq!((input.tet_label(1), input.regions.clone()), (3, vec![1, 1]));
+    assert_eq!(input.faces, vec![[0, 1, 2]]);
+    let at = |pat: &[u8]| b.windows(pat.len()).position(|w| w == pat).unwrap();
+    let mut big = b.clone();
+    let k = at(b"$Nodes\n") + 7;
+    big[k..k + 8].copy_from_slice(&u64::MAX.to_le_bytes());
+    let mut far = b.clone();
+    let k = far.len() - 14 - 8;
+    far[k..k + 8].copy_from_slice(&9u64.to_le_bytes());
+    let mut endian = b.clone();
+    let k = at(b"4.1 1 8\n") + 8;
+    endian[k..k + 4].copy_from_slice(&1i32.to_be_bytes());
+    for (bytes, needle) in [
+        (big, "more than the rest of the file holds"),
+        (far, "vertex 9 is out of range"),
+        (endian, "big-endian"),
+    ] {
+        std::fs::write(&p, &bytes).unwrap();
+        let e = read_input(&p).unwrap_err();
+        assert!(e.message.contains(needle), "{e}");
     }
 }
 

@@ -1,19 +1,20 @@
-//! Gmsh `.msh`, ASCII, in the two layouts Gmsh and meshio write: 2.2 (`$Nodes` as
+//! Gmsh `.msh` in ASCII, in the two layouts Gmsh and meshio write: 2.2 (`$Nodes` as
 //! `tag x y z` lines, `$Elements` as `tag type ntags tags… nodes…`) and 4.1 (entity
-//! blocks: a block's node tags, then its coordinates; a block's elements, each a tag and
-//! its nodes). Read: 4-node tetrahedra (type 4) and the corners of 10-node ones (type 11:
-//! the first four nodes are the corners), triangles (2, and the corners of 9) and lines
-//! (1, and the corners of 8); points (15) are ignored. Each tetrahedron keeps its region
-//! ([`Input::regions`]): its first tag in 2.2 (the physical group, as Gmsh writes them),
-//! the entity tag of its block in 4.1. Any other element
-//! (quadrangles, hexahedra, prisms, pyramids, higher orders) is an error that counts
-//! them, at the line of the first. Other sections (`$PhysicalNames`, `$Entities`, `$NodeData`, …) are skipped.
+//! blocks: a block's node tags, then its coordinates; a block's elements, each a tag
+//! and its nodes). Read: 4-node tetrahedra (type 4) and the corners of 10-node ones
+//! (type 11: the first four nodes are the corners), triangles (2, and the corners of 9)
+//! and lines (1, and the corners of 8); points (15) are ignored. Each tetrahedron keeps
+//! its region ([`Input::regions`]): its first tag in 2.2 (the physical group, as Gmsh
+//! writes them), the entity tag of its block in 4.1. Any other element (quadrangles,
+//! hexahedra, prisms, pyramids, higher orders) is an error that counts them, at the
+//! line of the first. Other sections (`$PhysicalNames`, `$Entities`, `$NodeData`, …)
+//! are skipped.
 //!
-//! Node tags must be `1..=N` in the order of the file (what Gmsh writes unless told not to
-//! renumber), so that messages name vertices by their tags; tetrahedra are named by their
-//! element tags. Binary files (`file-type 1`) are refused with a reason. Counts are
-//! checked against what is read, never used to size an allocation; every error names the
-//! line.
+//! Node tags must be `1..=N` in the order of the file (what Gmsh writes unless told not
+//! to renumber), so that messages name vertices by their tags; tetrahedra are named by
+//! their element tags. Binary 4.1 files (`file-type 1`) are read by
+//! `io::gmsh_binary` (chosen by [`is_binary`]); binary 2.2 is refused with a reason. Counts are checked
+//! against what is read, never used to size an allocation; every error names the line.
 
 use super::stream::Stream;
 use super::{Input, InputError, check_segments, parse_int, vertex_ref};
@@ -21,7 +22,7 @@ use std::path::Path;
 
 /// Nodes of a Gmsh element type, for the types this reader knows: what it keeps, and
 /// the names of the cells it refuses.
-fn element_nodes(kind: i64) -> Option<(usize, &'static str)> {
+pub(super) fn element_nodes(kind: i64) -> Option<(usize, &'static str)> {
     Some(match kind {
         1 => (2, "line"),
         2 => (3, "triangle"),
@@ -46,50 +47,38 @@ fn element_nodes(kind: i64) -> Option<(usize, &'static str)> {
     })
 }
 
-/// The reason a binary file is refused.
-const BINARY: &str = "a binary .msh file: only ASCII is read (save with `gmsh -save -format msh41` without -bin, or Mesh.Binary = 0)";
-
-/// The error for a binary Gmsh file (its header's file type 1), read from the first
-/// bytes, when the file is not text.
-fn binary(path: &Path) -> Option<InputError> {
+/// True when the file's header says binary (file type 1), read from its first bytes.
+pub(super) fn is_binary(path: &Path) -> bool {
     use std::io::Read;
     let mut head = Vec::new();
-    std::fs::File::open(path)
-        .ok()?
-        .take(64)
-        .read_to_end(&mut head)
-        .ok()?;
+    let read = std::fs::File::open(path).and_then(|f| f.take(64).read_to_end(&mut head));
     let head = String::from_utf8_lossy(&head);
     let mut lines = head.lines();
-    let is_binary = lines.next()?.trim() == "$MeshFormat"
-        && lines.next()?.split_ascii_whitespace().nth(1) == Some("1");
-    is_binary.then(|| InputError::new(path, 2, BINARY))
+    read.is_ok()
+        && lines.next().map(str::trim) == Some("$MeshFormat")
+        && lines.next().and_then(|l| l.split_ascii_whitespace().nth(1)) == Some("1")
 }
 
-/// What is built while reading.
-struct Reader<'a, 'p> {
-    s: Stream<'a>,
-    input: Input,
+/// What is built while reading, by the ASCII and the binary reader alike.
+pub(super) struct Cells<'p> {
+    pub(super) input: Input,
     seg_lines: Vec<u32>,
     /// Cells refused, by name, with their counts and the line of the first.
     refused: Vec<(&'static str, usize, usize)>,
-    path: &'p Path,
+    pub(super) path: &'p Path,
+}
+
+/// The ASCII reader: a token stream and what it has built.
+struct Reader<'a, 'p> {
+    s: Stream<'a>,
+    cells: Cells<'p>,
 }
 
 pub(super) fn read(path: &Path) -> Result<Input, InputError> {
-    let text = super::read_text(path).map_err(|e| binary(path).unwrap_or(e))?;
+    let text = super::read_text(path)?;
     let mut r = Reader {
         s: Stream::new(&text, 0, None, path),
-        input: Input {
-            dim: 3,
-            index_base: 1,
-            point_file: path.to_path_buf(),
-            tet_file: path.to_path_buf(),
-            ..Default::default()
-        },
-        seg_lines: Vec::new(),
-        refused: Vec::new(),
-        path,
+        cells: Cells::new(path),
     };
     let mut version = None;
     while let Some((line, key)) = r.s.next() {
@@ -114,36 +103,120 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
     if version.is_none() {
         return Err(r.err(0, "no $MeshFormat section: not a Gmsh file".into()));
     }
-    if r.input.points.is_empty() {
-        return Err(r.err(0, "no nodes ($Nodes section)".into()));
+    r.cells.finish()
+}
+
+impl<'p> Cells<'p> {
+    pub(super) fn new(path: &'p Path) -> Self {
+        Cells {
+            input: Input {
+                dim: 3,
+                index_base: 1,
+                point_file: path.to_path_buf(),
+                tet_file: path.to_path_buf(),
+                ..Default::default()
+            },
+            seg_lines: Vec::new(),
+            refused: Vec::new(),
+            path,
+        }
     }
-    if let Some(&(_, _, first)) = r.refused.first() {
-        let all: Vec<String> = r
-            .refused
-            .iter()
-            .map(|(n, k, _)| format!("{k} {n}"))
-            .collect();
-        return Err(r.err(
-            first,
-            format!(
-                "{} element(s) besides tetrahedra, triangles and lines: only those are read",
-                all.join(", ")
-            ),
-        ));
+
+    fn err(&self, line: usize, message: String) -> InputError {
+        InputError::new(self.path, line, message)
     }
-    check_segments(&r.input.segments, &r.seg_lines, 1, path)?;
-    Ok(r.input)
+
+    /// The input, once every section is read: some nodes, no refused cell, segments
+    /// checked.
+    pub(super) fn finish(self) -> Result<Input, InputError> {
+        if self.input.points.is_empty() {
+            return Err(self.err(0, "no nodes ($Nodes section)".into()));
+        }
+        if let Some(&(_, _, first)) = self.refused.first() {
+            let all: Vec<String> = self
+                .refused
+                .iter()
+                .map(|(n, k, _)| format!("{k} {n}"))
+                .collect();
+            return Err(self.err(
+                first,
+                format!(
+                    "{} element(s) besides tetrahedra, triangles and lines: only those are read",
+                    all.join(", ")
+                ),
+            ));
+        }
+        check_segments(&self.input.segments, &self.seg_lines, 1, self.path)?;
+        Ok(self.input)
+    }
+
+    /// One node: its tag must be the next of `1..=N`.
+    pub(super) fn node(
+        &mut self,
+        line: usize,
+        tag: i64,
+        p: crate::geom::Point3,
+        at: usize,
+    ) -> Result<(), InputError> {
+        let k = self.input.points.len();
+        if tag != k as i64 + 1 {
+            return Err(self.err(
+                line,
+                format!(
+                    "node tag {tag} where {} was expected: node tags must be 1..N in order (let Gmsh renumber the nodes)",
+                    k + 1
+                ),
+            ));
+        }
+        self.input.points.push(p);
+        self.input.point_lines.push(at);
+        Ok(())
+    }
+
+    /// One element: its `name` (from [`element_nodes`]), tag, node indices and region.
+    pub(super) fn keep(
+        &mut self,
+        line: usize,
+        tag: i64,
+        name: &'static str,
+        corners: &[u32],
+        region: i64,
+    ) -> Result<(), InputError> {
+        let label = u32::try_from(tag)
+            .map_err(|_| self.err(line, format!("element tag {tag} is out of range")))?;
+        match name {
+            "tetrahedron" => {
+                let i = &mut self.input;
+                i.tets
+                    .push([corners[0], corners[1], corners[2], corners[3]]);
+                i.tet_lines.push(line as u32);
+                i.tet_labels.push(label);
+                i.regions.push(region);
+            }
+            "triangle" => self.input.faces.push([corners[0], corners[1], corners[2]]),
+            "line" => {
+                self.input.segments.push([corners[0], corners[1]]);
+                self.seg_lines.push(line as u32);
+            }
+            "point" => {}
+            other => match self.refused.iter_mut().find(|(n, _, _)| *n == other) {
+                Some((_, k, _)) => *k += 1,
+                None => self.refused.push((other, 1, line)),
+            },
+        }
+        Ok(())
+    }
 }
 
 impl Reader<'_, '_> {
     fn err(&self, line: usize, message: String) -> InputError {
-        InputError::new(self.path, line, message)
+        self.cells.err(line, message)
     }
 
     /// An integer token.
     fn int(&mut self, what: &str) -> Result<(usize, i64), InputError> {
         let (line, tok) = self.s.want(what)?;
-        Ok((line, parse_int(tok, self.path, line, what)?))
+        Ok((line, parse_int(tok, self.cells.path, line, what)?))
     }
 
     /// A count: a non-negative integer.
@@ -170,7 +243,10 @@ impl Reader<'_, '_> {
         };
         let (l, kind) = self.int("the file type")?;
         if kind != 0 {
-            return Err(self.err(l, BINARY.into()));
+            return Err(self.err(
+                l,
+                format!("file type {kind}: 0 (ASCII) or 1 (binary) expected"),
+            ));
         }
         self.s.want("the data size")?;
         self.end("$MeshFormat")?;
@@ -201,34 +277,11 @@ impl Reader<'_, '_> {
         Err(self.err(line, format!("{section} has no {want}")))
     }
 
-    /// One node: its tag must be the next of `1..=N`.
-    fn node(
-        &mut self,
-        line: usize,
-        tag: i64,
-        p: crate::geom::Point3,
-        at: usize,
-    ) -> Result<(), InputError> {
-        let k = self.input.points.len();
-        if tag != k as i64 + 1 {
-            return Err(self.err(
-                line,
-                format!(
-                    "node tag {tag} where {} was expected: node tags must be 1..N in order (let Gmsh renumber the nodes)",
-                    k + 1
-                ),
-            ));
-        }
-        self.input.points.push(p);
-        self.input.point_lines.push(at);
-        Ok(())
-    }
-
     fn nodes_22(&mut self) -> Result<(), InputError> {
         for _ in 0..self.count("the number of nodes")? {
             let (line, tag) = self.int("a node tag")?;
             let (at, p) = self.s.point(3)?;
-            self.node(line, tag, p, at)?;
+            self.cells.node(line, tag, p, at)?;
         }
         Ok(())
     }
@@ -251,7 +304,7 @@ impl Reader<'_, '_> {
             }
             for (line, tag) in tags {
                 let (at, p) = self.s.point(3)?;
-                self.node(line, tag, p, at)?;
+                self.cells.node(line, tag, p, at)?;
             }
         }
         Ok(())
@@ -265,31 +318,15 @@ impl Reader<'_, '_> {
         let mut corners = Vec::with_capacity(n);
         for _ in 0..n {
             let (l, t) = self.int("a node tag of an element")?;
-            corners.push(vertex_ref(t, 1, self.input.points.len(), self.path, l)?);
+            corners.push(vertex_ref(
+                t,
+                1,
+                self.cells.input.points.len(),
+                self.cells.path,
+                l,
+            )?);
         }
-        let tag_u32 = u32::try_from(tag)
-            .map_err(|_| self.err(line, format!("element tag {tag} is out of range")))?;
-        match name {
-            "tetrahedron" => {
-                self.input
-                    .tets
-                    .push([corners[0], corners[1], corners[2], corners[3]]);
-                self.input.tet_lines.push(line as u32);
-                self.input.tet_labels.push(tag_u32);
-                self.input.regions.push(region);
-            }
-            "triangle" => self.input.faces.push([corners[0], corners[1], corners[2]]),
-            "line" => {
-                self.input.segments.push([corners[0], corners[1]]);
-                self.seg_lines.push(line as u32);
-            }
-            "point" => {}
-            other => match self.refused.iter_mut().find(|(n, _, _)| *n == other) {
-                Some((_, k, _)) => *k += 1,
-                None => self.refused.push((other, 1, line)),
-            },
-        }
-        Ok(())
+        self.cells.keep(line, tag, name, &corners, region)
     }
 
     fn elements_22(&mut self) -> Result<(), InputError> {

@@ -9,6 +9,7 @@
 //! size an allocation.
 
 mod gmsh;
+mod gmsh_binary;
 mod json;
 mod medit;
 mod obj;
@@ -121,7 +122,7 @@ impl Input {
 
 /// Reads `path`, choosing the format by extension: `.node` (with sibling `.edge`, `.ele`
 /// and `.face` when present), `.edge`/`.ele`/`.face` (with the sibling `.node`), `.obj`,
-/// `.off`, `.mesh` (Medit), `.msh` (Gmsh 2.2 and 4.1, ASCII), `.vtk` (legacy ASCII),
+/// `.off`, `.mesh` (Medit), `.msh` (Gmsh 2.2 and 4.1 ASCII, 4.1 binary), `.vtk` (legacy ASCII),
 /// `.json`, `.xyz`/`.txt`.
 ///
 /// ```
@@ -147,6 +148,7 @@ pub fn read_input(path: &Path) -> Result<Input, InputError> {
         "off" => off::read(path)?,
         "mesh" => medit::read(path)?,
         "vtk" => vtk::read(path)?,
+        "msh" if gmsh::is_binary(path) => gmsh_binary::read(path)?,
         "msh" => gmsh::read(path)?,
         "json" => json::read(path)?,
         "xyz" | "txt" => read_xyz(path)?,
@@ -201,10 +203,8 @@ pub fn read_polyhedron(path: &Path) -> Result<(Input, crate::mesh::Polyhedron), 
 /// The largest input file read (bytes): 4 GiB, about 40 million points as text.
 pub const MAX_INPUT_BYTES: u64 = 4 << 30;
 
-/// Reads a text input: a regular file (not a FIFO or a device, which could be read
-/// forever) of at most [`MAX_INPUT_BYTES`], UTF-8, a leading byte-order mark dropped.
-/// Line ends may be LF or CR LF; a file whose only line ends are CR is refused by name.
-pub(crate) fn read_text(path: &Path) -> Result<String, InputError> {
+/// The bytes of a regular file of at most [`MAX_INPUT_BYTES`].
+pub(crate) fn read_bytes(path: &Path) -> Result<Vec<u8>, InputError> {
     let cannot = |e: std::io::Error| InputError::new(path, 0, format!("cannot read: {e}"));
     let meta = std::fs::metadata(path).map_err(cannot)?;
     if !meta.is_file() {
@@ -221,7 +221,14 @@ pub(crate) fn read_text(path: &Path) -> Result<String, InputError> {
             ),
         ));
     }
-    let bytes = std::fs::read(path).map_err(cannot)?;
+    std::fs::read(path).map_err(cannot)
+}
+
+/// Reads a text input: a regular file (not a FIFO or a device, which could be read
+/// forever) of at most [`MAX_INPUT_BYTES`], UTF-8, a leading byte-order mark dropped.
+/// Line ends may be LF or CR LF; a file whose only line ends are CR is refused by name.
+pub(crate) fn read_text(path: &Path) -> Result<String, InputError> {
+    let bytes = read_bytes(path)?;
     let mut text = String::from_utf8(bytes).map_err(|e| {
         let at = e.utf8_error().valid_up_to();
         let line = 1 + e.as_bytes()[..at].iter().filter(|&&b| b == b'\n').count();
