@@ -134,7 +134,7 @@ struct CheckArgs {
 
 #[derive(Args)]
 struct MintetraArgs {
-    /// A polyhedron: .off, .obj with `f` lines, .face (with .node) or .json with "faces".
+    /// A polyhedron: .off, .stl, .obj with `f` lines, .face (with .node) or .json with "faces".
     input: PathBuf,
     /// Print one JSON object on stdout.
     #[arg(long)]

@@ -152,7 +152,7 @@ proptest! {
     }
 
     #[test]
-    fn arbitrary_text_never_panics(text in "[ -~\n]{0,200}", ext in prop::sample::select(vec!["node", "edge", "ele", "obj", "json", "xyz", "mesh", "vtk", "msh"])) {
+    fn arbitrary_text_never_panics(text in "[ -~\n]{0,200}", ext in prop::sample::select(vec!["node", "edge", "ele", "obj", "json", "xyz", "mesh", "vtk", "msh", "stl"])) {
         write("a.node", NODE);
         let p = write(&format!("a.{ext}"), &text);
         let _ = read_input(&p);
@@ -309,6 +309,71 @@ fn binary_gmsh_files_read_and_fail() {
         let e = read_input(&p).unwrap_err();
         assert!(e.message.contains(needle), "{e}");
     }
+}
+
+/// STL, ASCII and binary: a tetrahedron's four triangles by coordinates read as one
+/// polyhedron of four vertices (corners merged exactly), the same in both; damage is one
+/// error naming the line.
+#[test]
+fn stl_files_read_as_polyhedra_and_fail_with_the_line() {
+    let v = [
+        [0.0f32, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [0.0, 0.0, 1.0],
+    ];
+    let faces = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+    let mut text = String::from("solid t\n");
+    let mut bin = vec![0u8; 80];
+    bin.extend(4u32.to_le_bytes());
+    for f in faces {
+        text.push_str("facet normal 0 0 0\nouter loop\n");
+        bin.extend([0u8; 12]);
+        for k in f {
+            let p = v[k];
+            text.push_str(&format!("vertex {} {} {}\n", p[0], p[1], p[2]));
+            p.iter().for_each(|x| bin.extend(x.to_le_bytes()));
+        }
+        text.push_str("endloop\nendfacet\n");
+        bin.extend([0u8; 2]);
+    }
+    text.push_str("endsolid t\n");
+    let a = tetrakit::io::read_polyhedron(&write("t.stl", &text))
+        .unwrap()
+        .1;
+    let p = dir_file("b.stl");
+    std::fs::write(&p, &bin).unwrap();
+    let b = tetrakit::io::read_polyhedron(&p).unwrap().1;
+    assert_eq!((a.points.len(), a.faces.len()), (4, 4));
+    assert_eq!((&a.points, &a.faces), (&b.points, &b.faces));
+    let cases = [
+        ("vertex 1 0 0\n", "vertex 1 x 0\n", 6, "'x' is not a number"),
+        (
+            "endloop\nendfacet\nfacet",
+            "endloop\nendfacet\nfacte",
+            9,
+            "unknown keyword 'facte'",
+        ),
+        (
+            "vertex 0 1 0\nendloop",
+            "endloop",
+            21,
+            "a facet with 2 vertices",
+        ),
+        ("endsolid t\n", "", 0, "missing 'endsolid'"),
+        ("vertex 0 1 0\n", "vertex 0 0 0\n", 4, "repeats a corner"),
+    ];
+    for (from, to, line, needle) in cases {
+        let e = read_input(&write("bad.stl", &text.replacen(from, to, 1))).unwrap_err();
+        assert!(
+            e.line == line && e.message.contains(needle),
+            "{from} -> {to}: {e}"
+        );
+    }
+    bin.pop();
+    std::fs::write(&p, &bin).unwrap();
+    let e = read_input(&p).unwrap_err();
+    assert!(e.message.contains("neither binary STL"), "{e}");
 }
 
 /// Legacy VTK in both layouts (4.x cell lists, 5.x offsets and connectivity) reads the

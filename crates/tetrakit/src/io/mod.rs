@@ -15,6 +15,7 @@ mod medit;
 mod obj;
 mod off;
 mod planar;
+mod stl;
 mod stream;
 mod tetgen;
 mod vtk;
@@ -122,7 +123,7 @@ impl Input {
 
 /// Reads `path`, choosing the format by extension: `.node` (with sibling `.edge`, `.ele`
 /// and `.face` when present), `.edge`/`.ele`/`.face` (with the sibling `.node`), `.obj`,
-/// `.off`, `.mesh` (Medit), `.msh` (Gmsh 2.2 and 4.1 ASCII, 4.1 binary), `.vtk` (legacy ASCII),
+/// `.off`, `.stl` (ASCII or binary, corners merged by exact coordinates), `.mesh` (Medit), `.msh` (Gmsh 2.2 and 4.1 ASCII, 4.1 binary), `.vtk` (legacy ASCII),
 /// `.json`, `.xyz`/`.txt`.
 ///
 /// ```
@@ -146,6 +147,7 @@ pub fn read_input(path: &Path) -> Result<Input, InputError> {
         "node" | "edge" | "ele" | "face" => tetgen::read(path, &ext)?,
         "obj" => obj::read(path)?,
         "off" => off::read(path)?,
+        "stl" => stl::read(path)?,
         "mesh" => medit::read(path)?,
         "vtk" => vtk::read(path)?,
         "msh" if gmsh::is_binary(path) => gmsh_binary::read(path)?,
@@ -157,7 +159,7 @@ pub fn read_input(path: &Path) -> Result<Input, InputError> {
                 path,
                 0,
                 format!(
-                    "unknown input format '.{ext}' (expected .node, .edge, .ele, .face, .obj, .off, .mesh, .msh, .vtk, .json, .xyz or .txt)"
+                    "unknown input format '.{ext}' (expected .node, .edge, .ele, .face, .obj, .off, .stl, .mesh, .msh, .vtk, .json, .xyz or .txt)"
                 ),
             ));
         }
