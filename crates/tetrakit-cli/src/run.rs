@@ -185,9 +185,6 @@ pub fn check(a: &crate::CheckArgs) -> CmdResult {
         }
         out!("{v}");
     } else if report.is_valid() {
-        if let Some(k) = turned {
-            out!("  {k} negatively oriented tetrahedra turned (--reorient)");
-        }
         let scope = if convex {
             "a tetrahedralization of the convex hull of its points"
         } else {
@@ -221,6 +218,9 @@ pub fn check(a: &crate::CheckArgs) -> CmdResult {
                 mesh::Report::LIMIT
             );
         }
+    }
+    if let (Some(k), false) = (turned, as_json) {
+        out!("  {k} negatively oriented tetrahedra turned (--reorient)");
     }
     Ok(Verdict::from_bool(report.is_valid()))
 }

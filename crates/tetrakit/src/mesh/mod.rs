@@ -76,13 +76,10 @@ impl Tetrahedralization {
 pub fn reorient(points: &[Point3], tets: &mut [[u32; 4]]) -> usize {
     let mut turned = 0;
     for t in tets {
-        let Some(p) = t
-            .map(|i| points.get(i as usize))
-            .into_iter()
-            .collect::<Option<Vec<_>>>()
-        else {
+        if t.iter().any(|&i| i as usize >= points.len()) {
             continue;
-        };
+        }
+        let p = t.map(|i| &points[i as usize]);
         if orient3d(p[0], p[1], p[2], p[3]) < 0 {
             t.swap(2, 3);
             turned += 1;
