@@ -7,43 +7,20 @@ use std::time::{Duration, Instant};
 use tetrakit::control::Control;
 use tetrakit::exact::{self, Domain, Options, Outcome};
 use tetrakit::io;
-use tetrakit::mesh::{Polyhedron, certify_polyhedron};
-use tetrakit::polyhedra::{self, Checks, Mintetra, generate, hard};
+use tetrakit::mesh::Polyhedron;
+use tetrakit::polyhedra::{self, Checks, generate, hard};
 
 fn shift<const N: usize>(v: &[[u32; N]], base: u32) -> Vec<[u32; N]> {
     v.iter().map(|x| x.map(|i| i + base)).collect()
-}
-
-/// What MINTETRA's answer proves about minimality.
-fn minimality(p: &Polyhedron, m: &Mintetra) -> &'static str {
-    if m.levels <= 1 && polyhedra::proper_nets_disjoint(p) {
-        "proven"
-    } else {
-        "conjectured"
-    }
 }
 
 pub fn mintetra(path: &Path, as_json: bool, output: Option<&Path>, confirm: bool) -> CmdResult {
     let start = Instant::now();
     let (input, poly) = io::read_polyhedron(path)?;
     let parsed = start.elapsed().as_secs_f64();
-    // Fast trimming (orientation checks only) whose YES the certificate below confirms;
-    // on NO, or if the certificate fails, the careful shelling mode decides.
-    let t0 = Instant::now();
-    let mut m = polyhedra::mintetra(&poly, Checks::OrientationOnly);
-    let mut algorithm = t0.elapsed().as_secs_f64();
-    let mut verify_seconds = 0.0;
-    let mut certified = false;
-    if m.yes {
-        let t1 = Instant::now();
-        certified = certify_polyhedron(&poly, &m.tets).is_ok();
-        verify_seconds = t1.elapsed().as_secs_f64();
-    }
-    if !certified {
-        let t2 = Instant::now();
-        m = polyhedra::mintetra(&poly, Checks::Shelling);
-        algorithm += t2.elapsed().as_secs_f64();
-    }
+    let (m, secs) = polyhedra::mintetra_certified(&poly).map_err(|e| {
+        CliError::internal(format!("MINTETRA's tetrahedra fail the certificate: {e}"))
+    })?;
     let base = input.index_base;
     let n = poly.points.len();
     let mut v = json!({
@@ -54,22 +31,15 @@ pub fn mintetra(path: &Path, as_json: bool, output: Option<&Path>, confirm: bool
         "levels": m.levels,
         "trims_per_level": m.trims_per_level,
         "polar_edges": shift(&m.polar_edges, base),
-        "mintetra_seconds": algorithm,
+        "mintetra_seconds": secs.trimming,
         "parse_seconds": parsed,
     });
     if m.yes {
-        if !certified {
-            let t1 = Instant::now();
-            certify_polyhedron(&poly, &m.tets).map_err(|e| {
-                CliError::internal(format!("MINTETRA's tetrahedra fail the certificate: {e}"))
-            })?;
-            verify_seconds += t1.elapsed().as_secs_f64();
-        }
-        v["verify_seconds"] = json!(verify_seconds);
+        v["verify_seconds"] = json!(secs.certificate);
         v["certified"] = json!(true);
         v["tetrahedra"] = json!(m.tets.len());
         v["tets"] = json!(shift(&m.tets, base));
-        let mut status = minimality(&poly, &m);
+        let mut status = polyhedra::minimality(&poly, &m);
         if confirm {
             match confirm_with_solver(&poly, m.tets.len()) {
                 Ok(Some((true, unique))) => {

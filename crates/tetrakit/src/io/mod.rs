@@ -389,6 +389,101 @@ pub(crate) fn check_segments(
     Ok(())
 }
 
+/// Points and 0-based index rows as an array library holds them (numpy, JSON), before
+/// any check: see [`from_arrays`].
+#[derive(Clone, Debug, Default)]
+pub struct Arrays<'a> {
+    /// The points (`z = 0` for planar ones).
+    pub points: Vec<Point3>,
+    /// 2 for planar points, 3 otherwise.
+    pub dim: usize,
+    /// Segments: two point indices each.
+    pub segments: &'a [[i64; 2]],
+    /// Triangles.
+    pub faces: &'a [[i64; 3]],
+    /// Tetrahedra.
+    pub tets: &'a [[i64; 4]],
+}
+
+/// An [`Input`] from arrays, with the checks every reader makes: at least one point,
+/// every coordinate in the exactly supported range, every index naming a point, no
+/// segment listed twice, no two points equal. `source` names the arrays in errors, whose
+/// `line` is 0 and whose message names the row (`tets[3] names vertex 12, ...`).
+///
+/// ```
+/// use std::path::Path;
+/// use tetrakit::io::{Arrays, from_arrays};
+/// let points = vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+/// let tets = [[0, 1, 2, 3]];
+/// let a = Arrays { points: points.clone(), dim: 3, tets: &tets, ..Default::default() };
+/// assert_eq!(from_arrays(Path::new("mesh"), a).unwrap().tets, vec![[0, 1, 2, 3]]);
+/// let bad = [[0, 1, 2, 4]];
+/// let a = Arrays { points, dim: 3, tets: &bad, ..Default::default() };
+/// let e = from_arrays(Path::new("mesh"), a).unwrap_err();
+/// assert_eq!(e.message, "tets[0] names vertex 4, but points are numbered 0..=3");
+/// ```
+pub fn from_arrays(source: &Path, a: Arrays<'_>) -> Result<Input, InputError> {
+    if a.points.is_empty() {
+        return Err(InputError::new(source, 0, "no points"));
+    }
+    for (k, p) in a.points.iter().enumerate() {
+        if let Some(x) = p.iter().find(|x| !coordinate_in_range(**x)) {
+            return Err(InputError::new(
+                source,
+                0,
+                format!(
+                    "points[{k}] coordinate {x} is outside the exactly supported range [2^-142, 2^201]"
+                ),
+            ));
+        }
+    }
+    let n = a.points.len();
+    let input = Input {
+        segments: index_rows(a.segments, n, "segments", source)?,
+        faces: index_rows(a.faces, n, "faces", source)?,
+        tets: index_rows(a.tets, n, "tets", source)?,
+        points: a.points,
+        dim: a.dim,
+        point_file: source.to_path_buf(),
+        tet_file: source.to_path_buf(),
+        ..Default::default()
+    };
+    check_segments(&input.segments, &vec![0; input.segments.len()], 0, source)?;
+    check_distinct_points(&input)?;
+    Ok(input)
+}
+
+/// 0-based index rows checked against `n` points.
+fn index_rows<const K: usize>(
+    rows: &[[i64; K]],
+    n: usize,
+    field: &str,
+    source: &Path,
+) -> Result<Vec<[u32; K]>, InputError> {
+    let check = |k: usize, v: i64| {
+        u32::try_from(v)
+            .ok()
+            .filter(|&v| (v as usize) < n)
+            .ok_or_else(|| {
+                let msg = format!(
+                    "{field}[{k}] names vertex {v}, but points are numbered 0..={}",
+                    n - 1
+                );
+                InputError::new(source, 0, msg)
+            })
+    };
+    rows.iter()
+        .enumerate()
+        .map(|(k, r)| {
+            let mut out = [0u32; K];
+            for (o, &v) in out.iter_mut().zip(r) {
+                *o = check(k, v)?;
+            }
+            Ok(out)
+        })
+        .collect()
+}
+
 fn check_distinct_points(input: &Input) -> Result<(), InputError> {
     let pts = &input.points;
     let mut order: Vec<u32> = (0..pts.len() as u32).collect();
@@ -397,15 +492,18 @@ fn check_distinct_points(input: &Input) -> Result<(), InputError> {
         let (a, b) = (w[0].min(w[1]) as usize, w[0].max(w[1]) as usize);
         if pts[a] == pts[b] {
             let line = |i: usize| input.point_lines.get(i).copied().unwrap_or(0);
+            let first = match line(a) {
+                0 => String::new(),
+                l => format!(" (line {l})"),
+            };
             return Err(InputError::new(
                 &input.point_file,
                 line(b),
                 format!(
-                    "points {} and {} coincide at {:?} (line {})",
+                    "points {} and {} coincide at {:?}{first}",
                     a as u32 + input.index_base,
                     b as u32 + input.index_base,
                     pts[a],
-                    line(a)
                 ),
             ));
         }

@@ -66,6 +66,66 @@ pub enum Checks {
     OrientationOnly,
 }
 
+/// What MINTETRA's answer proves about minimality: `"proven"` when Theorem 3.5 /
+/// Corollary 3.6 apply (at most one level and disjoint proper BP-nets), else
+/// `"conjectured"` (§3.5; the exact solver can confirm it).
+pub fn minimality(p: &Polyhedron, m: &Mintetra) -> &'static str {
+    if m.levels <= 1 && super::proper_nets_disjoint(p) {
+        "proven"
+    } else {
+        "conjectured"
+    }
+}
+
+/// Seconds spent by [`mintetra_certified`].
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Seconds {
+    /// Trimming (both runs when the fast one did not do).
+    pub trimming: f64,
+    /// Certificates.
+    pub certificate: f64,
+}
+
+/// MINTETRA, fast and certified: the orientation-only run ([`Checks::OrientationOnly`]),
+/// whose YES is kept once [`certify_polyhedron`](crate::mesh::certify_polyhedron)
+/// passes; on NO, or if the certificate fails, the shelling run decides, and its YES is
+/// certified too (an `Err` would be a bug in MINTETRA, with the certificate's problem).
+///
+/// ```
+/// use tetrakit::polyhedra::{Polyhedron, mintetra_certified};
+/// let pts = vec![[1.0, 0.0, 0.0], [-0.5, 0.9, 0.0], [-0.5, -0.9, 0.0], [0.0, 0.0, 1.0], [0.0, 0.0, -1.0]];
+/// let faces = vec![[0, 1, 3], [1, 2, 3], [2, 0, 3], [1, 0, 4], [2, 1, 4], [0, 2, 4]];
+/// let (m, _) = mintetra_certified(&Polyhedron::new(pts, faces).unwrap()).unwrap();
+/// assert_eq!((m.yes, m.tets.len()), (true, 2));
+/// ```
+pub fn mintetra_certified(p: &Polyhedron) -> Result<(Mintetra, Seconds), crate::mesh::Problem> {
+    let mut s = Seconds::default();
+    let timed = |f: &mut dyn FnMut() -> Mintetra, acc: &mut f64| {
+        let t = std::time::Instant::now();
+        let m = f();
+        *acc += t.elapsed().as_secs_f64();
+        m
+    };
+    let certify = |m: &Mintetra, acc: &mut f64| {
+        let t = std::time::Instant::now();
+        let ok = crate::mesh::certify_polyhedron(p, &m.tets);
+        *acc += t.elapsed().as_secs_f64();
+        ok
+    };
+    let m = timed(
+        &mut || mintetra(p, Checks::OrientationOnly),
+        &mut s.trimming,
+    );
+    if m.yes && certify(&m, &mut s.certificate).is_ok() {
+        return Ok((m, s));
+    }
+    let m = timed(&mut || mintetra(p, Checks::Shelling), &mut s.trimming);
+    if m.yes {
+        certify(&m, &mut s.certificate)?;
+    }
+    Ok((m, s))
+}
+
 /// Runs MINTETRA on a validated polyhedron, with the given [`Checks`].
 ///
 /// ```

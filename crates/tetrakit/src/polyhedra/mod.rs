@@ -20,4 +20,4 @@ mod mintetra;
 pub use crate::mesh::{Polyhedron, SurfaceError, certify_polyhedron};
 pub use bpnet::{BpNet, are_disjoint, bp_nets, is_proper, proper_nets_disjoint, strip_stacked};
 pub use graph::SurfaceGraph;
-pub use mintetra::{Checks, Mintetra, mintetra};
+pub use mintetra::{Checks, Mintetra, Seconds, minimality, mintetra, mintetra_certified};

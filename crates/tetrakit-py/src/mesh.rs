@@ -1,0 +1,123 @@
+//! `check` and `detect` (thesis ch. 2 and the mesh validator).
+
+use crate::convert::{self, Json, Rows, array, value_error};
+use numpy::{PyArray1, PyArray2, PyReadonlyArray2};
+use pyo3::prelude::*;
+use serde_json::json;
+use tetrakit::detect::{Cells, Options};
+use tetrakit::geom::Hull3;
+use tetrakit::mesh::{self, ProblemKind};
+
+type CheckOut<'py> = (
+    Json,
+    Bound<'py, PyArray2<i64>>,
+    Bound<'py, PyArray1<i32>>,
+    Bound<'py, PyArray1<i32>>,
+);
+
+/// `check(points, tets, convex, manifold, reorient)`: the report as JSON, the tets (turned
+/// where `reorient`), and the problem code of each tet and of each point (0 = none).
+#[pyfunction]
+#[pyo3(signature = (points, tets, convex=false, manifold=false, reorient=false))]
+pub fn check<'py>(
+    py: Python<'py>,
+    points: PyReadonlyArray2<'py, f64>,
+    tets: PyReadonlyArray2<'py, i64>,
+    convex: bool,
+    manifold: bool,
+    reorient: bool,
+) -> PyResult<CheckOut<'py>> {
+    let (pts, dim) = convert::points(&points, "points")?;
+    let rows = Rows {
+        tets: convert::rows(&tets, "tets")?,
+        ..Default::default()
+    };
+    let mut input = convert::input(pts, dim, &rows)?;
+    if input.tets.is_empty() {
+        return Err(value_error("no tetrahedra to check"));
+    }
+    let ctl = tetrakit::control::Control::new();
+    let (report, turned) = convert::run(py, &ctl, || {
+        let turned = reorient.then(|| mesh::reorient(&input.points, &mut input.tets));
+        let hull = convex.then(|| Hull3::new(&input.points));
+        let report = mesh::verify(&input.points, &input.tets, hull.as_ref());
+        let report = if manifold {
+            report.require_manifold()
+        } else {
+            report
+        };
+        (report, turned)
+    })?;
+    let (cells, verts) = report.fields(input.tets.len(), input.points.len());
+    let codes: serde_json::Map<String, serde_json::Value> = ProblemKind::ALL
+        .iter()
+        .map(|k| (k.to_string(), json!(k.code())))
+        .collect();
+    let v = json!({
+        "verdict": if report.is_valid() { "yes" } else { "no" },
+        "tetrahedra": input.tets.len(),
+        "vertices": input.points.len(),
+        "boundary_faces": report.boundary_faces,
+        "non_manifold_edges": report.non_manifold.len(),
+        "convex": convex,
+        "problem_count": report.problem_count,
+        "problems": report.problems,
+        "reoriented": turned,
+        "problem_codes": codes,
+        "witness": report.problems.first(),
+    });
+    Ok((
+        v.to_string(),
+        array(py, &input.tets),
+        PyArray1::from_vec(py, cells),
+        PyArray1::from_vec(py, verts),
+    ))
+}
+
+/// `detect(points, segments)`: the verdict as JSON and the cells of a YES (tetrahedra,
+/// or triangles for coplanar points; an empty `(0, 4)` array for a NO).
+#[pyfunction]
+pub fn detect<'py>(
+    py: Python<'py>,
+    points: PyReadonlyArray2<'py, f64>,
+    segments: PyReadonlyArray2<'py, i64>,
+) -> PyResult<(Json, Bound<'py, PyArray2<i64>>)> {
+    let (pts, dim) = convert::points(&points, "points")?;
+    let rows = Rows {
+        segments: convert::rows(&segments, "segments")?,
+        ..Default::default()
+    };
+    let input = convert::input(pts, dim, &rows)?;
+    if input.segments.is_empty() {
+        return Err(value_error("no segments to test"));
+    }
+    let segs: Vec<(u32, u32)> = input.segments.iter().map(|s| (s[0], s[1])).collect();
+    let ctl = tetrakit::control::Control::new();
+    let d = convert::run(py, &ctl, || {
+        tetrakit::detect::detect(&input.points, &segs, &Options::default(), &ctl)
+    })?
+    .map_err(value_error)?;
+    let mut v = json!({
+        "verdict": if d.is_yes() { "yes" } else { "no" },
+        "vertices": d.vertices,
+        "segments": d.segments,
+        "hull_vertices": d.hull_vertices,
+        "dimension": d.dimension,
+        "route": d.route,
+    });
+    let cells = match &d.result {
+        Ok(Cells::Tetrahedra(t)) => {
+            v["tetrahedra"] = json!(t.len());
+            array(py, t)
+        }
+        Ok(Cells::Triangles(t)) => {
+            v["triangles"] = json!(t.len());
+            array(py, t)
+        }
+        Err(w) => {
+            v["witness"] = json!(w);
+            array::<4>(py, &[])
+        }
+    };
+    Ok((v.to_string(), cells))
+}

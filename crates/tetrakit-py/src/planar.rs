@@ -1,0 +1,137 @@
+//! `skeleton`, `mwt` and `keil` (thesis ch. 5).
+
+use crate::convert::{self, Json, array, point_array, value_error};
+use numpy::{PyArray2, PyReadonlyArray2};
+use pyo3::prelude::*;
+use serde_json::json;
+use tetrakit::control::Control;
+use tetrakit::geom::{Point2, Ratio};
+use tetrakit::planar::{self, MwtOptions, PlanarError, Region};
+
+/// Planar sites from an `(n, 2)` array (or `(n, 3)` with every z = 0), checked as a
+/// file's points are.
+fn sites(a: &PyReadonlyArray2<'_, f64>) -> PyResult<Vec<Point2>> {
+    let (p, dim) = convert::points(a, "points")?;
+    let input = convert::input(p, dim, &convert::Rows::default())?;
+    if let Some(i) = input.points.iter().position(|p| p[2] != 0.0) {
+        return Err(value_error(format!(
+            "points[{i}] has z = {}; planar functions need 2D points",
+            input.points[i][2]
+        )));
+    }
+    Ok(input.points.iter().map(|p| [p[0], p[1]]).collect())
+}
+
+/// β as a rational: a decimal or `a/b` string, or a float (its exact binary value).
+fn beta(text: &str) -> PyResult<Ratio> {
+    text.parse::<Ratio>()
+        .map_err(|e| value_error(format!("beta: {e}")))
+}
+
+/// `skeleton(points, beta, lune)`: the exact β-skeleton's JSON and its edges.
+#[pyfunction]
+#[pyo3(signature = (points, beta_text, lune=false))]
+pub fn skeleton<'py>(
+    py: Python<'py>,
+    points: PyReadonlyArray2<'py, f64>,
+    beta_text: &str,
+    lune: bool,
+) -> PyResult<(Json, Bound<'py, PyArray2<i64>>)> {
+    let (pts, b) = (sites(&points)?, beta(beta_text)?);
+    let region = if lune { Region::Lune } else { Region::Circle };
+    let ctl = Control::new();
+    let sk = convert::run(py, &ctl, || planar::beta_skeleton(&pts, b, region, &ctl))?
+        .map_err(value_error)?;
+    let v = json!({
+        "beta": b.to_string(),
+        "region": if lune { "lune" } else { "circle" },
+        "vertices": pts.len(),
+        "edges": sk.edges.len(),
+        "candidates": sk.candidates,
+        "cell_diameters": sk.cell_diameters,
+    });
+    Ok((v.to_string(), array(py, &sk.edges)))
+}
+
+type MwtOut<'py> = (Json, Bound<'py, PyArray2<i64>>, Bound<'py, PyArray2<i64>>);
+
+/// `mwt(points, time_limit)`: the exact minimum weight triangulation's JSON, edges and
+/// triangles; out of time, `undecided` with certified bounds and the upper bound's
+/// triangulation.
+#[pyfunction]
+#[pyo3(signature = (points, time_limit=None))]
+pub fn mwt<'py>(
+    py: Python<'py>,
+    points: PyReadonlyArray2<'py, f64>,
+    time_limit: Option<f64>,
+) -> PyResult<MwtOut<'py>> {
+    let pts = sites(&points)?;
+    let ctl = convert::control(time_limit)?;
+    let m = convert::run(py, &ctl, || planar::mwt(&pts, &MwtOptions::default(), &ctl))?;
+    let m = match m {
+        Ok(m) => m,
+        Err(PlanarError::Stopped) => {
+            let b = convert::run(py, &Control::new(), || planar::mwt_bounds(&pts))?
+                .map_err(value_error)?;
+            let v = json!({
+                "verdict": "undecided",
+                "vertices": pts.len(),
+                "lower_bound": b.lower.lo,
+                "upper_bound": b.upper.hi,
+                "edges": b.edges.len(),
+                "triangles": b.triangles.len(),
+            });
+            return Ok((v.to_string(), array(py, &b.edges), array(py, &b.triangles)));
+        }
+        Err(e) => return Err(value_error(e)),
+    };
+    let s = &m.stats;
+    let v = json!({
+        "verdict": "yes",
+        "vertices": pts.len(),
+        "edges": m.edges.len(),
+        "triangles": m.triangles.len(),
+        "weight": m.weight.mid(),
+        "weight_interval": [m.weight.lo, m.weight.hi],
+        "candidates": s.candidates,
+        "skeleton_edges": s.skeleton_edges,
+        "undecided_edges": s.undecided_edges,
+        "faces_left": s.faces_left,
+        "faces_with_holes": s.faces_with_holes,
+        "largest_face": s.largest_face,
+    });
+    Ok((v.to_string(), array(py, &m.edges), array(py, &m.triangles)))
+}
+
+/// `keil(beta, n)`: the §5.2 construction's exact verdicts as JSON, and its sites.
+#[pyfunction]
+#[pyo3(signature = (beta_text, n=None))]
+pub fn keil<'py>(
+    py: Python<'py>,
+    beta_text: &str,
+    n: Option<usize>,
+) -> PyResult<(Json, Bound<'py, PyArray2<f64>>)> {
+    let b = beta(beta_text)?;
+    if n == Some(0) {
+        return Err(value_error("n = 0: at least one site per arc"));
+    }
+    let ctl = Control::new();
+    let k = convert::run(py, &ctl, || planar::keil(b, n, &ctl))?.map_err(value_error)?;
+    let iv = |w: &tetrakit::geom::Interval| [w.lo, w.hi];
+    let v = json!({
+        "beta": b.to_string(),
+        "n": k.n,
+        "sites": k.sites.len(),
+        "xy": k.xy,
+        "lemma_5_8_bound": k.lemma_bound,
+        "xy_in_skeleton": k.xy_in_skeleton,
+        "xy_in_mwt": k.xy_in_mwt,
+        "refutes_keil": k.xy_in_skeleton && !k.xy_in_mwt,
+        "weight_with_xy": k.with_xy.0.mid(),
+        "weight_with_xy_interval": iv(&k.with_xy.0),
+        "weight_without_xy": k.without_xy.0.mid(),
+        "weight_without_xy_interval": iv(&k.without_xy.0),
+        "with_minus_without_sign": k.with_vs_without as i8,
+    });
+    Ok((v.to_string(), point_array(py, &k.sites)))
+}
