@@ -5,7 +5,7 @@
 //! Every function here takes numpy arrays (f64 points, int64 index rows, 0-based),
 //! checks them as the file readers check files ([`tetrakit::io::from_arrays`]; a problem
 //! is a `ValueError` with the reader's message), does its work with the GIL released
-//! and Ctrl-C honoured ([`convert::run`]), and returns `(json, arrays...)`: the CLI's
+//! and Ctrl-C honoured (`convert::run`), and returns `(json, arrays...)`: the CLI's
 //! JSON fields as text, and the cells as numpy arrays.
 #![forbid(unsafe_code)]
 
