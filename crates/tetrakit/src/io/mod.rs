@@ -19,6 +19,8 @@ mod stl;
 mod stream;
 mod tetgen;
 mod vtk;
+mod vtk_binary;
+mod vtu;
 mod write;
 
 pub use planar::{Svg, keil_svg, write_planar_edges, write_planar_triangulation, write_points2d};
@@ -123,7 +125,7 @@ impl Input {
 
 /// Reads `path`, choosing the format by extension: `.node` (with sibling `.edge`, `.ele`
 /// and `.face` when present), `.edge`/`.ele`/`.face` (with the sibling `.node`), `.obj`,
-/// `.off`, `.stl` (ASCII or binary, corners merged by exact coordinates), `.mesh` (Medit), `.msh` (Gmsh 2.2 and 4.1 ASCII, 4.1 binary), `.vtk` (legacy ASCII),
+/// `.off`, `.stl` (ASCII or binary, corners merged by exact coordinates), `.mesh` (Medit), `.msh` (Gmsh 2.2 and 4.1 ASCII, 4.1 binary), `.vtk` (legacy, ASCII or binary), `.vtu` (VTK XML: ASCII, base64, appended raw or base64, zlib),
 /// `.json`, `.xyz`/`.txt`.
 ///
 /// ```
@@ -150,6 +152,7 @@ pub fn read_input(path: &Path) -> Result<Input, InputError> {
         "stl" => stl::read(path)?,
         "mesh" => medit::read(path)?,
         "vtk" => vtk::read(path)?,
+        "vtu" => vtu::read(path)?,
         "msh" if gmsh::is_binary(path) => gmsh_binary::read(path)?,
         "msh" => gmsh::read(path)?,
         "json" => json::read(path)?,
@@ -159,7 +162,7 @@ pub fn read_input(path: &Path) -> Result<Input, InputError> {
                 path,
                 0,
                 format!(
-                    "unknown input format '.{ext}' (expected .node, .edge, .ele, .face, .obj, .off, .stl, .mesh, .msh, .vtk, .json, .xyz or .txt)"
+                    "unknown input format '.{ext}' (expected .node, .edge, .ele, .face, .obj, .off, .stl, .mesh, .msh, .vtk, .vtu, .json, .xyz or .txt)"
                 ),
             ));
         }
@@ -230,7 +233,11 @@ pub(crate) fn read_bytes(path: &Path) -> Result<Vec<u8>, InputError> {
 /// forever) of at most [`MAX_INPUT_BYTES`], UTF-8, a leading byte-order mark dropped.
 /// Line ends may be LF or CR LF; a file whose only line ends are CR is refused by name.
 pub(crate) fn read_text(path: &Path) -> Result<String, InputError> {
-    let bytes = read_bytes(path)?;
+    text_of(path, read_bytes(path)?)
+}
+
+/// [`read_text`] on bytes already read.
+pub(crate) fn text_of(path: &Path, bytes: Vec<u8>) -> Result<String, InputError> {
     let mut text = String::from_utf8(bytes).map_err(|e| {
         let at = e.utf8_error().valid_up_to();
         let line = 1 + e.as_bytes()[..at].iter().filter(|&&b| b == b'\n').count();

@@ -4,16 +4,31 @@
 //! with `OFFSETS` and `CONNECTIVITY` arrays), then `CELL_TYPES`. Indices are 0-based.
 //! Tetrahedra (type 10) and triangles (5) are read, lines (3) as segments and vertices (1)
 //! ignored; any other cell type is an error that counts the cells of that type.
-//! `POINT_DATA`/`CELL_DATA` and what follows are not read. Binary files are refused with
-//! that reason. Counts are checked against what is read, never used to size an
+//! `POINT_DATA`/`CELL_DATA` and what follows are not read; `METADATA` is skipped. Binary
+//! files are read by [`super::vtk_binary`]. Counts are checked against what is read, never used to size an
 //! allocation.
 
 use super::stream::Stream;
-use super::{Input, InputError, check_segments, parse_int, read_text, vertex_ref};
+use super::{Input, InputError, check_segments, parse_int, read_bytes, text_of, vertex_ref};
 use std::path::Path;
 
+/// The keywords that start a section of an unstructured grid.
+const SECTIONS: [&str; 6] = [
+    "POINTS",
+    "CELLS",
+    "CELL_TYPES",
+    "POINT_DATA",
+    "CELL_DATA",
+    "FIELD",
+];
+
 pub(super) fn read(path: &Path) -> Result<Input, InputError> {
-    let text = read_text(path)?;
+    let bytes = read_bytes(path)?;
+    let third = bytes.split(|&b| b == b'\n').nth(2).map(|l| l.trim_ascii());
+    if third == Some(b"BINARY") && bytes.starts_with(b"# vtk DataFile Version") {
+        return super::vtk_binary::read(path, &bytes);
+    }
+    let text = text_of(path, bytes)?;
     let mut head = text.lines();
     let version = head.next().unwrap_or("");
     if !version.starts_with("# vtk DataFile Version") {
@@ -26,14 +41,7 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
     head.next(); // the title
     match head.next().map(str::trim) {
         Some("ASCII") => {}
-        Some("BINARY") => {
-            return Err(InputError::new(
-                path,
-                3,
-                "binary legacy VTK is not read: write it as ASCII, or as .mesh/.ele",
-            ));
-        }
-        _ => return Err(InputError::new(path, 3, "expected 'ASCII'")),
+        _ => return Err(InputError::new(path, 3, "expected 'ASCII' or 'BINARY'")),
     }
     let rest = text.splitn(4, '\n').nth(3).unwrap_or("");
     let mut s = Stream::new(rest, 3, None, path);
@@ -46,8 +54,14 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
     };
     let (mut cells, mut cell_lines) = (Vec::new(), Vec::new());
     let mut seg_lines = Vec::new();
-    while let Some((line, key)) = s.next() {
+    let mut pending = None;
+    while let Some((line, key)) = pending.take().or_else(|| s.next()) {
         match key {
+            // VTK 9 writes array metadata (names, norms) after POINTS and CELLS: skipped
+            // up to the next section.
+            "METADATA" => {
+                pending = std::iter::from_fn(|| s.next()).find(|(_, k)| SECTIONS.contains(k));
+            }
             "DATASET" => {
                 let (l, kind) = s.want("the dataset type")?;
                 if kind != "UNSTRUCTURED_GRID" {
@@ -187,10 +201,38 @@ fn read_types(
         let why = format!("{m} cell types for {} cells", cells.len());
         return Err(InputError::new(s.path, line, why));
     }
-    let mut other: Option<(i64, usize, usize)> = None;
+    let mut sorter = CellSorter::default();
     for (cell, &at) in cells.iter().zip(lines) {
         let (l, tok) = s.want("a cell type")?;
         let t = parse_int(tok, s.path, l, "cell type")?;
+        sorter
+            .add(t, cell, at, input, seg_lines)
+            .map_err(|why| InputError::new(s.path, at, why))?;
+    }
+    sorter
+        .finish()
+        .map_err(|(at, why)| InputError::new(s.path, at, why))
+}
+
+/// Files VTK cells (legacy or XML) by type: tetrahedra (10), triangles (5) and lines (3)
+/// into an [`Input`], vertices (1) ignored, any other type counted; the first of those
+/// types is the error of [`CellSorter::finish`].
+#[derive(Default)]
+pub(super) struct CellSorter {
+    other: Option<(i64, usize, usize)>,
+}
+
+impl CellSorter {
+    /// Files one cell of type `t` found on line `at`; a known type with the wrong number
+    /// of points is an error.
+    pub(super) fn add(
+        &mut self,
+        t: i64,
+        cell: &[u32],
+        at: usize,
+        input: &mut Input,
+        seg_lines: &mut Vec<u32>,
+    ) -> Result<(), String> {
         match (t, cell.len()) {
             (10, 4) => {
                 input.tets.push([cell[0], cell[1], cell[2], cell[3]]);
@@ -202,25 +244,26 @@ fn read_types(
                 seg_lines.push(at as u32);
             }
             (1, 1) => {}
-            (10 | 5 | 3 | 1, k) => {
-                let why = format!("a cell of type {t} with {k} points");
-                return Err(InputError::new(s.path, at, why));
-            }
-            _ => match &mut other {
+            (10 | 5 | 3 | 1, k) => return Err(format!("a cell of type {t} with {k} points")),
+            _ => match &mut self.other {
                 Some((ty, count, _)) if *ty == t => *count += 1,
                 Some(_) => {}
-                None => other = Some((t, 1, at)),
+                None => self.other = Some((t, 1, at)),
             },
         }
+        Ok(())
     }
-    match other {
-        Some((t, count, at)) => Err(InputError::new(
-            s.path,
-            at,
-            format!(
-                "{count} cells of VTK type {t} (not a tetrahedron, triangle or line): only those are read"
-            ),
-        )),
-        None => Ok(()),
+
+    /// The first other type, with its count and the line of its first cell.
+    pub(super) fn finish(self) -> Result<(), (usize, String)> {
+        match self.other {
+            Some((t, count, at)) => Err((
+                at,
+                format!(
+                    "{count} cells of VTK type {t} (not a tetrahedron, triangle or line): only those are read"
+                ),
+            )),
+            None => Ok(()),
+        }
     }
 }
