@@ -276,15 +276,16 @@ def test_meshio_round_trip(tmp_path):
     assert tetrakit.check(p, t, convex=True).valid
     # A result written with meshio, read back by meshio and by the CLI: one verdict.
     r = tetrakit.shell(sphere(50, 2.0, 7), sphere(30, 1.0, 8))
-    for ext in ("vtu", "vtk", "mesh", "msh"):
-        path = tmp_path / f"shell.{ext}"
-        opts = {"msh": {"file_format": "gmsh22", "binary": False}, "vtk": {"binary": False}}.get(ext, {})
+    variants = [("vtu", {}), ("vtu", {"binary": False}), ("vtu", {"compression": None}),
+                ("vtk", {}), ("vtk", {"binary": False}), ("mesh", {}),
+                ("msh", {"file_format": "gmsh22", "binary": False}), ("msh", {"file_format": "gmsh"})]
+    for k, (ext, opts) in enumerate(variants):
+        path = tmp_path / f"shell{k}.{ext}"
         meshio.write(path, meshio.Mesh(r.points, [("tetra", r.tets)]), **opts)
         back = tetrakit.check(*tetrakit.from_meshio(meshio.read(path)))
         assert back.valid and back.tetrahedra == r.tetrahedra
-        if ext != "vtu":
-            c = cli("check", path)
-            assert c["verdict"] == "yes" and c["tetrahedra"] == r.tetrahedra
+        c = cli("check", path)
+        assert (c["verdict"], c["tetrahedra"]) == ("yes", r.tetrahedra), (ext, opts)
     hexes = meshio.Mesh(pts[:8], [("hexahedron", [list(range(8))])])
     with pytest.raises(ValueError, match="hexahedron 1"):
         tetrakit.from_meshio(hexes)

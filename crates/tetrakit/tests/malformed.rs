@@ -152,7 +152,20 @@ proptest! {
     }
 
     #[test]
-    fn arbitrary_text_never_panics(text in "[ -~\n]{0,200}", ext in prop::sample::select(vec!["node", "edge", "ele", "obj", "json", "xyz", "mesh", "vtk", "msh", "stl"])) {
+    fn damaged_vtk_written_files_never_panic(k in 0usize..10, at in 0usize..2000, byte in any::<u8>(), cut in 0usize..2000) {
+        let (name, mut b) = vtk_fixtures().swap_remove(k);
+        let at = at % b.len();
+        b[at] = byte;
+        b.truncate(cut.max(1));
+        let p = dir_file(&format!("damaged-{name}"));
+        std::fs::write(&p, &b).unwrap();
+        if let Err(e) = read_input(&p) {
+            prop_assert!(e.line <= 1 + b.iter().filter(|&&c| c == b'\n').count(), "{e}");
+        }
+    }
+
+    #[test]
+    fn arbitrary_text_never_panics(text in "[ -~\n]{0,200}", ext in prop::sample::select(vec!["node", "edge", "ele", "obj", "json", "xyz", "mesh", "vtk", "vtu", "msh", "stl"])) {
         write("a.node", NODE);
         let p = write(&format!("a.{ext}"), &text);
         let _ = read_input(&p);
@@ -404,7 +417,7 @@ fn vtk_files_read_and_fail_with_the_line() {
             15,
             "2 cell types for 3 cells",
         ),
-        (VTK4, "ASCII", "BINARY", 3, "binary legacy VTK"),
+        (VTK4, "ASCII", "TEXT", 3, "expected 'ASCII' or 'BINARY'"),
         (VTK5, "0 4 8 11", "0 8 4 11", 10, "offset 4 out of order"),
         (
             VTK5,
@@ -421,4 +434,152 @@ fn vtk_files_read_and_fail_with_the_line() {
             "{from} -> {to}: {e}"
         );
     }
+}
+
+/// The files VTK 9 itself wrote (`tests/data/vtk`, made with VTK's Python writers): one
+/// cube of six tetrahedra, three of them negatively oriented, in every layout of `.vtu`
+/// (ASCII; base64 inline; appended raw and base64; zlib or not; both byte orders; 32- and
+/// 64-bit headers) and of legacy `.vtk` (ASCII 5.1, binary 5.1 and 4.2).
+fn vtk_fixtures() -> Vec<(String, Vec<u8>)> {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/vtk");
+    let mut files: Vec<(String, Vec<u8>)> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .map(|p| {
+            (
+                p.file_name().unwrap().to_string_lossy().into_owned(),
+                std::fs::read(&p).unwrap(),
+            )
+        })
+        .collect();
+    files.sort();
+    assert_eq!(files.len(), 10, "{files:?}");
+    files
+}
+
+#[test]
+fn every_layout_vtk_writes_reads_to_one_mesh() {
+    let mut seen = None;
+    for (name, bytes) in vtk_fixtures() {
+        let p = dir_file(&name);
+        std::fs::write(&p, &bytes).unwrap();
+        let input = read_input(&p).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let r = tetrakit::mesh::verify(&input.points, &input.tets, None);
+        let inverted: Vec<u32> = r.problems.iter().flat_map(|p| p.cells.clone()).collect();
+        let got = (input.points.clone(), input.tets.clone(), inverted);
+        assert_eq!(got.2, vec![1, 2, 5], "{name}");
+        match &seen {
+            None => seen = Some(got),
+            Some(first) => assert_eq!(&got, first, "{name}"),
+        }
+    }
+}
+
+/// `.vtu` damage: each case is one error naming the line of the element at fault.
+#[test]
+fn vtu_files_fail_with_the_line() {
+    let ascii = String::from_utf8(
+        std::fs::read(
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/vtk/ascii.vtu"),
+        )
+        .unwrap(),
+    )
+    .unwrap();
+    let b64 = String::from_utf8(
+        std::fs::read(
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+                .join("tests/data/vtk/appended_b64_zlib64.vtu"),
+        )
+        .unwrap(),
+    )
+    .unwrap();
+    let conn_line = 1 + ascii
+        .lines()
+        .position(|l| l.contains("Name=\"connectivity\""))
+        .unwrap();
+    let cases: Vec<(&str, String, usize, &str)> = vec![
+        (
+            &ascii,
+            ascii.replacen("UnstructuredGrid", "PolyData", 1),
+            0,
+            "only UnstructuredGrid",
+        ),
+        (
+            &ascii,
+            ascii.replacen("<Points>", "<Points><bad", 1),
+            0,
+            "malformed XML",
+        ),
+        (
+            &ascii,
+            ascii.replacen(
+                "type=\"UnstructuredGrid\"",
+                "type=\"UnstructuredGrid\" compressor=\"vtkLZ4DataCompressor\"",
+                1,
+            ),
+            0,
+            "only vtkZLibDataCompressor",
+        ),
+        (
+            &ascii,
+            ascii.replacen("format=\"ascii\"", "format=\"hex\"", 1),
+            0,
+            "DataArray format 'hex'",
+        ),
+        (
+            &b64,
+            b64.replacen("encoding=\"base64\"", "encoding=\"gzip\"", 1),
+            0,
+            "encoding",
+        ),
+        (
+            &b64,
+            b64.replacen("offset=\"0\"", "offset=\"999999\"", 1),
+            0,
+            "past the appended data",
+        ),
+    ];
+    for (base, text, line, needle) in cases {
+        assert_ne!(&text, base, "the case must change the file: {needle}");
+        let e = read_input(&write("bad.vtu", &text)).unwrap_err();
+        assert!(
+            e.message.contains(needle) && (line == 0 || e.line == line),
+            "{needle}: {e}"
+        );
+        assert!(
+            e.line > 0 || needle == "past the appended data",
+            "{needle}: no line in {e}"
+        );
+    }
+    // A point index out of range names the connectivity's line.
+    let bad = ascii.replacen("0 4 6 7 0 4", "9 4 6 7 0 4", 1);
+    assert_ne!(bad, ascii);
+    let e = read_input(&write("bad.vtu", &bad)).unwrap_err();
+    assert!(
+        e.line == conn_line && e.message.contains("names point 9"),
+        "{e}"
+    );
+}
+
+/// A compressed block may not claim more than zlib could make of its bytes, and a
+/// header may not claim more than the file holds: no allocation follows from either.
+#[test]
+fn vtu_headers_cannot_size_an_allocation() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/vtk");
+    let raw = std::fs::read(dir.join("appended_raw_zlib.vtu")).unwrap();
+    let tag = raw.windows(13).position(|w| w == b"<AppendedData").unwrap();
+    let at = tag + raw[tag..].iter().position(|&c| c == b'_').unwrap() + 1;
+    // The first array's header: blocks, block size, last size (u32, little-endian).
+    let mut bomb = raw.clone();
+    bomb[at + 4..at + 8].copy_from_slice(&u32::MAX.to_le_bytes());
+    bomb[at + 8..at + 12].copy_from_slice(&u32::MAX.to_le_bytes());
+    let p = dir_file("bomb.vtu");
+    std::fs::write(&p, &bomb).unwrap();
+    let e = read_input(&p).unwrap_err();
+    assert!(e.message.contains("compressed bytes"), "{e}");
+    let mut many = raw;
+    many[at..at + 4].copy_from_slice(&u32::MAX.to_le_bytes());
+    std::fs::write(&p, &many).unwrap();
+    let e = read_input(&p).unwrap_err();
+    assert!(e.message.contains("blocks"), "{e}");
 }

@@ -41,7 +41,11 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
     head.next(); // the title
     match head.next().map(str::trim) {
         Some("ASCII") => {}
-        _ => return Err(InputError::new(path, 3, "expected 'ASCII' or 'BINARY'")),
+        Some(_) => return Err(InputError::new(path, 3, "expected 'ASCII' or 'BINARY'")),
+        None => {
+            let why = "the file ends before its third line ('ASCII' or 'BINARY')";
+            return Err(InputError::new(path, 0, why));
+        }
     }
     let rest = text.splitn(4, '\n').nth(3).unwrap_or("");
     let mut s = Stream::new(rest, 3, None, path);
