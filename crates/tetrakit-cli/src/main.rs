@@ -122,6 +122,11 @@ struct CheckArgs {
     /// cells (scipy, Qhull).
     #[arg(long)]
     reorient: bool,
+    /// Check the tetrahedra of a mixed mesh alone: hexahedra, prisms, pyramids and other
+    /// cells are counted ("other_cells") instead of refused. The check then speaks of the
+    /// tetrahedra alone (faces against a hexahedron are their boundary).
+    #[arg(long)]
+    tets_only: bool,
     /// Write the mesh for a viewer, .vtk or .vtu, with integer fields "problem" on cells
     /// and points (the first problem naming each, numbered as in `--json`'s
     /// "problem_codes"; 0 for none).

@@ -138,13 +138,17 @@ fn print_detection(d: &Detection, base: u32, from_tets: bool, seconds: f64) {
 pub fn check(a: &crate::CheckArgs) -> CmdResult {
     let (path, convex, as_json) = (a.input.as_path(), a.convex, a.json);
     let start = Instant::now();
-    let mut input = io::read_input(path)?;
+    let opts = io::ReadOptions {
+        tets_only: a.tets_only,
+    };
+    let mut input = io::read_input_with(path, opts)?;
     if input.tets.is_empty() {
         return Err(CliError::at(
             path,
             "no tetrahedra to check (give an .ele file or JSON \"tets\")",
         ));
     }
+    let other_cells = input.other_cells.as_ref().map_or(0, |o| o.count);
     let turned = a
         .reorient
         .then(|| mesh::reorient(&input.points, &mut input.tets));
@@ -169,6 +173,7 @@ pub fn check(a: &crate::CheckArgs) -> CmdResult {
             "problem_count": report.problem_count,
             "problems": report.problems,
             "reoriented": turned,
+            "other_cells": other_cells,
             "seconds": seconds,
         });
         if a.output.is_some() {
@@ -221,6 +226,13 @@ pub fn check(a: &crate::CheckArgs) -> CmdResult {
     }
     if let (Some(k), false) = (turned, as_json) {
         out!("  {k} negatively oriented tetrahedra turned (--reorient)");
+    }
+    if let (Some(o), false) = (&input.other_cells, as_json) {
+        out!(
+            "  {} other cells not checked (--tets-only): {}",
+            o.count,
+            o.message
+        );
     }
     Ok(Verdict::from_bool(report.is_valid()))
 }

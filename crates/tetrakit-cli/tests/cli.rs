@@ -231,6 +231,44 @@ fn check_names_tetrahedra_by_the_files_numbers() {
 /// `check --reorient` turns the inverted cells of an unoriented mesh and counts them;
 /// `check --output` writes the mesh with the problem codes of its cells and points, in
 /// positions (not the file's labels), readable by the VTK reader.
+/// A mixed mesh (tetrahedra and a hexahedron) is refused with the count and the line;
+/// `--tets-only` checks its tetrahedra and counts the rest; the `.vtu` tetrakit writes
+/// reads back to the same verdict.
+#[test]
+fn tets_only_checks_the_tetrahedra_of_a_mixed_mesh() {
+    let d = dir("mixed");
+    let vtk = "# vtk DataFile Version 4.2\nmixed\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 9 double\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n2 0 0\n3 0 0\n3 1 0\n2 1 0\nCELLS 3 19\n4 0 1 2 3\n4 1 2 3 4\n8 5 6 7 8 5 6 7 8\nCELL_TYPES 3\n10\n10\n12\n";
+    let f = d.join("m.vtk");
+    std::fs::write(&f, vtk).unwrap();
+    let o = run(&["check", s(&f)]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("m.vtk:18: 1 cells of VTK type 12") && err.contains("--tets-only"),
+        "{err}"
+    );
+    let o = run(&["check", s(&f), "--tets-only", "--json"]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let v = json(&o);
+    assert_eq!(
+        (v["tetrahedra"].as_u64(), v["other_cells"].as_u64()),
+        (Some(2), Some(1))
+    );
+    let out = d.join("m.vtu");
+    let o = run(&["check", s(&f), "--tets-only", "--output", s(&out)]);
+    assert_eq!(o.status.code(), Some(0));
+    let o = run(&["check", s(&out), "--json"]);
+    assert_eq!(
+        (o.status.code(), json(&o)["tetrahedra"].as_u64()),
+        (Some(0), Some(2))
+    );
+}
+
 #[test]
 fn check_reorients_and_writes_problem_fields_for_a_viewer() {
     let d = dir("fields");

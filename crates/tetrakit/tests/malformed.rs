@@ -189,7 +189,12 @@ fn medit_files_read_and_fail_with_the_line() {
     let cases = [
         ("1 0 0 1", "1 0 x 1", 6, "'x' is not a number"),
         ("2 3 4 5 0", "2 3 4 6 0", 13, "vertex 6 is out of range"),
-        ("Corners", "Hexahedra", 20, "1 hexahedra besides tetrahedra"),
+        (
+            "Corners\n1\n1\n",
+            "Hexahedra\n1\n1 2 3 4 5 1 2 3 0\n",
+            20,
+            "1 hexahedra besides tetrahedra and triangles: only those are read (--tets-only",
+        ),
         ("Corners", "Bricks", 20, "unknown keyword 'Bricks'"),
         ("End\n", "", 22, "missing 'End'"),
         (
@@ -200,6 +205,20 @@ fn medit_files_read_and_fail_with_the_line() {
         ),
         ("Dimension 3", "Dimension 4", 2, "dimension 4"),
     ];
+    // With --tets-only, a mixed mesh reads: its tetrahedra, the other cells counted.
+    let mixed = MESH.replacen(
+        "Corners\n1\n1\n",
+        "Hexahedra\n1\n1 2 3 4 5 1 2 3 0\nPrisms\n2\n1 2 3 4 5 1 0\n1 2 3 4 5 2 0\n",
+        1,
+    );
+    let opts = tetrakit::io::ReadOptions { tets_only: true };
+    let m = tetrakit::io::read_input_with(&write("mixed.mesh", &mixed), opts).unwrap();
+    let o = m.other_cells.unwrap();
+    assert_eq!((m.tets.len(), o.count, o.line), (2, 3, 20));
+    assert_eq!(
+        o.message,
+        "1 hexahedra, 2 prisms besides tetrahedra and triangles: only those are read"
+    );
     for (from, to, line, needle) in cases {
         let e = read_input(&write("bad.mesh", &MESH.replacen(from, to, 1))).unwrap_err();
         assert!(

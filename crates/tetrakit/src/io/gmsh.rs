@@ -128,23 +128,22 @@ impl<'p> Cells<'p> {
 
     /// The input, once every section is read: some nodes, no refused cell, segments
     /// checked.
-    pub(super) fn finish(self) -> Result<Input, InputError> {
+    pub(super) fn finish(mut self) -> Result<Input, InputError> {
         if self.input.points.is_empty() {
             return Err(self.err(0, "no nodes ($Nodes section)".into()));
         }
         if let Some(&(_, _, first)) = self.refused.first() {
-            let all: Vec<String> = self
-                .refused
-                .iter()
+            let all: Vec<String> = (self.refused.iter())
                 .map(|(n, k, _)| format!("{k} {n}"))
                 .collect();
-            return Err(self.err(
-                first,
-                format!(
+            self.input.other_cells = Some(super::OtherCells {
+                count: self.refused.iter().map(|r| r.1).sum(),
+                line: first,
+                message: format!(
                     "{} element(s) besides tetrahedra, triangles and lines: only those are read",
                     all.join(", ")
                 ),
-            ));
+            });
         }
         check_segments(&self.input.segments, &self.seg_lines, 1, self.path)?;
         Ok(self.input)

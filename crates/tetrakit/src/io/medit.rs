@@ -29,7 +29,13 @@ const ANNOTATIONS: [(&str, Option<usize>); 10] = [
 ];
 
 /// Cells this reader refuses.
-const OTHER_CELLS: [&str; 4] = ["Quadrilaterals", "Hexahedra", "Prisms", "Pyramids"];
+/// Cells not kept, with their corners (each entry also has a reference).
+const OTHER_CELLS: [(&str, usize); 4] = [
+    ("Quadrilaterals", 4),
+    ("Hexahedra", 8),
+    ("Prisms", 6),
+    ("Pyramids", 5),
+];
 
 impl Stream<'_> {
     /// `k` vertex references (1-based) then a reference number, checked.
@@ -125,7 +131,7 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
                 ended = true;
                 break;
             }
-            other => skip_or_refuse(&mut s, other, line, input.dim)?,
+            other => skip_or_refuse(&mut s, other, line, &mut input)?,
         }
     }
     if !ended {
@@ -138,25 +144,39 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
     Ok(input)
 }
 
-/// Skips an annotation section; refuses other cells (counting them) and unknown keywords.
-fn skip_or_refuse(s: &mut Stream, key: &str, line: usize, dim: usize) -> Result<(), InputError> {
-    if let Some(&(_, per)) = ANNOTATIONS.iter().find(|(k, _)| *k == key) {
-        let k = s.count(key)?;
-        for _ in 0..k * per.unwrap_or(dim) {
+/// Skips an annotation section, and other cells (counted in [`Input::other_cells`]);
+/// refuses unknown keywords.
+fn skip_or_refuse(
+    s: &mut Stream,
+    key: &str,
+    line: usize,
+    input: &mut Input,
+) -> Result<(), InputError> {
+    let skip = |s: &mut Stream, entries: usize| -> Result<(), InputError> {
+        for _ in 0..entries {
             s.want(&format!("an entry of '{key}'"))?;
         }
-        return Ok(());
-    }
-    if OTHER_CELLS.contains(&key) {
+        Ok(())
+    };
+    if let Some(&(_, per)) = ANNOTATIONS.iter().find(|(k, _)| *k == key) {
         let k = s.count(key)?;
-        return Err(InputError::new(
-            s.path,
+        return skip(s, k * per.unwrap_or(input.dim));
+    }
+    if let Some(&(_, corners)) = OTHER_CELLS.iter().find(|(k, _)| *k == key) {
+        let k = s.count(key)?;
+        skip(s, k * (corners + 1))?;
+        let o = input.other_cells.get_or_insert_with(|| super::OtherCells {
             line,
-            format!(
-                "{k} {} besides tetrahedra and triangles: only those are read",
-                key.to_lowercase()
-            ),
-        ));
+            ..Default::default()
+        });
+        o.count += k;
+        let kinds = o.message.split(" besides").next().filter(|m| !m.is_empty());
+        let listed = match kinds {
+            Some(m) => format!("{m}, {k} {}", key.to_lowercase()),
+            None => format!("{k} {}", key.to_lowercase()),
+        };
+        o.message = format!("{listed} besides tetrahedra and triangles: only those are read");
+        return Ok(());
     }
     Err(InputError::new(
         s.path,

@@ -95,6 +95,11 @@ pub struct Input {
     pub tet_file: PathBuf,
     /// See [`Input::tet_file`].
     pub tet_lines: Vec<u32>,
+    /// Cells the format carried besides tetrahedra, triangles, lines and points
+    /// (hexahedra, prisms, pyramids, quadrilaterals, higher orders): [`read_input`] refuses
+    /// them with this error, [`read_input_with`] and [`ReadOptions::tets_only`] keep it
+    /// here and read the rest.
+    pub other_cells: Option<OtherCells>,
     /// The region of each tetrahedron where the format has them (Gmsh's physical or
     /// entity tags); empty otherwise.
     pub regions: Vec<i64>,
@@ -102,6 +107,25 @@ pub struct Input {
     /// `.ele` numbered with gaps, or from another base than its `.node`); empty otherwise.
     /// See [`Input::tet_label`].
     pub tet_labels: Vec<u32>,
+}
+
+/// Cells a reader found but does not keep: how many, and where the first is.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct OtherCells {
+    /// How many cells in all.
+    pub count: usize,
+    /// The line of the first (0 where the format has none).
+    pub line: usize,
+    /// What they are, with their counts by kind, as the error says it.
+    pub message: String,
+}
+
+/// How [`read_input_with`] treats what it cannot keep.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ReadOptions {
+    /// Read a mixed mesh's tetrahedra (and triangles and lines) alone, the other cells
+    /// counted in [`Input::other_cells`] instead of refused.
+    pub tets_only: bool,
 }
 
 impl Input {
@@ -140,6 +164,33 @@ impl Input {
 /// assert_eq!(err.line, 2);
 /// ```
 pub fn read_input(path: &Path) -> Result<Input, InputError> {
+    read_input_with(path, ReadOptions::default())
+}
+
+/// [`read_input`], with a mixed mesh read for its tetrahedra alone when
+/// `opts.tets_only` (the other cells in [`Input::other_cells`]).
+///
+/// ```
+/// use tetrakit::io::{ReadOptions, read_input, read_input_with};
+/// let dir = std::env::temp_dir().join("tetrakit-doc-mixed");
+/// std::fs::create_dir_all(&dir).unwrap();
+/// let mesh = "MeshVersionFormatted 2\nDimension 3\nVertices\n5\n0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\n1 1 1 1\nTetrahedra\n1\n1 2 3 4 0\nPyramids\n1\n1 2 3 4 5 0\nEnd\n";
+/// std::fs::write(dir.join("m.mesh"), mesh).unwrap();
+/// let e = read_input(&dir.join("m.mesh")).unwrap_err();
+/// assert!(e.message.starts_with("1 pyramids besides tetrahedra"), "{e}");
+/// let m = read_input_with(&dir.join("m.mesh"), ReadOptions { tets_only: true }).unwrap();
+/// assert_eq!((m.tets.len(), m.other_cells.unwrap().count), (1, 1));
+/// ```
+pub fn read_input_with(path: &Path, opts: ReadOptions) -> Result<Input, InputError> {
+    let input = read_any(path)?;
+    if let (Some(o), false) = (&input.other_cells, opts.tets_only) {
+        let why = format!("{} (--tets-only reads the tetrahedra alone)", o.message);
+        return Err(InputError::new(path, o.line, why));
+    }
+    Ok(input)
+}
+
+fn read_any(path: &Path) -> Result<Input, InputError> {
     let ext = path
         .extension()
         .and_then(|e| e.to_str())

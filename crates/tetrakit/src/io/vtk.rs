@@ -213,9 +213,8 @@ fn read_types(
             .add(t, cell, at, input, seg_lines)
             .map_err(|why| InputError::new(s.path, at, why))?;
     }
-    sorter
-        .finish()
-        .map_err(|(at, why)| InputError::new(s.path, at, why))
+    sorter.finish(input);
+    Ok(())
 }
 
 /// Files VTK cells (legacy or XML) by type: tetrahedra (10), triangles (5) and lines (3)
@@ -224,6 +223,7 @@ fn read_types(
 #[derive(Default)]
 pub(super) struct CellSorter {
     other: Option<(i64, usize, usize)>,
+    more: usize,
 }
 
 impl CellSorter {
@@ -251,23 +251,28 @@ impl CellSorter {
             (10 | 5 | 3 | 1, k) => return Err(format!("a cell of type {t} with {k} points")),
             _ => match &mut self.other {
                 Some((ty, count, _)) if *ty == t => *count += 1,
-                Some(_) => {}
+                Some(_) => self.more += 1,
                 None => self.other = Some((t, 1, at)),
             },
         }
         Ok(())
     }
 
-    /// The first other type, with its count and the line of its first cell.
-    pub(super) fn finish(self) -> Result<(), (usize, String)> {
-        match self.other {
-            Some((t, count, at)) => Err((
-                at,
-                format!(
-                    "{count} cells of VTK type {t} (not a tetrahedron, triangle or line): only those are read"
+    /// The other types, counted, for [`Input::other_cells`].
+    pub(super) fn finish(self, input: &mut Input) {
+        if let Some((t, count, line)) = self.other {
+            input.other_cells = Some(super::OtherCells {
+                count: count + self.more,
+                line,
+                message: format!(
+                    "{count} cells of VTK type {t} (not a tetrahedron, triangle or line){}: only those are read",
+                    if self.more > 0 {
+                        format!(" and {} of other types", self.more)
+                    } else {
+                        String::new()
+                    }
                 ),
-            )),
-            None => Ok(()),
+            });
         }
     }
 }

@@ -66,9 +66,7 @@ pub(super) fn read(path: &Path, bytes: &[u8]) -> Result<Input, InputError> {
             }
         }
     }
-    sorter
-        .finish()
-        .map_err(|(at, why)| InputError::new(path, at, why))?;
+    sorter.finish(&mut input);
     if input.points.is_empty() {
         return Err(InputError::new(path, 0, "no POINTS"));
     }

@@ -624,9 +624,7 @@ fn assemble(
             begin = end;
         }
     }
-    sorter
-        .finish()
-        .map_err(|(at, why)| InputError::new(path, at, why))?;
+    sorter.finish(&mut input);
     if input.points.is_empty() {
         return Err(InputError::new(path, 0, "no points"));
     }
