@@ -202,7 +202,14 @@ fn read_any(path: &Path) -> Result<Input, InputError> {
         "off" => off::read(path)?,
         "stl" => stl::read(path)?,
         "mesh" => medit::read(path)?,
-        "vtk" => vtk::read(path)?,
+        "vtk" => {
+            let bytes = read_bytes(path)?;
+            if vtk::is_binary(&bytes) {
+                vtk_binary::read(path, &bytes)?
+            } else {
+                vtk::read(path, bytes)?
+            }
+        }
         "vtu" => vtu::read(path)?,
         "msh" if gmsh::is_binary(path) => gmsh_binary::read(path)?,
         "msh" => gmsh::read(path)?,

@@ -5,11 +5,11 @@
 //! Tetrahedra (type 10) and triangles (5) are read, lines (3) as segments and vertices (1)
 //! ignored; any other cell type is an error that counts the cells of that type.
 //! `POINT_DATA`/`CELL_DATA` and what follows are not read; `METADATA` is skipped. Binary
-//! files are read by [`super::vtk_binary`]. Counts are checked against what is read, never used to size an
+//! files ([`is_binary`]) are read by `vtk_binary`. Counts are checked against what is read, never used to size an
 //! allocation.
 
 use super::stream::Stream;
-use super::{Input, InputError, check_segments, parse_int, read_bytes, text_of, vertex_ref};
+use super::{Input, InputError, check_segments, parse_int, text_of, vertex_ref};
 use std::path::Path;
 
 /// The keywords that start a section of an unstructured grid.
@@ -22,12 +22,14 @@ const SECTIONS: [&str; 6] = [
     "FIELD",
 ];
 
-pub(super) fn read(path: &Path) -> Result<Input, InputError> {
-    let bytes = read_bytes(path)?;
+/// Whether `bytes` are a legacy VTK file in `BINARY` (its third line says so).
+pub(super) fn is_binary(bytes: &[u8]) -> bool {
     let third = bytes.split(|&b| b == b'\n').nth(2).map(|l| l.trim_ascii());
-    if third == Some(b"BINARY") && bytes.starts_with(b"# vtk DataFile Version") {
-        return super::vtk_binary::read(path, &bytes);
-    }
+    third == Some(b"BINARY") && bytes.starts_with(b"# vtk DataFile Version")
+}
+
+/// Reads an ASCII legacy VTK file from its bytes.
+pub(super) fn read(path: &Path, bytes: Vec<u8>) -> Result<Input, InputError> {
     let text = text_of(path, bytes)?;
     let mut head = text.lines();
     let version = head.next().unwrap_or("");

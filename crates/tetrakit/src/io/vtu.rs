@@ -561,6 +561,7 @@ fn assemble(
     };
     let mut sorter = CellSorter::default();
     let mut seg_lines = Vec::new();
+    let mut cell = Vec::new();
     for (p, [points, conn, offsets, types]) in pieces.into_iter().enumerate() {
         let err = |role: Role, why: String| InputError::new(path, line_of(p, role), why);
         let first = input.points.len();
@@ -594,6 +595,7 @@ fn assemble(
             return Err(err(Role::Offsets, why));
         }
         let n = input.points.len() - first;
+        let at = line_of(p, Role::Connectivity);
         let mut begin = 0usize;
         for (k, (&end, &t)) in offsets.iter().zip(&types).enumerate() {
             let end = usize::try_from(end)
@@ -606,7 +608,7 @@ fn assemble(
                 );
                 return Err(err(Role::Offsets, why));
             };
-            let mut cell = Vec::with_capacity(end - begin);
+            cell.clear();
             for &v in &conn[begin..end] {
                 if v < 0 || v as usize >= n {
                     let why = format!(
@@ -617,7 +619,6 @@ fn assemble(
                 }
                 cell.push((first + v as usize) as u32);
             }
-            let at = line_of(p, Role::Connectivity);
             sorter
                 .add(t, &cell, at, &mut input, &mut seg_lines)
                 .map_err(|why| InputError::new(path, at, why))?;
