@@ -138,10 +138,18 @@ fn print_detection(d: &Detection, base: u32, from_tets: bool, seconds: f64) {
 pub fn check(a: &crate::CheckArgs) -> CmdResult {
     let (path, convex, as_json) = (a.input.as_path(), a.convex, a.json);
     let start = Instant::now();
+    if let Some(out) = &a.output {
+        let ext = out.extension().and_then(|e| e.to_str()).unwrap_or("");
+        if !matches!(ext.to_ascii_lowercase().as_str(), "vtk" | "vtu") {
+            let why = "--output takes a .vtk or .vtu file (the mesh with its problem fields)";
+            return Err(CliError::at(out, why));
+        }
+    }
     let opts = io::ReadOptions {
         tets_only: a.tets_only,
     };
     let mut input = io::read_input_with(path, opts)?;
+    let parsed = start.elapsed().as_secs_f64();
     if input.tets.is_empty() {
         return Err(CliError::at(
             path,
@@ -175,6 +183,7 @@ pub fn check(a: &crate::CheckArgs) -> CmdResult {
             "reoriented": turned,
             "other_cells": other_cells,
             "seconds": seconds,
+            "parse_seconds": parsed,
         });
         if a.output.is_some() {
             let codes: serde_json::Map<String, serde_json::Value> = mesh::ProblemKind::ALL

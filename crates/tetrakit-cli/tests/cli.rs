@@ -267,6 +267,19 @@ fn tets_only_checks_the_tetrahedra_of_a_mixed_mesh() {
         (o.status.code(), json(&o)["tetrahedra"].as_u64()),
         (Some(0), Some(2))
     );
+    let o = run(&[
+        "check",
+        s(&f),
+        "--tets-only",
+        "--output",
+        s(&d.join("m.ele")),
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("m.ele: --output takes a .vtk or .vtu"),
+        "{err}"
+    );
 }
 
 #[test]

@@ -472,7 +472,8 @@ fn vtk_fixtures() -> Vec<(String, Vec<u8>)> {
         })
         .collect();
     files.sort();
-    assert_eq!(files.len(), 10, "{files:?}");
+    let names: Vec<&str> = files.iter().map(|f| f.0.as_str()).collect();
+    assert_eq!(files.len(), 10, "{names:?}");
     files
 }
 
