@@ -17,13 +17,15 @@ mod off;
 mod planar;
 mod stl;
 mod stream;
+mod svg;
 mod tetgen;
 mod vtk;
 mod vtk_binary;
 mod vtu;
 mod write;
 
-pub use planar::{Svg, keil_svg, write_planar_edges, write_planar_triangulation, write_points2d};
+pub use planar::{keil_svg, write_planar_edges, write_planar_triangulation, write_points2d};
+pub use svg::{Figure, Svg};
 pub use write::{
     Fields, write_edges, write_instance, write_mesh, write_mesh_with_fields, write_points,
     write_surface, write_triangulation, write_vtk,
