@@ -683,8 +683,9 @@ struct PolyOut {
 
 #[derive(Args, Clone)]
 struct BpArgs {
-    /// Vertices of the stacked core.
-    #[arg(long, default_value_t = 6)]
+    /// Vertices of the stacked core (the default is the smallest with which the default
+    /// `two-level` hides its second level: with 6 every seed gives one level).
+    #[arg(long, default_value_t = 8)]
     core: usize,
     /// BP-nets glued (on the first level).
     #[arg(long, default_value_t = 2)]

@@ -214,6 +214,11 @@ fn edge_pictures_show_edges_and_sites() {
             cmd[0]
         );
         assert_eq!(text.matches(r#"class="site""#).count(), 40);
+        assert!(
+            text.contains(&format!(">40 sites, {lines} edges<")),
+            "{}",
+            cmd[0]
+        );
         let Some(img) = render(&svg) else { return };
         let all = [
             0.0,

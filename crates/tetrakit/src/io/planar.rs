@@ -41,7 +41,7 @@ pub fn write_points2d(path: &Path, points: &[Point2]) -> io::Result<()> {
 }
 
 /// Writes a planar edge set: `.edge` (with `.node` beside it, 1-based), `.json`
-/// (`points`, `segments`, 0-based) or `.svg` (a drawing of sites and edges).
+/// (`points`, `segments`, 0-based) or `.svg` (a drawing of sites and edges, counted in its caption).
 pub fn write_planar_edges(path: &Path, points: &[Point2], edges: &[[u32; 2]]) -> io::Result<()> {
     match ext(path).as_str() {
         "edge" => {
@@ -64,7 +64,8 @@ pub fn write_planar_edges(path: &Path, points: &[Point2], edges: &[[u32; 2]]) ->
             for p in points {
                 svg.site(p);
             }
-            save(path, svg.finish(""))
+            let caption = format!("{} sites, {} edges", points.len(), edges.len());
+            save(path, svg.finish(&caption))
         }
         other => Err(unsupported(other, ".edge, .json or .svg")),
     }

@@ -10,7 +10,7 @@ use std::f64::consts::TAU;
 #[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
 pub enum Shape {
     /// Random points on a sphere (in convex position up to rounding; any that are not are
-    /// reported by [`Shell::new`]).
+    /// reported by `tetrakit shell`).
     Sphere,
     /// A cube: its 8 corners, and the other points on its faces (coplanar facets with
     /// points that are not vertices).
