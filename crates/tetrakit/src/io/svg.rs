@@ -176,8 +176,15 @@ fn clip(a: &Point2, b: &Point2, lo: &Point2, hi: &Point2) -> Option<(Point2, Poi
             }
         }
     }
-    let at = |t: f64| [a[0] + t * d[0], a[1] + t * d[1]];
-    (t0 <= t1).then(|| (at(t0), at(t1)))
+    // The ends inside the box are kept as they are (no rounding at t = 0 or 1).
+    let at = |t: f64, end: &Point2, te: f64| {
+        if t == te {
+            *end
+        } else {
+            [a[0] + t * d[0], a[1] + t * d[1]]
+        }
+    };
+    (t0 <= t1).then(|| (at(t0, a, 0.0), at(t1, b, 1.0)))
 }
 
 /// A page of panels, each placed at a pixel offset, framed, titled and clipped.
