@@ -9,6 +9,7 @@
 //! JSON fields as text, and the cells as numpy arrays.
 #![forbid(unsafe_code)]
 
+mod constrain;
 mod convert;
 mod mesh;
 mod planar;
@@ -21,6 +22,8 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add_function(wrap_pyfunction!(mesh::check, m)?)?;
     m.add_function(wrap_pyfunction!(mesh::detect, m)?)?;
+    m.add_function(wrap_pyfunction!(constrain::contains, m)?)?;
+    m.add_function(wrap_pyfunction!(constrain::constrained, m)?)?;
     m.add_function(wrap_pyfunction!(poly::mintetra, m)?)?;
     m.add_function(wrap_pyfunction!(poly::tetrahedralize, m)?)?;
     m.add_function(wrap_pyfunction!(poly::shell, m)?)?;

@@ -22,7 +22,7 @@ UNIT_TET = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], dtype=float)
 CLI_ONLY = {"seconds", "parse_seconds", "seconds_parse", "seconds_algorithm", "seconds_stages",
             "mintetra_seconds", "verify_seconds", "faces_beside_not_read", "short_pairs_budget",
             "output", "svg", "method", "inner_on_outer", "flips", "tets", "alternative",
-            "other_cells"}
+            "other_cells", "tris", "proof"}
 
 
 def cli(*args):
@@ -128,7 +128,7 @@ def test_bad_input_messages_are_the_file_readers(tmp_path):
     assert str(e.value) in c.stderr
 
 
-# --- detect, mintetra, tetrahedralize --------------------------------------------------
+# --- detect, contains, constrained, mintetra, tetrahedralize --------------------------------------------------
 
 def test_detect_yes_and_no_match_the_cli(tmp_path):
     pts, tets = kuhn(2)
@@ -141,6 +141,45 @@ def test_detect_yes_and_no_match_the_cli(tmp_path):
     assert yes.verdict == "yes" and tetrakit.check(pts, yes.cells, convex=True).valid
     no = tetrakit.detect(pts, edges[1:])
     assert no.verdict == "no" and no.witness["kind"] and len(no.cells) == 0
+
+
+def test_contains_and_constrained_match_the_cli(tmp_path):
+    pts, tets = kuhn(1)
+    edges = np.unique(np.sort(np.concatenate([tets[:, [i, j]] for i in range(4) for j in range(i + 1, 4)]), axis=1), axis=0)
+    cube = [tuple(p) for p in pts]
+    other = [cube.index(a) for a in [(0, 0, 0), (1, 1, 1)]]  # the long diagonal is an edge of Kuhn's
+    extra = np.vstack([edges, [[cube.index((1, 0, 0)), cube.index((0, 1, 1))]]])  # a second long diagonal
+    cases = [("contains", extra, "yes"), ("contains", edges[1:], "no"),
+             ("constrained", [other], "yes"),
+             ("constrained", [other, [cube.index((1, 0, 0)), cube.index((0, 1, 1))]], "no")]
+    for k, (command, segs, verdict) in enumerate(cases):
+        r = getattr(tetrakit, command)(pts, segs)
+        c = cli(command, write_json(tmp_path / f"{k}.json", points=pts, segments=segs))
+        assert_same_fields(r, c)
+        assert r.verdict == verdict, (command, r)
+        if verdict == "yes":
+            assert r.certified and r.cells.shape == (r.tetrahedra, 4)
+            assert tetrakit.check(pts, r.cells, convex=True).valid
+            used = {tuple(sorted((t[i], t[j]))) for t in r.cells.tolist() for i in range(4) for j in range(i + 1, 4)}
+            given = {tuple(sorted(e)) for e in np.asarray(segs).tolist()}
+            assert used <= given if command == "contains" else given <= used
+        else:
+            assert r.witness["kind"] == c["witness"]["kind"] and len(r.cells) == 0
+    m = tetrakit.constrained(pts, [other], minimal=True)  # the long diagonal rules out the 5-tet cube
+    assert m.minimum and m.tetrahedra == 6
+
+
+def test_planar_contains_gives_triangles_and_bad_segments_are_a_value_error(tmp_path):
+    square = np.array([[0, 0], [1, 0], [1, 1], [0, 1]], dtype=float)
+    r = tetrakit.contains(square, [[0, 1], [1, 2], [2, 3], [3, 0], [0, 2]])
+    assert r.planar and r.triangles == 2 and r.cells.tolist() == [[0, 1, 2], [0, 2, 3]]
+    bad = write_json(tmp_path / "bad.json", points=square, segments=[[0, 7]])
+    c = subprocess.run([str(ROOT / "target/release/tetrakit"), "constrained", str(bad)],
+                       capture_output=True, text=True)
+    assert c.returncode == 2
+    with pytest.raises(ValueError) as e:
+        tetrakit.constrained(square, [[0, 7]])
+    assert str(e.value) in c.stderr
 
 
 def bipyramid(k):

@@ -33,6 +33,8 @@ __version__ = _core.__version__
 __all__ = [
     "check",
     "detect",
+    "contains",
+    "constrained",
     "mintetra",
     "tetrahedralize",
     "shell",
@@ -42,6 +44,7 @@ __all__ = [
     "from_meshio",
     "CheckResult",
     "DetectResult",
+    "ConstrainResult",
     "MintetraResult",
     "TetrahedralizeResult",
     "ShellResult",
@@ -168,6 +171,65 @@ def detect(points, segments) -> DetectResult:
     """
     text, cells = _core.detect(_points(points), _cells(segments, 2, "segments"))
     return _make(DetectResult, text, cells=cells)
+
+
+@dataclass
+class ConstrainResult:
+    """The answer of :func:`contains` or :func:`constrained` (``tetrakit contains --json``,
+    ``tetrakit constrained --json``)."""
+
+    verdict: str
+    vertices: int
+    segments: int
+    planar: bool
+    route: str
+    candidates: int
+    sat_calls: int
+    cells: np.ndarray = field(repr=False)
+    tetrahedra: Optional[int] = None
+    triangles: Optional[int] = None
+    minimum: Optional[bool] = None
+    certified: Optional[bool] = None
+    witness: Optional[dict] = None
+
+
+def contains(points, segments, minimal: bool = False, time_limit: Optional[float] = None) -> ConstrainResult:
+    """Does the segment set contain the edge set of a tetrahedralization of its points
+    (TETRAD, thesis §2.5; for coplanar points, of a triangulation: TRID)? Exact (SAT).
+
+    YES gives certified ``cells`` (tetrahedra, or triangles when ``planar``) whose edges
+    are all segments, the fewest possible with ``minimal``; NO gives a ``witness``;
+    ``"undecided"`` when ``time_limit`` seconds run out. The CLI's ``--proof`` writes a
+    DRAT refutation of a NO.
+
+    >>> import numpy as np, tetrakit
+    >>> square = np.array([[0, 0], [1, 0], [1, 1], [0, 1]], dtype=float)
+    >>> r = tetrakit.contains(square, [[0, 1], [1, 2], [2, 3], [3, 0], [0, 2], [1, 3]])
+    >>> r.verdict, r.planar, len(r.cells)
+    ('yes', True, 2)
+    >>> tetrakit.contains(square, [[0, 1], [1, 2], [2, 3], [3, 0]]).verdict
+    'no'
+    """
+    text, cells = _core.contains(_points(points), _cells(segments, 2, "segments"), minimal, time_limit)
+    return _make(ConstrainResult, text, cells=cells)
+
+
+def constrained(points, segments, minimal: bool = False, time_limit: Optional[float] = None) -> ConstrainResult:
+    """Is there a tetrahedralization of the points (every point a vertex) with every
+    segment as an edge (CT, thesis §2.6; a triangulation for coplanar points)? Exact (SAT).
+
+    Crossing constraints, or one through a point, are a NO with a ``witness`` naming
+    them; otherwise the solver decides, as in :func:`contains`.
+
+    >>> import numpy as np, tetrakit
+    >>> square = np.array([[0, 0], [1, 0], [1, 1], [0, 1]], dtype=float)
+    >>> tetrakit.constrained(square, [[0, 2]]).cells.tolist()
+    [[0, 1, 2], [0, 2, 3]]
+    >>> tetrakit.constrained(square, [[0, 2], [1, 3]]).witness["kind"]
+    'crossing_constraints'
+    """
+    text, cells = _core.constrained(_points(points), _cells(segments, 2, "segments"), minimal, time_limit)
+    return _make(ConstrainResult, text, cells=cells)
 
 
 @dataclass

@@ -1,0 +1,113 @@
+//! `contains` and `constrained` (thesis ch. 2 §2.5–2.6, decided exactly by SAT).
+
+use crate::convert::{self, Json, Rows, array, value_error};
+use numpy::{PyArray2, PyReadonlyArray2};
+use pyo3::prelude::*;
+use serde_json::json;
+use tetrakit::constrain::{self, Answer, Options, Question};
+use tetrakit::detect::Cells;
+
+/// The decision of `question` on `points` and `segments` as JSON (the CLI's fields but
+/// the cell lists) and its certified cells: tetrahedra, or triangles for coplanar points
+/// (an empty `(0, 4)` array for a NO or undecided).
+fn decide<'py>(
+    py: Python<'py>,
+    question: Question,
+    points: PyReadonlyArray2<'py, f64>,
+    segments: PyReadonlyArray2<'py, i64>,
+    minimal: bool,
+    time_limit: Option<f64>,
+) -> PyResult<(Json, Bound<'py, PyArray2<i64>>)> {
+    let (pts, dim) = convert::points(&points, "points")?;
+    let rows = Rows {
+        segments: convert::rows(&segments, "segments")?,
+        ..Default::default()
+    };
+    let input = convert::input(pts, dim, &rows)?;
+    if input.segments.is_empty() && question == Question::Contains {
+        return Err(value_error("no segments to test"));
+    }
+    let ctl = convert::control(time_limit)?;
+    let solve = match question {
+        Question::Contains => constrain::contains,
+        Question::Constrained => constrain::constrained,
+    };
+    let opts = Options { minimal };
+    let d = convert::run(py, &ctl, || {
+        solve(&input.points, &input.segments, &opts, &ctl)
+    })?
+    .map_err(value_error)?;
+    let mut v = json!({
+        "verdict": match d.answer {
+            Answer::Yes(_) => "yes",
+            Answer::No(_) => "no",
+            Answer::Undecided => "undecided",
+        },
+        "vertices": input.points.len(),
+        "segments": input.segments.len(),
+        "planar": d.planar,
+        "route": d.route,
+        "candidates": d.stats.candidates,
+        "sat_calls": d.stats.calls,
+    });
+    let cells = match &d.answer {
+        Answer::Yes(Cells::Tetrahedra(t)) => {
+            v["tetrahedra"] = json!(t.len());
+            array(py, t)
+        }
+        Answer::Yes(Cells::Triangles(t)) => {
+            v["triangles"] = json!(t.len());
+            array(py, t)
+        }
+        Answer::No(w) => {
+            v["witness"] = json!(w);
+            array::<4>(py, &[])
+        }
+        Answer::Undecided => array::<4>(py, &[]),
+    };
+    if matches!(d.answer, Answer::Yes(_)) {
+        v["minimum"] = json!(d.minimum);
+        v["certified"] = json!(true);
+    }
+    Ok((v.to_string(), cells))
+}
+
+/// `contains(points, segments, minimal, time_limit)`: TETRAD (TRID for coplanar points).
+#[pyfunction]
+#[pyo3(signature = (points, segments, minimal=false, time_limit=None))]
+pub fn contains<'py>(
+    py: Python<'py>,
+    points: PyReadonlyArray2<'py, f64>,
+    segments: PyReadonlyArray2<'py, i64>,
+    minimal: bool,
+    time_limit: Option<f64>,
+) -> PyResult<(Json, Bound<'py, PyArray2<i64>>)> {
+    decide(
+        py,
+        Question::Contains,
+        points,
+        segments,
+        minimal,
+        time_limit,
+    )
+}
+
+/// `constrained(points, segments, minimal, time_limit)`: CT, every segment an edge.
+#[pyfunction]
+#[pyo3(signature = (points, segments, minimal=false, time_limit=None))]
+pub fn constrained<'py>(
+    py: Python<'py>,
+    points: PyReadonlyArray2<'py, f64>,
+    segments: PyReadonlyArray2<'py, i64>,
+    minimal: bool,
+    time_limit: Option<f64>,
+) -> PyResult<(Json, Bound<'py, PyArray2<i64>>)> {
+    decide(
+        py,
+        Question::Constrained,
+        points,
+        segments,
+        minimal,
+        time_limit,
+    )
+}
