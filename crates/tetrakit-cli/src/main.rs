@@ -354,8 +354,9 @@ struct MwtArgs {
     #[arg(long)]
     output: Option<PathBuf>,
     /// Give up after this many seconds: exit 3 with certified bounds on the minimum
-    /// weight (a minimum spanning tree below; above, the Delaunay triangulation after
-    /// flips that shorten it, which is written to --output).
+    /// weight (below: from the solver's state once the LMT-skeleton has run, else a
+    /// minimum spanning tree; above: the Delaunay triangulation after flips that
+    /// shorten it, which is written to --output).
     #[arg(long, value_parser = seconds)]
     time_limit: Option<Duration>,
 }

@@ -8,7 +8,7 @@ use std::time::{Duration, Instant};
 use tetrakit::control::Control;
 use tetrakit::geom::{Point2, Ratio};
 use tetrakit::io;
-use tetrakit::planar::{self, Distribution, MwtOptions, PlanarError, Region};
+use tetrakit::planar::{self, Distribution, MwtBounds, MwtOutcome, Region};
 
 /// Reads planar points and their heights. Without `xy` every z must be 0; with it the
 /// points are projected to the xy-plane and their z kept.
@@ -116,13 +116,12 @@ pub fn mwt(a: MwtArgs) -> CmdResult {
     let parsed = start.elapsed().as_secs_f64();
     let t = Instant::now();
     let run = Run::new(a.time_limit, points.len(), 50_000);
-    let m = match planar::mwt(&points, &MwtOptions::default(), &run.ctl) {
-        Ok(m) => m,
-        Err(PlanarError::Stopped) => {
-            run.stage("out of time: bounds");
-            return undecided(&a, &points, &z, start);
+    let m = match planar::mwt_or_bounds(&points, &run.ctl).map_err(CliError::new)? {
+        MwtOutcome::Solved(m) => m,
+        MwtOutcome::Stopped(b) => {
+            drop(run);
+            return undecided(&a, &points, &z, &b, start);
         }
-        Err(e) => return Err(CliError::new(e)),
     };
     drop(run);
     let (as_json, output) = (a.as_json, a.output);
@@ -176,11 +175,16 @@ pub fn mwt(a: MwtArgs) -> CmdResult {
     Ok(Verdict::Yes)
 }
 
-/// Out of time: exit 3 with certified bounds on the minimum weight (the minimum
-/// spanning tree's and a triangulation's: Delaunay, flipped shorter), writing that
-/// triangulation.
-fn undecided(a: &MwtArgs, points: &[Point2], z: &[f64], start: Instant) -> CmdResult {
-    let b = planar::mwt_bounds(points).map_err(CliError::new)?;
+/// Out of time: exit 3 with certified bounds on the minimum weight (the better of the
+/// minimum spanning tree's and the solver's, and a triangulation's: Delaunay, flipped
+/// shorter), writing that triangulation.
+fn undecided(
+    a: &MwtArgs,
+    points: &[Point2],
+    z: &[f64],
+    b: &MwtBounds,
+    start: Instant,
+) -> CmdResult {
     if let Some(out) = a.output {
         io::write_planar_triangulation(out, points, z, &b.edges, &b.triangles).written(out)?;
     }
@@ -193,6 +197,7 @@ fn undecided(a: &MwtArgs, points: &[Point2], z: &[f64], start: Instant) -> CmdRe
                 "vertices": points.len(),
                 "time_limit": limit,
                 "lower_bound": b.lower.lo,
+                "lower_bound_from": b.lower_source,
                 "upper_bound": b.upper.hi,
                 "edges": b.edges.len(),
                 "triangles": b.triangles.len(),
@@ -201,9 +206,10 @@ fn undecided(a: &MwtArgs, points: &[Point2], z: &[f64], start: Instant) -> CmdRe
         );
     } else {
         out!(
-            "undecided within the time limit ({limit} s): the minimum weight of a triangulation of {} sites is between {:.17e} (minimum spanning tree) and {:.17e} (Delaunay triangulation flipped shorter{})",
+            "undecided within the time limit ({limit} s): the minimum weight of a triangulation of {} sites is between {:.17e} ({}) and {:.17e} (Delaunay triangulation flipped shorter{})",
             points.len(),
             b.lower.lo,
+            b.lower_source,
             b.upper.hi,
             if a.output.is_some() { ", written" } else { "" }
         );

@@ -6,7 +6,7 @@ use pyo3::prelude::*;
 use serde_json::json;
 use tetrakit::control::Control;
 use tetrakit::geom::{Point2, Ratio};
-use tetrakit::planar::{self, MwtOptions, PlanarError, Region};
+use tetrakit::planar::{self, MwtOutcome, Region};
 
 /// Planar sites from an `(n, 2)` array (or `(n, 3)` with every z = 0), checked as a
 /// file's points are.
@@ -67,23 +67,21 @@ pub fn mwt<'py>(
 ) -> PyResult<MwtOut<'py>> {
     let pts = sites(&points)?;
     let ctl = convert::control(time_limit)?;
-    let m = convert::run(py, &ctl, || planar::mwt(&pts, &MwtOptions::default(), &ctl))?;
-    let m = match m {
-        Ok(m) => m,
-        Err(PlanarError::Stopped) => {
-            let b = convert::run(py, &Control::new(), || planar::mwt_bounds(&pts))?
-                .map_err(value_error)?;
+    let m = convert::run(py, &ctl, || planar::mwt_or_bounds(&pts, &ctl))?;
+    let m = match m.map_err(value_error)? {
+        MwtOutcome::Solved(m) => m,
+        MwtOutcome::Stopped(b) => {
             let v = json!({
                 "verdict": "undecided",
                 "vertices": pts.len(),
                 "lower_bound": b.lower.lo,
+                "lower_bound_from": b.lower_source,
                 "upper_bound": b.upper.hi,
                 "edges": b.edges.len(),
                 "triangles": b.triangles.len(),
             });
             return Ok((v.to_string(), array(py, &b.edges), array(py, &b.triangles)));
         }
-        Err(e) => return Err(value_error(e)),
     };
     let s = &m.stats;
     let v = json!({

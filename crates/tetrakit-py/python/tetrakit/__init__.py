@@ -393,6 +393,7 @@ class MwtResult:
     faces_with_holes: Optional[int] = None
     largest_face: Optional[int] = None
     lower_bound: Optional[float] = None
+    lower_bound_from: Optional[str] = None
     upper_bound: Optional[float] = None
 
 

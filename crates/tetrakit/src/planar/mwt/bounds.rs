@@ -18,8 +18,11 @@ use std::cmp::Ordering;
 /// gives the upper one.
 #[derive(Clone, Debug)]
 pub struct MwtBounds {
-    /// The minimum spanning tree's weight: `lower.lo` is at most the minimum weight.
+    /// A lower bound: `lower.lo` is at most the minimum weight.
     pub lower: Interval,
+    /// Where `lower` comes from: `"minimum spanning tree"` (its weight) or, from
+    /// [`mwt_or_bounds`](super::mwt_or_bounds), `"the solver's state"`.
+    pub lower_source: &'static str,
     /// The weight of a triangulation: `upper.hi` is at least the minimum weight.
     pub upper: Interval,
     /// That triangulation's edges, sorted (certified a triangulation): the Delaunay
@@ -49,6 +52,7 @@ pub fn mwt_bounds(points: &[Point2]) -> Result<MwtBounds, PlanarError> {
         let m = collinear(points);
         return Ok(MwtBounds {
             lower: m.weight,
+            lower_source: "minimum spanning tree",
             upper: m.weight,
             edges: m.edges,
             triangles: Vec::new(),
@@ -67,10 +71,38 @@ pub fn mwt_bounds(points: &[Point2]) -> Result<MwtBounds, PlanarError> {
     certify(points, &hull, &edges, &triangles)?;
     Ok(MwtBounds {
         lower: weight_of(points, &tree),
+        lower_source: "minimum spanning tree",
         upper: weight_of(points, &edges),
         edges,
         triangles,
     })
+}
+
+/// A lower bound on the minimum weight from the solver's state: `known`, edges of
+/// every MWT or edges whose weight every MWT matches (the optimum of a face solved
+/// exactly, in a face of edges in every MWT), and `left`, groups `(k, edges)` from
+/// each of which an MWT has exactly `k` edges and nothing else beyond `known` (a face
+/// still open, with its interior edge count and its undecided edges). The MWT weighs at
+/// least `known` plus the `k` shortest edges of each group. Lengths are the lower ends
+/// of their intervals, selected exactly, and the sums are rounded down.
+pub(super) fn state_bound(
+    points: &[Point2],
+    known: &[[u32; 2]],
+    left: &[(usize, Vec<[u32; 2]>)],
+) -> f64 {
+    let group = |(k, edges): &(usize, Vec<[u32; 2]>)| {
+        let mut lengths: Vec<f64> = (edges.iter())
+            .map(|e| Interval::length(&points[e[0] as usize], &points[e[1] as usize]).lo)
+            .collect();
+        let k = (*k).min(lengths.len());
+        if k < lengths.len() {
+            lengths.select_nth_unstable_by(k, f64::total_cmp);
+        }
+        (lengths[..k].iter()).fold(0.0_f64, |sum, &l| (sum + l).next_down().max(0.0))
+    };
+    let sums: Vec<f64> = left.par_iter().map(group).collect();
+    let rest = (sums.iter()).fold(0.0_f64, |sum, &l| (sum + l).next_down().max(0.0));
+    (weight_of(points, known).lo + rest).next_down()
 }
 
 /// Flips allowed per site in [`flip_shorter`] (its work stays linear whatever the set).

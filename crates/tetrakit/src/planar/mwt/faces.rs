@@ -50,6 +50,21 @@ pub struct Face {
     pub holes: Vec<Vec<u32>>,
 }
 
+impl Face {
+    /// The number of edges every triangulation of the face adds inside it. A simple
+    /// polygon of `m` corners takes `m - 3` diagonals; each hole whose walk has `k ≥ 2`
+    /// occurrences adds `k + 3` (cut the face open along a bridge to it: `k + 2` more
+    /// corners, and the bridge counted twice), an isolated site adds 3 (the three edges
+    /// of the triangle it splits). Walks that visit a site twice count each visit, so
+    /// the same holds for them after cutting along the doubled edges.
+    pub fn interior_edges(&self) -> usize {
+        let holes: usize = (self.holes.iter())
+            .map(|h| if h.len() < 2 { 3 } else { h.len() + 3 })
+            .sum();
+        self.outer.len() + holes - 3
+    }
+}
+
 /// Solves a face exactly. `chords` are the alive edges usable inside it. `None` when
 /// the face has no triangulation with them.
 ///
@@ -573,6 +588,7 @@ mod tests {
             holes,
         };
         let sol = solve(pts, &face, &chords, &Control::new()).expect("a triangulation exists");
+        assert_eq!(sol.edges.len(), face.interior_edges(), "{:?}", face.holes);
         let mut edges = sol.edges;
         edges.extend(&fixed);
         edges.sort_unstable();

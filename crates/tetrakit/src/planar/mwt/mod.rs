@@ -118,6 +118,65 @@ pub struct Mwt {
 /// assert_eq!(mwt(&pts, &MwtOptions::default(), &stopped).unwrap_err(), PlanarError::Stopped);
 /// ```
 pub fn mwt(points: &[Point2], opts: &MwtOptions, ctl: &Control) -> Result<Mwt, PlanarError> {
+    mwt_reporting(points, opts, ctl, &mut 0.0)
+}
+
+/// What [`mwt_or_bounds`] found: the MWT, or certified bounds when stopped first.
+#[derive(Clone, Debug)]
+pub enum MwtOutcome {
+    /// The exact minimum weight triangulation.
+    Solved(Mwt),
+    /// Stopped by the control: [`mwt_bounds`], its lower bound raised to the solver's
+    /// ([`MwtBounds::lower_source`] says which).
+    Stopped(MwtBounds),
+}
+
+/// [`mwt`] (no constraints), or, once `ctl` is stopped, certified bounds on the minimum
+/// weight with a triangulation that meets the upper one. The lower bound is the better
+/// of the minimum spanning tree's and the one the solver's state gives when the
+/// LMT-skeleton has run: every MWT has the `3n - 3 - h` edges of any triangulation (`h`
+/// sites on the hull's boundary), the edges the skeleton fixed, the optimum of every
+/// face already solved, and otherwise only undecided edges of the faces left, so it
+/// weighs at least those weights plus the shortest undecided edges that make up the
+/// count.
+///
+/// ```
+/// use tetrakit::control::Control;
+/// use tetrakit::planar::{MwtOutcome, mwt_or_bounds};
+/// let pts = [[0.0, 0.0], [4.0, 0.0], [4.0, 3.0], [0.0, 3.0], [1.0, 1.5]];
+/// assert!(matches!(mwt_or_bounds(&pts, &Control::new()).unwrap(), MwtOutcome::Solved(_)));
+/// let stopped = Control::new();
+/// stopped.stop();
+/// let MwtOutcome::Stopped(b) = mwt_or_bounds(&pts, &stopped).unwrap() else { panic!() };
+/// assert!(b.lower.lo <= b.upper.hi && b.lower_source == "minimum spanning tree");
+/// ```
+pub fn mwt_or_bounds(points: &[Point2], ctl: &Control) -> Result<MwtOutcome, PlanarError> {
+    let mut lower = 0.0;
+    match mwt_reporting(points, &MwtOptions::default(), ctl, &mut lower) {
+        Ok(m) => Ok(MwtOutcome::Solved(m)),
+        Err(PlanarError::Stopped) => {
+            let mut b = mwt_bounds(points)?;
+            if lower > b.lower.lo {
+                b.lower = Interval {
+                    lo: lower,
+                    hi: lower,
+                };
+                b.lower_source = "the solver's state";
+            }
+            Ok(MwtOutcome::Stopped(b))
+        }
+        Err(e) => Err(e),
+    }
+}
+
+/// [`mwt`], setting `lower` to a certified lower bound on the minimum weight from the
+/// solver's state when it stops (left as it is when there is none).
+fn mwt_reporting(
+    points: &[Point2],
+    opts: &MwtOptions,
+    ctl: &Control,
+    lower: &mut f64,
+) -> Result<Mwt, PlanarError> {
     super::check_sites(points)?;
     let n = points.len() as u32;
     let constraints = opts.forced.iter().chain(&opts.forbidden);
@@ -144,7 +203,7 @@ pub fn mwt(points: &[Point2], opts: &MwtOptions, ctl: &Control) -> Result<Mwt, P
         forced: sorted(renumber.to_new(&opts.forced)),
         forbidden: sorted(renumber.to_new(&opts.forbidden)),
     };
-    let m = solve(&local, &local_opts, &renumber, ctl)?;
+    let m = solve(&local, &local_opts, &renumber, ctl, lower)?;
     Ok(Mwt {
         edges: sorted(renumber.to_old(&m.edges)),
         triangles: renumber.to_old(&m.triangles),
@@ -155,11 +214,13 @@ pub fn mwt(points: &[Point2], opts: &MwtOptions, ctl: &Control) -> Result<Mwt, P
 }
 
 /// [`mwt`] on checked sites; `global` maps site indices to the caller's (messages).
+/// Stopped after the LMT-skeleton, it sets `lower` ([`faces_bound`]).
 fn solve(
     points: &[Point2],
     opts: &MwtOptions,
     global: &Renumbering,
     ctl: &Control,
+    lower: &mut f64,
 ) -> Result<Mwt, PlanarError> {
     ctl.check()?;
     let hull = Hull2::new(points);
@@ -210,13 +271,18 @@ fn solve(
             ))
         },
     )?;
-    ctl.check()?;
+    let (certain, alive) = (sk.with_status(CERTAIN), sk.with_status(ALIVE));
+    if ctl.is_stopped() {
+        if let Ok(problems) = undecided_faces(points, &certain, &alive) {
+            *lower = faces_bound(points, &certain, &problems, &[]);
+        }
+        return Err(PlanarError::Stopped);
+    }
     stats.skeleton_edges = lstats.certain;
     stats.undecided_edges = lstats.undecided;
     stats.seconds[1] = t1.elapsed().as_secs_f64();
     ctl.stage(mwt_stage::FACES);
     let t2 = Instant::now();
-    let (certain, alive) = (sk.with_status(CERTAIN), sk.with_status(ALIVE));
     let mut edges = certain.clone();
     if !alive.is_empty() {
         let problems = undecided_faces(points, &certain, &alive)?;
@@ -245,7 +311,10 @@ fn solve(
                 })
                 .collect()
         });
-        ctl.check()?;
+        if ctl.is_stopped() {
+            *lower = faces_bound(points, &certain, &problems, &solved);
+            return Err(PlanarError::Stopped);
+        }
         for s in solved {
             let s = s.ok_or_else(|| {
                 PlanarError::internal(
@@ -268,6 +337,27 @@ fn solve(
         skeleton: certain,
         stats,
     })
+}
+
+/// [`bounds::state_bound`] once the faces are known: the certain edges and the solved
+/// faces' edges (`solved[i]`, when there) are known, every other face needs its
+/// [`Face::interior_edges`] from its chords.
+fn faces_bound(
+    points: &[Point2],
+    certain: &[[u32; 2]],
+    problems: &[FaceProblem],
+    solved: &[Option<Solution>],
+) -> f64 {
+    let (mut known, mut left) = (certain.to_vec(), Vec::new());
+    for (i, (face, chords)) in problems.iter().enumerate() {
+        match solved.get(i).and_then(Option::as_ref) {
+            Some(s) => known.extend(&s.edges),
+            None => left.push((face.interior_edges(), chords.iter().copied().collect())),
+        }
+    }
+    known.sort_unstable();
+    known.dedup();
+    bounds::state_bound(points, &known, &left)
 }
 
 /// The most memory the solver plans to use: past it an error says so before the
@@ -703,6 +793,103 @@ mod tests {
             for ctl in [&stopped, &past] {
                 let err = mwt(set, &MwtOptions::default(), ctl).unwrap_err();
                 assert_eq!(err, PlanarError::Stopped);
+            }
+        }
+    }
+
+    /// Every face the exact stage solves gets `Face::interior_edges` edges from it (faces
+    /// with holes of every shape: `faces::tests::solve_face`).
+    #[test]
+    fn faces_take_the_interior_edge_count() {
+        let mut faces = 0;
+        for seed in 0..30 {
+            let dist = [
+                Distribution::Clustered,
+                Distribution::Uniform,
+                Distribution::Grid,
+            ];
+            let pts = points2d(dist[seed as usize % 3], 100 + 30 * seed as usize, seed);
+            let hull = Hull2::new(&pts);
+            let go = Control::new();
+            let cands = candidates::search(&pts, usize::MAX, &go).unwrap();
+            let (sk, _) = lmt::lmt_skeleton(&pts, &hull, cands, &[], &[], &go).unwrap();
+            let (certain, alive) = (sk.with_status(CERTAIN), sk.with_status(ALIVE));
+            for (face, chords) in undecided_faces(&pts, &certain, &alive).unwrap() {
+                let s = faces::solve(&pts, &face, &chords, &go).unwrap();
+                assert_eq!(s.edges.len(), face.interior_edges(), "seed {seed}");
+                faces += 1;
+            }
+        }
+        assert!(faces > 1000, "{faces} faces");
+    }
+
+    /// Stopped as the LMT-skeleton or the exact stage starts, the solver's lower bound is
+    /// at most the minimum weight and at least the spanning tree's, and from the exact
+    /// stage on, far above it; stopped by deadlines anywhere, every bound is sound.
+    #[test]
+    fn the_lower_bound_from_the_solvers_state_is_sound_and_close() {
+        use crate::control::Progress;
+        let stop_at = |stage: &'static str| {
+            let flag = Control::new();
+            let ctl = flag.clone();
+            ctl.with_progress(move |p| {
+                if p == Progress::Stage(stage) {
+                    flag.stop();
+                }
+            })
+        };
+        let (mut state, mut ratios) = (0, Vec::new());
+        for seed in 0..24 {
+            let dist = [
+                Distribution::Uniform,
+                Distribution::Clustered,
+                Distribution::Gaussian,
+            ];
+            let pts = points2d(dist[seed as usize % 3], 60 + 40 * seed as usize, seed);
+            let opt = mwt(&pts, &MwtOptions::default(), &Control::new())
+                .unwrap()
+                .weight;
+            let mst = mwt_bounds(&pts).unwrap().lower.lo;
+            for stage in [mwt_stage::SKELETON, mwt_stage::FACES] {
+                let MwtOutcome::Stopped(b) = mwt_or_bounds(&pts, &stop_at(stage)).unwrap() else {
+                    panic!("stopped at {stage}, it solved");
+                };
+                assert!(
+                    b.lower.lo <= opt.hi,
+                    "seed {seed} {stage}: {} > {}",
+                    b.lower.lo,
+                    opt.hi
+                );
+                assert!(b.lower.lo >= mst && opt.lo <= b.upper.hi);
+                if b.lower_source != "minimum spanning tree" {
+                    state += 1;
+                }
+                if stage == mwt_stage::FACES {
+                    ratios.push(b.lower.lo / opt.lo);
+                }
+            }
+        }
+        assert!(state >= 24, "the solver's bound won only {state} times");
+        ratios.sort_by(f64::total_cmp);
+        // Measured: 0.75 at worst (clustered sets, whose open faces are long), 0.97 median.
+        assert!(
+            ratios[0] > 0.7,
+            "worst bound {:.3} of the optimum",
+            ratios[0]
+        );
+        assert!(
+            ratios[ratios.len() / 2] > 0.95,
+            "median bound {:.3}",
+            ratios[ratios.len() / 2]
+        );
+        let pts = points2d(Distribution::Clustered, 20_000, 3);
+        let opt = mwt(&pts, &MwtOptions::default(), &Control::new())
+            .unwrap()
+            .weight;
+        for ms in [5, 20, 50, 100, 200, 400, 800] {
+            let ctl = Control::new().with_time_limit(std::time::Duration::from_millis(ms));
+            if let MwtOutcome::Stopped(b) = mwt_or_bounds(&pts, &ctl).unwrap() {
+                assert!(b.lower.lo <= opt.hi && opt.lo <= b.upper.hi, "{ms} ms");
             }
         }
     }
