@@ -404,6 +404,8 @@ pub struct LmtStats {
     pub certain: usize,
     /// Edges still undecided.
     pub undecided: usize,
+    /// The rounds reached their fixpoint (not stopped by the control first).
+    pub complete: bool,
 }
 
 /// Computes the LMT-skeleton of `candidates` (sorted `[p, q]`, `p < q`, containing every
@@ -454,14 +456,21 @@ pub fn lmt_skeleton(
     eliminate(points, &sk, &status, queue, ctl);
     sk.status = status.into_iter().map(|s| s.into_inner()).collect();
     // An alive edge that no alive edge crosses is in every MWT (fact 2). Promotion
-    // changes no LMT test, so one pass suffices.
-    let promote: Vec<usize> = crossed_by_none(points, &sk);
-    for e in promote {
-        sk.status[e] = CERTAIN;
+    // changes no LMT test, so one pass suffices; stopped, it is skipped (it only adds
+    // certain edges, and early on it would test nearly every candidate).
+    let complete = !ctl.is_stopped();
+    if complete {
+        for e in crossed_by_none(points, &sk) {
+            sk.status[e] = CERTAIN;
+        }
     }
     let certain = sk.status.iter().filter(|&&s| s == CERTAIN).count();
     let undecided = sk.status.iter().filter(|&&s| s == ALIVE).count();
-    let stats = LmtStats { certain, undecided };
+    let stats = LmtStats {
+        certain,
+        undecided,
+        complete,
+    };
     Ok((sk, stats))
 }
 

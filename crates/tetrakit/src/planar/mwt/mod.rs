@@ -273,9 +273,19 @@ fn solve(
     )?;
     let (certain, alive) = (sk.with_status(CERTAIN), sk.with_status(ALIVE));
     if ctl.is_stopped() {
-        if let Ok(problems) = undecided_faces(points, &certain, &alive) {
-            *lower = faces_bound(points, &certain, &problems, &[]);
-        }
+        // Faces are worth finding only when the skeleton is complete (before, they are
+        // few and huge, and finding them takes as long as the rounds left).
+        let faces = lstats
+            .complete
+            .then(|| undecided_faces(points, &certain, &alive).ok());
+        *lower = match faces.flatten() {
+            Some(problems) => faces_bound(points, &certain, &problems, &[]),
+            None => {
+                let h = hull.on_boundary.iter().filter(|&&b| b).count();
+                let needed = (3 * n - 3 - h).saturating_sub(certain.len());
+                bounds::state_bound(points, &certain, &[(needed, alive)])
+            }
+        };
         return Err(PlanarError::Stopped);
     }
     stats.skeleton_edges = lstats.certain;
