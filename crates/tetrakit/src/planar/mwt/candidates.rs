@@ -31,10 +31,21 @@
 //!   or outside the grid: a ray from `p` to a farther cell crosses the ring in a cell
 //!   inside the grid (the grid is convex), so that cell's directions, dead, include it.
 //!
+//! **Sites left out.** A visited site `x` all of whose directions within `θ` are dead
+//! (at its distance, so at every later one) is not kept among the visited sites: it
+//! cannot lie in a diamond of any later pair `pq` in a live direction (that direction
+//! is more than `θ` from `x`'s), and the dead intervals it would add lie within `θ` of
+//! it, dead already. Leaving a site out is safe in any case: a dead interval rests on
+//! the two sites that bound it, whatever lies between them, and a missing blocker only
+//! keeps a pair. On clustered sets this keeps the angular list short for sites on a
+//! cluster's rim, which look into empty space past hundreds of sites (10 % off the
+//! search there, the same candidates).
+//!
 //! A visited site in a live direction gets the exact test against the visited sites
 //! within `θ` of its direction, nearest in angle first. Only sites closer than `q` can
 //! lie in a diamond of `pq`, and they have all been visited unless their direction is
-//! dead at their distance, and so at `q`'s.
+//! dead at their distance, and so at `q`'s (a blocker missed, or left out as above,
+//! only keeps a pair).
 //!
 //! **Why the floating-point search is exact.** Every exclusion is decided one of two
 //! ways: by exact hits ([`diamond_hit`] on two sites, one per diamond, or one on the
@@ -382,7 +393,14 @@ fn candidates_of(slot: usize, grid: &PointGrid, s: &mut Scratch, out: &mut Vec<[
             if partner && !s.dead.covers(x.pa, x.pa) && open(&pp, &pq, coords, &s.around, &x) {
                 out.push(edge_key(p, index[qs as usize]));
             }
-            s.add(x, d);
+            // A site with every direction within `θ` dead serves no later test (module
+            // docs, "Sites left out").
+            if !s
+                .dead
+                .covers(x.pa - x.back - 2.0 * EPS, x.pa + x.fwd + 2.0 * EPS)
+            {
+                s.add(x, d);
+            }
             if s.dead.full() {
                 return;
             }
