@@ -1,6 +1,6 @@
 //! `contains` and `constrained` (thesis ch. 2 §2.5–2.6, decided exactly by SAT).
 
-use crate::convert::{self, Json, Rows, array, value_error};
+use crate::convert::{self, Json, array, value_error};
 use numpy::{PyArray2, PyReadonlyArray2};
 use pyo3::prelude::*;
 use serde_json::json;
@@ -18,12 +18,7 @@ fn decide<'py>(
     minimal: bool,
     time_limit: Option<f64>,
 ) -> PyResult<(Json, Bound<'py, PyArray2<i64>>)> {
-    let (pts, dim) = convert::points(&points, "points")?;
-    let rows = Rows {
-        segments: convert::rows(&segments, "segments")?,
-        ..Default::default()
-    };
-    let input = convert::input(pts, dim, &rows)?;
+    let input = convert::with_segments(&points, &segments)?;
     if input.segments.is_empty() && question == Question::Contains {
         return Err(value_error("no segments to test"));
     }

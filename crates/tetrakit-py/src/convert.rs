@@ -79,6 +79,19 @@ pub fn input(points: Vec<Point3>, dim: usize, r: &Rows) -> PyResult<Input> {
     from_arrays(Path::new("arrays"), arrays).map_err(input_error)
 }
 
+/// The [`Input`] of `points` and their `segments`, checked as [`input`] checks them.
+pub fn with_segments(
+    points: &PyReadonlyArray2<'_, f64>,
+    segments: &PyReadonlyArray2<'_, i64>,
+) -> PyResult<Input> {
+    let (pts, dim) = self::points(points, "points")?;
+    let rows = Rows {
+        segments: self::rows(segments, "segments")?,
+        ..Default::default()
+    };
+    input(pts, dim, &rows)
+}
+
 /// `(m, K)` int64 array of index rows.
 pub fn array<'py, const K: usize>(py: Python<'py>, rows: &[[u32; K]]) -> Bound<'py, PyArray2<i64>> {
     let flat: Vec<i64> = rows.iter().flatten().map(|&v| i64::from(v)).collect();

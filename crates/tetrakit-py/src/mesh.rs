@@ -82,12 +82,7 @@ pub fn detect<'py>(
     points: PyReadonlyArray2<'py, f64>,
     segments: PyReadonlyArray2<'py, i64>,
 ) -> PyResult<(Json, Bound<'py, PyArray2<i64>>)> {
-    let (pts, dim) = convert::points(&points, "points")?;
-    let rows = Rows {
-        segments: convert::rows(&segments, "segments")?,
-        ..Default::default()
-    };
-    let input = convert::input(pts, dim, &rows)?;
+    let input = convert::with_segments(&points, &segments)?;
     if input.segments.is_empty() {
         return Err(value_error("no segments to test"));
     }
