@@ -134,6 +134,7 @@ pub fn mwt(a: MwtArgs) -> CmdResult {
         out!(
             "{}",
             json!({
+                "verdict": "yes",
                 "vertices": points.len(),
                 "edges": m.edges.len(),
                 "triangles": m.triangles.len(),
@@ -197,7 +198,7 @@ fn undecided(
                 "vertices": points.len(),
                 "time_limit": limit,
                 "lower_bound": b.lower.lo,
-                "lower_bound_from": b.lower_source,
+                "lower_bound_from": b.lower_source.to_string(),
                 "upper_bound": b.upper.hi,
                 "edges": b.edges.len(),
                 "triangles": b.triangles.len(),

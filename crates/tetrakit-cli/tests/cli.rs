@@ -654,6 +654,7 @@ fn mwt_time_limit_gives_exit_3_with_bounds() {
     );
     let v = json(&o);
     assert_eq!(v["verdict"], "undecided");
+    assert_eq!(v["lower_bound_from"], "minimum spanning tree");
     assert_eq!(v["triangles"], 2 * 401 - 2 - 400);
     let (lo, hi) = (
         v["lower_bound"].as_f64().unwrap(),
@@ -673,6 +674,7 @@ fn mwt_time_limit_gives_exit_3_with_bounds() {
     let o = run(&["mwt", s(&small), "--time-limit", "600", "--json"]);
     assert_eq!(o.status.code(), Some(0));
     assert_eq!(json(&o)["edges"], 8);
+    assert_eq!(json(&o)["verdict"], "yes");
 }
 
 /// A time limit that is not a finite, non-negative number of seconds is a usage error

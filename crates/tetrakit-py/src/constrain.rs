@@ -7,26 +7,38 @@ use serde_json::json;
 use tetrakit::constrain::{self, Answer, Options, Question};
 use tetrakit::detect::Cells;
 
-/// The decision of `question` on `points` and `segments` as JSON (the CLI's fields but
-/// the cell lists) and its certified cells: tetrahedra, or triangles for coplanar points
-/// (an empty `(0, 4)` array for a NO or undecided).
-fn decide<'py>(
+/// `decide(question, points, segments, minimal, time_limit)`: `question` is
+/// `"contains"` (TETRAD, TRID for coplanar points) or `"constrained"` (CT, every segment
+/// an edge). The decision as JSON (the CLI's fields but the cell lists) and its
+/// certified cells: tetrahedra, or triangles for coplanar points (an empty `(0, 4)`
+/// array for a NO or undecided).
+#[pyfunction]
+#[pyo3(signature = (question, points, segments, minimal=false, time_limit=None))]
+pub fn decide<'py>(
     py: Python<'py>,
-    question: Question,
+    question: &str,
     points: PyReadonlyArray2<'py, f64>,
     segments: PyReadonlyArray2<'py, i64>,
     minimal: bool,
     time_limit: Option<f64>,
 ) -> PyResult<(Json, Bound<'py, PyArray2<i64>>)> {
+    let question = match question {
+        "contains" => Question::Contains,
+        "constrained" => Question::Constrained,
+        q => {
+            let expected = "expected 'contains' or 'constrained'";
+            return Err(value_error(format!("question '{q}': {expected}")));
+        }
+    };
+    let solve = match question {
+        Question::Contains => constrain::contains,
+        Question::Constrained => constrain::constrained,
+    };
     let input = convert::with_segments(&points, &segments)?;
     if input.segments.is_empty() && question == Question::Contains {
         return Err(value_error("no segments to test"));
     }
     let ctl = convert::control(time_limit)?;
-    let solve = match question {
-        Question::Contains => constrain::contains,
-        Question::Constrained => constrain::constrained,
-    };
     let opts = Options { minimal };
     let d = convert::run(py, &ctl, || {
         solve(&input.points, &input.segments, &opts, &ctl)
@@ -65,44 +77,4 @@ fn decide<'py>(
         v["certified"] = json!(true);
     }
     Ok((v.to_string(), cells))
-}
-
-/// `contains(points, segments, minimal, time_limit)`: TETRAD (TRID for coplanar points).
-#[pyfunction]
-#[pyo3(signature = (points, segments, minimal=false, time_limit=None))]
-pub fn contains<'py>(
-    py: Python<'py>,
-    points: PyReadonlyArray2<'py, f64>,
-    segments: PyReadonlyArray2<'py, i64>,
-    minimal: bool,
-    time_limit: Option<f64>,
-) -> PyResult<(Json, Bound<'py, PyArray2<i64>>)> {
-    decide(
-        py,
-        Question::Contains,
-        points,
-        segments,
-        minimal,
-        time_limit,
-    )
-}
-
-/// `constrained(points, segments, minimal, time_limit)`: CT, every segment an edge.
-#[pyfunction]
-#[pyo3(signature = (points, segments, minimal=false, time_limit=None))]
-pub fn constrained<'py>(
-    py: Python<'py>,
-    points: PyReadonlyArray2<'py, f64>,
-    segments: PyReadonlyArray2<'py, i64>,
-    minimal: bool,
-    time_limit: Option<f64>,
-) -> PyResult<(Json, Bound<'py, PyArray2<i64>>)> {
-    decide(
-        py,
-        Question::Constrained,
-        points,
-        segments,
-        minimal,
-        time_limit,
-    )
 }

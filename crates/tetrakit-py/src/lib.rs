@@ -22,8 +22,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add_function(wrap_pyfunction!(mesh::check, m)?)?;
     m.add_function(wrap_pyfunction!(mesh::detect, m)?)?;
-    m.add_function(wrap_pyfunction!(constrain::contains, m)?)?;
-    m.add_function(wrap_pyfunction!(constrain::constrained, m)?)?;
+    m.add_function(wrap_pyfunction!(constrain::decide, m)?)?;
     m.add_function(wrap_pyfunction!(poly::mintetra, m)?)?;
     m.add_function(wrap_pyfunction!(poly::tetrahedralize, m)?)?;
     m.add_function(wrap_pyfunction!(poly::shell, m)?)?;

@@ -75,7 +75,7 @@ pub fn mwt<'py>(
                 "verdict": "undecided",
                 "vertices": pts.len(),
                 "lower_bound": b.lower.lo,
-                "lower_bound_from": b.lower_source,
+                "lower_bound_from": b.lower_source.to_string(),
                 "upper_bound": b.upper.hi,
                 "edges": b.edges.len(),
                 "triangles": b.triangles.len(),

@@ -210,7 +210,7 @@ def contains(points, segments, minimal: bool = False, time_limit: Optional[float
     >>> tetrakit.contains(square, [[0, 1], [1, 2], [2, 3], [3, 0]]).verdict
     'no'
     """
-    text, cells = _core.contains(_points(points), _cells(segments, 2, "segments"), minimal, time_limit)
+    text, cells = _core.decide("contains", _points(points), _cells(segments, 2, "segments"), minimal, time_limit)
     return _make(ConstrainResult, text, cells=cells)
 
 
@@ -228,7 +228,7 @@ def constrained(points, segments, minimal: bool = False, time_limit: Optional[fl
     >>> tetrakit.constrained(square, [[0, 2], [1, 3]]).witness["kind"]
     'crossing_constraints'
     """
-    text, cells = _core.constrained(_points(points), _cells(segments, 2, "segments"), minimal, time_limit)
+    text, cells = _core.decide("constrained", _points(points), _cells(segments, 2, "segments"), minimal, time_limit)
     return _make(ConstrainResult, text, cells=cells)
 
 

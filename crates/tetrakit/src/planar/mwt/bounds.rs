@@ -20,9 +20,8 @@ use std::cmp::Ordering;
 pub struct MwtBounds {
     /// A lower bound: `lower.lo` is at most the minimum weight.
     pub lower: Interval,
-    /// Where `lower` comes from: `"minimum spanning tree"` (its weight) or, from
-    /// [`mwt_or_bounds`](super::mwt_or_bounds), `"the solver's state"`.
-    pub lower_source: &'static str,
+    /// Where `lower` comes from.
+    pub lower_source: LowerBound,
     /// The weight of a triangulation: `upper.hi` is at least the minimum weight.
     pub upper: Interval,
     /// That triangulation's edges, sorted (certified a triangulation): the Delaunay
@@ -30,6 +29,24 @@ pub struct MwtBounds {
     pub edges: Vec<[u32; 2]>,
     /// Its triangles, counter-clockwise.
     pub triangles: Vec<[u32; 3]>,
+}
+
+/// Where a lower bound of [`MwtBounds`] comes from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LowerBound {
+    /// The weight of a minimum spanning tree.
+    SpanningTree,
+    /// The solver's state when stopped ([`mwt_or_bounds`](super::mwt_or_bounds)).
+    SolverState,
+}
+
+impl std::fmt::Display for LowerBound {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            LowerBound::SpanningTree => "minimum spanning tree",
+            LowerBound::SolverState => "the solver's state",
+        })
+    }
 }
 
 /// Certified bounds on the minimum weight of a triangulation of distinct sites (an
@@ -52,7 +69,7 @@ pub fn mwt_bounds(points: &[Point2]) -> Result<MwtBounds, PlanarError> {
         let m = collinear(points);
         return Ok(MwtBounds {
             lower: m.weight,
-            lower_source: "minimum spanning tree",
+            lower_source: LowerBound::SpanningTree,
             upper: m.weight,
             edges: m.edges,
             triangles: Vec::new(),
@@ -71,7 +88,7 @@ pub fn mwt_bounds(points: &[Point2]) -> Result<MwtBounds, PlanarError> {
     certify(points, &hull, &edges, &triangles)?;
     Ok(MwtBounds {
         lower: weight_of(points, &tree),
-        lower_source: "minimum spanning tree",
+        lower_source: LowerBound::SpanningTree,
         upper: weight_of(points, &edges),
         edges,
         triangles,

@@ -15,7 +15,7 @@ mod polygon;
 mod sites;
 mod walks;
 
-pub use bounds::{MwtBounds, mwt_bounds};
+pub use bounds::{LowerBound, MwtBounds, mwt_bounds};
 pub use candidates::candidate_edges;
 pub use polygon::cmp_edge_sets;
 pub(crate) use polygon::polygon_dp;
@@ -141,13 +141,13 @@ pub enum MwtOutcome {
 ///
 /// ```
 /// use tetrakit::control::Control;
-/// use tetrakit::planar::{MwtOutcome, mwt_or_bounds};
+/// use tetrakit::planar::{LowerBound, MwtOutcome, mwt_or_bounds};
 /// let pts = [[0.0, 0.0], [4.0, 0.0], [4.0, 3.0], [0.0, 3.0], [1.0, 1.5]];
 /// assert!(matches!(mwt_or_bounds(&pts, &Control::new()).unwrap(), MwtOutcome::Solved(_)));
 /// let stopped = Control::new();
 /// stopped.stop();
 /// let MwtOutcome::Stopped(b) = mwt_or_bounds(&pts, &stopped).unwrap() else { panic!() };
-/// assert!(b.lower.lo <= b.upper.hi && b.lower_source == "minimum spanning tree");
+/// assert!(b.lower.lo <= b.upper.hi && b.lower_source == LowerBound::SpanningTree);
 /// ```
 pub fn mwt_or_bounds(points: &[Point2], ctl: &Control) -> Result<MwtOutcome, PlanarError> {
     let mut lower = 0.0;
@@ -160,7 +160,7 @@ pub fn mwt_or_bounds(points: &[Point2], ctl: &Control) -> Result<MwtOutcome, Pla
                     lo: lower,
                     hi: lower,
                 };
-                b.lower_source = "the solver's state";
+                b.lower_source = LowerBound::SolverState;
             }
             Ok(MwtOutcome::Stopped(b))
         }
@@ -874,7 +874,7 @@ mod tests {
                     opt.hi
                 );
                 assert!(b.lower.lo >= mst && opt.lo <= b.upper.hi);
-                if b.lower_source != "minimum spanning tree" {
+                if b.lower_source == LowerBound::SolverState {
                     state += 1;
                 }
                 if stage == mwt_stage::FACES {
