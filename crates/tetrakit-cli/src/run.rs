@@ -147,14 +147,22 @@ pub fn check(a: &crate::CheckArgs) -> CmdResult {
     }
     let opts = io::ReadOptions {
         tets_only: a.tets_only,
+        mesh: true,
     };
     let mut input = io::read_input_with(path, opts)?;
     let parsed = start.elapsed().as_secs_f64();
     if input.tets.is_empty() {
-        return Err(CliError::at(
-            path,
-            "no tetrahedra to check (give an .ele file or JSON \"tets\")",
-        ));
+        let others = match &input.other_cells {
+            Some(o) => format!(", {} other cells", o.count),
+            None => String::new(),
+        };
+        let why = format!(
+            "no tetrahedra to check: it holds {} points, {} triangles, {} segments{others} and no tetrahedron (give a volume mesh, an .ele file or JSON \"tets\")",
+            input.points.len(),
+            input.faces.len(),
+            input.segments.len()
+        );
+        return Err(CliError::at(path, &why));
     }
     let other_cells = input.other_cells.as_ref().map_or(0, |o| o.count);
     let turned = a
@@ -168,7 +176,10 @@ pub fn check(a: &crate::CheckArgs) -> CmdResult {
     if let Some(out) = &a.output {
         write_problems(out, &input, &report)?;
     }
-    let report = report.relabeled(input.index_base, |t| input.tet_label(t as usize));
+    let report = report.relabeled(
+        |v| input.point_label(v as usize),
+        |t| input.tet_label(t as usize),
+    );
     let seconds = start.elapsed().as_secs_f64();
     if as_json {
         let mut v = json!({

@@ -67,14 +67,16 @@ pub struct Rows {
     pub tets: Vec<[i64; 4]>,
 }
 
-/// The [`Input`] of `points` and `rows`, checked by [`from_arrays`].
-pub fn input(points: Vec<Point3>, dim: usize, r: &Rows) -> PyResult<Input> {
+/// The [`Input`] of `points` and `rows`, checked by [`from_arrays`] (as a mesh to check
+/// when `mesh`: see [`tetrakit::io::ReadOptions::mesh`]).
+pub fn input(points: Vec<Point3>, dim: usize, r: &Rows, mesh: bool) -> PyResult<Input> {
     let arrays = Arrays {
         points,
         dim,
         segments: &r.segments,
         faces: &r.faces,
         tets: &r.tets,
+        mesh,
     };
     from_arrays(Path::new("arrays"), arrays).map_err(input_error)
 }
@@ -89,7 +91,7 @@ pub fn with_segments(
         segments: self::rows(segments, "segments")?,
         ..Default::default()
     };
-    input(pts, dim, &rows)
+    input(pts, dim, &rows, false)
 }
 
 /// `(m, K)` int64 array of index rows.

@@ -21,6 +21,7 @@ use pyo3::prelude::*;
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add_function(wrap_pyfunction!(mesh::check, m)?)?;
+    m.add_function(wrap_pyfunction!(mesh::read, m)?)?;
     m.add_function(wrap_pyfunction!(mesh::detect, m)?)?;
     m.add_function(wrap_pyfunction!(constrain::decide, m)?)?;
     m.add_function(wrap_pyfunction!(poly::mintetra, m)?)?;

@@ -32,7 +32,7 @@ pub fn check<'py>(
         tets: convert::rows(&tets, "tets")?,
         ..Default::default()
     };
-    let mut input = convert::input(pts, dim, &rows)?;
+    let mut input = convert::input(pts, dim, &rows, true)?;
     if input.tets.is_empty() {
         return Err(value_error("no tetrahedra to check"));
     }
@@ -71,6 +71,53 @@ pub fn check<'py>(
         array(py, &input.tets),
         PyArray1::from_vec(py, cells),
         PyArray1::from_vec(py, verts),
+    ))
+}
+
+type ReadOut<'py> = (
+    Json,
+    Bound<'py, PyArray2<f64>>,
+    Bound<'py, PyArray2<i64>>,
+    Bound<'py, PyArray2<i64>>,
+    Bound<'py, PyArray2<i64>>,
+);
+
+/// `read(path, tets_only)`: a mesh file read as `tetrakit check` reads it
+/// ([`tetrakit::io::ReadOptions::mesh`]): the counts and numbering as JSON, then the
+/// points, tetrahedra, triangles and segments (0-based). A bad file is a `ValueError`
+/// with the CLI's one-line message (file, line or byte, problem).
+#[pyfunction]
+#[pyo3(signature = (path, tets_only=false))]
+pub fn read<'py>(
+    py: Python<'py>,
+    path: std::path::PathBuf,
+    tets_only: bool,
+) -> PyResult<ReadOut<'py>> {
+    let opts = tetrakit::io::ReadOptions {
+        tets_only,
+        mesh: true,
+    };
+    let ctl = tetrakit::control::Control::new();
+    let input = convert::run(py, &ctl, || tetrakit::io::read_input_with(&path, opts))?
+        .map_err(value_error)?;
+    let labels: Vec<u32> = (0..input.points.len())
+        .map(|k| input.point_label(k))
+        .collect();
+    let tet_labels: Vec<u32> = (0..input.tets.len()).map(|k| input.tet_label(k)).collect();
+    let v = json!({
+        "dimension": input.dim,
+        "index_base": input.index_base,
+        "point_labels": labels,
+        "tet_labels": tet_labels,
+        "regions": input.regions,
+        "other_cells": input.other_cells.as_ref().map_or(0, |o| o.count),
+    });
+    Ok((
+        v.to_string(),
+        convert::point_array(py, &input.points),
+        array(py, &input.tets),
+        array(py, &input.faces),
+        array(py, &input.segments),
     ))
 }
 

@@ -12,7 +12,7 @@ use tetrakit::planar::{self, MwtOutcome, Region};
 /// file's points are.
 fn sites(a: &PyReadonlyArray2<'_, f64>) -> PyResult<Vec<Point2>> {
     let (p, dim) = convert::points(a, "points")?;
-    let input = convert::input(p, dim, &convert::Rows::default())?;
+    let input = convert::input(p, dim, &convert::Rows::default(), false)?;
     if let Some(i) = input.points.iter().position(|p| p[2] != 0.0) {
         return Err(value_error(format!(
             "points[{i}] has z = {}; planar functions need 2D points",

@@ -23,7 +23,7 @@ fn polyhedron(
         faces: convert::rows(faces, "faces")?,
         ..Default::default()
     };
-    let input = convert::input(pts, dim, &rows)?;
+    let input = convert::input(pts, dim, &rows, false)?;
     Polyhedron::new(input.points, input.faces)
         .map_err(|e| value_error(format!("not a simple polyhedron: {}", e.describe(0))))
 }
@@ -93,7 +93,7 @@ pub fn tetrahedralize<'py>(
         }
         None => {
             let (p, dim) = convert::points(&points, "points")?;
-            pts = convert::input(p, dim, &Rows::default())?.points;
+            pts = convert::input(p, dim, &Rows::default(), false)?.points;
             (Domain::Points(&pts), pts.len())
         }
     };
@@ -179,7 +179,7 @@ pub fn shell<'py>(
                 "{name} are planar: a shell needs 3D polytopes"
             )));
         }
-        Ok(convert::input(p, dim, &Rows::default())?.points)
+        Ok(convert::input(p, dim, &Rows::default(), false)?.points)
     };
     let (o, i) = (three_d(&outer, "outer")?, three_d(&inner, "inner")?);
     let shell = Shell::new(&o, &i).map_err(value_error)?;

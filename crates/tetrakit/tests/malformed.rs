@@ -7,7 +7,7 @@ use tetrakit::io::read_input;
 
 const NODE: &str = "5 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 1 1\n";
 const EDGE: &str = "9 0\n1 1 2\n2 1 3\n3 1 4\n4 2 3\n5 2 4\n6 3 4\n7 2 5\n8 3 5\n9 4 5\n";
-const VTK4: &str = "# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 5 double\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\nCELLS 3 12\n4 0 1 2 3\n4 1 2 3 4\n2 0 4\nCELL_TYPES 3\n10\n10\n3\nCELL_DATA 3\n";
+const VTK4: &str = "# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 5 double\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\nCELLS 3 13\n4 0 1 2 3\n4 1 2 3 4\n2 0 4\nCELL_TYPES 3\n10\n10\n3\nCELL_DATA 3\n";
 const VTK5: &str = "# vtk DataFile Version 5.1\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 5 double\n0 0 0 1 0 0 0 1 0\n0 0 1 1 1 1\nCELLS 4 11\nOFFSETS vtktypeint64\n0 4 8 11\nCONNECTIVITY vtktypeint64\n0 1 2 3\n1 2 3 4\n0 1 2\nCELL_TYPES 3\n10 10 5\n";
 const MSH22: &str = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n1\n3 7 \"solid\"\n$EndPhysicalNames\n$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 1 1\n$EndNodes\n$Elements\n5\n1 15 2 0 1 1\n2 1 2 0 1 1 5\n3 2 2 0 1 1 2 3\n4 4 2 7 1 1 2 3 4\n5 11 2 7 1 2 3 4 5 1 1 1 1 1 1\n$EndElements\n";
 const MSH41: &str = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n0 0 0 1\n1 0 0 0 1 1 1 0 0\n$EndEntities\n$Nodes\n2 5 1 5\n3 1 0 3\n1\n2\n3\n0 0 0\n1 0 0\n0 1 0\n3 1 0 2\n4\n5\n0 0 1\n1 1 1\n$EndNodes\n$Elements\n3 4 1 4\n1 2 1 1\n1 1 5\n2 3 2 1\n2 1 2 3\n3 1 4 2\n3 1 2 3 4\n4 2 3 4 5\n$EndElements\n";
@@ -196,7 +196,6 @@ fn medit_files_read_and_fail_with_the_line() {
             "1 hexahedra besides tetrahedra and triangles: only those are read (--tets-only",
         ),
         ("Corners", "Bricks", 20, "unknown keyword 'Bricks'"),
-        ("End\n", "", 22, "missing 'End'"),
         (
             "Tetrahedra\n2",
             "Tetrahedra\n-2",
@@ -211,7 +210,10 @@ fn medit_files_read_and_fail_with_the_line() {
         "Hexahedra\n1\n1 2 3 4 5 1 2 3 0\nPrisms\n2\n1 2 3 4 5 1 0\n1 2 3 4 5 2 0\n",
         1,
     );
-    let opts = tetrakit::io::ReadOptions { tets_only: true };
+    let opts = tetrakit::io::ReadOptions {
+        tets_only: true,
+        ..Default::default()
+    };
     let m = tetrakit::io::read_input_with(&write("mixed.mesh", &mixed), opts).unwrap();
     let o = m.other_cells.unwrap();
     assert_eq!((m.tets.len(), o.count, o.line), (2, 3, 20));
@@ -255,7 +257,7 @@ fn gmsh_files_read_and_fail_with_the_line() {
             "4 4 2 7 1 1 2 3 4",
             "4 4 2 7 1 1 2 3 9",
             21,
-            "vertex 9 is out of range",
+            "node 9 is not among the 5 nodes",
         ),
         (
             MSH22,
@@ -267,16 +269,16 @@ fn gmsh_files_read_and_fail_with_the_line() {
         (
             MSH22,
             "3 0 1 0\n",
-            "7 0 1 0\n",
+            "2 0 1 0\n",
             12,
-            "node tag 7 where 3 was expected",
+            "node tag 2 is given twice (nodes 2 and 3",
         ),
         (
             MSH22,
             "2.2 0 8",
             "2.2 1 8",
-            2,
-            "binary Gmsh header '2.2 1 8'",
+            0,
+            "the header says binary but the file is not",
         ),
         (MSH22, "2.2 0 8", "3.0 0 8", 2, "only 2.2 and 4.1"),
         (
@@ -334,7 +336,7 @@ fn binary_gmsh_files_read_and_fail() {
     endian[k..k + 4].copy_from_slice(&1i32.to_be_bytes());
     for (bytes, needle) in [
         (big, "more than the rest of the file holds"),
-        (far, "vertex 9 is out of range"),
+        (far, "node 9 is not among the 5 nodes"),
         (endian, "big-endian"),
     ] {
         std::fs::write(&p, &bytes).unwrap();
@@ -534,11 +536,11 @@ fn vtu_files_fail_with_the_line() {
             &ascii,
             ascii.replacen(
                 "type=\"UnstructuredGrid\"",
-                "type=\"UnstructuredGrid\" compressor=\"vtkLZ4DataCompressor\"",
+                "type=\"UnstructuredGrid\" compressor=\"vtkBZip2DataCompressor\"",
                 1,
             ),
             0,
-            "only vtkZLibDataCompressor",
+            "vtkLZ4DataCompressor are read",
         ),
         (
             &ascii,
@@ -596,7 +598,7 @@ fn vtu_headers_cannot_size_an_allocation() {
     let p = dir_file("bomb.vtu");
     std::fs::write(&p, &bomb).unwrap();
     let e = read_input(&p).unwrap_err();
-    assert!(e.message.contains("compressed bytes"), "{e}");
+    assert!(e.message.contains("where 96 bytes are declared"), "{e}");
     let mut many = raw;
     many[at..at + 4].copy_from_slice(&u32::MAX.to_le_bytes());
     std::fs::write(&p, &many).unwrap();

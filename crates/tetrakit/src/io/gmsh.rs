@@ -10,14 +10,15 @@
 //! line of the first. Other sections (`$PhysicalNames`, `$Entities`, `$NodeData`, …)
 //! are skipped.
 //!
-//! Node tags must be `1..=N` in the order of the file (what Gmsh writes unless told not
-//! to renumber), so that messages name vertices by their tags; tetrahedra are named by
-//! their element tags. Binary 4.1 files (`file-type 1`) are read by
-//! `io::gmsh_binary` (chosen by [`is_binary`]); binary 2.2 is refused with a reason. Counts are checked
-//! against what is read, never used to size an allocation; every error names the line.
+//! Node tags may be any distinct positive numbers below 2^32, in any order (Gmsh leaves
+//! gaps after boolean operations and with physical groups); messages name vertices by
+//! their tags ([`Input::point_labels`]) and tetrahedra by their element tags. Binary
+//! files (`file-type 1`, 2.2 and 4.1) are read by `io::gmsh_binary` (chosen by
+//! [`is_binary`]). Counts are checked against what is read (4.1's totals and tag ranges
+//! too), never used to size an allocation; every error names the line.
 
 use super::stream::Stream;
-use super::{Input, InputError, check_segments, parse_int, vertex_ref};
+use super::{Input, InputError, parse_int};
 use std::path::Path;
 
 /// Nodes of a Gmsh element type, for the types this reader knows: what it keeps, and
@@ -62,7 +63,11 @@ pub(super) fn is_binary(path: &Path) -> bool {
 /// What is built while reading, by the ASCII and the binary reader alike.
 pub(super) struct Cells<'p> {
     pub(super) input: Input,
-    seg_lines: Vec<u32>,
+    /// Every node's tag, kept only once a tag is not the next of `1..=N` (then the
+    /// lookup below is built when the nodes end).
+    tags: Option<Vec<u64>>,
+    /// `(tag, index)` sorted by tag, for sparse tags.
+    lookup: Vec<(u64, u32)>,
     /// Cells refused, by name, with their counts and the line of the first.
     refused: Vec<(&'static str, usize, usize)>,
     pub(super) path: &'p Path,
@@ -116,8 +121,9 @@ impl<'p> Cells<'p> {
                 tet_file: path.to_path_buf(),
                 ..Default::default()
             },
-            seg_lines: Vec::new(),
             refused: Vec::new(),
+            tags: None,
+            lookup: Vec::new(),
             path,
         }
     }
@@ -145,31 +151,75 @@ impl<'p> Cells<'p> {
                 ),
             });
         }
-        check_segments(&self.input.segments, &self.seg_lines, 1, self.path)?;
         Ok(self.input)
     }
 
-    /// One node: its tag must be the next of `1..=N`.
+    /// One node, `tag` a positive number below 2^32 (checked for repeats by
+    /// [`Cells::end_nodes`]); the error is the message alone, for the caller to place.
     pub(super) fn node(
         &mut self,
-        line: usize,
         tag: i64,
         p: crate::geom::Point3,
         at: usize,
-    ) -> Result<(), InputError> {
+    ) -> Result<(), String> {
         let k = self.input.points.len();
-        if tag != k as i64 + 1 {
-            return Err(self.err(
-                line,
-                format!(
-                    "node tag {tag} where {} was expected: node tags must be 1..N in order (let Gmsh renumber the nodes)",
-                    k + 1
-                ),
-            ));
+        let tag = u64::try_from(tag)
+            .ok()
+            .filter(|t| (1..=u64::from(u32::MAX)).contains(t))
+            .ok_or_else(|| format!("node tag {tag}: tags are numbers from 1 to 2^32 − 1"))?;
+        if self.tags.is_none() && tag != k as u64 + 1 {
+            self.tags = Some((1..=k as u64).collect());
+        }
+        if let Some(tags) = &mut self.tags {
+            tags.push(tag);
         }
         self.input.points.push(p);
         self.input.point_lines.push(at);
         Ok(())
+    }
+
+    /// The nodes are all read: with sparse tags, the lookup from tags to points (a tag
+    /// given twice is an error naming it, with the later node's index) and the points'
+    /// labels.
+    pub(super) fn end_nodes(&mut self) -> Result<(), (usize, String)> {
+        let Some(tags) = self.tags.take() else {
+            return Ok(());
+        };
+        let mut lookup: Vec<(u64, u32)> = (tags.iter().enumerate())
+            .map(|(k, &t)| (t, k as u32))
+            .collect();
+        lookup.sort_unstable();
+        if let Some(w) = lookup.windows(2).find(|w| w[0].0 == w[1].0) {
+            let (a, b) = (w[0].1.min(w[1].1), w[0].1.max(w[1].1));
+            let why = format!(
+                "node tag {} is given twice (nodes {} and {} of the section)",
+                w[0].0,
+                a + 1,
+                b + 1
+            );
+            return Err((b as usize, why));
+        }
+        self.input.point_labels = tags.iter().map(|&t| t as u32).collect();
+        self.lookup = lookup;
+        Ok(())
+    }
+
+    /// The point of node `tag`, or the message saying there is none.
+    pub(super) fn vertex(&self, tag: i64) -> Result<u32, String> {
+        let n = self.input.points.len();
+        let missing = || format!("node {tag} is not among the {n} nodes of $Nodes");
+        if self.input.point_labels.is_empty() {
+            return usize::try_from(tag)
+                .ok()
+                .filter(|t| (1..=n).contains(t))
+                .map(|t| t as u32 - 1)
+                .ok_or_else(missing);
+        }
+        let tag = u64::try_from(tag).map_err(|_| missing())?;
+        match self.lookup.binary_search_by_key(&tag, |e| e.0) {
+            Ok(k) => Ok(self.lookup[k].1),
+            Err(_) => Err(missing()),
+        }
     }
 
     /// One element: its `name` (from [`element_nodes`]), tag, node indices and region.
@@ -195,7 +245,7 @@ impl<'p> Cells<'p> {
             "triangle" => self.input.faces.push([corners[0], corners[1], corners[2]]),
             "line" => {
                 self.input.segments.push([corners[0], corners[1]]);
-                self.seg_lines.push(line as u32);
+                self.input.segment_lines.push(line as u32);
             }
             "point" => {}
             other => match self.refused.iter_mut().find(|(n, _, _)| *n == other) {
@@ -276,20 +326,42 @@ impl Reader<'_, '_> {
         Err(self.err(line, format!("{section} has no {want}")))
     }
 
+    /// One node's coordinates after its tag, read on `line`.
+    fn node(&mut self, line: usize, tag: i64) -> Result<(), InputError> {
+        let (at, p) = self.s.point(3)?;
+        self.cells.node(tag, p, at).map_err(|e| self.err(line, e))
+    }
+
+    /// The end of `$Nodes`: the lookup of sparse tags.
+    fn end_nodes(&mut self) -> Result<(), InputError> {
+        let Err((k, e)) = self.cells.end_nodes() else {
+            return Ok(());
+        };
+        let line = self.cells.input.point_lines.get(k).copied().unwrap_or(0);
+        Err(self.err(line, e))
+    }
+
     fn nodes_22(&mut self) -> Result<(), InputError> {
         for _ in 0..self.count("the number of nodes")? {
             let (line, tag) = self.int("a node tag")?;
-            let (at, p) = self.s.point(3)?;
-            self.cells.node(line, tag, p, at)?;
+            self.node(line, tag)?;
         }
-        Ok(())
+        self.end_nodes()
+    }
+
+    /// A 4.1 section's header: the number of blocks, the total and the tag range, with
+    /// the line; checked against what the blocks hold by [`Totals::check`].
+    fn totals(&mut self, what: &'static str) -> Result<(usize, Totals), InputError> {
+        let blocks = self.count("the number of entity blocks")?;
+        let (line, total) = self.int(&format!("the number of {what}"))?;
+        let (_, min) = self.int(&format!("the smallest {what} tag"))?;
+        let (_, max) = self.int(&format!("the largest {what} tag"))?;
+        let declared = Totals::declared(what, line, [total, min, max]);
+        Ok((blocks, declared))
     }
 
     fn nodes_41(&mut self) -> Result<(), InputError> {
-        let blocks = self.count("the number of entity blocks")?;
-        for _ in 0..3 {
-            self.int("the node counts of $Nodes")?;
-        }
+        let (blocks, mut totals) = self.totals("nodes")?;
         for _ in 0..blocks {
             self.int("an entity dimension")?;
             self.int("an entity tag")?;
@@ -302,11 +374,12 @@ impl Reader<'_, '_> {
                 tags.push(self.int("a node tag")?);
             }
             for (line, tag) in tags {
-                let (at, p) = self.s.point(3)?;
-                self.cells.node(line, tag, p, at)?;
+                totals.add(tag);
+                self.node(line, tag)?;
             }
         }
-        Ok(())
+        totals.check().map_err(|(l, e)| self.err(l, e))?;
+        self.end_nodes()
     }
 
     /// One element of `kind` with its tag, region and node tags read from the stream.
@@ -317,13 +390,7 @@ impl Reader<'_, '_> {
         let mut corners = Vec::with_capacity(n);
         for _ in 0..n {
             let (l, t) = self.int("a node tag of an element")?;
-            corners.push(vertex_ref(
-                t,
-                1,
-                self.cells.input.points.len(),
-                self.cells.path,
-                l,
-            )?);
+            corners.push(self.cells.vertex(t).map_err(|e| self.err(l, e))?);
         }
         self.cells.keep(line, tag, name, &corners, region)
     }
@@ -342,18 +409,60 @@ impl Reader<'_, '_> {
     }
 
     fn elements_41(&mut self) -> Result<(), InputError> {
-        let blocks = self.count("the number of entity blocks")?;
-        for _ in 0..3 {
-            self.int("the element counts of $Elements")?;
-        }
+        let (blocks, mut totals) = self.totals("elements")?;
         for _ in 0..blocks {
             self.int("an entity dimension")?;
             let (_, entity) = self.int("an entity tag")?;
             let (_, kind) = self.int("an element type")?;
             for _ in 0..self.count("the number of elements in a block")? {
                 let (line, tag) = self.int("an element tag")?;
+                totals.add(tag);
                 self.element(line, tag, kind, entity)?;
             }
+        }
+        totals.check().map_err(|(l, e)| self.err(l, e))
+    }
+}
+
+/// A 4.1 `$Nodes` or `$Elements` header's total and tag range, and what the blocks held.
+pub(super) struct Totals {
+    what: &'static str,
+    line: usize,
+    declared: [i64; 3],
+    found: (i64, i64, i64),
+}
+
+impl Totals {
+    /// The header's `[total, smallest tag, largest tag]` of `what`, read at `line`.
+    pub(super) fn declared(what: &'static str, line: usize, declared: [i64; 3]) -> Self {
+        Totals {
+            what,
+            line,
+            declared,
+            found: (0, i64::MAX, i64::MIN),
+        }
+    }
+
+    pub(super) fn add(&mut self, tag: i64) {
+        let f = &mut self.found;
+        (f.0, f.1, f.2) = (f.0 + 1, f.1.min(tag), f.2.max(tag));
+    }
+
+    /// The declared total equals the count found, and the tag range the one found (when
+    /// there are any).
+    pub(super) fn check(&self) -> Result<(), (usize, String)> {
+        let [total, min, max] = self.declared;
+        let (count, lo, hi) = self.found;
+        let what = self.what;
+        if total != count {
+            let why = format!("the header declares {total} {what}, the blocks hold {count}");
+            return Err((self.line, why));
+        }
+        if count > 0 && (min, max) != (lo, hi) {
+            let why = format!(
+                "the header declares {what} tags {min}..={max}, the blocks hold {lo}..={hi}"
+            );
+            return Err((self.line, why));
         }
         Ok(())
     }

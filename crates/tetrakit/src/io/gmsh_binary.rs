@@ -1,13 +1,15 @@
-//! Gmsh `.msh` 4.1 binary (`file-type 1`, little-endian, 8-byte `size_t`), the layout
-//! `gmsh -bin` writes: the same sections as the ASCII 4.1 reader ([`super::gmsh`]), with
-//! `int`, `size_t` and `double` fields in place of tokens. `$Entities` is parsed to be
-//! skipped; other sections are skipped to their `$End…` line. The same cells are kept
-//! and refused as in ASCII, by [`Cells`]. A count is checked against the bytes left
-//! before anything is reserved for it; errors name the line the offending byte is on
-//! (counting newlines, as a text viewer would).
+//! Gmsh `.msh` binary (`file-type 1`, little-endian), the layouts `gmsh -bin` writes:
+//! 4.1 (8-byte `size_t`; the same sections as the ASCII 4.1 reader, [`super::gmsh`],
+//! with `int`, `size_t` and `double` fields in place of tokens) and 2.2 (`gmsh -bin
+//! -format msh22`: a node is an `int` tag and three doubles; elements come in runs of
+//! one type, each run a header of three `int`s, type, count and number of tags, then
+//! per element its `int` tag, tags and nodes). `$Entities` is parsed to be skipped;
+//! other sections are skipped to their `$End…` line. The same cells are kept and
+//! refused as in ASCII, by [`Cells`]. A count is checked against the bytes left before
+//! anything is reserved for it; errors name the byte offset of the offending field.
 
-use super::gmsh::{Cells, element_nodes};
-use super::{Input, InputError, vertex_ref};
+use super::gmsh::{Cells, Totals, element_nodes};
+use super::{Input, InputError};
 use std::path::Path;
 
 pub(super) fn read(path: &Path) -> Result<Input, InputError> {
@@ -17,9 +19,11 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
         at: 0,
         cells: Cells::new(path),
     };
-    r.format()?;
+    let v22 = r.format()?;
     while let Some(section) = r.header()? {
         match section.as_str() {
+            "$Nodes" if v22 => r.nodes_22()?,
+            "$Elements" if v22 => r.elements_22()?,
             "$Nodes" => r.nodes()?,
             "$Elements" => r.elements()?,
             "$Entities" => r.entities()?,
@@ -41,11 +45,14 @@ struct Bytes<'b, 'p> {
 }
 
 impl Bytes<'_, '_> {
-    /// An error at the current byte, named by its line.
+    /// An error at the current byte.
     fn err(&self, message: impl Into<String>) -> InputError {
-        let at = self.at.min(self.b.len());
-        let line = 1 + self.b[..at].iter().filter(|&&c| c == b'\n').count();
-        InputError::new(self.cells.path, line, message)
+        InputError::at_byte(self.cells.path, self.at.min(self.b.len()), message)
+    }
+
+    /// An error at byte `at`.
+    fn err_at(&self, at: usize, message: impl Into<String>) -> InputError {
+        InputError::at_byte(self.cells.path, at, message)
     }
 
     /// Past the newline that ends a section's header line.
@@ -125,24 +132,134 @@ impl Bytes<'_, '_> {
         }
     }
 
-    /// `$MeshFormat`, `4.1 1 8`, the binary 1, `$EndMeshFormat`.
-    fn format(&mut self) -> Result<(), InputError> {
+    /// `$MeshFormat`, `4.1 1 8` or `2.2 1 8`, the binary 1, `$EndMeshFormat`; true for
+    /// 2.2.
+    fn format(&mut self) -> Result<bool, InputError> {
         if self.line().as_deref() != Some("$MeshFormat") {
             return Err(self.err("no $MeshFormat section: not a Gmsh file"));
         }
+        let at = self.at;
         let version = self.line().unwrap_or_default();
         let fields: Vec<&str> = version.split_ascii_whitespace().collect();
-        if fields != ["4.1", "1", "8"] {
-            return Err(self.err(format!(
-                "binary Gmsh header {}: only 4.1 with 8-byte sizes is read",
-                super::quote(&version)
-            )));
-        }
+        let v22 = match fields.as_slice() {
+            ["4.1", "1", "8"] => false,
+            ["2.2", "1", "8"] => true,
+            _ => {
+                let why = format!(
+                    "binary Gmsh header {}: only 4.1 and 2.2 with 8-byte sizes are read",
+                    super::quote(&version)
+                );
+                return Err(self.err_at(at, why));
+            }
+        };
         self.step(); // the newline after the header
-        if self.int("the byte-order mark")? != 1 {
-            return Err(self.err("a big-endian binary .msh file: only little-endian is read"));
+        match self.int("the byte-order mark")? {
+            1 => {}
+            0x0100_0000 => {
+                let why = "a big-endian binary .msh file: only little-endian is read";
+                return Err(self.err_at(self.at - 4, why));
+            }
+            m => {
+                let why = format!(
+                    "the binary marker is {m:#x}, not 1: the header says binary but the file is not (an ASCII file labelled '1'?)"
+                );
+                return Err(self.err_at(self.at - 4, why));
+            }
         }
-        self.end("$MeshFormat")
+        self.end("$MeshFormat")?;
+        Ok(v22)
+    }
+
+    /// A section's count on its own text line (2.2), no more than the bytes left can
+    /// hold at `width` bytes each.
+    fn text_count(&mut self, width: usize, what: &str) -> Result<usize, InputError> {
+        let at = self.at;
+        let line = self.line().unwrap_or_default();
+        self.step();
+        let k: u64 = line
+            .parse()
+            .map_err(|_| self.err_at(at, format!("{} is not {what}", super::quote(&line))))?;
+        let left = (self.b.len() - self.at) as u64;
+        if k.saturating_mul(width as u64) > left {
+            let why = format!("{what} {k} is more than the rest of the file holds");
+            return Err(self.err_at(at, why));
+        }
+        Ok(k as usize)
+    }
+
+    /// 2.2 `$Nodes`: the count, then per node an `int` tag and three doubles.
+    fn nodes_22(&mut self) -> Result<(), InputError> {
+        for _ in 0..self.text_count(28, "the number of nodes")? {
+            let at = self.at;
+            let tag = self.int("a node tag")?;
+            let mut p = [0.0; 3];
+            for c in p.iter_mut() {
+                *c = self.double("a coordinate")?;
+            }
+            self.cells.node(tag, p, 0).map_err(|e| self.err_at(at, e))?;
+        }
+        self.cells.end_nodes().map_err(|(_, e)| self.err(e))
+    }
+
+    /// 2.2 `$Elements`: the count, then runs of one type.
+    fn elements_22(&mut self) -> Result<(), InputError> {
+        let mut left = self.text_count(8, "the number of elements")?;
+        while left > 0 {
+            let kind = self.int("an element type")?;
+            let at = self.at;
+            let run = self.int("the number of elements of a run")?;
+            let tags = self.int("the number of tags")?;
+            let Some((nodes, name)) = element_nodes(kind) else {
+                return Err(self.err_at(at - 4, format!("unknown element type {kind}")));
+            };
+            let (Ok(run), Ok(tags)) = (usize::try_from(run), usize::try_from(tags)) else {
+                return Err(self.err_at(at, "a negative count in an element run's header"));
+            };
+            if run == 0 || run > left {
+                let why = format!("a run of {run} elements where {left} are left of the total");
+                return Err(self.err_at(at, why));
+            }
+            let width = 4usize.saturating_mul(1 + tags + nodes);
+            if run.saturating_mul(width) > self.b.len() - self.at {
+                return Err(self.err_at(
+                    at,
+                    format!("a run of {run} elements is more than the rest of the file holds"),
+                ));
+            }
+            for _ in 0..run {
+                let tag = self.int("an element tag")?;
+                let mut region = 0;
+                for j in 0..tags {
+                    let t = self.int("an element's tag")?;
+                    if j == 0 {
+                        region = t;
+                    }
+                }
+                self.element(tag, name, nodes, region, |r| r.int("a node tag"))?;
+            }
+            left -= run;
+        }
+        Ok(())
+    }
+
+    /// One element's `nodes` node tags (read by `tag`), kept or refused by [`Cells`].
+    fn element(
+        &mut self,
+        tag: i64,
+        name: &'static str,
+        nodes: usize,
+        region: i64,
+        tag_of: impl Fn(&mut Self) -> Result<i64, InputError>,
+    ) -> Result<(), InputError> {
+        let mut corners = [0u32; 27];
+        for c in corners.iter_mut().take(nodes) {
+            let at = self.at;
+            let raw = tag_of(self)?;
+            *c = self.cells.vertex(raw).map_err(|e| self.err_at(at, e))?;
+        }
+        self.cells
+            .keep(0, tag, name, &corners[..nodes], region)
+            .map_err(|e| self.err(e.message))
     }
 
     /// Skips a section this reader does not use, to its `$End…` line.
@@ -183,10 +300,20 @@ impl Bytes<'_, '_> {
         Ok(())
     }
 
+    /// A 4.1 header's total and tag range (three `size_t`).
+    fn totals(&mut self, what: &'static str) -> Result<Totals, InputError> {
+        let at = self.at;
+        let mut d = [0i64; 3];
+        for x in d.iter_mut() {
+            *x = i64::try_from(self.size("a section's totals")?).unwrap_or(-1);
+        }
+        Ok(Totals::declared(what, at, d))
+    }
+
     fn nodes(&mut self) -> Result<(), InputError> {
         self.step();
         let blocks = self.count(20, "the number of node blocks")?;
-        self.take(24, "the node counts")?;
+        let mut totals = self.totals("nodes")?;
         for _ in 0..blocks {
             self.take(8, "a node block's entity")?;
             if self.int("the parametric flag")? != 0 {
@@ -198,53 +325,39 @@ impl Bytes<'_, '_> {
             for j in 0..k {
                 let t = &self.b[tags_at + 8 * j..tags_at + 8 * j + 8];
                 let tag = u64::from_le_bytes(t.try_into().unwrap_or([0; 8]));
+                let tag = i64::try_from(tag).unwrap_or(-1);
                 let mut p = [0.0; 3];
                 for c in p.iter_mut() {
                     *c = self.double("a coordinate")?;
-                    if !crate::geom::coordinate_in_range(*c) {
-                        return Err(self.err(format!(
-                            "coordinate {c} of node {tag} is not a finite number in the exact range"
-                        )));
-                    }
                 }
-                let tag = i64::try_from(tag).unwrap_or(-1);
-                self.cells
-                    .node(0, tag, p, 0)
-                    .map_err(|e| self.err(e.message))?;
+                totals.add(tag);
+                let at = tags_at + 8 * j;
+                self.cells.node(tag, p, 0).map_err(|e| self.err_at(at, e))?;
             }
         }
-        Ok(())
+        totals.check().map_err(|(at, e)| self.err_at(at, e))?;
+        self.cells.end_nodes().map_err(|(_, e)| self.err(e))
     }
 
     fn elements(&mut self) -> Result<(), InputError> {
         self.step();
         let blocks = self.count(20, "the number of element blocks")?;
-        self.take(24, "the element counts")?;
-        let n = self.cells.input.points.len();
+        let mut totals = self.totals("elements")?;
         for _ in 0..blocks {
             self.int("an entity dimension")?;
             let region = self.int("an entity tag")?;
             let kind = self.int("an element type")?;
             let Some((nodes, name)) = element_nodes(kind) else {
-                return Err(self.err(format!("unknown element type {kind}")));
+                return Err(self.err_at(self.at - 4, format!("unknown element type {kind}")));
             };
             let k = self.count(8 * (1 + nodes), "the number of elements in a block")?;
-            let mut corners = Vec::with_capacity(nodes);
             for _ in 0..k {
-                let tag = self.size("an element tag")? as i64;
-                corners.clear();
-                for _ in 0..nodes {
-                    let raw = self.size("a node tag")?;
-                    let raw = i64::try_from(raw).unwrap_or(-1);
-                    let v = vertex_ref(raw, 1, n, self.cells.path, 0)
-                        .map_err(|e| self.err(e.message))?;
-                    corners.push(v);
-                }
-                self.cells
-                    .keep(0, tag, name, &corners, region)
-                    .map_err(|e| self.err(e.message))?;
+                let tag = i64::try_from(self.size("an element tag")?).unwrap_or(-1);
+                totals.add(tag);
+                let size = |r: &mut Self| Ok(i64::try_from(r.size("a node tag")?).unwrap_or(-1));
+                self.element(tag, name, nodes, region, size)?;
             }
         }
-        Ok(())
+        totals.check().map_err(|(at, e)| self.err_at(at, e))
     }
 }

@@ -49,6 +49,7 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
         segments: &doc.segments,
         faces: &doc.faces,
         tets: &doc.tets,
+        mesh: false,
     };
-    super::from_arrays(path, arrays)
+    super::arrays_input(path, arrays)
 }

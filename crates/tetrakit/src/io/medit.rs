@@ -1,6 +1,7 @@
 //! Medit / INRIA `.mesh` (ASCII), as Gmsh, MMG, TetGen (`-g`) and meshio write it:
 //! `MeshVersionFormatted v`, `Dimension 3` (or 2: planar points), then sections, each a
-//! keyword, a count and that many entries, until `End`. Read: `Vertices` (coordinates and
+//! keyword, a count and that many entries, until `End` (or the end of the file, which
+//! libMeshb and meshio accept too). Read: `Vertices` (coordinates and
 //! a reference), `Tetrahedra`, `Triangles` and `Edges` (1-based corners and a reference,
 //! which is not kept). Sections that only annotate (`Corners`, `Ridges`, `Required…`,
 //! `Normals`, `Tangents`, …) are skipped; cells other than tetrahedra and triangles
@@ -10,7 +11,7 @@
 //! allocation.
 
 use super::stream::Stream;
-use super::{Input, InputError, check_segments, parse_int, read_text, vertex_ref};
+use super::{Input, InputError, parse_int, read_text, vertex_ref};
 use std::path::Path;
 
 /// Sections skipped, with the number of tokens of one entry (`None`: depends on the
@@ -68,8 +69,6 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
         tet_file: path.to_path_buf(),
         ..Default::default()
     };
-    let mut seg_lines = Vec::new();
-    let mut ended = false;
     while let Some((line, key)) = s.next() {
         match key {
             "MeshVersionFormatted" => {
@@ -124,23 +123,16 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
                 for _ in 0..s.count("edges")? {
                     let (at, e) = s.corners::<2>(input.points.len(), "edge")?;
                     input.segments.push(e);
-                    seg_lines.push(at as u32);
+                    input.segment_lines.push(at as u32);
                 }
             }
-            "End" => {
-                ended = true;
-                break;
-            }
+            "End" => break,
             other => skip_or_refuse(&mut s, other, line, &mut input)?,
         }
-    }
-    if !ended {
-        return Err(InputError::new(path, s.line, "missing 'End'"));
     }
     if input.points.is_empty() {
         return Err(InputError::new(path, 0, "no 'Vertices' section"));
     }
-    check_segments(&input.segments, &seg_lines, 1, path)?;
     Ok(input)
 }
 

@@ -22,6 +22,7 @@ mod tetgen;
 mod vtk;
 mod vtk_binary;
 mod vtu;
+mod vtu_data;
 mod write;
 
 pub use planar::{keil_svg, write_planar_edges, write_planar_triangulation, write_points2d};
@@ -46,6 +47,9 @@ pub struct InputError {
     pub line: usize,
     /// What is wrong.
     pub message: String,
+    /// The byte offset of the problem in a binary file (where lines mean nothing);
+    /// `None` in text.
+    pub byte: Option<u64>,
 }
 
 impl InputError {
@@ -54,17 +58,35 @@ impl InputError {
         InputError {
             file: file.display().to_string(),
             line,
-            message: message.into(),
+            message: one_line(message.into()),
+            byte: None,
         }
+    }
+
+    /// An error at byte `offset` of a binary `file`.
+    pub fn at_byte(file: &Path, offset: usize, message: impl Into<String>) -> Self {
+        InputError {
+            byte: Some(offset as u64),
+            ..InputError::new(file, 0, message)
+        }
+    }
+}
+
+/// A message on one line: line breaks (quoted from a file) become spaces.
+fn one_line(message: String) -> String {
+    if message.contains(['\n', '\r']) {
+        message.replace("\r\n", " ").replace(['\n', '\r'], " ")
+    } else {
+        message
     }
 }
 
 impl fmt::Display for InputError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if self.line > 0 {
-            write!(f, "{}:{}: {}", self.file, self.line, self.message)
-        } else {
-            write!(f, "{}: {}", self.file, self.message)
+        match (self.line, self.byte) {
+            (0, Some(b)) => write!(f, "{}: byte {b}: {}", self.file, self.message),
+            (0, None) => write!(f, "{}: {}", self.file, self.message),
+            (l, _) => write!(f, "{}:{l}: {}", self.file, self.message),
         }
     }
 }
@@ -88,8 +110,16 @@ pub struct Input {
     /// The numbering of the input file (0 or 1), used to report vertices as the user
     /// numbered them.
     pub index_base: u32,
-    /// The source line of each point, for messages.
+    /// The source line of each point, for messages (empty where the format has none).
     pub point_lines: Vec<usize>,
+    /// The file's own number of each point where it is not `k + index_base` (Gmsh node
+    /// tags with gaps); empty otherwise. See [`Input::point_label`].
+    pub point_labels: Vec<u32>,
+    /// The file the segments came from (a TetGen `.edge` beside its `.node`), and the
+    /// source line of each (0 where the format has none).
+    pub segment_file: PathBuf,
+    /// See [`Input::segment_file`].
+    pub segment_lines: Vec<u32>,
     /// The file the points came from.
     pub point_file: PathBuf,
     /// The file the tetrahedra came from, and the source line of each (empty where the
@@ -128,9 +158,34 @@ pub struct ReadOptions {
     /// Read a mixed mesh's tetrahedra (and triangles and lines) alone, the other cells
     /// counted in [`Input::other_cells`] instead of refused.
     pub tets_only: bool,
+    /// The input is a tetrahedral mesh to be checked: where it has tetrahedra, only they
+    /// matter. Points no tetrahedron uses may coincide with others, and coincident
+    /// tetrahedron vertices are left to [`crate::mesh::verify`], which names them (a
+    /// non-conforming assembly is a NO, not a bad file); segments and triangles, which
+    /// Gmsh lists once per physical group and writes degenerate for closed curves, are
+    /// kept as read, unchecked.
+    pub mesh: bool,
 }
 
 impl Input {
+    /// The number the file gives point `k` (`k + index_base` unless the file numbers its
+    /// points otherwise).
+    pub fn point_label(&self, k: usize) -> u32 {
+        match self.point_labels.get(k) {
+            Some(&l) => l,
+            None => k as u32 + self.index_base,
+        }
+    }
+
+    /// Where point `k` was read, for messages: `line L` or `point P` (the file's
+    /// number).
+    fn point_origin(&self, k: usize) -> (usize, String) {
+        match self.point_lines.get(k) {
+            Some(&l) if l > 0 => (l, format!("point {}", self.point_label(k))),
+            _ => (0, format!("point {}", self.point_label(k))),
+        }
+    }
+
     /// The number the file gives tetrahedron `k` (`k + index_base` unless the file
     /// numbers its tetrahedra otherwise).
     pub fn tet_label(&self, k: usize) -> u32 {
@@ -180,16 +235,59 @@ pub fn read_input(path: &Path) -> Result<Input, InputError> {
 /// std::fs::write(dir.join("m.mesh"), mesh).unwrap();
 /// let e = read_input(&dir.join("m.mesh")).unwrap_err();
 /// assert!(e.message.starts_with("1 pyramids besides tetrahedra"), "{e}");
-/// let m = read_input_with(&dir.join("m.mesh"), ReadOptions { tets_only: true }).unwrap();
+/// let opts = ReadOptions { tets_only: true, ..Default::default() };
+/// let m = read_input_with(&dir.join("m.mesh"), opts).unwrap();
 /// assert_eq!((m.tets.len(), m.other_cells.unwrap().count), (1, 1));
 /// ```
 pub fn read_input_with(path: &Path, opts: ReadOptions) -> Result<Input, InputError> {
     let input = read_any(path)?;
+    validate(&input, opts)?;
     if let (Some(o), false) = (&input.other_cells, opts.tets_only) {
         let why = format!("{} (--tets-only reads the tetrahedra alone)", o.message);
         return Err(InputError::new(path, o.line, why));
     }
     Ok(input)
+}
+
+/// The checks every input passes, whatever read it, so that no reader can skip them:
+/// every coordinate finite and in the range where the predicates are exact, then
+/// (unless a mesh is read for its tetrahedra alone, see [`ReadOptions::mesh`]) no
+/// segment repeated or a loop, and no two points equal.
+fn validate(input: &Input, opts: ReadOptions) -> Result<(), InputError> {
+    check_coordinates(input)?;
+    if opts.mesh && !input.tets.is_empty() {
+        return Ok(());
+    }
+    let lines = match input.segment_lines.len() == input.segments.len() {
+        true => input.segment_lines.clone(),
+        false => vec![0; input.segments.len()],
+    };
+    let file = match input.segment_file.as_os_str().is_empty() {
+        true => &input.point_file,
+        false => &input.segment_file,
+    };
+    check_segments(&input.segments, &lines, input.index_base, file)?;
+    check_distinct_points(input)
+}
+
+/// Every coordinate finite and within [`coordinate_in_range`]; the error names the first
+/// point outside by the file's number and line.
+fn check_coordinates(input: &Input) -> Result<(), InputError> {
+    let bad =
+        (input.points.par_iter()).position_first(|p| !p.iter().all(|&x| coordinate_in_range(x)));
+    let Some(k) = bad else { return Ok(()) };
+    let x = input.points[k]
+        .into_iter()
+        .find(|&x| !coordinate_in_range(x))
+        .unwrap_or(f64::NAN);
+    let (line, name) = input.point_origin(k);
+    Err(InputError::new(
+        &input.point_file,
+        line,
+        format!(
+            "{name} has coordinate {x:e}, which is not finite or outside the exactly supported magnitude range [2^-142, 2^201]"
+        ),
+    ))
 }
 
 fn read_any(path: &Path) -> Result<Input, InputError> {
@@ -198,7 +296,7 @@ fn read_any(path: &Path) -> Result<Input, InputError> {
         .and_then(|e| e.to_str())
         .unwrap_or("")
         .to_ascii_lowercase();
-    let input = match ext.as_str() {
+    let mut input = match ext.as_str() {
         "node" | "edge" | "ele" | "face" => tetgen::read(path, &ext)?,
         "obj" => obj::read(path)?,
         "off" => off::read(path)?,
@@ -227,7 +325,9 @@ fn read_any(path: &Path) -> Result<Input, InputError> {
             ));
         }
     };
-    check_distinct_points(&input)?;
+    if input.point_file.as_os_str().is_empty() {
+        input.point_file = path.to_path_buf();
+    }
     Ok(input)
 }
 
@@ -320,8 +420,9 @@ pub(crate) fn text_of(path: &Path, bytes: Vec<u8>) -> Result<String, InputError>
     Ok(text)
 }
 
-/// Parses a coordinate, rejecting NaN, infinities, magnitudes outside the exact range,
-/// and decimals that round to 0 although their digits are not all 0 (`1e-400`).
+/// Parses a coordinate, rejecting decimals that round to 0 although their digits are not
+/// all 0 (`1e-400`), which the range check on the points ([`validate`]) can no longer
+/// see.
 pub(crate) fn parse_coord(tok: &str, path: &Path, line: usize) -> Result<f64, InputError> {
     let x: f64 = tok
         .parse()
@@ -336,16 +437,6 @@ pub(crate) fn parse_coord(tok: &str, path: &Path, line: usize) -> Result<f64, In
             line,
             format!(
                 "coordinate {} is below the exactly supported magnitude range [2^-142, 2^201] (it would round to 0)",
-                quote(tok)
-            ),
-        ));
-    }
-    if !coordinate_in_range(x) {
-        return Err(InputError::new(
-            path,
-            line,
-            format!(
-                "coordinate {} is not finite or outside the exactly supported magnitude range [2^-142, 2^201]",
                 quote(tok)
             ),
         ));
@@ -470,6 +561,8 @@ pub struct Arrays<'a> {
     pub faces: &'a [[i64; 3]],
     /// Tetrahedra.
     pub tets: &'a [[i64; 4]],
+    /// A mesh to check: see [`ReadOptions::mesh`].
+    pub mesh: bool,
 }
 
 /// An [`Input`] from arrays, with the checks every reader makes: at least one point,
@@ -490,22 +583,22 @@ pub struct Arrays<'a> {
 /// assert_eq!(e.message, "tets[0] names vertex 4, but points are numbered 0..=3");
 /// ```
 pub fn from_arrays(source: &Path, a: Arrays<'_>) -> Result<Input, InputError> {
+    let opts = ReadOptions {
+        mesh: a.mesh,
+        ..Default::default()
+    };
+    let input = arrays_input(source, a)?;
+    validate(&input, opts)?;
+    Ok(input)
+}
+
+/// The [`Input`] of arrays, every index checked, nothing else (see [`validate`]).
+pub(super) fn arrays_input(source: &Path, a: Arrays<'_>) -> Result<Input, InputError> {
     if a.points.is_empty() {
         return Err(InputError::new(source, 0, "no points"));
     }
-    for (k, p) in a.points.iter().enumerate() {
-        if let Some(x) = p.iter().find(|x| !coordinate_in_range(**x)) {
-            return Err(InputError::new(
-                source,
-                0,
-                format!(
-                    "points[{k}] coordinate {x} is outside the exactly supported range [2^-142, 2^201]"
-                ),
-            ));
-        }
-    }
     let n = a.points.len();
-    let input = Input {
+    Ok(Input {
         segments: index_rows(a.segments, n, "segments", source)?,
         faces: index_rows(a.faces, n, "faces", source)?,
         tets: index_rows(a.tets, n, "tets", source)?,
@@ -514,10 +607,7 @@ pub fn from_arrays(source: &Path, a: Arrays<'_>) -> Result<Input, InputError> {
         point_file: source.to_path_buf(),
         tet_file: source.to_path_buf(),
         ..Default::default()
-    };
-    check_segments(&input.segments, &vec![0; input.segments.len()], 0, source)?;
-    check_distinct_points(&input)?;
-    Ok(input)
+    })
 }
 
 /// 0-based index rows checked against `n` points.
@@ -552,30 +642,36 @@ fn index_rows<const K: usize>(
 }
 
 fn check_distinct_points(input: &Input) -> Result<(), InputError> {
-    let pts = &input.points;
-    let mut order: Vec<u32> = (0..pts.len() as u32).collect();
-    order.par_sort_unstable_by(|&a, &b| lex_cmp(&pts[a as usize], &pts[b as usize]));
-    for w in order.windows(2) {
-        let (a, b) = (w[0].min(w[1]) as usize, w[0].max(w[1]) as usize);
-        if pts[a] == pts[b] {
-            let line = |i: usize| input.point_lines.get(i).copied().unwrap_or(0);
-            let first = match line(a) {
+    match coincident_pair(&input.points) {
+        None => Ok(()),
+        Some((a, b)) => {
+            let (line, _) = input.point_origin(b);
+            let first = match input.point_origin(a).0 {
                 0 => String::new(),
                 l => format!(" (line {l})"),
             };
-            return Err(InputError::new(
+            Err(InputError::new(
                 &input.point_file,
-                line(b),
+                line,
                 format!(
                     "points {} and {} coincide at {:?}{first}",
-                    a as u32 + input.index_base,
-                    b as u32 + input.index_base,
-                    pts[a],
+                    input.point_label(a),
+                    input.point_label(b),
+                    input.points[a],
                 ),
-            ));
+            ))
         }
     }
-    Ok(())
+}
+
+/// Two equal points `(a, b)`, `a < b`, if any (the first pair in lexicographic order).
+fn coincident_pair(pts: &[Point3]) -> Option<(usize, usize)> {
+    let mut order: Vec<u32> = (0..pts.len() as u32).collect();
+    order.par_sort_unstable_by(|&a, &b| lex_cmp(&pts[a as usize], &pts[b as usize]));
+    order.windows(2).find_map(|w| {
+        let (a, b) = (w[0].min(w[1]) as usize, w[0].max(w[1]) as usize);
+        (pts[a] == pts[b]).then_some((a, b))
+    })
 }
 
 /// Meaningful lines of a text file: (1-based line number, tokens), comments after `#`

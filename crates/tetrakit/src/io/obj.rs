@@ -4,7 +4,7 @@
 //! (`vt vn vp g o s usemtl mtllib`) are skipped; any other statement is an error naming
 //! its line (curves, surfaces, points and lines of other kinds would otherwise vanish).
 
-use super::{Input, InputError, check_segments, parse_coord, parse_int, read_text, token_lines};
+use super::{Input, InputError, parse_coord, parse_int, read_text, token_lines};
 use std::path::Path;
 
 pub(super) fn read(path: &Path) -> Result<Input, InputError> {
@@ -15,7 +15,6 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
         point_file: path.to_path_buf(),
         ..Default::default()
     };
-    let mut seg_lines = Vec::new();
     let mut face_lines: Vec<(usize, Vec<i64>)> = Vec::new();
     let mut polylines: Vec<(usize, Vec<i64>)> = Vec::new();
     for (line, toks) in token_lines(&text) {
@@ -92,7 +91,7 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
     for (line, refs) in polylines {
         for w in refs.windows(2) {
             input.segments.push([w[0] as u32, w[1] as u32]);
-            seg_lines.push(line as u32);
+            input.segment_lines.push(line as u32);
         }
     }
     for (line, refs) in face_lines {
@@ -110,6 +109,5 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
             .faces
             .push([refs[0] as u32, refs[1] as u32, refs[2] as u32]);
     }
-    check_segments(&input.segments, &seg_lines, 1, path)?;
     Ok(input)
 }

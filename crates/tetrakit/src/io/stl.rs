@@ -66,7 +66,7 @@ impl<'p> Soup<'p> {
         for (slot, p) in face.iter_mut().zip(corners) {
             if !p.iter().all(|&x| coordinate_in_range(x)) {
                 let msg = format!(
-                    "triangle {k} has a corner {p:?} that is not a finite number in the exact range"
+                    "triangle {k} has a corner {p:?}, which is not finite or outside the exactly supported magnitude range [2^-142, 2^201]"
                 );
                 return Err(InputError::new(self.path, line, msg));
             }

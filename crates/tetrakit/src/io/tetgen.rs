@@ -4,9 +4,7 @@
 //! increasing order (TetGen and meshio ignore those numbers), and they are kept in
 //! [`Input::tet_labels`] to name tetrahedra in witnesses.
 
-use super::{
-    Input, InputError, Tokens, check_segments, parse_coord, parse_int, read_text, vertex_ref,
-};
+use super::{Input, InputError, Tokens, parse_coord, parse_int, read_text, vertex_ref};
 use crate::rows::split_at_offsets;
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
@@ -38,8 +36,7 @@ pub(super) fn read(path: &Path, ext: &str) -> Result<Input, InputError> {
     };
     if let Some(p) = member("edge")? {
         let (rows, lines, _) = read_rows::<2>(&p, &input, "edge", Numbering::Consecutive)?;
-        check_segments(&rows, &lines, input.index_base, &p)?;
-        input.segments = rows;
+        (input.segments, input.segment_lines, input.segment_file) = (rows, lines, p);
     }
     if let Some(p) = member("ele")? {
         let (tets, lines, labels) = read_rows::<4>(&p, &input, "tetrahedron", Numbering::Gaps)?;

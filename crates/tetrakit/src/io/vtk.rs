@@ -3,13 +3,13 @@
 //! layout (`CELLS m size`, one `k i0 … ik−1` per cell) or the 5.x one (`CELLS m+1 size`
 //! with `OFFSETS` and `CONNECTIVITY` arrays), then `CELL_TYPES`. Indices are 0-based.
 //! Tetrahedra (type 10) and triangles (5) are read, lines (3) as segments and vertices (1)
-//! ignored; any other cell type is an error that counts the cells of that type.
+//! ignored, quadratic tetrahedra, triangles and lines (24, 22, 21) by their corners; any other cell type is an error that counts the cells of that type.
 //! `POINT_DATA`/`CELL_DATA` and what follows are not read; `METADATA` is skipped. Binary
 //! files ([`is_binary`]) are read by `vtk_binary`. Counts are checked against what is read, never used to size an
 //! allocation.
 
 use super::stream::Stream;
-use super::{Input, InputError, check_segments, parse_int, text_of, vertex_ref};
+use super::{Input, InputError, parse_int, text_of, vertex_ref};
 use std::path::Path;
 
 /// The keywords that start a section of an unstructured grid.
@@ -59,7 +59,6 @@ pub(super) fn read(path: &Path, bytes: Vec<u8>) -> Result<Input, InputError> {
         ..Default::default()
     };
     let (mut cells, mut cell_lines) = (Vec::new(), Vec::new());
-    let mut seg_lines = Vec::new();
     let mut pending = None;
     while let Some((line, key)) = pending.take().or_else(|| s.next()) {
         match key {
@@ -92,14 +91,7 @@ pub(super) fn read(path: &Path, bytes: Vec<u8>) -> Result<Input, InputError> {
             }
             "CELLS" => (cells, cell_lines) = read_cells(&mut s, input.points.len())?,
             "CELL_TYPES" => {
-                read_types(
-                    &mut s,
-                    line,
-                    &cells,
-                    &cell_lines,
-                    &mut input,
-                    &mut seg_lines,
-                )?;
+                read_types(&mut s, line, &cells, &cell_lines, &mut input)?;
             }
             "POINT_DATA" | "CELL_DATA" | "FIELD" => break,
             other => {
@@ -114,14 +106,33 @@ pub(super) fn read(path: &Path, bytes: Vec<u8>) -> Result<Input, InputError> {
     if input.points.is_empty() {
         return Err(InputError::new(path, 0, "no POINTS"));
     }
-    check_segments(&input.segments, &seg_lines, 0, path)?;
     Ok(input)
 }
 
-/// The `CELLS` section in either layout: each cell's points and its line.
-fn read_cells(s: &mut Stream, n: usize) -> Result<(Vec<Vec<u32>>, Vec<usize>), InputError> {
+/// Cells' points and each cell's line.
+type CellList = Result<(Vec<Vec<u32>>, Vec<usize>), InputError>;
+
+/// The `CELLS` section in either layout: each cell's points and its line; the declared
+/// number of list entries must be what the cells hold.
+fn read_cells(s: &mut Stream, n: usize) -> CellList {
     let m = s.count("cells")?;
-    s.count("cell list entries")?;
+    let line = s.line;
+    let size = s.count("cell list entries")?;
+    let (cells, lines) = read_cell_list(s, n, m)?;
+    let used = match lines.len() < m {
+        true => cells.iter().map(Vec::len).sum(),
+        false => cells.iter().map(|c| c.len() + 1).sum::<usize>(),
+    };
+    if used != size {
+        let why = format!("the CELLS line declares {size} list entries, the cells hold {used}");
+        return Err(InputError::new(s.path, line, why));
+    }
+    Ok((cells, lines))
+}
+
+/// The cells of a `CELLS` section (`m` in the 4.x layout; `m − 1` in the 5.x one, where
+/// `m` counts the offsets).
+fn read_cell_list(s: &mut Stream, n: usize, m: usize) -> CellList {
     let mut cells = Vec::new();
     let mut lines = Vec::new();
     let vertex = |s: &mut Stream| -> Result<u32, InputError> {
@@ -200,7 +211,6 @@ fn read_types(
     cells: &[Vec<u32>],
     lines: &[usize],
     input: &mut Input,
-    seg_lines: &mut Vec<u32>,
 ) -> Result<(), InputError> {
     let m = s.count("cell types")?;
     if m != cells.len() {
@@ -212,16 +222,17 @@ fn read_types(
         let (l, tok) = s.want("a cell type")?;
         let t = parse_int(tok, s.path, l, "cell type")?;
         sorter
-            .add(t, cell, at, input, seg_lines)
+            .add(t, cell, at, input)
             .map_err(|why| InputError::new(s.path, at, why))?;
     }
     sorter.finish(input);
     Ok(())
 }
 
-/// Files VTK cells (legacy or XML) by type: tetrahedra (10), triangles (5) and lines (3)
-/// into an [`Input`], vertices (1) ignored, any other type counted; the first of those
-/// types is the error of [`CellSorter::finish`].
+/// Files VTK cells (legacy or XML) by type: tetrahedra (10, and the corners of quadratic
+/// ones, 24), triangles (5, and 22) and lines (3, and 21) into an [`Input`], vertices (1)
+/// ignored, any other type counted; the first of those types is the error of
+/// [`CellSorter::finish`].
 #[derive(Default)]
 pub(super) struct CellSorter {
     other: Option<(i64, usize, usize)>,
@@ -237,20 +248,23 @@ impl CellSorter {
         cell: &[u32],
         at: usize,
         input: &mut Input,
-        seg_lines: &mut Vec<u32>,
     ) -> Result<(), String> {
         match (t, cell.len()) {
-            (10, 4) => {
+            // Quadratic cells (24 tetrahedron, 22 triangle, 21 edge) by their corners,
+            // which come first.
+            (10, 4) | (24, 10) => {
                 input.tets.push([cell[0], cell[1], cell[2], cell[3]]);
                 input.tet_lines.push(at as u32);
             }
-            (5, 3) => input.faces.push([cell[0], cell[1], cell[2]]),
-            (3, 2) => {
+            (5, 3) | (22, 6) => input.faces.push([cell[0], cell[1], cell[2]]),
+            (3, 2) | (21, 3) => {
                 input.segments.push([cell[0], cell[1]]);
-                seg_lines.push(at as u32);
+                input.segment_lines.push(at as u32);
             }
             (1, 1) => {}
-            (10 | 5 | 3 | 1, k) => return Err(format!("a cell of type {t} with {k} points")),
+            (10 | 5 | 3 | 1 | 24 | 22 | 21, k) => {
+                return Err(format!("a cell of type {t} with {k} points"));
+            }
             _ => match &mut self.other {
                 Some((ty, count, _)) if *ty == t => *count += 1,
                 Some(_) => self.more += 1,

@@ -4,11 +4,13 @@
 //! line names them). Both cell layouts (4.x `CELLS` lists, 5.x `OFFSETS` and
 //! `CONNECTIVITY`); `METADATA` blocks are skipped to their blank line; reading stops at
 //! `POINT_DATA`/`CELL_DATA`. Cells are filed by [`CellSorter`]. A count is checked
-//! against the bytes left before anything is read for it; errors name the line the
-//! offending byte is on (counting newlines, as a text viewer would).
+//! against the bytes left before anything is read for it, and every block of values must
+//! be followed by the line break VTK and meshio write after it (or the end of the file),
+//! so a block shorter or longer than declared is an error, not a misread. Errors in a
+//! keyword line name the line; errors in binary data name the byte offset or the cell.
 
 use super::vtk::CellSorter;
-use super::{Input, InputError, check_segments};
+use super::{Input, InputError};
 use std::path::Path;
 
 /// Reads a binary legacy VTK file whose first three lines have been checked.
@@ -29,16 +31,15 @@ pub(super) fn read(path: &Path, bytes: &[u8]) -> Result<Input, InputError> {
     };
     let (mut cells, mut cell_line) = (Vec::new(), 0);
     let mut sorter = CellSorter::default();
-    let mut seg_lines = Vec::new();
     while let Some(line) = r.line() {
-        let at = r.line_no();
+        let at = r.line_no() - 1;
         let words: Vec<&str> = line.split_ascii_whitespace().collect();
         match words.first().copied() {
             None => {}
             Some("DATASET") if words.get(1) == Some(&"UNSTRUCTURED_GRID") => {}
             Some("POINTS") => {
                 let n = r.count(words.get(1), "points")?;
-                let c = r.values(3 * n, words.get(2), "point coordinates")?;
+                let c = r.values(n.saturating_mul(3), words.get(2), "point coordinates")?;
                 input
                     .points
                     .extend(c.chunks_exact(3).map(|c| [c[0], c[1], c[2]]));
@@ -50,13 +51,16 @@ pub(super) fn read(path: &Path, bytes: &[u8]) -> Result<Input, InputError> {
             Some("CELL_TYPES") => {
                 let m = r.count(words.get(1), "cell types")?;
                 if m != cells.len() {
-                    return Err(r.err(format!("{m} cell types for {} cells", cells.len())));
+                    let why = format!("{m} cell types for {} cells", cells.len());
+                    return Err(r.err_line(why));
                 }
                 let types = r.values(m, Some(&"int"), "cell types")?;
-                for (cell, t) in cells.iter().zip(types) {
+                for (k, (cell, t)) in cells.iter().zip(types).enumerate() {
                     sorter
-                        .add(t as i64, cell, cell_line, &mut input, &mut seg_lines)
-                        .map_err(|why| InputError::new(path, cell_line, why))?;
+                        .add(t as i64, cell, cell_line, &mut input)
+                        .map_err(|why| {
+                            InputError::new(path, cell_line, format!("cell {k}: {why}"))
+                        })?;
                 }
             }
             Some("POINT_DATA" | "CELL_DATA" | "FIELD") => break,
@@ -70,7 +74,6 @@ pub(super) fn read(path: &Path, bytes: &[u8]) -> Result<Input, InputError> {
     if input.points.is_empty() {
         return Err(InputError::new(path, 0, "no POINTS"));
     }
-    check_segments(&input.segments, &seg_lines, 0, path)?;
     Ok(input)
 }
 
@@ -90,8 +93,14 @@ impl Cursor<'_, '_> {
             + 1
     }
 
+    /// An error at the current byte.
     fn err(&self, why: impl Into<String>) -> InputError {
-        InputError::new(self.path, self.line_no(), why)
+        InputError::at_byte(self.path, self.at.min(self.b.len()), why)
+    }
+
+    /// An error in the keyword line just read.
+    fn err_line(&self, why: impl Into<String>) -> InputError {
+        InputError::new(self.path, self.line_no() - 1, why)
     }
 
     /// The next line as text (lossy), without its line end.
@@ -104,7 +113,7 @@ impl Cursor<'_, '_> {
 
     fn count(&self, word: Option<&&str>, what: &str) -> Result<usize, InputError> {
         word.and_then(|w| w.parse().ok())
-            .ok_or_else(|| self.err(format!("expected the number of {what}")))
+            .ok_or_else(|| self.err_line(format!("expected the number of {what}")))
     }
 
     /// `n` big-endian values of the named type, as `f64` (exact for every type up to
@@ -116,7 +125,7 @@ impl Cursor<'_, '_> {
             "short" | "unsigned_short" => 2,
             "int" | "unsigned_int" | "float" => 4,
             "double" | "long" | "unsigned_long" | "vtktypeint64" | "vtktypeuint64" => 8,
-            _ => return Err(self.err(format!("{what}: data type {}", super::quote(ty)))),
+            _ => return Err(self.err_line(format!("{what}: data type {}", super::quote(ty)))),
         };
         let bytes = n
             .checked_mul(size)
@@ -124,27 +133,37 @@ impl Cursor<'_, '_> {
             .ok_or_else(|| self.err(format!("{n} {what} claimed, but the file ends first")))?;
         let v = bytes.chunks_exact(size).map(|c| decode(c, ty)).collect();
         self.at += n * size;
-        // The values end with a line break before the next keyword.
-        if self.b.get(self.at) == Some(&b'\n') {
-            self.at += 1;
+        // The values end with a line break before the next keyword (or the file ends).
+        match self.b.get(self.at) {
+            Some(b'\n') => self.at += 1,
+            None => {}
+            Some(_) => {
+                return Err(self.err(format!(
+                    "the {n} {what} end here without the line break that follows binary data: the block is shorter or longer than declared"
+                )));
+            }
         }
         let v: Vec<f64> = v;
-        if let Some(x) = v
-            .iter()
-            .find(|x| !x.is_finite() || (size == 8 && ty != "double" && x.abs() >= 9.0e15))
-        {
+        // Coordinates are checked where every reader's are (`io::validate`); integers
+        // of 64 bits must be exact as `f64`.
+        let integer = !matches!(ty, "float" | "double");
+        if let Some(x) = v.iter().find(|x| integer && size == 8 && x.abs() >= 9.0e15) {
             return Err(self.err(format!("{what}: value {x} out of range")));
         }
         Ok(v)
     }
 
-    /// Indices (checked against `n` points) from values read as `f64`.
-    fn indices(&self, v: &[f64], n: usize) -> Result<Vec<u32>, InputError> {
-        v.iter()
-            .map(|&x| {
+    /// Indices (checked against `n` points) from values read as `f64`; an error names
+    /// the entry and the line of the section.
+    fn indices(&self, v: &[f64], n: usize, line: usize) -> Result<Vec<u32>, InputError> {
+        (v.iter().enumerate())
+            .map(|(k, &x)| {
                 (x >= 0.0 && x < n as f64 && x.fract() == 0.0)
                     .then_some(x as u32)
-                    .ok_or_else(|| self.err(format!("point index {x}, but there are {n} points")))
+                    .ok_or_else(|| {
+                        let why = format!("entry {k} names point {x}, but there are {n} points");
+                        InputError::new(self.path, line, why)
+                    })
             })
             .collect()
     }
@@ -153,6 +172,8 @@ impl Cursor<'_, '_> {
     fn cells(&mut self, words: &[&str], n: usize) -> Result<Vec<Vec<u32>>, InputError> {
         let m = self.count(words.get(1), "cells")?;
         let size = self.count(words.get(2), "cell list entries")?;
+        let line = self.line_no() - 1;
+        let at_line = |why: String| InputError::new(self.path, line, why);
         let save = self.at;
         let next = self.line().unwrap_or_default();
         let head: Vec<&str> = next.split_ascii_whitespace().collect();
@@ -161,37 +182,48 @@ impl Cursor<'_, '_> {
             let list = self.values(size, Some(&"int"), "cell list entries")?;
             let mut cells = Vec::new();
             let mut rest = &list[..];
-            for _ in 0..m {
+            for c in 0..m {
                 let k = rest.first().copied().unwrap_or(-1.0);
                 if !(1.0..=27.0).contains(&k) || rest.len() <= k as usize {
-                    return Err(self.err(format!("a cell of {k} points in a list of {size}")));
+                    let why = format!("cell {c} has {k} points in a list of {size} entries");
+                    return Err(at_line(why));
                 }
-                cells.push(self.indices(&rest[1..=k as usize], n)?);
+                cells.push(self.indices(&rest[1..=k as usize], n, line)?);
                 rest = &rest[k as usize + 1..];
+            }
+            if !rest.is_empty() {
+                let why = format!(
+                    "the CELLS list declares {size} entries, its {m} cells use {}",
+                    size - rest.len()
+                );
+                return Err(at_line(why));
             }
             return Ok(cells);
         }
         let offsets = self.values(m, head.get(1), "offsets")?;
-        let line = self.line().unwrap_or_default();
-        let conn_head: Vec<&str> = line.split_ascii_whitespace().collect();
+        let conn_line = self.line().unwrap_or_default();
+        let conn_head: Vec<&str> = conn_line.split_ascii_whitespace().collect();
         if conn_head.first() != Some(&"CONNECTIVITY") {
             return Err(self.err("expected CONNECTIVITY"));
         }
         let conn = self.values(size, conn_head.get(1), "connectivity")?;
-        let conn = self.indices(&conn, n)?;
-        offsets
-            .windows(2)
-            .map(|w| {
+        let conn = self.indices(&conn, n, line)?;
+        let ends = (offsets.first(), offsets.last());
+        if m > 0 && ends != (Some(&0.0), Some(&(size as f64))) {
+            let why = format!(
+                "the offsets run from {} to {}, where 0 and the {size} connectivity entries are declared",
+                ends.0.unwrap_or(&0.0),
+                ends.1.unwrap_or(&0.0)
+            );
+            return Err(at_line(why));
+        }
+        (offsets.windows(2).enumerate())
+            .map(|(c, w)| {
                 let (a, b) = (w[0] as usize, w[1] as usize);
                 conn.get(a..b)
                     .map(<[u32]>::to_vec)
                     .filter(|_| a <= b)
-                    .ok_or_else(|| {
-                        self.err(format!(
-                            "offsets {a}..{b} outside the {} connectivity entries",
-                            conn.len()
-                        ))
-                    })
+                    .ok_or_else(|| at_line(format!("cell {c}: offsets {a}..{b} are out of order")))
             })
             .collect()
     }

@@ -3,20 +3,26 @@
 //! `DataArray` in any of the three forms VTK has: `format="ascii"` (numbers as text),
 //! `format="binary"` (base64 inline) and `format="appended"` (an offset into the
 //! `AppendedData` section, `encoding="raw"` or `"base64"`). Binary data may be
-//! zlib-compressed (`compressor="vtkZLibDataCompressor"`, VTK's block layout), in either
-//! byte order, with 32- or 64-bit headers (`header_type`). `PointData`/`CellData` arrays
-//! are not read. Cells are filed as in legacy VTK ([`super::vtk`]): tetrahedra, triangles
-//! and lines are kept, other types are an error that counts them.
+//! compressed (`compressor="vtkZLibDataCompressor"`, `"vtkLZMADataCompressor"` or
+//! `"vtkLZ4DataCompressor"`, VTK's block layout), in either byte order, with 32- or
+//! 64-bit headers (`header_type`). `PointData`/`CellData` arrays are not read. Cells are
+//! filed as in legacy VTK ([`super::vtk`]): tetrahedra, triangles and lines are kept
+//! (quadratic ones by their corners), other types are an error that counts them.
 //!
-//! Nothing is sized from a header: every count is checked against the data decoded, and a
-//! compressed block may not claim more than zlib's maximum ratio (1032:1) of its bytes.
-//! Errors name the line of the `DataArray` (or element) at fault.
+//! Every array must hold exactly what its piece declares: `3 × NumberOfPoints`
+//! coordinates, `NumberOfCells` offsets and types, and as many connectivity entries as
+//! the last offset says. A binary array's header must declare exactly that many bytes
+//! before anything is decoded or inflated, so nothing is allocated beyond what the
+//! declared counts times the value width allow (and those counts are themselves bounded
+//! by the file: a compressed block may not claim more than its compressor's maximum
+//! ratio of its bytes). Errors name the line of the `DataArray` (or `Piece`) at fault.
 
 use super::vtk::CellSorter;
-use super::{Input, InputError, check_segments, read_bytes};
-use base64::Engine;
+use super::vtu_data::{
+    Compressor, Layout, Values, ascii_values, binary_values, block, block_from_base64, width,
+};
+use super::{Input, InputError, read_bytes};
 use quick_xml::events::{BytesStart, Event};
-use std::io::Read;
 use std::path::Path;
 
 /// What a `DataArray` holds, by where it sits.
@@ -46,12 +52,12 @@ struct Array {
     line: usize,
 }
 
-/// The `VTKFile` element's settings.
+/// A `Piece`: where it starts and what it declares.
 #[derive(Clone, Copy, Debug)]
-struct Layout {
-    big_endian: bool,
-    header_bytes: usize,
-    compressed: bool,
+struct Piece {
+    line: usize,
+    points: usize,
+    cells: usize,
 }
 
 /// The `AppendedData` section: raw bytes, or base64 text.
@@ -68,12 +74,33 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
     let xml = std::str::from_utf8(xml)
         .map_err(|e| InputError::new(path, lines.at(e.valid_up_to()), "not UTF-8 text"))?;
     let (layout, arrays, pieces) = scan(xml, path, &lines)?;
-    let mut per_piece: Vec<[Option<Values>; 4]> = (0..pieces).map(|_| Default::default()).collect();
-    for a in &arrays {
-        let v = decode(a, layout, &appended, path)?;
-        per_piece[a.piece][a.role as usize] = Some(v);
+    let mut input = Input {
+        dim: 3,
+        point_file: path.to_path_buf(),
+        tet_file: path.to_path_buf(),
+        ..Default::default()
+    };
+    let mut sorter = CellSorter::default();
+    for (p, piece) in pieces.iter().enumerate() {
+        let mut mine: [Option<&Array>; 4] = [None; 4];
+        for a in arrays.iter().filter(|a| a.piece == p) {
+            if mine[a.role as usize].replace(a).is_some() {
+                let why = format!("a second {:?} array in piece {p}", a.role);
+                return Err(InputError::new(path, a.line, why));
+            }
+        }
+        let source = Decoder {
+            path,
+            layout,
+            appended: &appended,
+        };
+        add_piece(&source, p, *piece, mine, &mut input, &mut sorter)?;
     }
-    assemble(path, per_piece, &arrays)
+    sorter.finish(&mut input);
+    if input.points.is_empty() {
+        return Err(InputError::new(path, pieces[0].line, "no points"));
+    }
+    Ok(input)
 }
 
 /// Line numbers of byte offsets.
@@ -140,12 +167,12 @@ fn scan(
     xml: &str,
     path: &Path,
     lines: &LineIndex,
-) -> Result<(Layout, Vec<Array>, usize), InputError> {
+) -> Result<(Layout, Vec<Array>, Vec<Piece>), InputError> {
     let mut reader = quick_xml::Reader::from_str(xml);
     let mut layout = None;
     let mut stack: Vec<Vec<u8>> = Vec::new();
     let mut arrays = Vec::new();
-    let mut pieces = 0usize;
+    let mut pieces: Vec<Piece> = Vec::new();
     let mut open: Option<Array> = None;
     loop {
         let pos = reader.buffer_position() as usize;
@@ -162,13 +189,13 @@ fn scan(
                 match name.as_slice() {
                     b"VTKFile" => layout = Some(file_layout(e).map_err(err)?),
                     b"Piece" if stack.last().is_some_and(|p| p == b"UnstructuredGrid") => {
-                        pieces += 1
+                        pieces.push(piece(e, line).map_err(err)?)
                     }
                     b"DataArray" => {
                         let role = role(&stack, e);
                         if let Some(role) = role {
-                            let a =
-                                data_array(e, role, pieces.saturating_sub(1), line).map_err(err)?;
+                            let at = pieces.len().saturating_sub(1);
+                            let a = data_array(e, role, at, line).map_err(err)?;
                             if empty || matches!(a.source, Source::Appended(_)) {
                                 arrays.push(a);
                             } else {
@@ -204,8 +231,9 @@ fn scan(
         }
     }
     let layout = layout.ok_or_else(|| InputError::new(path, 1, "no VTKFile element"))?;
-    if pieces == 0 {
-        return Err(InputError::new(path, 0, "no UnstructuredGrid Piece"));
+    if pieces.is_empty() {
+        let why = "no Piece inside an UnstructuredGrid element";
+        return Err(InputError::new(path, lines.at(xml.len()), why));
     }
     Ok((layout, arrays, pieces))
 }
@@ -235,12 +263,14 @@ fn file_layout(e: &BytesStart) -> Result<Layout, String> {
             ));
         }
     };
-    let compressed = match attr(e, b"compressor").as_deref() {
-        None | Some("") => false,
-        Some("vtkZLibDataCompressor") => true,
+    let compressor = match attr(e, b"compressor").as_deref() {
+        None | Some("") => Compressor::None,
+        Some("vtkZLibDataCompressor") => Compressor::Zlib,
+        Some("vtkLZMADataCompressor") => Compressor::Lzma,
+        Some("vtkLZ4DataCompressor") => Compressor::Lz4,
         Some(c) => {
             return Err(format!(
-                "compressor {}: only vtkZLibDataCompressor (zlib) is read",
+                "compressor {}: vtkZLibDataCompressor, vtkLZMADataCompressor and vtkLZ4DataCompressor are read",
                 super::quote(c)
             ));
         }
@@ -248,7 +278,21 @@ fn file_layout(e: &BytesStart) -> Result<Layout, String> {
     Ok(Layout {
         big_endian,
         header_bytes,
-        compressed,
+        compressor,
+    })
+}
+
+/// A `Piece`'s declared counts.
+fn piece(e: &BytesStart, line: usize) -> Result<Piece, String> {
+    let count = |name: &[u8]| -> Result<usize, String> {
+        let key = String::from_utf8_lossy(name);
+        let v = attr(e, name).ok_or_else(|| format!("a Piece without {key}"))?;
+        (v.trim().parse()).map_err(|_| format!("{key}={}: not a count", super::quote(&v)))
+    };
+    Ok(Piece {
+        line,
+        points: count(b"NumberOfPoints")?,
+        cells: count(b"NumberOfCells")?,
     })
 }
 
@@ -268,6 +312,9 @@ fn role(stack: &[Vec<u8>], e: &BytesStart) -> Option<Role> {
 
 fn data_array(e: &BytesStart, role: Role, piece: usize, line: usize) -> Result<Array, String> {
     let ty = attr(e, b"type").ok_or("a DataArray without a type")?;
+    if width(&ty).is_none() {
+        return Err(format!("DataArray type {}", super::quote(&ty)));
+    }
     if role == Role::Points && attr(e, b"NumberOfComponents").as_deref().unwrap_or("1") != "3" {
         return Err("Points need NumberOfComponents=\"3\"".into());
     }
@@ -298,337 +345,131 @@ fn data_array(e: &BytesStart, role: Role, piece: usize, line: usize) -> Result<A
     })
 }
 
-/// An array's values: coordinates as `f64`, indices and types as `i64`.
-#[derive(Debug)]
-enum Values {
-    Float(Vec<f64>),
-    Int(Vec<i64>),
-}
-
-fn decode(
-    a: &Array,
+/// Where the arrays' bytes are, to decode them.
+struct Decoder<'a> {
+    path: &'a Path,
     layout: Layout,
-    appended: &Appended,
-    path: &Path,
-) -> Result<Values, InputError> {
-    let err = |why: String| InputError::new(path, a.line, why);
-    if let Source::Ascii(text) = &a.source {
-        return ascii_values(text, &a.ty).map_err(err);
-    }
-    let payload = match (&a.source, appended) {
-        (Source::Base64(text), _) => block_from_base64(text.as_bytes(), layout),
-        (Source::Appended(off), Appended::Raw(data)) => match data.get(*off..) {
-            Some(d) => block(d, layout),
-            None => Err(format!("offset {off} is past the appended data")),
-        },
-        (Source::Appended(off), Appended::Base64(data)) => match data.get(*off..) {
-            Some(d) => block_from_base64(d, layout),
-            None => Err(format!("offset {off} is past the appended data")),
-        },
-        _ => Err("an appended DataArray but no AppendedData section".into()),
-    }
-    .map_err(err)?;
-    binary_values(&payload, &a.ty, layout.big_endian).map_err(err)
+    appended: &'a Appended<'a>,
 }
 
-fn ascii_values(text: &str, ty: &str) -> Result<Values, String> {
-    let toks = text.split_ascii_whitespace();
-    if ty.starts_with("Float") {
-        toks.map(|t| {
-            t.parse::<f64>()
-                .map_err(|_| format!("{} is not a number", super::quote(t)))
-        })
-        .collect::<Result<_, _>>()
-        .map(Values::Float)
-    } else {
-        toks.map(|t| {
-            t.parse::<i64>()
-                .map_err(|_| format!("{} is not an integer", super::quote(t)))
-        })
-        .collect::<Result<_, _>>()
-        .map(Values::Int)
-    }
-}
-
-/// An unsigned header word.
-fn word(bytes: &[u8], big_endian: bool) -> u64 {
-    let mut b = [0u8; 8];
-    if big_endian {
-        b[8 - bytes.len()..].copy_from_slice(bytes);
-        u64::from_be_bytes(b)
-    } else {
-        b[..bytes.len()].copy_from_slice(bytes);
-        u64::from_le_bytes(b)
-    }
-}
-
-/// The `k` header words at the start of `data`.
-fn header(data: &[u8], k: usize, layout: Layout) -> Result<Vec<usize>, String> {
-    let w = layout.header_bytes;
-    let bytes = data.get(..k * w).ok_or("the data ends inside its header")?;
-    Ok(bytes
-        .chunks_exact(w)
-        .map(|c| word(c, layout.big_endian) as usize)
-        .collect())
-}
-
-/// Compressed-block header: `[blocks, block size, last block size, sizes...]`, and the
-/// uncompressed size of each block.
-fn block_sizes(h: &[usize]) -> Vec<usize> {
-    let (n, size, last) = (h[0], h[1], h[2]);
-    (0..n)
-        .map(|i| if i + 1 == n && last != 0 { last } else { size })
-        .collect()
-}
-
-/// The data of one binary block (its header, then the bytes; compressed or not).
-fn block(d: &[u8], layout: Layout) -> Result<Vec<u8>, String> {
-    let w = layout.header_bytes;
-    if !layout.compressed {
-        let n = header(d, 1, layout)?[0];
-        return d
-            .get(w..)
-            .and_then(|r| r.get(..n))
-            .map(<[u8]>::to_vec)
-            .ok_or_else(|| {
-                format!(
-                    "the header claims {n} bytes but {} follow",
-                    d.len().saturating_sub(w)
-                )
-            });
-    }
-    let blocks = header(d, 3, layout)?[0];
-    if blocks > d.len() {
-        return Err(format!(
-            "the header claims {blocks} blocks in {} bytes",
-            d.len()
-        ));
-    }
-    let h = header(d, 3 + blocks, layout)?;
-    inflate(&h, &d[(3 + blocks) * w..])
-}
-
-/// Inflates the blocks `h` describes from `data`.
-fn inflate(h: &[usize], data: &[u8]) -> Result<Vec<u8>, String> {
-    let mut out = Vec::new();
-    let mut at = 0usize;
-    for (k, (&raw, &packed)) in block_sizes(h).iter().zip(&h[3..]).enumerate() {
-        let chunk = data
-            .get(at..at.saturating_add(packed))
-            .ok_or_else(|| format!("block {k} claims {packed} bytes past the end of the data"))?;
-        if raw > packed.saturating_mul(1032).saturating_add(64) {
-            return Err(format!(
-                "block {k} claims {raw} bytes from {packed} compressed bytes"
-            ));
+impl Decoder<'_> {
+    /// Exactly `want` values of array `a`.
+    fn values(&self, a: &Array, want: usize) -> Result<Values, InputError> {
+        let err = |why: String| InputError::new(self.path, a.line, why);
+        let what = format!("the {:?} array", a.role);
+        let err_in = |why: String| err(format!("{what}: {why}"));
+        if let Source::Ascii(text) = &a.source {
+            return ascii_values(text, &a.ty, want).map_err(err_in);
         }
-        let before = out.len();
-        flate2::read::ZlibDecoder::new(chunk)
-            .take(raw as u64 + 1)
-            .read_to_end(&mut out)
-            .map_err(|e| format!("block {k} is not zlib data: {e}"))?;
-        if out.len() - before != raw {
-            return Err(format!(
-                "block {k} inflates to {} bytes, not {raw}",
-                out.len() - before
-            ));
+        let w = width(&a.ty).unwrap_or(1);
+        let bytes = want
+            .checked_mul(w)
+            .ok_or_else(|| err_in(format!("{want} values of {w} bytes are too many")))?;
+        let layout = self.layout;
+        let payload = match (&a.source, self.appended) {
+            (Source::Base64(text), _) => block_from_base64(text.as_bytes(), layout, bytes),
+            (Source::Appended(off), Appended::Raw(data)) => match data.get(*off..) {
+                Some(d) => block(d, layout, bytes),
+                None => Err(format!("offset {off} is past the appended data")),
+            },
+            (Source::Appended(off), Appended::Base64(data)) => match data.get(*off..) {
+                Some(d) => block_from_base64(d, layout, bytes),
+                None => Err(format!("offset {off} is past the appended data")),
+            },
+            _ => Err("an appended DataArray but no AppendedData section".into()),
         }
-        at += packed;
+        .map_err(err_in)?;
+        binary_values(&payload, &a.ty, layout.big_endian).map_err(err_in)
     }
-    Ok(out)
-}
 
-/// Decodes the first `max_groups` 4-character groups of base64 made of one or more
-/// padded runs (VTK encodes a header and its data as two runs, meshio as one): each run
-/// ends at a group with padding.
-fn base64_runs(text: &[u8], max_groups: usize) -> Result<Vec<u8>, String> {
-    let base64 = |c: &u8| c.is_ascii_alphanumeric() || b"+/=".contains(c);
-    let chars: Vec<u8> = text
-        .iter()
-        .copied()
-        .filter(|c| !c.is_ascii_whitespace())
-        .take_while(base64)
-        .take(max_groups.saturating_mul(4))
-        .collect();
-    let mut out = Vec::with_capacity(chars.len() / 4 * 3);
-    let engine = base64::engine::general_purpose::STANDARD;
-    let mut start = 0;
-    for (g, quad) in chars.chunks(4).enumerate() {
-        let end = g * 4 + quad.len();
-        if quad.contains(&b'=') || end == chars.len() {
-            engine
-                .decode_vec(&chars[start..end], &mut out)
-                .map_err(|e| format!("bad base64: {e}"))?;
-            start = end;
-        }
-    }
-    Ok(out)
-}
-
-/// A block (header, then data) from base64. A decoded prefix is a prefix of header ++
-/// data whether the two were one run or two (then one more group at most), so the
-/// header is decoded first and then exactly the groups the data needs.
-fn block_from_base64(text: &[u8], layout: Layout) -> Result<Vec<u8>, String> {
-    let w = layout.header_bytes;
-    let prefix = |bytes: usize| base64_runs(text, bytes.div_ceil(3) + 1);
-    let words = match layout.compressed {
-        true => 3usize.saturating_add(header(&prefix(3 * w)?, 1, layout)?[0]),
-        false => 1,
-    };
-    if words > text.len() {
-        return Err(format!(
-            "the header claims {} blocks in {} characters",
-            words - 3,
-            text.len()
-        ));
-    }
-    let head_bytes = words * w;
-    let h = header(&prefix(head_bytes)?, words, layout)?;
-    let data_bytes = match layout.compressed {
-        true => h[3..].iter().fold(0usize, |a, &b| a.saturating_add(b)),
-        false => h[0],
-    };
-    if data_bytes > text.len() {
-        return Err(format!(
-            "the header claims {data_bytes} bytes in {} characters",
-            text.len()
-        ));
-    }
-    let all = base64_runs(text, head_bytes.div_ceil(3) + data_bytes.div_ceil(3) + 1)?;
-    let data = all
-        .get(head_bytes..head_bytes + data_bytes)
-        .ok_or("the data ends early")?;
-    match layout.compressed {
-        true => inflate(&h, data),
-        false => Ok(data.to_vec()),
-    }
-}
-
-fn binary_values(bytes: &[u8], ty: &str, big_endian: bool) -> Result<Values, String> {
-    macro_rules! each {
-        ($t:ty, $wrap:path, $conv:expr) => {{
-            let size = std::mem::size_of::<$t>();
-            if bytes.len() % size != 0 {
-                return Err(format!(
-                    "{} bytes are not a whole number of {ty} values",
-                    bytes.len()
-                ));
+    /// Integer values of `a` (`want` of them), or none when there is no array and none
+    /// are wanted.
+    fn ints(&self, a: Option<&Array>, want: usize, piece: Piece) -> Result<Vec<i64>, InputError> {
+        match a.map(|a| (a, self.values(a, want))) {
+            None if want == 0 => Ok(Vec::new()),
+            None => Err(InputError::new(
+                self.path,
+                piece.line,
+                format!("a Piece of {} cells without its cell arrays", piece.cells),
+            )),
+            Some((_, Ok(Values::Int(v)))) => Ok(v),
+            Some((a, Ok(Values::Float(_)))) => {
+                let why = format!("floating-point values in the {:?} array", a.role);
+                Err(InputError::new(self.path, a.line, why))
             }
-            let conv = $conv;
-            let v = bytes.chunks_exact(size).map(|c| {
-                let a = c.try_into().expect("chunks of the size");
-                conv(if big_endian {
-                    <$t>::from_be_bytes(a)
-                } else {
-                    <$t>::from_le_bytes(a)
-                })
-            });
-            $wrap(v.collect::<Result<Vec<_>, String>>()?)
-        }};
+            Some((_, Err(e))) => Err(e),
+        }
     }
-    let too_big = |v: u64| i64::try_from(v).map_err(|_| format!("{v} is too large"));
-    Ok(match ty {
-        "Float32" => each!(f32, Values::Float, |x: f32| Ok(f64::from(x))),
-        "Float64" => each!(f64, Values::Float, |x: f64| Ok(x)),
-        "Int8" => each!(i8, Values::Int, |x: i8| Ok(i64::from(x))),
-        "UInt8" => each!(u8, Values::Int, |x: u8| Ok(i64::from(x))),
-        "Int16" => each!(i16, Values::Int, |x: i16| Ok(i64::from(x))),
-        "UInt16" => each!(u16, Values::Int, |x: u16| Ok(i64::from(x))),
-        "Int32" => each!(i32, Values::Int, |x: i32| Ok(i64::from(x))),
-        "UInt32" => each!(u32, Values::Int, |x: u32| Ok(i64::from(x))),
-        "Int64" => each!(i64, Values::Int, |x: i64| Ok(x)),
-        "UInt64" => each!(u64, Values::Int, too_big),
-        _ => return Err(format!("DataArray type {}", super::quote(ty))),
-    })
 }
 
-/// The pieces' points and cells, in order, as one [`Input`].
-fn assemble(
-    path: &Path,
-    pieces: Vec<[Option<Values>; 4]>,
-    arrays: &[Array],
-) -> Result<Input, InputError> {
-    let line_of = |piece: usize, role: Role| {
-        arrays
-            .iter()
-            .find(|a| a.piece == piece && a.role == role)
-            .map_or(0, |a| a.line)
-    };
-    let mut input = Input {
-        dim: 3,
-        point_file: path.to_path_buf(),
-        tet_file: path.to_path_buf(),
-        ..Default::default()
-    };
-    let mut sorter = CellSorter::default();
-    let mut seg_lines = Vec::new();
+/// One piece's points and cells, added to `input`.
+fn add_piece(
+    d: &Decoder,
+    p: usize,
+    piece: Piece,
+    [points, conn, offsets, types]: [Option<&Array>; 4],
+    input: &mut Input,
+    sorter: &mut CellSorter,
+) -> Result<(), InputError> {
+    let first = input.points.len();
+    add_points(d, piece, points, input)?;
+    let offsets = d.ints(offsets, piece.cells, piece)?;
+    let types = d.ints(types, piece.cells, piece)?;
+    let line = |a: Option<&Array>| a.map_or(piece.line, |a| a.line);
+    let err = |a: Option<&Array>, why: String| InputError::new(d.path, line(a), why);
+    let last = offsets.last().copied().unwrap_or(0);
+    let entries = usize::try_from(last)
+        .map_err(|_| err(conn, format!("piece {p}: the last offset is {last}")))?;
+    let conn_values = d.ints(conn, entries, piece)?;
+    let mut begin = 0usize;
     let mut cell = Vec::new();
-    for (p, [points, conn, offsets, types]) in pieces.into_iter().enumerate() {
-        let err = |role: Role, why: String| InputError::new(path, line_of(p, role), why);
-        let first = input.points.len();
-        match points {
-            Some(Values::Float(c)) => {
-                if c.len() % 3 != 0 {
-                    return Err(err(
-                        Role::Points,
-                        format!("{} coordinates are not triples", c.len()),
-                    ));
-                }
-                input
-                    .points
-                    .extend(c.chunks_exact(3).map(|c| [c[0], c[1], c[2]]));
-            }
-            Some(Values::Int(_)) => {
-                return Err(err(Role::Points, "integer point coordinates".into()));
-            }
-            None => return Err(InputError::new(path, 0, format!("piece {p} has no Points"))),
-        }
-        let ints = |v: Option<Values>, role: Role, name: &str| match v {
-            Some(Values::Int(v)) => Ok(v),
-            None => Ok(Vec::new()),
-            Some(Values::Float(_)) => Err(err(role, format!("floating-point {name}"))),
+    for (k, (&end, &t)) in offsets.iter().zip(&types).enumerate() {
+        let Some(end) = usize::try_from(end).ok().filter(|&e| e >= begin) else {
+            let why = format!("cell {k} of piece {p}: offset {end} is before the previous one");
+            return Err(err(conn, why));
         };
-        let conn = ints(conn, Role::Connectivity, "connectivity")?;
-        let offsets = ints(offsets, Role::Offsets, "offsets")?;
-        let types = ints(types, Role::Types, "types")?;
-        if offsets.len() != types.len() {
-            let why = format!("{} offsets for {} cell types", offsets.len(), types.len());
-            return Err(err(Role::Offsets, why));
-        }
-        let n = input.points.len() - first;
-        let at = line_of(p, Role::Connectivity);
-        let mut begin = 0usize;
-        for (k, (&end, &t)) in offsets.iter().zip(&types).enumerate() {
-            let end = usize::try_from(end)
-                .ok()
-                .filter(|&e| e >= begin && e <= conn.len());
-            let Some(end) = end else {
+        cell.clear();
+        for &v in &conn_values[begin..end] {
+            if v < 0 || v as usize >= piece.points {
                 let why = format!(
-                    "offset {} of cell {k} is out of order or past the connectivity",
-                    offsets[k]
+                    "cell {k} of piece {p} names point {v}, but the piece has points 0..={}",
+                    piece.points.saturating_sub(1)
                 );
-                return Err(err(Role::Offsets, why));
-            };
-            cell.clear();
-            for &v in &conn[begin..end] {
-                if v < 0 || v as usize >= n {
-                    let why = format!(
-                        "cell {k} names point {v}, but piece {p} has points 0..={}",
-                        n.saturating_sub(1)
-                    );
-                    return Err(err(Role::Connectivity, why));
-                }
-                cell.push((first + v as usize) as u32);
+                return Err(err(conn, why));
             }
-            sorter
-                .add(t, &cell, at, &mut input, &mut seg_lines)
-                .map_err(|why| InputError::new(path, at, why))?;
-            begin = end;
+            cell.push((first + v as usize) as u32);
+        }
+        sorter
+            .add(t, &cell, line(conn), input)
+            .map_err(|why| err(conn, format!("cell {k} of piece {p}: {why}")))?;
+        begin = end;
+    }
+    Ok(())
+}
+
+/// A piece's `Points`: exactly `3 × NumberOfPoints` coordinates.
+fn add_points(
+    d: &Decoder,
+    piece: Piece,
+    points: Option<&Array>,
+    input: &mut Input,
+) -> Result<(), InputError> {
+    let want = piece.points.saturating_mul(3);
+    match points.map(|a| (a, d.values(a, want))) {
+        Some((_, Ok(Values::Float(c)))) => {
+            input
+                .points
+                .extend(c.chunks_exact(3).map(|c| [c[0], c[1], c[2]]));
+            Ok(())
+        }
+        Some((a, Ok(Values::Int(_)))) => {
+            Err(InputError::new(d.path, a.line, "integer point coordinates"))
+        }
+        Some((_, Err(e))) => Err(e),
+        None if piece.points == 0 => Ok(()),
+        None => {
+            let why = format!("a Piece of {} points without Points", piece.points);
+            Err(InputError::new(d.path, piece.line, why))
         }
     }
-    sorter.finish(&mut input);
-    if input.points.is_empty() {
-        return Err(InputError::new(path, 0, "no points"));
-    }
-    check_segments(&input.segments, &seg_lines, 0, path)?;
-    Ok(input)
 }

@@ -39,11 +39,14 @@ pub enum ProblemKind {
     /// A vertex that is not on the domain's boundary surfaces (a Steiner point where none
     /// is allowed).
     SteinerPoint,
+    /// Two vertices of tetrahedra at the same place: pieces meshed apart and not merged
+    /// (a non-conforming assembly).
+    CoincidentVertices,
 }
 
 impl ProblemKind {
     /// Every kind, in the order of their [`code`](Self::code)s (1, 2, …).
-    pub const ALL: [ProblemKind; 14] = [
+    pub const ALL: [ProblemKind; 15] = [
         ProblemKind::BadIndex,
         ProblemKind::RepeatedVertex,
         ProblemKind::Degenerate,
@@ -58,6 +61,7 @@ impl ProblemKind {
         ProblemKind::BoundarySelfIntersection,
         ProblemKind::BoundaryNotSurface,
         ProblemKind::SteinerPoint,
+        ProblemKind::CoincidentVertices,
     ];
 
     /// The kind's number in the `problem` fields `check --output` writes for a viewer:
@@ -144,17 +148,17 @@ impl Report {
     /// Shifts cell and vertex numbers by `base` (in the fields, and `T12` and `#12` in the
     /// texts).
     pub fn renumbered(self, base: u32) -> Self {
-        self.relabeled(base, |t| t + base)
+        self.relabeled(|v| v + base, |t| t + base)
     }
 
-    /// The report in a file's own numbering: vertex `v` becomes `v + base` and cell `t`
-    /// becomes `cell(t)` (a `.ele` may number its tetrahedra with gaps), in the cell and
-    /// vertex lists and in the texts.
-    pub fn relabeled(mut self, base: u32, cell: impl Fn(u32) -> u32) -> Self {
+    /// The report in a file's own numbering: vertex `v` becomes `vertex(v)` (Gmsh node
+    /// tags may have gaps) and cell `t` becomes `cell(t)` (a `.ele` may number its
+    /// tetrahedra with gaps), in the cell and vertex lists and in the texts.
+    pub fn relabeled(mut self, vertex: impl Fn(u32) -> u32, cell: impl Fn(u32) -> u32) -> Self {
         for p in self.problems.iter_mut().chain(&mut self.non_manifold) {
             p.cells.iter_mut().for_each(|t| *t = cell(*t));
-            p.vertices.iter_mut().for_each(|v| *v += base);
-            p.detail = crate::numbering::relabel_text(&p.detail, |v| v + base, &cell);
+            p.vertices.iter_mut().for_each(|v| *v = vertex(*v));
+            p.detail = crate::numbering::relabel_text(&p.detail, &vertex, &cell);
         }
         self
     }

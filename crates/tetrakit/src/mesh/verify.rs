@@ -1,7 +1,9 @@
 //! The certificate check of a tetrahedralization.
 //!
 //! Conditions checked (all exact):
-//! 1. every tetrahedron has four distinct, in-range vertices and is positively oriented;
+//! 1. every tetrahedron has four distinct, in-range vertices and is positively oriented,
+//!    and no two vertices of tetrahedra are at the same place (points no tetrahedron
+//!    uses may be anywhere);
 //! 2. every triangle is a face of at most two tetrahedra, and of two only when they lie on
 //!    opposite sides of it (oriented-face pairing);
 //! 3. the unpaired (boundary) faces form a closed surface: every boundary edge is used as
@@ -49,6 +51,9 @@ pub fn verify(points: &[Point3], tets: &[[u32; 4]], hull: Option<&Hull3>) -> Rep
     {
         return report;
     }
+    for p in coincident_vertices(points, tets) {
+        report.push(p);
+    }
     if let Some(h) = hull {
         for p in check_hull(points, tets, &boundary, h) {
             report.push(p);
@@ -87,6 +92,42 @@ pub(crate) fn verify_faces(points: &[Point3], tets: &[[u32; 4]]) -> (Report, Vec
     }
     report.non_manifold = non_manifold;
     (report, boundary)
+}
+
+/// Vertices of tetrahedra at the same place, each after the first of its place named
+/// with the first, and a tetrahedron using each. (Only a file can make them: every
+/// algorithm's points are distinct.)
+fn coincident_vertices(points: &[Point3], tets: &[[u32; 4]]) -> Vec<Problem> {
+    let mut first_tet = vec![u32::MAX; points.len()];
+    for (k, t) in tets.iter().enumerate().rev() {
+        t.iter().for_each(|&v| first_tet[v as usize] = k as u32);
+    }
+    let mut used: Vec<u32> = (0..points.len() as u32)
+        .filter(|&v| first_tet[v as usize] != u32::MAX)
+        .collect();
+    used.par_sort_unstable_by(|&a, &b| {
+        crate::geom::lex_cmp(&points[a as usize], &points[b as usize]).then(a.cmp(&b))
+    });
+    let mut problems = Vec::new();
+    let mut run_start = 0;
+    for k in 1..used.len() {
+        let (a, b) = (used[run_start], used[k]);
+        if points[a as usize] != points[b as usize] {
+            run_start = k;
+            continue;
+        }
+        let (ta, tb) = (first_tet[a as usize], first_tet[b as usize]);
+        problems.push(Problem::new(
+            ProblemKind::CoincidentVertices,
+            vec![ta, tb],
+            vec![a, b],
+            format!(
+                "vertices #{a} (of T{ta}) and #{b} (of T{tb}) are both at {:?}: the tetrahedra around them are not joined there (a non-conforming assembly)",
+                points[a as usize]
+            ),
+        ));
+    }
+    problems
 }
 
 /// Without a convex domain: local injectivity at every vertex and an embedded boundary.
