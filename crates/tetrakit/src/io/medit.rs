@@ -1,4 +1,6 @@
-//! Medit / INRIA `.mesh` (ASCII), as Gmsh, MMG, TetGen (`-g`) and meshio write it:
+//! Medit / INRIA `.mesh` (ASCII), as Gmsh, MMG, TetGen (`-g`) and meshio write it
+//! (`MeshVersionFormatted 1`: coordinates in single precision, as libMeshb and meshio
+//! read them):
 //! `MeshVersionFormatted v`, `Dimension 3` (or 2: planar points), then sections, each a
 //! keyword, a count and that many entries, until `End` (or the end of the file, which
 //! libMeshb and meshio accept too). Read: `Vertices` (coordinates and
@@ -69,10 +71,13 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
         tet_file: path.to_path_buf(),
         ..Default::default()
     };
+    // Version 1 files hold single-precision reals (libMeshb, meshio).
+    let mut single = false;
     while let Some((line, key)) = s.next() {
         match key {
             "MeshVersionFormatted" => {
-                s.want("the version")?;
+                let (l, v) = s.want("the version")?;
+                single = parse_int(v, path, l, "version")? == 1;
             }
             "Dimension" => {
                 let (l, tok) = s.want("the dimension")?;
@@ -99,7 +104,7 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
                     return Err(InputError::new(path, line, "a second 'Vertices' section"));
                 }
                 for _ in 0..s.count("vertices")? {
-                    let (at, p) = s.point(input.dim)?;
+                    let (at, p) = s.point_in(input.dim, single)?;
                     let (l, tok) = s.want("the reference of a vertex")?;
                     parse_int(tok, path, l, "reference")?;
                     input.points.push(p);

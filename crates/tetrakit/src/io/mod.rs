@@ -266,7 +266,12 @@ fn validate(input: &Input, opts: ReadOptions) -> Result<(), InputError> {
         true => &input.point_file,
         false => &input.segment_file,
     };
-    check_segments(&input.segments, &lines, input.index_base, file)?;
+    check_segments(
+        &input.segments,
+        &lines,
+        &|v| input.point_label(v as usize),
+        file,
+    )?;
     check_distinct_points(input)
 }
 
@@ -444,6 +449,30 @@ pub(crate) fn parse_coord(tok: &str, path: &Path, line: usize) -> Result<f64, In
     Ok(x)
 }
 
+/// Parses a coordinate of an array declared single precision (VTK `Float32`, legacy
+/// `float`): the number every other reader of the file (VTK, ParaView, meshio) holds is
+/// the decimal rounded to `f32`, so that is the point; a decimal whose digits are not all
+/// 0 but that rounds to 0 or past the `f32` range is refused (as [`parse_coord`] refuses
+/// it in double precision).
+pub(crate) fn parse_coord32(tok: &str) -> Result<f64, String> {
+    let x: f32 = tok
+        .parse()
+        .map_err(|_| format!("{} is not a number", quote(tok)))?;
+    let nonzero = || {
+        let mantissa = tok.split(['e', 'E']).next().unwrap_or("");
+        mantissa.bytes().any(|b| (b'1'..=b'9').contains(&b))
+    };
+    let word = tok.trim_start_matches(['+', '-']).to_ascii_lowercase();
+    let named = word.starts_with("inf") || word.starts_with("nan");
+    if (x == 0.0 && nonzero()) || (x.is_infinite() && !named) {
+        return Err(format!(
+            "coordinate {} is outside the single-precision range of its Float32 array",
+            quote(tok)
+        ));
+    }
+    Ok(f64::from(x))
+}
+
 /// Parses an index token as an integer.
 pub(crate) fn parse_int(
     tok: &str,
@@ -483,10 +512,10 @@ pub(crate) fn vertex_ref(
 /// Rejects self-loops and repeated segments. `lines[k]` is the source line of segment `k`,
 /// or 0 for formats without lines (then segments are named by their position). Repeats are
 /// found per vertex (small sorts), not by sorting all segments.
-pub(crate) fn check_segments(
+fn check_segments(
     segs: &[[u32; 2]],
     lines: &[u32],
-    base: u32,
+    label: &(dyn Fn(u32) -> u32 + Sync),
     path: &Path,
 ) -> Result<(), InputError> {
     let at = |k: usize| -> (usize, String) {
@@ -503,7 +532,7 @@ pub(crate) fn check_segments(
             line,
             format!(
                 "segment {name} joins vertex {} to itself",
-                segs[k][0] + base
+                label(segs[k][0])
             ),
         ));
     }
@@ -538,8 +567,8 @@ pub(crate) fn check_segments(
             line,
             format!(
                 "segment ({}, {}) is listed twice ({} and {name2})",
-                lo + base,
-                hi + base,
+                label(lo),
+                label(hi),
                 at(k1 as usize).1
             ),
         ));

@@ -1,7 +1,7 @@
 //! A token stream over a text file that remembers the line of each token, for the
 //! readers whose entries may span lines (Medit, legacy VTK).
 
-use super::{InputError, parse_coord, parse_int};
+use super::{InputError, parse_coord, parse_coord32, parse_int};
 use crate::geom::Point3;
 use std::path::Path;
 
@@ -66,12 +66,24 @@ impl<'a> Stream<'a> {
 
     /// `dim` coordinates (the rest 0) and the line of the last one.
     pub(super) fn point(&mut self, dim: usize) -> Result<(usize, Point3), InputError> {
+        self.point_in(dim, false)
+    }
+
+    /// [`Stream::point`], in single precision when `single` (see [`parse_coord32`]).
+    pub(super) fn point_in(
+        &mut self,
+        dim: usize,
+        single: bool,
+    ) -> Result<(usize, Point3), InputError> {
         let mut p = [0.0; 3];
         let mut at = self.line;
         for c in p.iter_mut().take(dim) {
             let (l, tok) = self.want("a coordinate")?;
             at = l;
-            *c = parse_coord(tok, self.path, l)?;
+            *c = match single {
+                true => parse_coord32(tok).map_err(|e| InputError::new(self.path, l, e))?,
+                false => parse_coord(tok, self.path, l)?,
+            };
         }
         Ok((at, p))
     }

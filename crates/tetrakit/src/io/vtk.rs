@@ -82,9 +82,10 @@ pub(super) fn read(path: &Path, bytes: Vec<u8>) -> Result<Input, InputError> {
             }
             "POINTS" => {
                 let n = s.count("points")?;
-                s.want("the coordinate type")?;
+                let (_, ty) = s.want("the coordinate type")?;
+                let single = ty == "float";
                 for _ in 0..n {
-                    let (at, p) = s.point(3)?;
+                    let (at, p) = s.point_in(3, single)?;
                     input.points.push(p);
                     input.point_lines.push(at);
                 }

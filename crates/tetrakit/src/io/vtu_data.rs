@@ -62,6 +62,11 @@ pub(super) fn ascii_values(text: &str, ty: &str, want: usize) -> Result<Values, 
         return Err(format!("holds {found} values where {want} are declared"));
     }
     let toks = text.split_ascii_whitespace();
+    if ty == "Float32" {
+        return (toks.map(super::parse_coord32))
+            .collect::<Result<_, _>>()
+            .map(Values::Float);
+    }
     if ty.starts_with("Float") {
         toks.map(|t| {
             t.parse::<f64>()
