@@ -389,7 +389,7 @@ fn msh(pts: &[[f64; 3]], tets: &[[u32; 4]], v41: bool, binary: bool) -> Vec<u8> 
     }
     b.extend(b"$EndMeshFormat\n$Nodes\n");
     let (n, m) = (pts.len() as u64, tets.len() as u64);
-    let mut text = |b: &mut Vec<u8>, s: String| b.extend(s.into_bytes());
+    let text = |b: &mut Vec<u8>, s: String| b.extend(s.into_bytes());
     match (v41, binary) {
         (false, false) => {
             text(&mut b, format!("{n}\n"));
