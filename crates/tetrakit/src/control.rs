@@ -11,6 +11,11 @@
 //! Progress goes to one callback, from any thread: [`Progress::Stage`] as a stage
 //! starts, [`Progress::Items`] now and then within a stage whose size is known.
 //!
+//! A part of the work may run under a [`Control::child`]: its own stop flag and deadline,
+//! and it still stops when its parent does. Its deadline or its stop never stops the
+//! parent, so a piece given ten seconds that runs out of them ends that piece, not the
+//! run.
+//!
 //! ```
 //! use std::sync::{Arc, Mutex};
 //! use std::time::Duration;
@@ -72,6 +77,8 @@ pub struct Control {
     stop: Arc<AtomicBool>,
     deadline: Option<Instant>,
     progress: Option<Arc<Callback>>,
+    /// The control this one is a [`child`](Control::child) of.
+    parent: Option<Arc<Control>>,
 }
 
 impl fmt::Debug for Control {
@@ -80,6 +87,7 @@ impl fmt::Debug for Control {
             .field("stopped", &self.stop.load(Relaxed))
             .field("deadline", &self.deadline)
             .field("progress", &self.progress.is_some())
+            .field("parent", &self.parent)
             .finish()
     }
 }
@@ -110,24 +118,51 @@ impl Control {
         self
     }
 
-    /// Asks every computation under this control (or a clone of it) to stop.
+    /// A control for a part of the work: its own stop flag and (with
+    /// [`with_time_limit`](Self::with_time_limit)) its own deadline, the same progress
+    /// callback, and stopped whenever `self` is. Stopping it, or its deadline passing,
+    /// does not stop `self`.
+    ///
+    /// ```
+    /// use std::time::Duration;
+    /// use tetrakit::control::Control;
+    /// let run = Control::new();
+    /// let piece = run.child().with_time_limit(Duration::ZERO);
+    /// assert!(piece.is_stopped() && !run.is_stopped()); // the piece's time is up, not the run's
+    /// let other = run.child();
+    /// run.stop();
+    /// assert!(other.is_stopped()); // the run's stop reaches every piece
+    /// ```
+    pub fn child(&self) -> Control {
+        Control {
+            stop: Arc::default(),
+            deadline: None,
+            progress: self.progress.clone(),
+            parent: Some(Arc::new(self.clone())),
+        }
+    }
+
+    /// Asks every computation under this control (or a clone of it, or a child) to stop.
     pub fn stop(&self) {
         self.stop.store(true, Relaxed);
     }
 
-    /// True once [`stop`](Self::stop) was called or the deadline passed.
+    /// True once [`stop`](Self::stop) was called, the deadline passed, or the parent (for
+    /// a [`child`](Self::child)) is stopped.
     #[inline]
     pub fn is_stopped(&self) -> bool {
         if self.stop.load(Relaxed) {
             return true;
         }
-        match self.deadline {
-            Some(d) if Instant::now() >= d => {
-                self.stop.store(true, Relaxed);
-                true
-            }
-            _ => false,
+        let expired = match self.deadline {
+            Some(d) => Instant::now() >= d,
+            None => false,
+        };
+        if expired {
+            self.stop.store(true, Relaxed);
+            return true;
         }
+        self.parent.as_ref().is_some_and(|p| p.is_stopped())
     }
 
     /// `Err(Stopped)` once the control is stopped ([`is_stopped`](Self::is_stopped)).
@@ -140,9 +175,13 @@ impl Control {
         }
     }
 
-    /// The deadline, if any.
+    /// The deadline, if any: its own or an ancestor's, whichever comes first.
     pub fn deadline(&self) -> Option<Instant> {
-        self.deadline
+        let parent = self.parent.as_ref().and_then(|p| p.deadline());
+        match (self.deadline, parent) {
+            (Some(a), Some(b)) => Some(a.min(b)),
+            (a, b) => a.or(b),
+        }
     }
 
     /// Reports that stage `name` starts.
@@ -209,6 +248,24 @@ mod tests {
         assert_eq!(c.deadline(), Some(now));
         let c = Control::new().with_deadline(now).with_deadline(later);
         assert_eq!(c.deadline(), Some(now));
+    }
+
+    #[test]
+    fn a_childs_deadline_and_stop_stay_with_the_child() {
+        let run = Control::new().with_time_limit(Duration::from_secs(3600));
+        let piece = run.child().with_deadline(Instant::now());
+        assert!(piece.is_stopped());
+        assert!(!run.is_stopped(), "the piece's deadline stopped the run");
+        let second = run.child();
+        second.stop();
+        assert!(!run.is_stopped() && !run.child().is_stopped());
+        let grandchild = run.child().child();
+        assert_eq!(grandchild.deadline(), run.deadline());
+        run.stop();
+        assert!(
+            grandchild.is_stopped(),
+            "a stopped run must stop every piece"
+        );
     }
 
     #[test]

@@ -204,7 +204,7 @@ impl Removal<'_, '_> {
     /// [`EXACT_PIECE_SECONDS`] and the caller's control.
     fn exact_tets(&self, domain: crate::exact::Domain) -> Option<Vec<[u32; 4]>> {
         let limit = std::time::Duration::from_secs(EXACT_PIECE_SECONDS);
-        let ctl = self.ctl.clone().with_time_limit(limit);
+        let ctl = self.ctl.child().with_time_limit(limit);
         let options = crate::exact::Options {
             unique: false,
             any: true,
