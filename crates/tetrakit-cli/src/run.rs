@@ -8,7 +8,6 @@ use std::path::Path;
 use std::time::Instant;
 use tetrakit::detect::{Cells, Detection, Options};
 use tetrakit::generate::{self, Corruption};
-use tetrakit::geom::Hull3;
 use tetrakit::io;
 use tetrakit::mesh::{self, Tetrahedralization};
 
@@ -164,107 +163,47 @@ pub fn check(a: &crate::CheckArgs) -> CmdResult {
         );
         return Err(CliError::at(path, &why));
     }
-    let other_cells = input.other_cells.as_ref().map_or(0, |o| o.count);
-    let turned = a
-        .reorient
-        .then(|| mesh::reorient(&input.points, &mut input.tets));
-    let hull = convex.then(|| Hull3::new(&input.points));
-    let mut report = mesh::verify(&input.points, &input.tets, hull.as_ref());
-    if a.manifold {
-        report = report.require_manifold();
-    }
+    let opts = mesh::CheckOptions {
+        convex,
+        manifold: a.manifold,
+        reorient: a.reorient,
+    };
+    let outcome = mesh::check(&input.points, std::mem::take(&mut input.tets), opts);
     if let Some(out) = &a.output {
-        write_problems(out, &input, &report)?;
+        write_problems(out, &input.points, &outcome)?;
     }
-    let report = report.relabeled(
+    let outcome = outcome.relabeled(
         |v| input.point_label(v as usize),
         |t| input.tet_label(t as usize),
     );
     let seconds = start.elapsed().as_secs_f64();
+    let other = input.other_cells.as_ref();
     if as_json {
-        let mut v = json!({
-            "verdict": if report.is_valid() { "yes" } else { "no" },
-            "tetrahedra": input.tets.len(),
-            "vertices": input.points.len(),
-            "boundary_faces": report.boundary_faces,
-            "non_manifold_edges": report.non_manifold.len(),
-            "convex": convex,
-            "problem_count": report.problem_count,
-            "problems": report.problems,
-            "reoriented": turned,
-            "other_cells": other_cells,
-            "seconds": seconds,
-            "parse_seconds": parsed,
-        });
-        if a.output.is_some() {
-            let codes: serde_json::Map<String, serde_json::Value> = mesh::ProblemKind::ALL
-                .iter()
-                .map(|k| (k.to_string(), json!(k.code())))
-                .collect();
-            v["problem_codes"] = json!(codes);
-        }
-        // The witness of a NO: the first problem found (the checks run from the most
-        // local, a single tetrahedron, outwards).
-        if let Some(p) = report.problems.first() {
-            v["witness"] = json!(p);
-        }
-        out!("{v}");
-    } else if report.is_valid() {
-        let scope = if convex {
-            "a tetrahedralization of the convex hull of its points"
-        } else {
-            "oriented, face-paired, no overlap near any vertex, boundary closed and embedded (add --convex to certify it tetrahedralizes the convex hull)"
-        };
-        out!(
-            "VALID: {} tetrahedra on {} points: {scope}. [{seconds:.3} s]",
-            input.tets.len(),
-            input.points.len()
-        );
-        if let Some(p) = report.non_manifold.first() {
-            out!(
-                "  {} non-manifold boundary edge(s), valid for a non-manifold domain (--manifold refuses them); first: {}",
-                report.non_manifold.len(),
-                p.detail
-            );
-        }
+        let extra = [
+            ("other_cells", json!(other.map_or(0, |o| o.count))),
+            ("seconds", json!(seconds)),
+            ("parse_seconds", json!(parsed)),
+        ];
+        out!("{}", tetrakit::report::json(&outcome, extra));
     } else {
-        out!(
-            "INVALID: {} problem(s) in {} tetrahedra:",
-            report.problem_count,
-            input.tets.len()
-        );
-        for p in report.problems.iter().take(20) {
-            out!("  {}: {}", p.kind, p.detail);
-        }
-        if report.problem_count > 20 {
-            out!(
-                "  ... ({} more; --json lists up to {})",
-                report.problem_count - 20,
-                mesh::Report::LIMIT
-            );
-        }
+        let other = other.map(|o| (o.count, o.message.as_str()));
+        let text = tetrakit::report::check_text(&outcome, seconds, other);
+        out!("{}", text.trim_end());
     }
-    if let (Some(k), false) = (turned, as_json) {
-        out!("  {k} negatively oriented tetrahedra turned (--reorient)");
-    }
-    if let (Some(o), false) = (&input.other_cells, as_json) {
-        out!(
-            "  {} other cells not checked (--tets-only): {}",
-            o.count,
-            o.message
-        );
-    }
-    Ok(Verdict::from_bool(report.is_valid()))
+    Ok(Verdict::from_bool(outcome.is_valid()))
 }
 
 /// `check --output`: the mesh with its problem codes on cells and points.
-fn write_problems(out: &Path, input: &io::Input, report: &mesh::Report) -> Result<(), CliError> {
-    let (cells, points) = report.fields(input.tets.len(), input.points.len());
+fn write_problems(
+    out: &Path,
+    points: &[tetrakit::geom::Point3],
+    o: &mesh::CheckOutcome,
+) -> Result<(), CliError> {
     let fields = io::Fields {
-        cells: vec![("problem", &cells)],
-        points: vec![("problem", &points)],
+        cells: vec![("problem", &o.cell_problems)],
+        points: vec![("problem", &o.point_problems)],
     };
-    io::write_mesh_with_fields(out, &input.points, &input.tets, &fields).written(out)
+    io::write_mesh_with_fields(out, points, &o.tets, &fields).written(out)
 }
 
 pub fn generate(kind: GenKind) -> CmdResult {

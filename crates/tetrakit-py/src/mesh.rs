@@ -5,8 +5,7 @@ use numpy::{PyArray1, PyArray2, PyReadonlyArray2};
 use pyo3::prelude::*;
 use serde_json::json;
 use tetrakit::detect::{Cells, Options};
-use tetrakit::geom::Hull3;
-use tetrakit::mesh::{self, ProblemKind};
+use tetrakit::mesh;
 
 type CheckOut<'py> = (
     Json,
@@ -36,41 +35,20 @@ pub fn check<'py>(
     if input.tets.is_empty() {
         return Err(value_error("no tetrahedra to check"));
     }
+    let opts = mesh::CheckOptions {
+        convex,
+        manifold,
+        reorient,
+    };
     let ctl = tetrakit::control::Control::new();
-    let (report, turned) = convert::run(py, &ctl, || {
-        let turned = reorient.then(|| mesh::reorient(&input.points, &mut input.tets));
-        let hull = convex.then(|| Hull3::new(&input.points));
-        let report = mesh::verify(&input.points, &input.tets, hull.as_ref());
-        let report = if manifold {
-            report.require_manifold()
-        } else {
-            report
-        };
-        (report, turned)
-    })?;
-    let (cells, verts) = report.fields(input.tets.len(), input.points.len());
-    let codes: serde_json::Map<String, serde_json::Value> = ProblemKind::ALL
-        .iter()
-        .map(|k| (k.to_string(), json!(k.code())))
-        .collect();
-    let v = json!({
-        "verdict": if report.is_valid() { "yes" } else { "no" },
-        "tetrahedra": input.tets.len(),
-        "vertices": input.points.len(),
-        "boundary_faces": report.boundary_faces,
-        "non_manifold_edges": report.non_manifold.len(),
-        "convex": convex,
-        "problem_count": report.problem_count,
-        "problems": report.problems,
-        "reoriented": turned,
-        "problem_codes": codes,
-        "witness": report.problems.first(),
-    });
+    let tets = std::mem::take(&mut input.tets);
+    let o = convert::run(py, &ctl, || mesh::check(&input.points, tets, opts))?;
+    let text = tetrakit::report::json(&o, []).to_string();
     Ok((
-        v.to_string(),
-        array(py, &input.tets),
-        PyArray1::from_vec(py, cells),
-        PyArray1::from_vec(py, verts),
+        text,
+        array(py, &o.tets),
+        PyArray1::from_vec(py, o.cell_problems),
+        PyArray1::from_vec(py, o.point_problems),
     ))
 }
 

@@ -38,6 +38,7 @@ mod partition;
 pub mod planar;
 pub mod polyhedra;
 pub mod reduce;
+pub mod report;
 pub mod rng;
 mod rows;
 pub mod shell;

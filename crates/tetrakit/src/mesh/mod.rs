@@ -5,6 +5,7 @@
 //! tetrahedra, only the exact predicates of [`crate::geom`].
 
 mod certify;
+mod check;
 mod embed;
 pub(crate) mod grid;
 mod report;
@@ -15,6 +16,7 @@ mod verify_planar;
 
 pub(crate) use certify::boundary_faces;
 pub use certify::{certify_boundary, certify_hull, certify_polyhedron, certify_shell};
+pub use check::{CheckOptions, CheckOutcome, Verdict, check};
 pub use report::{Problem, ProblemKind, Report};
 pub use surface::{Polyhedron, SurfaceError};
 pub use verify::verify;

@@ -116,6 +116,14 @@ impl fmt::Display for Problem {
 impl std::error::Error for Problem {}
 
 impl Problem {
+    /// Renames vertex `v` to `vertex(v)` and cell `t` to `cell(t)`, in the lists and the
+    /// text.
+    pub(crate) fn relabel(&mut self, vertex: &impl Fn(u32) -> u32, cell: &impl Fn(u32) -> u32) {
+        self.cells.iter_mut().for_each(|t| *t = cell(*t));
+        self.vertices.iter_mut().for_each(|v| *v = vertex(*v));
+        self.detail = crate::numbering::relabel_text(&self.detail, vertex, cell);
+    }
+
     /// A problem of `kind` naming `cells` and `vertices`, with a sentence for a person.
     pub fn new(kind: ProblemKind, cells: Vec<u32>, vertices: Vec<u32>, detail: String) -> Self {
         Problem {
@@ -156,9 +164,7 @@ impl Report {
     /// tetrahedra with gaps), in the cell and vertex lists and in the texts.
     pub fn relabeled(mut self, vertex: impl Fn(u32) -> u32, cell: impl Fn(u32) -> u32) -> Self {
         for p in self.problems.iter_mut().chain(&mut self.non_manifold) {
-            p.cells.iter_mut().for_each(|t| *t = cell(*t));
-            p.vertices.iter_mut().for_each(|v| *v = vertex(*v));
-            p.detail = crate::numbering::relabel_text(&p.detail, &vertex, &cell);
+            p.relabel(&vertex, &cell);
         }
         self
     }

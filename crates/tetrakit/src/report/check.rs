@@ -1,0 +1,72 @@
+//! The text of a `check` outcome.
+
+use crate::mesh::{CheckOutcome, Report};
+use std::fmt::Write;
+
+/// How many problems the text lists (the JSON keeps up to [`Report::LIMIT`]).
+const LISTED: usize = 20;
+
+/// The lines a person reads for `outcome`, checked in `seconds`; `other_cells` is the
+/// count and the description of the cells a mixed mesh had besides its tetrahedra.
+///
+/// ```
+/// use tetrakit::mesh::{CheckOptions, check};
+/// let pts = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+/// let o = check(&pts, vec![[0, 2, 1, 3]], CheckOptions::default());
+/// let text = tetrakit::report::check_text(&o, 0.0, None);
+/// assert!(text.starts_with("INVALID: 1 problem(s) in 1 tetrahedra:\n  inverted: "));
+/// ```
+pub fn check_text(
+    outcome: &CheckOutcome,
+    seconds: f64,
+    other_cells: Option<(usize, &str)>,
+) -> String {
+    let o = outcome;
+    let mut s = String::new();
+    if o.is_valid() {
+        let scope = if o.convex {
+            "a tetrahedralization of the convex hull of its points"
+        } else {
+            "oriented, face-paired, no overlap near any vertex, boundary closed and embedded (add --convex to certify it tetrahedralizes the convex hull)"
+        };
+        let _ = writeln!(
+            s,
+            "VALID: {} tetrahedra on {} points: {scope}. [{seconds:.3} s]",
+            o.tetrahedra, o.vertices
+        );
+        if let Some(p) = &o.first_non_manifold {
+            let _ = writeln!(
+                s,
+                "  {} non-manifold boundary edge(s), valid for a non-manifold domain (--manifold refuses them); first: {}",
+                o.non_manifold_edges, p.detail
+            );
+        }
+    } else {
+        let _ = writeln!(
+            s,
+            "INVALID: {} problem(s) in {} tetrahedra:",
+            o.problem_count, o.tetrahedra
+        );
+        for p in o.problems.iter().take(LISTED) {
+            let _ = writeln!(s, "  {}: {}", p.kind, p.detail);
+        }
+        if o.problem_count > LISTED {
+            let _ = writeln!(
+                s,
+                "  ... ({} more; --json lists up to {})",
+                o.problem_count - LISTED,
+                Report::LIMIT
+            );
+        }
+    }
+    if let Some(k) = o.reoriented {
+        let _ = writeln!(
+            s,
+            "  {k} negatively oriented tetrahedra turned (--reorient)"
+        );
+    }
+    if let Some((count, what)) = other_cells {
+        let _ = writeln!(s, "  {count} other cells not checked (--tets-only): {what}");
+    }
+    s
+}
