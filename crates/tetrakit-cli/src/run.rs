@@ -6,7 +6,7 @@ use crate::{CorruptKind, GenCommon, GenKind};
 use serde_json::json;
 use std::path::Path;
 use std::time::Instant;
-use tetrakit::detect::{Cells, Detection, Options};
+use tetrakit::detect::{Cells, Options};
 use tetrakit::generate::{self, Corruption};
 use tetrakit::io;
 use tetrakit::mesh::{self, Tetrahedralization};
@@ -55,83 +55,18 @@ pub fn detect(path: &Path, as_json: bool, output: Option<&Path>, opts: Options) 
         }
         .written(out)?;
     }
-    let base = input.index_base;
+    let label = |v: u32| input.point_label(v as usize);
     if as_json {
-        out!("{}", detection_json(&d, base, seconds, parsed));
+        let extra = [
+            ("seconds", json!(seconds)),
+            ("parse_seconds", json!(parsed)),
+        ];
+        out!("{}", tetrakit::report::detect_json(&d, label, extra));
     } else {
-        print_detection(&d, base, from_tets, seconds);
+        let text = tetrakit::report::detect_text(&d, label, from_tets, seconds);
+        out!("{}", text.trim_end());
     }
     Ok(Verdict::from_bool(d.is_yes()))
-}
-
-fn detection_json(d: &Detection, base: u32, seconds: f64, parsed: f64) -> serde_json::Value {
-    let mut v = json!({
-        "verdict": if d.is_yes() { "yes" } else { "no" },
-        "vertices": d.vertices,
-        "segments": d.segments,
-        "hull_vertices": d.hull_vertices,
-        "dimension": d.dimension,
-        "seconds": seconds,
-        "parse_seconds": parsed,
-        "route": d.route,
-    });
-    match &d.result {
-        Ok(Cells::Tetrahedra(t)) => v["tetrahedra"] = json!(t.len()),
-        Ok(Cells::Triangles(t)) => v["triangles"] = json!(t.len()),
-        Err(w) => v["witness"] = json!(w.clone().renumbered(base)),
-    }
-    v
-}
-
-fn print_detection(d: &Detection, base: u32, from_tets: bool, seconds: f64) {
-    let src = if from_tets {
-        " (the edges of the given tetrahedra)"
-    } else {
-        ""
-    };
-    match &d.result {
-        Ok(Cells::Tetrahedra(t)) => out!(
-            "YES: the {} segments{src} on {} points form a tetrahedralization with {} tetrahedra ({} points on the hull). [{seconds:.3} s]",
-            d.segments,
-            d.vertices,
-            t.len(),
-            d.hull_vertices
-        ),
-        Ok(Cells::Triangles(t)) => out!(
-            "YES: the {} segments{src} on {} coplanar points form a triangulation with {} triangles ({} points on the hull). [{seconds:.3} s]",
-            d.segments,
-            d.vertices,
-            t.len(),
-            d.hull_vertices
-        ),
-        Err(w) => {
-            let w = w.clone().renumbered(base);
-            let what = if d.dimension == 2 {
-                "triangulation"
-            } else {
-                "tetrahedralization"
-            };
-            out!(
-                "NO: the {} segments{src} on {} points are not the edge set of a {what}.",
-                d.segments,
-                d.vertices
-            );
-            out!("  witness: {}: {}", w.kind, w.detail);
-            if !w.vertices.is_empty() {
-                let v: Vec<String> = w.vertices.iter().map(|x| x.to_string()).collect();
-                out!("  vertices: {}", v.join(" "));
-            }
-            if !w.segments.is_empty() {
-                let s: Vec<String> = w
-                    .segments
-                    .iter()
-                    .map(|s| format!("{}-{}", s[0], s[1]))
-                    .collect();
-                out!("  segments: {}", s.join(" "));
-            }
-            out!("  [{seconds:.3} s]");
-        }
-    }
 }
 
 pub fn check(a: &crate::CheckArgs) -> CmdResult {

@@ -117,27 +117,11 @@ pub fn detect<'py>(
         tetrakit::detect::detect(&input.points, &segs, &Options::default(), &ctl)
     })?
     .map_err(value_error)?;
-    let mut v = json!({
-        "verdict": if d.is_yes() { "yes" } else { "no" },
-        "vertices": d.vertices,
-        "segments": d.segments,
-        "hull_vertices": d.hull_vertices,
-        "dimension": d.dimension,
-        "route": d.route,
-    });
+    let v = tetrakit::report::detect_json(&d, |v| v, []);
     let cells = match &d.result {
-        Ok(Cells::Tetrahedra(t)) => {
-            v["tetrahedra"] = json!(t.len());
-            array(py, t)
-        }
-        Ok(Cells::Triangles(t)) => {
-            v["triangles"] = json!(t.len());
-            array(py, t)
-        }
-        Err(w) => {
-            v["witness"] = json!(w);
-            array::<4>(py, &[])
-        }
+        Ok(Cells::Tetrahedra(t)) => array(py, t),
+        Ok(Cells::Triangles(t)) => array(py, t),
+        Err(_) => array::<4>(py, &[]),
     };
     Ok((v.to_string(), cells))
 }

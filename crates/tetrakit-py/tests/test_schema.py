@@ -57,3 +57,27 @@ def test_check_json_follows_the_schema(tmp_path, case):
     jsonschema.validate(out, s)
     assert {k: v for k, v in out.items() if k in s["required"]} == {
         k: v for k, v in fields(result).items() if k in s["required"]}
+
+
+TET_EDGES = np.array([[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]])
+SQUARE = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], dtype=float)
+DETECT = {
+    "tetrahedra": (CUBE[[0, 1, 2, 4]], TET_EDGES),
+    "triangles": (SQUARE, np.array([[0, 1], [1, 2], [2, 3], [3, 0], [0, 2]])),
+    "crossing": (SQUARE, np.array([[0, 1], [1, 2], [2, 3], [3, 0], [0, 2], [1, 3]])),
+    "missing": (CUBE[[0, 1, 2, 4]], TET_EDGES[:5]),
+}
+
+
+@pytest.mark.parametrize("case", sorted(DETECT))
+def test_detect_json_follows_the_schema(tmp_path, case):
+    pts, segs = DETECT[case]
+    s = schema("detect")
+    result = tetrakit.detect(pts, segs)
+    jsonschema.validate(fields(result), s)
+    path = tmp_path / "s.json"
+    path.write_text(json.dumps({"points": pts.tolist(), "segments": segs.tolist()}))
+    out = cli_json("detect", path)
+    jsonschema.validate(out, s)
+    shared = set(out) - {"seconds", "parse_seconds"}
+    assert {k: out[k] for k in shared} == {k: fields(result)[k] for k in shared}

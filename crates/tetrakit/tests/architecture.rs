@@ -16,11 +16,27 @@ fn allowed(top: &str) -> Vec<&'static str> {
     if BASE.contains(&top) {
         return Vec::new();
     }
+    // `report` prints every capability's outcome: it sits above the algorithms.
+    const ALGORITHMS: &[&str] = &[
+        "detect",
+        "polyhedra",
+        "exact",
+        "flip",
+        "shell",
+        "planar",
+        "generate",
+        "constrain",
+        "reduce",
+    ];
     let below: &[&str] = match top {
         "geom" => &[],
         "mesh" => &["geom"],
+        "report" => &["geom", "mesh", "io"],
         _ => &["geom", "mesh"],
     };
+    if top == "report" {
+        return [BASE, below, ALGORITHMS].concat();
+    }
     // `io` writes planar results; the shell hands pieces no cone tiles to the exact
     // solver and improves its meshes by flips; `constrain` asks `detect` first and the
     // exact solver after, and builds its niche instances on `polyhedra`'s twisted prism;

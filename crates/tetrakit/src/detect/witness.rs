@@ -28,6 +28,20 @@ pub enum WitnessKind {
     Inconsistent,
 }
 
+impl WitnessKind {
+    /// Every kind, in declaration order (the order of the JSON contract's list).
+    pub const ALL: [WitnessKind; 8] = [
+        WitnessKind::CrossingSegments,
+        WitnessKind::VertexOnSegment,
+        WitnessKind::Degenerate,
+        WitnessKind::Disconnected,
+        WitnessKind::MissingHullEdge,
+        WitnessKind::BadLink,
+        WitnessKind::UnconfirmedTetrahedron,
+        WitnessKind::Inconsistent,
+    ];
+}
+
 impl fmt::Display for WitnessKind {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let v = serde_json::to_value(self).ok();

@@ -4,12 +4,14 @@
 //! search). A front end parses its input, calls the capability, and hands the outcome
 //! here with the few facts only it knows (timings, the file's other cells).
 //!
-//! Capabilities move here one by one (`check` first); until then a command builds its
-//! JSON itself.
+//! Capabilities move here one by one (`check` and `detect` first); until then a command
+//! builds its JSON itself.
 
 mod check;
+mod detect;
 
 pub use check::check_text;
+pub use detect::{detect_json, detect_text};
 
 use serde::Serialize;
 use serde_json::{Map, Value};
