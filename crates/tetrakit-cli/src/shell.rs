@@ -8,7 +8,7 @@ use std::path::Path;
 use std::time::{Duration, Instant};
 use tetrakit::geom::Point3;
 use tetrakit::io::{self, Input};
-use tetrakit::shell::{Improvement, Method, Shell, ShellError, improve, tetrahedralize};
+use tetrakit::shell::{Method, Shell, ShellError, ShellOptions};
 
 /// What `shell` was asked.
 pub struct ShellArgs<'a> {
@@ -62,112 +62,29 @@ pub fn shell(a: ShellArgs) -> CmdResult {
     let shell = Shell::new(&outer_in.points, &inner_in.points)
         .map_err(|e| blame(e, &outer_in, &inner_in))?;
     let run = Run::new(a.time_limit, shell.outer.len(), 20_000);
-    let result = tetrahedralize(&shell, a.method, &run.ctl).and_then(|mut mesh| {
-        let done = if a.flips {
-            improve(&shell.points, &mut mesh, &run.ctl)?
-        } else {
-            Improvement {
-                before: mesh.tets.len(),
-                ..Default::default()
-            }
-        };
-        Ok((mesh, done))
-    });
-    drop(run);
-    let (mesh, flips) = match result {
-        Ok(m) => m,
-        Err(ShellError::Stopped) => return undecided(&shell, a.method, a.as_json, start),
-        Err(e) => return Err(blame(e, &outer_in, &inner_in)),
+    let opts = ShellOptions {
+        method: a.method,
+        flips: a.flips,
     };
-    tetrakit::mesh::certify_shell(&shell.points, &mesh.tets, &shell.inner)
-        .map_err(|p| CliError::internal(format!("the shell mesh failed its certificate: {p}")))?;
-    if let Some(out) = a.output {
-        io::write_mesh(out, &shell.points, &mesh.tets, 0).written(out)?;
+    let o = tetrakit::shell::shell(&shell, opts, &run.ctl)
+        .map_err(|e| blame(e, &outer_in, &inner_in))?;
+    drop(run);
+    if let (Some(out), "yes") = (a.output, o.verdict) {
+        io::write_mesh(out, &shell.points, &o.tets, 0).written(out)?;
     }
-    let n = shell.n();
     let seconds = start.elapsed().as_secs_f64();
-    let touching = shell.touching.len()
-        + shell
-            .inner
-            .iter()
-            .filter(|&&v| (v as usize) < shell.outer.len())
-            .count();
     if a.as_json {
         out!(
             "{}",
-            json!({
-                "verdict": "yes",
-                "n": n,
-                "outer_vertices": shell.outer.len(),
-                "inner_vertices": shell.inner.len(),
-                "outer_ignored": shell.outer_ignored.len(),
-                "inner_ignored": shell.inner_ignored.len(),
-                "inner_on_outer": touching,
-                "tetrahedra": mesh.tets.len(),
-                "bound": 9 * n - 6,
-                "interior_edges": mesh.interior_edges(),
-                "steiner_points": 0,
-                "pieces": mesh.pieces,
-                "method": a.method.name(),
-                "tetrahedra_before_flips": flips.before,
-                "flips": flips_json(&flips, a.flips),
-                "seconds": seconds,
-            })
+            tetrakit::report::json(&o, [("seconds", json!(seconds))])
         );
     } else {
-        out!(
-            "YES: {} tetrahedra for the shell between {} outer and {} inner vertices (n = {n}, bound 9n − 6 = {}, {:.2} per vertex), no Steiner point, certified. [{seconds:.3} s]",
-            mesh.tets.len(),
-            shell.outer.len(),
-            shell.inner.len(),
-            9 * n - 6,
-            mesh.tets.len() as f64 / n as f64
-        );
-        if flips.before != mesh.tets.len() {
-            out!(
-                "  the removals made {}; flips inside the shell took it to {}{}",
-                flips.before,
-                mesh.tets.len(),
-                if flips.delaunay.is_some() {
-                    " (Delaunay flips, then 3-2 flips)"
-                } else {
-                    " (3-2 flips)"
-                }
-            );
-        }
-        if shell.outer_ignored.len() + shell.inner_ignored.len() > 0 {
-            out!(
-                "  not vertices (inside a hull, or on it but not a corner, or repeated): {} outer and {} inner points",
-                shell.outer_ignored.len(),
-                shell.inner_ignored.len()
-            );
-        }
+        out!("{}", tetrakit::report::shell_text(&o, seconds).trim_end());
     }
-    Ok(Verdict::Yes)
-}
-
-/// The improvement pass for JSON: `null` when skipped.
-fn flips_json(f: &Improvement, ran: bool) -> serde_json::Value {
-    if !ran {
-        return serde_json::Value::Null;
-    }
-    json!({
-        "three_two": f.three_two,
-        "delaunay": f.delaunay.map(|d| json!({"two_three": d.two_three, "three_two": d.three_two})),
+    Ok(match o.verdict {
+        "yes" => Verdict::Yes,
+        _ => Verdict::Undecided,
     })
-}
-
-fn undecided(shell: &Shell, method: Method, as_json: bool, start: Instant) -> CmdResult {
-    let seconds = start.elapsed().as_secs_f64();
-    if as_json {
-        out!(
-            "{}",
-            json!({"verdict": "undecided", "n": shell.n(), "method": method.name(), "seconds": seconds})
-        );
-    } else {
-        out!("UNDECIDED: stopped at the time limit after {seconds:.3} s");
-    }
-    Ok(Verdict::Undecided)
 }
 
 /// Writes two nested point sets, OUTER and INNER, as `.xyz` / `.node` / `.json`.

@@ -9,7 +9,7 @@ use tetrakit::control::Control;
 use tetrakit::exact::{self, Domain, Options, Outcome};
 use tetrakit::mesh::Polyhedron;
 use tetrakit::polyhedra;
-use tetrakit::shell::{Method, Shell, ShellError, improve, tetrahedralize as shell_tets};
+use tetrakit::shell::{Method, Shell, ShellOptions};
 
 type Cells<'py> = (Json, Bound<'py, PyArray2<i64>>);
 
@@ -184,45 +184,12 @@ pub fn shell<'py>(
     let (o, i) = (three_d(&outer, "outer")?, three_d(&inner, "inner")?);
     let shell = Shell::new(&o, &i).map_err(value_error)?;
     let ctl = convert::control(time_limit)?;
-    let result = convert::run(py, &ctl, || {
-        let mut mesh = shell_tets(&shell, method, &ctl)?;
-        let before = mesh.tets.len();
-        if flips {
-            improve(&shell.points, &mut mesh, &ctl)?;
-        }
-        Ok::<_, ShellError>((mesh, before))
-    })?;
-    let n = shell.n();
-    let mut v = json!({
-        "n": n,
-        "outer_vertices": shell.outer.len(),
-        "inner_vertices": shell.inner.len(),
-        "outer_ignored": shell.outer_ignored.len(),
-        "inner_ignored": shell.inner_ignored.len(),
-        "bound": 9 * n - 6,
-        "steiner_points": 0,
-        "method": method.name(),
-    });
-    let tets = match result {
-        Err(ShellError::Stopped) => {
-            v["verdict"] = json!("undecided");
-            Vec::new()
-        }
-        Err(e) => return Err(internal(e)),
-        Ok((mesh, before)) => {
-            tetrakit::mesh::certify_shell(&shell.points, &mesh.tets, &shell.inner)
-                .map_err(|p| internal(format!("the shell mesh failed its certificate: {p}")))?;
-            v["verdict"] = json!("yes");
-            v["tetrahedra"] = json!(mesh.tets.len());
-            v["tetrahedra_before_flips"] = json!(before);
-            v["interior_edges"] = json!(mesh.interior_edges());
-            v["pieces"] = json!(mesh.pieces);
-            mesh.tets
-        }
-    };
+    let opts = ShellOptions { method, flips };
+    let outcome =
+        convert::run(py, &ctl, || tetrakit::shell::shell(&shell, opts, &ctl))?.map_err(internal)?;
     Ok((
-        v.to_string(),
+        tetrakit::report::json(&outcome, []).to_string(),
         point_array(py, &shell.points),
-        array(py, &tets),
+        array(py, &outcome.tets),
     ))
 }

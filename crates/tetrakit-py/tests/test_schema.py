@@ -81,3 +81,29 @@ def test_detect_json_follows_the_schema(tmp_path, case):
     jsonschema.validate(out, s)
     shared = set(out) - {"seconds", "parse_seconds"}
     assert {k: out[k] for k in shared} == {k: fields(result)[k] for k in shared}
+
+
+def sphere(n, r, seed):
+    g = np.random.default_rng(seed).normal(size=(n, 3))
+    return r * g / np.linalg.norm(g, axis=1)[:, None]
+
+
+@pytest.mark.parametrize("flips, method, limit", [(True, "cap", None), (False, "bigcap", None),
+                                                  (True, "cap", 0.0)])
+def test_shell_json_follows_the_schema(tmp_path, flips, method, limit):
+    outer, inner = sphere(40, 2.0, 1), sphere(15, 1.0, 2)
+    s = schema("shell")
+    result = tetrakit.shell(outer, inner, method=method, flips=flips, time_limit=limit)
+    jsonschema.validate(fields(result), s)
+    assert result.verdict == ("undecided" if limit == 0.0 else "yes")
+    (tmp_path / "o.xyz").write_text("\n".join(" ".join(repr(float(x)) for x in p) for p in outer))
+    (tmp_path / "i.xyz").write_text("\n".join(" ".join(repr(float(x)) for x in p) for p in inner))
+    args = ["shell", tmp_path / "o.xyz", tmp_path / "i.xyz", "--method", method]
+    args += [] if flips else ["--no-flips"]
+    args += [] if limit is None else ["--time-limit", "0"]
+    out = subprocess.run([str(EXE), *map(str, args), "--json"], capture_output=True, text=True)
+    assert out.returncode == (3 if limit == 0.0 else 0), out.stderr
+    cli = json.loads(out.stdout)
+    jsonschema.validate(cli, s)
+    shared = set(cli) - {"seconds"}
+    assert {k: cli[k] for k in shared} == {k: fields(result)[k] for k in shared if k in cli}

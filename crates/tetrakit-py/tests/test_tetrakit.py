@@ -21,7 +21,7 @@ UNIT_TET = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], dtype=float)
 # file) the CLI prints that a call on arrays has no use for.
 CLI_ONLY = {"seconds", "parse_seconds", "seconds_parse", "seconds_algorithm", "seconds_stages",
             "mintetra_seconds", "verify_seconds", "faces_beside_not_read", "short_pairs_budget",
-            "output", "svg", "method", "inner_on_outer", "flips", "tets", "alternative",
+            "output", "svg", "method", "tets", "alternative",
             "other_cells", "tris", "proof"}
 
 

@@ -40,7 +40,7 @@ use std::collections::VecDeque;
 const NONE: u32 = u32::MAX;
 
 /// The flips [`delaunay`] made.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
 pub struct Flips {
     /// 2-3 flips (one tetrahedron more each).
     pub two_three: usize,

@@ -109,7 +109,7 @@ class Mesh:
 
 
 def read(path, tets_only: bool = False) -> Mesh:
-    """Reads a mesh file with tetrakit's exact, validating readers: TetGen, Gmsh ``.msh``
+    r"""Reads a mesh file with tetrakit's exact, validating readers: TetGen, Gmsh ``.msh``
     (2.2 and 4.1, ASCII and binary), Medit ``.mesh``, legacy ``.vtk``, VTK XML ``.vtu``,
     OBJ, OFF, STL, JSON and ``.xyz``. Points, tetrahedra (the corners of quadratic ones),
     triangles and segments come back 0-based; ``point_labels`` and ``tet_labels`` are the
@@ -362,6 +362,7 @@ class ShellResult:
     inner_vertices: int
     outer_ignored: int
     inner_ignored: int
+    inner_on_outer: int
     bound: int
     steiner_points: int
     method: str
@@ -371,6 +372,7 @@ class ShellResult:
     tetrahedra_before_flips: Optional[int] = None
     interior_edges: Optional[int] = None
     pieces: Optional[int] = None
+    flips: Optional[dict] = None
 
 
 def shell(outer, inner, method: str = "cap", flips: bool = True,

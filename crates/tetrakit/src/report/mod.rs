@@ -4,14 +4,16 @@
 //! search). A front end parses its input, calls the capability, and hands the outcome
 //! here with the few facts only it knows (timings, the file's other cells).
 //!
-//! Capabilities move here one by one (`check` and `detect` first); until then a command
+//! Capabilities move here one by one (`check`, `detect` and `shell` first); until then a command
 //! builds its JSON itself.
 
 mod check;
 mod detect;
+mod shell;
 
 pub use check::check_text;
 pub use detect::{detect_json, detect_text};
+pub use shell::shell_text;
 
 use serde::Serialize;
 use serde_json::{Map, Value};

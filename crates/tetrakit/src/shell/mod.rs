@@ -70,6 +70,7 @@ mod bins;
 pub mod generate;
 mod improve;
 mod optimum;
+mod outcome;
 mod removal;
 mod surface;
 
@@ -77,6 +78,7 @@ use crate::control::{Control, Stopped};
 use crate::geom::{Hull3, Point3, point_key};
 pub use improve::{DELAUNAY_ABOVE, Improvement, improve};
 pub use optimum::optimum;
+pub use outcome::{FlipCounts, ShellOptions, ShellOutcome, shell};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use std::fmt;
 use surface::Surface;

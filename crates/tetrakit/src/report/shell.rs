@@ -1,0 +1,45 @@
+//! The text of a `shell` outcome.
+
+use crate::shell::ShellOutcome;
+use std::fmt::Write;
+
+/// The lines a person reads for `o`, found in `seconds`.
+pub fn shell_text(o: &ShellOutcome, seconds: f64) -> String {
+    let mut s = String::new();
+    let Some(t) = o.tetrahedra else {
+        let _ = writeln!(
+            s,
+            "UNDECIDED: stopped at the time limit after {seconds:.3} s"
+        );
+        return s;
+    };
+    let _ = writeln!(
+        s,
+        "YES: {t} tetrahedra for the shell between {} outer and {} inner vertices (n = {}, bound 9n − 6 = {}, {:.2} per vertex), no Steiner point, certified. [{seconds:.3} s]",
+        o.outer_vertices,
+        o.inner_vertices,
+        o.n,
+        o.bound,
+        t as f64 / o.n as f64
+    );
+    if let (Some(before), Some(Some(f))) = (o.tetrahedra_before_flips, o.flips)
+        && before != t
+    {
+        let how = match f.delaunay {
+            Some(_) => " (Delaunay flips, then 3-2 flips)",
+            None => " (3-2 flips)",
+        };
+        let _ = writeln!(
+            s,
+            "  the removals made {before}; flips inside the shell took it to {t}{how}"
+        );
+    }
+    if o.outer_ignored + o.inner_ignored > 0 {
+        let _ = writeln!(
+            s,
+            "  not vertices (inside a hull, or on it but not a corner, or repeated): {} outer and {} inner points",
+            o.outer_ignored, o.inner_ignored
+        );
+    }
+    s
+}

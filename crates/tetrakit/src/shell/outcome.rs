@@ -1,0 +1,150 @@
+//! The `shell` capability as one call: removal by the chosen method, the flips inside the
+//! shell, and the certificate ([`certify_shell`](crate::mesh::certify_shell)), composed
+//! here so that every front end gets the same certified outcome.
+
+use super::{Improvement, Method, Shell, ShellError, improve, tetrahedralize};
+use crate::control::Control;
+use serde::Serialize;
+
+/// What [`shell`] is asked.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ShellOptions {
+    /// How pieces are removed.
+    pub method: Method,
+    /// Improve the removals' mesh by flips inside the shell.
+    pub flips: bool,
+}
+
+/// The flips the improvement kept.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct FlipCounts {
+    /// 3-2 flips.
+    pub three_two: usize,
+    /// The Delaunay pass, when it was tried and kept.
+    pub delaunay: Option<crate::flip::Flips>,
+}
+
+/// The outcome of [`shell`]: `yes` with a certified mesh, or `undecided` (stopped) with
+/// the shell's facts only. Serialized, the JSON of `tetrakit shell --json` without the
+/// timing.
+#[derive(Clone, Debug, Serialize)]
+pub struct ShellOutcome {
+    /// `yes`, or `undecided` when stopped.
+    pub verdict: &'static str,
+    /// Vertices of both polytopes (`|P| + |Q|`, shared ones once).
+    pub n: usize,
+    /// Corners of the outer polytope.
+    pub outer_vertices: usize,
+    /// Corners of the inner polytope.
+    pub inner_vertices: usize,
+    /// Outer points that are not corners.
+    pub outer_ignored: usize,
+    /// Inner points that are not corners.
+    pub inner_ignored: usize,
+    /// Inner corners on the outer surface (shared, or on its facets and edges).
+    pub inner_on_outer: usize,
+    /// The bound of chapter 4, 9n − 6.
+    pub bound: usize,
+    /// Always 0.
+    pub steiner_points: usize,
+    /// The method's name.
+    pub method: &'static str,
+    /// Tetrahedra (a YES).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tetrahedra: Option<usize>,
+    /// Tetrahedra the removals made (a YES).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tetrahedra_before_flips: Option<usize>,
+    /// Edges not on the boundary surfaces (a YES).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub interior_edges: Option<usize>,
+    /// Pieces removed (a YES).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pieces: Option<usize>,
+    /// The flips kept (a YES with flips; `null` without).
+    #[serde(skip_serializing_if = "undecided")]
+    pub flips: Option<Option<FlipCounts>>,
+    /// The certified tetrahedra on [`Shell::points`] (empty when undecided).
+    #[serde(skip)]
+    pub tets: Vec<[u32; 4]>,
+}
+
+fn undecided(f: &Option<Option<FlipCounts>>) -> bool {
+    f.is_none()
+}
+
+/// Tetrahedralizes the region between the polytopes of `shell` (see [`ShellOptions`]) and
+/// certifies the mesh; stopped by `ctl`, the outcome is `undecided`. An error is a bug
+/// (a removal that every fallback refused, or a failed certificate), never an answer.
+///
+/// ```
+/// use tetrakit::control::Control;
+/// use tetrakit::shell::{Method, Shell, ShellOptions, generate::bern_disk, shell};
+/// let (outer, inner) = bern_disk(60, 12, 1).unwrap();
+/// let s = Shell::new(&outer, &inner).unwrap();
+/// let opts = ShellOptions { method: Method::Cap, flips: true };
+/// let o = shell(&s, opts, &Control::new()).unwrap();
+/// assert_eq!(o.verdict, "yes");
+/// assert!(o.tetrahedra.unwrap() <= o.bound);
+/// ```
+pub fn shell(s: &Shell, opts: ShellOptions, ctl: &Control) -> Result<ShellOutcome, ShellError> {
+    let n = s.n();
+    let inner_on_outer = s.touching.len()
+        + s.inner
+            .iter()
+            .filter(|&&v| (v as usize) < s.outer.len())
+            .count();
+    let mut o = ShellOutcome {
+        verdict: "undecided",
+        n,
+        outer_vertices: s.outer.len(),
+        inner_vertices: s.inner.len(),
+        outer_ignored: s.outer_ignored.len(),
+        inner_ignored: s.inner_ignored.len(),
+        inner_on_outer,
+        bound: 9 * n - 6,
+        steiner_points: 0,
+        method: opts.method.name(),
+        tetrahedra: None,
+        tetrahedra_before_flips: None,
+        interior_edges: None,
+        pieces: None,
+        flips: None,
+        tets: Vec::new(),
+    };
+    let (mesh, done) = match mesh(s, opts, ctl) {
+        Ok(m) => m,
+        Err(ShellError::Stopped) => return Ok(o),
+        Err(e) => return Err(e),
+    };
+    crate::mesh::certify_shell(&s.points, &mesh.tets, &s.inner)
+        .map_err(|p| ShellError::Internal(format!("the shell mesh failed its certificate: {p}")))?;
+    o.verdict = "yes";
+    o.tetrahedra = Some(mesh.tets.len());
+    o.tetrahedra_before_flips = Some(done.before);
+    o.interior_edges = Some(mesh.interior_edges());
+    o.pieces = Some(mesh.pieces);
+    o.flips = Some(opts.flips.then_some(FlipCounts {
+        three_two: done.three_two,
+        delaunay: done.delaunay,
+    }));
+    o.tets = mesh.tets;
+    Ok(o)
+}
+
+/// The removals' mesh, improved by flips when asked.
+fn mesh(
+    s: &Shell,
+    opts: ShellOptions,
+    ctl: &Control,
+) -> Result<(super::ShellMesh, Improvement), ShellError> {
+    let mut mesh = tetrahedralize(s, opts.method, ctl)?;
+    let done = match opts.flips {
+        true => improve(&s.points, &mut mesh, ctl)?,
+        false => Improvement {
+            before: mesh.tets.len(),
+            ..Default::default()
+        },
+    };
+    Ok((mesh, done))
+}
