@@ -239,31 +239,14 @@ fn bases(d: &Path) -> Vec<Base> {
             files: vec![("k.edge", read("k.edge"))],
             target: "k.node",
             commands: vec![
-                vec![
-                    "tetrahedralize",
-                    "{}",
-                    "--time-limit",
-                    "5",
-                    "--output",
-                    "{out}.ele",
-                ],
+                TETRAHEDRALIZE.to_vec(),
                 vec!["mwt", "{}", "--xy", "--time-limit", "5"],
             ],
         },
         Base {
             files: vec![],
             target: "b.off",
-            commands: vec![
-                vec!["mintetra", "{}"],
-                vec![
-                    "tetrahedralize",
-                    "{}",
-                    "--time-limit",
-                    "5",
-                    "--output",
-                    "{out}.ele",
-                ],
-            ],
+            commands: vec![vec!["mintetra", "{}"], TETRAHEDRALIZE.to_vec()],
         },
         Base {
             files: vec![],
@@ -320,6 +303,16 @@ fn bases(d: &Path) -> Vec<Base> {
     .collect()
 }
 
+/// The command a polyhedron or point-set base runs, writing what it answers for `check`.
+const TETRAHEDRALIZE: [&str; 6] = [
+    "tetrahedralize",
+    "{}",
+    "--time-limit",
+    "5",
+    "--output",
+    "{out}.ele",
+];
+
 /// The command every mesh base runs: `check`, writing the mesh it read for the
 /// comparison with meshio.
 const CHECK_MESH: [&str; 4] = ["check", "{}", "--output", "{out}.vtu"];
@@ -367,14 +360,7 @@ fn mesh_bases(d: &Path) -> Vec<Base> {
     out.push(Base {
         files: vec![],
         target: "b.stl",
-        commands: vec![vec![
-            "tetrahedralize",
-            "{}",
-            "--time-limit",
-            "5",
-            "--output",
-            "{out}.ele",
-        ]],
+        commands: vec![TETRAHEDRALIZE.to_vec()],
     });
     out
 }

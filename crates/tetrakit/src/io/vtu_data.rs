@@ -158,20 +158,29 @@ pub(super) fn block(d: &[u8], layout: Layout, want: usize) -> Result<Vec<u8>, St
     inflate(&h, &d[(3 + blocks) * w..], layout.compressor, want)
 }
 
-/// Inflates the blocks `h` describes from `data`: exactly `want` bytes.
+/// Inflates the blocks `h` describes from `data`: exactly `want` bytes. Every block's
+/// claim is checked (its bytes present, at most [`MAX_RATIO`] to one) before the output
+/// is reserved, at its exact size.
 fn inflate(h: &[usize], data: &[u8], how: Compressor, want: usize) -> Result<Vec<u8>, String> {
     let sizes = block_sizes(h, want)?;
-    let mut out = Vec::new();
     let mut at = 0usize;
     for (k, (&raw, &packed)) in sizes.iter().zip(&h[3..]).enumerate() {
-        let chunk = data
-            .get(at..at.saturating_add(packed))
-            .ok_or_else(|| format!("block {k} claims {packed} bytes past the end of the data"))?;
+        at = at.saturating_add(packed);
+        if at > data.len() {
+            return Err(format!(
+                "block {k} claims {packed} bytes past the end of the data"
+            ));
+        }
         if raw > packed.saturating_mul(MAX_RATIO).saturating_add(SLACK) {
             return Err(format!(
                 "block {k} claims {raw} bytes from {packed} compressed bytes (more than {MAX_RATIO}:1)"
             ));
         }
+    }
+    let mut out = Vec::with_capacity(want);
+    let mut at = 0usize;
+    for (k, (&raw, &packed)) in sizes.iter().zip(&h[3..]).enumerate() {
+        let chunk = &data[at..at + packed];
         let before = out.len();
         unpack(chunk, how, raw, &mut out).map_err(|e| format!("block {k}: {e}"))?;
         if out.len() - before != raw {
@@ -323,15 +332,17 @@ pub(super) fn binary_values(bytes: &[u8], ty: &str, big_endian: bool) -> Result<
         ($t:ty, $wrap:path, $conv:expr) => {{
             let size = std::mem::size_of::<$t>();
             let conv = $conv;
-            let v = bytes.chunks_exact(size).map(|c| {
+            let mut v = Vec::with_capacity(bytes.len() / size);
+            for c in bytes.chunks_exact(size) {
                 let a = c.try_into().expect("chunks of the size");
-                conv(if big_endian {
+                let x: Result<_, String> = conv(if big_endian {
                     <$t>::from_be_bytes(a)
                 } else {
                     <$t>::from_le_bytes(a)
-                })
-            });
-            $wrap(v.collect::<Result<Vec<_>, String>>()?)
+                });
+                v.push(x?);
+            }
+            $wrap(v)
         }};
     }
     let too_big = |v: u64| i64::try_from(v).map_err(|_| format!("{v} is too large"));
