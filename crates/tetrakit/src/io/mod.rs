@@ -1,12 +1,15 @@
 //! Reading and writing meshes and segment sets: TetGen `.node/.edge/.ele/.face`, OBJ
-//! (`v`, `l`, `f`), Medit `.mesh` and legacy VTK `.vtk` (read; VTK is also written), the JSON of the README, plain `.xyz` point lists, and a legacy VTK
-//! writer.
+//! (`v`, `l`, `f`), OFF, STL, Gmsh `.msh`, Medit `.mesh`, legacy VTK `.vtk` and VTK XML
+//! `.vtu` (read; VTK is also written), the JSON of the README, plain `.xyz` point lists.
 //!
-//! Every reader validates as it goes and fails with an [`InputError`] naming the file, the
-//! line and the problem: coordinates must be finite and within the range where the exact
-//! predicates are exact, indices in range, no self-loop or repeated segment, no two points
-//! at the same place. Header counts are checked against what is read but are never used to
-//! size an allocation.
+//! Every reader validates its syntax as it goes and fails with an [`InputError`] naming the
+//! file, the line (or the byte, in binary data) and the problem: indices in range, counts
+//! equal to what follows. Header counts are checked against the bytes that follow but are
+//! never used to size an allocation. Then every input passes one set of checks, whatever
+//! read it (`validate`, run by [`read_input_with`] and [`from_arrays`]): coordinates
+//! finite and within the range where the exact predicates are exact, and, unless a mesh
+//! is read for its tetrahedra alone ([`ReadOptions::mesh`]), no self-loop or repeated
+//! segment and no two points at the same place.
 
 mod gmsh;
 mod gmsh_binary;
