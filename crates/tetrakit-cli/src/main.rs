@@ -723,12 +723,33 @@ fn seconds(text: &str) -> Result<Duration, String> {
 }
 
 fn main() -> ExitCode {
-    match run(Cli::parse().cmd) {
+    let cmd = Cli::parse().cmd;
+    match in_threads(|| run(cmd)) {
         Ok(verdict) => ExitCode::from(verdict.code()),
         Err(e) => {
             eprintln!("tetrakit: {e}");
             ExitCode::from(2)
         }
+    }
+}
+
+/// Runs `work` with the parallel passes on their worker threads; where the system refuses
+/// a thread (a tight memory or process limit, as batch schedulers set), on this thread
+/// alone. rayon would otherwise panic at its first parallel pass, and a panic whose
+/// backtrace cannot be allocated deadlocks in the standard library.
+fn in_threads(work: impl FnOnce() -> CmdResult + Send) -> CmdResult {
+    if rayon::ThreadPoolBuilder::new().build_global().is_ok() {
+        return work();
+    }
+    let one = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .use_current_thread()
+        .build();
+    match one {
+        Ok(pool) => pool.install(work),
+        Err(e) => Err(exit::CliError::new(format!(
+            "cannot start a worker thread: {e}"
+        ))),
     }
 }
 

@@ -1651,3 +1651,44 @@ fn planar_witnesses_speak_of_triangles() {
         "{detail}"
     );
 }
+
+/// Under memory limits too tight for the worker threads (a batch scheduler's), a command
+/// runs on one thread and answers, where rayon's refused pool used to panic and the
+/// panic, unable to allocate its backtrace, deadlocked. Each run is killed after 60 s: a
+/// hang fails the test, not CI's clock. Needs util-linux's `prlimit`.
+#[test]
+fn tight_memory_limits_run_on_one_thread_and_never_hang() {
+    let prlimit = Path::new("/usr/bin/prlimit");
+    if !prlimit.exists() {
+        return;
+    }
+    let d = dir("tight");
+    let ele = d.join("k.ele");
+    let made = run(&["generate", "kuhn", "--size", "2", "-o", s(&ele)]);
+    assert!(made.status.success());
+    for mib in [2u64, 4, 5, 6, 8, 12] {
+        let mut child = Command::new(prlimit)
+            .arg(format!("--data={}", mib << 20))
+            .arg(env!("CARGO_BIN_EXE_tetrakit"))
+            .args(["check", s(&ele)])
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .unwrap();
+        let start = std::time::Instant::now();
+        while child.try_wait().unwrap().is_none() {
+            if start.elapsed() > std::time::Duration::from_secs(60) {
+                let _ = child.kill();
+                panic!("check hung under a {mib} MiB data limit");
+            }
+            std::thread::sleep(std::time::Duration::from_millis(10));
+        }
+        let out = child.wait_with_output().unwrap();
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert!(
+            out.status.success() && text.starts_with("VALID"),
+            "{mib} MiB: {text} {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+}
