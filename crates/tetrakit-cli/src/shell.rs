@@ -69,7 +69,7 @@ pub fn shell(a: ShellArgs) -> CmdResult {
     let o = tetrakit::shell::shell(&shell, opts, &run.ctl)
         .map_err(|e| blame(e, &outer_in, &inner_in))?;
     drop(run);
-    if let (Some(out), "yes") = (a.output, o.verdict) {
+    if let (Some(out), tetrakit::control::Verdict::Yes) = (a.output, o.verdict) {
         io::write_mesh(out, &shell.points, &o.tets, 0).written(out)?;
     }
     let seconds = start.elapsed().as_secs_f64();
@@ -82,7 +82,7 @@ pub fn shell(a: ShellArgs) -> CmdResult {
         out!("{}", tetrakit::report::shell_text(&o, seconds).trim_end());
     }
     Ok(match o.verdict {
-        "yes" => Verdict::Yes,
+        tetrakit::control::Verdict::Yes => Verdict::Yes,
         _ => Verdict::Undecided,
     })
 }

@@ -67,6 +67,18 @@ impl fmt::Display for Stopped {
 
 impl std::error::Error for Stopped {}
 
+/// A capability's answer, as every outcome and the JSON contract's `"verdict"` say it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Verdict {
+    /// Valid, or a YES.
+    Yes,
+    /// A definite NO, with a witness.
+    No,
+    /// Stopped (time limit or stop request) before an answer.
+    Undecided,
+}
+
 /// The progress callback's type.
 type Callback = dyn Fn(Progress) + Send + Sync;
 

@@ -261,17 +261,13 @@ fn validate(input: &Input, opts: ReadOptions) -> Result<(), InputError> {
     if opts.mesh && !input.tets.is_empty() {
         return Ok(());
     }
-    let lines = match input.segment_lines.len() == input.segments.len() {
-        true => input.segment_lines.clone(),
-        false => vec![0; input.segments.len()],
-    };
     let file = match input.segment_file.as_os_str().is_empty() {
         true => &input.point_file,
         false => &input.segment_file,
     };
     check_segments(
         &input.segments,
-        &lines,
+        &input.segment_lines,
         &|v| input.point_label(v as usize),
         file,
     )?;
@@ -435,11 +431,7 @@ pub(crate) fn parse_coord(tok: &str, path: &Path, line: usize) -> Result<f64, In
     let x: f64 = tok
         .parse()
         .map_err(|_| InputError::new(path, line, format!("{} is not a number", quote(tok))))?;
-    let nonzero_digits = || {
-        let mantissa = tok.split(['e', 'E']).next().unwrap_or("");
-        mantissa.bytes().any(|b| (b'1'..=b'9').contains(&b))
-    };
-    if x == 0.0 && nonzero_digits() {
+    if x == 0.0 && has_nonzero_digits(tok) {
         return Err(InputError::new(
             path,
             line,
@@ -452,6 +444,13 @@ pub(crate) fn parse_coord(tok: &str, path: &Path, line: usize) -> Result<f64, In
     Ok(x)
 }
 
+/// True when the decimal `tok` has a nonzero digit before its exponent: a number that is
+/// not 0, whatever it rounds to.
+fn has_nonzero_digits(tok: &str) -> bool {
+    let mantissa = tok.split(['e', 'E']).next().unwrap_or("");
+    mantissa.bytes().any(|b| (b'1'..=b'9').contains(&b))
+}
+
 /// Parses a coordinate of an array declared single precision (VTK `Float32`, legacy
 /// `float`): the number every other reader of the file (VTK, ParaView, meshio) holds is
 /// the decimal rounded to `f32`, so that is the point; a decimal whose digits are not all
@@ -461,13 +460,9 @@ pub(crate) fn parse_coord32(tok: &str) -> Result<f64, String> {
     let x: f32 = tok
         .parse()
         .map_err(|_| format!("{} is not a number", quote(tok)))?;
-    let nonzero = || {
-        let mantissa = tok.split(['e', 'E']).next().unwrap_or("");
-        mantissa.bytes().any(|b| (b'1'..=b'9').contains(&b))
-    };
     let word = tok.trim_start_matches(['+', '-']).to_ascii_lowercase();
     let named = word.starts_with("inf") || word.starts_with("nan");
-    if (x == 0.0 && nonzero()) || (x.is_infinite() && !named) {
+    if (x == 0.0 && has_nonzero_digits(tok)) || (x.is_infinite() && !named) {
         return Err(format!(
             "coordinate {} is outside the single-precision range of its Float32 array",
             quote(tok)
@@ -513,7 +508,7 @@ pub(crate) fn vertex_ref(
 }
 
 /// Rejects self-loops and repeated segments. `lines[k]` is the source line of segment `k`,
-/// or 0 for formats without lines (then segments are named by their position). Repeats are
+/// or 0 (or missing) for formats without lines (then segments are named by their position). Repeats are
 /// found per vertex (small sorts), not by sorting all segments.
 fn check_segments(
     segs: &[[u32; 2]],
@@ -522,10 +517,9 @@ fn check_segments(
     path: &Path,
 ) -> Result<(), InputError> {
     let at = |k: usize| -> (usize, String) {
-        if lines[k] > 0 {
-            (lines[k] as usize, format!("line {}", lines[k]))
-        } else {
-            (0, format!("segments[{k}]"))
+        match lines.get(k).copied().unwrap_or(0) {
+            0 => (0, format!("segments[{k}]")),
+            l => (l as usize, format!("line {l}")),
         }
     };
     if let Some(k) = segs.par_iter().position_first(|s| s[0] == s[1]) {

@@ -81,6 +81,11 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
         ..Default::default()
     };
     let mut sorter = CellSorter::default();
+    let source = Decoder {
+        path,
+        layout,
+        appended: &appended,
+    };
     for (p, piece) in pieces.iter().enumerate() {
         let mut mine: [Option<&Array>; 4] = [None; 4];
         for a in arrays.iter().filter(|a| a.piece == p) {
@@ -89,11 +94,6 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
                 return Err(InputError::new(path, a.line, why));
             }
         }
-        let source = Decoder {
-            path,
-            layout,
-            appended: &appended,
-        };
         add_piece(&source, p, *piece, mine, &mut input, &mut sorter)?;
     }
     sorter.finish(&mut input);

@@ -5,6 +5,7 @@
 //! report layer ([`crate::report`]).
 
 use super::{ProblemKind, Report, reorient, verify};
+use crate::control::Verdict;
 use crate::geom::{Hull3, Point3};
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -18,16 +19,6 @@ pub struct CheckOptions {
     pub manifold: bool,
     /// Turn negatively oriented tetrahedra (and count them) instead of reporting them.
     pub reorient: bool,
-}
-
-/// A decision's answer.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Verdict {
-    /// Valid, or a YES.
-    Yes,
-    /// A definite NO, with a witness.
-    No,
 }
 
 /// The outcome of [`check`]: the verdict with the first problem as its witness, every

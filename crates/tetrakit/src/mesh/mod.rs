@@ -14,9 +14,10 @@ pub(crate) mod surface;
 mod verify;
 mod verify_planar;
 
+pub use crate::control::Verdict;
 pub(crate) use certify::boundary_faces;
 pub use certify::{certify_boundary, certify_hull, certify_polyhedron, certify_shell};
-pub use check::{CheckOptions, CheckOutcome, Verdict, check};
+pub use check::{CheckOptions, CheckOutcome, check};
 pub use report::{Problem, ProblemKind, Report};
 pub use surface::{Polyhedron, SurfaceError};
 pub use verify::verify;

@@ -1,5 +1,6 @@
 //! The JSON and the text of a `detect` outcome.
 
+use crate::control::Verdict;
 use crate::detect::{Cells, Detection, Route, Witness};
 use serde::Serialize;
 use serde_json::Value;
@@ -8,7 +9,7 @@ use std::fmt::Write;
 /// `detect --json`'s own fields.
 #[derive(Serialize)]
 struct DetectJson {
-    verdict: &'static str,
+    verdict: Verdict,
     vertices: usize,
     segments: usize,
     hull_vertices: usize,
@@ -46,7 +47,11 @@ pub fn detect_json<'a>(
         Err(w) => witness = Some(w.clone().mapped(label)),
     }
     let fields = DetectJson {
-        verdict: if d.is_yes() { "yes" } else { "no" },
+        verdict: if d.is_yes() {
+            Verdict::Yes
+        } else {
+            Verdict::No
+        },
         vertices: d.vertices,
         segments: d.segments,
         hull_vertices: d.hull_vertices,

@@ -3,7 +3,7 @@
 //! here so that every front end gets the same certified outcome.
 
 use super::{Improvement, Method, Shell, ShellError, improve, tetrahedralize};
-use crate::control::Control;
+use crate::control::{Control, Verdict};
 use serde::Serialize;
 
 /// What [`shell`] is asked.
@@ -30,7 +30,7 @@ pub struct FlipCounts {
 #[derive(Clone, Debug, Serialize)]
 pub struct ShellOutcome {
     /// `yes`, or `undecided` when stopped.
-    pub verdict: &'static str,
+    pub verdict: Verdict,
     /// Vertices of both polytopes (`|P| + |Q|`, shared ones once).
     pub n: usize,
     /// Corners of the outer polytope.
@@ -84,7 +84,7 @@ fn undecided(f: &Option<Option<FlipCounts>>) -> bool {
 /// let s = Shell::new(&outer, &inner).unwrap();
 /// let opts = ShellOptions { method: Method::Cap, flips: true };
 /// let o = shell(&s, opts, &Control::new()).unwrap();
-/// assert_eq!(o.verdict, "yes");
+/// assert_eq!(o.verdict, tetrakit::control::Verdict::Yes);
 /// assert!(o.tetrahedra.unwrap() <= o.bound);
 /// ```
 pub fn shell(s: &Shell, opts: ShellOptions, ctl: &Control) -> Result<ShellOutcome, ShellError> {
@@ -95,7 +95,7 @@ pub fn shell(s: &Shell, opts: ShellOptions, ctl: &Control) -> Result<ShellOutcom
             .filter(|&&v| (v as usize) < s.outer.len())
             .count();
     let mut o = ShellOutcome {
-        verdict: "undecided",
+        verdict: Verdict::Undecided,
         n,
         outer_vertices: s.outer.len(),
         inner_vertices: s.inner.len(),
@@ -119,7 +119,7 @@ pub fn shell(s: &Shell, opts: ShellOptions, ctl: &Control) -> Result<ShellOutcom
     };
     crate::mesh::certify_shell(&s.points, &mesh.tets, &s.inner)
         .map_err(|p| ShellError::Internal(format!("the shell mesh failed its certificate: {p}")))?;
-    o.verdict = "yes";
+    o.verdict = Verdict::Yes;
     o.tetrahedra = Some(mesh.tets.len());
     o.tetrahedra_before_flips = Some(done.before);
     o.interior_edges = Some(mesh.interior_edges());
