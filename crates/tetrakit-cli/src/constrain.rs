@@ -3,13 +3,13 @@
 
 use crate::exit::{CliError, CmdResult, Verdict, WriteContext};
 use crate::progress::Run;
-use serde_json::{Value, json};
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
-use tetrakit::constrain::{self, Answer, Decision, Options, Question};
+use tetrakit::constrain::{self, Answer, Options, Question};
 use tetrakit::detect::Cells;
 use tetrakit::exact::Proof;
 use tetrakit::io;
+use tetrakit::report::{self, ProofFiles};
 
 pub struct Args<'a> {
     pub question: Question,
@@ -49,7 +49,6 @@ pub fn run(a: Args) -> CmdResult {
     let d = decide(&input.points, &segments, &options, &run.ctl)
         .map_err(|e| CliError::at(a.input, e))?;
     let base = input.index_base;
-    let mut v = decision_json(&d, input.points.len(), segments.len(), base);
     if let (Some(out), Answer::Yes(cells)) = (a.output, &d.answer) {
         match cells {
             Cells::Tetrahedra(t) => io::write_mesh(out, &input.points, t, base),
@@ -57,9 +56,10 @@ pub fn run(a: Args) -> CmdResult {
         }
         .written(out)?;
     }
+    let mut proof = None;
     if let (Some(path), Answer::No(_)) = (a.proof, &d.answer) {
         run.stage("writing the DRAT proof");
-        v["proof"] = write_proof(path, |formula, proof| {
+        proof = Some(write_proof(path, |formula, proof| {
             constrain::prove(
                 a.question,
                 &input.points,
@@ -68,20 +68,25 @@ pub fn run(a: Args) -> CmdResult {
                 proof,
                 &run.ctl,
             )
-        })?;
+        })?);
     }
     drop(run);
-    v["seconds"] = json!(start.elapsed().as_secs_f64());
+    let seconds = start.elapsed().as_secs_f64();
+    let size = [input.points.len(), segments.len()];
     if a.as_json {
-        out!("{v}");
+        let extra = [
+            ("proof", serde_json::to_value(&proof).unwrap_or_default()),
+            ("seconds", seconds.into()),
+        ];
+        out!("{}", report::constrain_json(&d, size, base, true, extra));
     } else {
-        print(&v, a.question);
+        let text = report::constrain_text(&d, a.question, size, base, seconds);
+        out!("{}", text.trim_end());
+        if let Some(p) = &proof {
+            out!("{}", p.line());
+        }
     }
-    Ok(match d.answer {
-        Answer::Yes(_) => Verdict::Yes,
-        Answer::No(_) => Verdict::No,
-        Answer::Undecided => Verdict::Undecided,
-    })
+    Ok(report::decision_verdict(&d))
 }
 
 /// The constraints of `path`, whose points must be those of the first input.
@@ -104,11 +109,11 @@ fn segments_from(path: &Path, points: &[[f64; 3]]) -> Result<Vec<[u32; 2]>, CliE
 }
 
 /// `P.drat` and the formula beside it, `P.cnf`, written by `prove` (given the formula's
-/// and the proof's writers); the JSON that names them.
+/// and the proof's writers); what they hold.
 pub fn write_proof<E: std::fmt::Display>(
     path: &Path,
     prove: impl FnOnce(&mut std::fs::File, std::io::BufWriter<std::fs::File>) -> Result<Proof, E>,
-) -> Result<Value, CliError> {
+) -> Result<ProofFiles, CliError> {
     let cnf_path: PathBuf = path.with_extension("cnf");
     if cnf_path == path {
         return Err(CliError::at(
@@ -120,13 +125,13 @@ pub fn write_proof<E: std::fmt::Display>(
     let proof = std::io::BufWriter::new(std::fs::File::create(path).written(path)?);
     let r = prove(&mut formula, proof).map_err(|e| CliError::at(path, e))?;
     Ok(match r {
-        Proof::Refuted { variables, clauses } => json!({
-            "formula": cnf_path.display().to_string(),
-            "drat": path.display().to_string(),
-            "variables": variables,
-            "clauses": clauses,
-        }),
-        Proof::Stopped => json!("stopped by the time limit (the files are incomplete)"),
+        Proof::Refuted { variables, clauses } => ProofFiles::Written {
+            formula: cnf_path.display().to_string(),
+            drat: path.display().to_string(),
+            variables,
+            clauses,
+        },
+        Proof::Stopped => ProofFiles::STOPPED,
         Proof::Satisfiable => {
             return Err(CliError::internal(
                 "the proof solver found the formula satisfiable after a NO",
@@ -188,99 +193,4 @@ pub fn generate_niche(
         }
     );
     Ok(Verdict::Yes)
-}
-
-fn decision_json(d: &Decision, n: usize, m: usize, base: u32) -> Value {
-    let shift = |v: u32| v + base;
-    let mut v = json!({
-        "verdict": match d.answer {
-            Answer::Yes(_) => "yes",
-            Answer::No(_) => "no",
-            Answer::Undecided => "undecided",
-        },
-        "vertices": n,
-        "segments": m,
-        "planar": d.planar,
-        "route": d.route,
-        "candidates": d.stats.candidates,
-        "sat_calls": d.stats.calls,
-    });
-    match &d.answer {
-        Answer::Yes(Cells::Tetrahedra(t)) => {
-            v["tetrahedra"] = json!(t.len());
-            v["tets"] = json!(t.iter().map(|x| x.map(shift)).collect::<Vec<_>>());
-        }
-        Answer::Yes(Cells::Triangles(t)) => {
-            v["triangles"] = json!(t.len());
-            v["tris"] = json!(t.iter().map(|x| x.map(shift)).collect::<Vec<_>>());
-        }
-        Answer::No(w) => v["witness"] = json!(w.shifted(base)),
-        Answer::Undecided => {}
-    }
-    if matches!(d.answer, Answer::Yes(_)) {
-        v["minimum"] = json!(d.minimum);
-        v["certified"] = json!(true);
-    }
-    v
-}
-
-fn print(v: &Value, question: Question) {
-    let what = match question {
-        Question::Contains => "the segments contain",
-        Question::Constrained => "the points have",
-    };
-    let cell = if v["planar"].as_bool() == Some(true) {
-        "triangulation"
-    } else {
-        "tetrahedralization"
-    };
-    match v["verdict"].as_str() {
-        Some("yes") => {
-            let count = v.get("tetrahedra").or(v.get("triangles")).cloned();
-            let with = match question {
-                Question::Contains => "",
-                Question::Constrained => " with every constraint as an edge",
-            };
-            out!(
-                "YES: {what} a {cell}{with}: {} cells{}",
-                count.unwrap_or_default(),
-                if v["minimum"].as_bool() == Some(true) {
-                    " (the fewest possible)"
-                } else {
-                    ""
-                }
-            );
-            out!(
-                "  certified: orientation, face pairing, the convex hull, every point used, the edge rules"
-            );
-        }
-        Some("no") => {
-            out!("NO: no {cell} obeys the segments");
-            let w = &v["witness"];
-            out!(
-                "  witness ({}): {}",
-                w["kind"].as_str().unwrap_or(""),
-                w["detail"].as_str().unwrap_or("")
-            );
-            if let Some(p) = v["proof"].get("drat") {
-                out!(
-                    "  proof: {} refutes {} ({} variables, {} clauses)",
-                    p.as_str().unwrap_or(""),
-                    v["proof"]["formula"].as_str().unwrap_or(""),
-                    v["proof"]["variables"],
-                    v["proof"]["clauses"]
-                );
-            }
-        }
-        _ => out!("undecided within the time limit"),
-    }
-    out!(
-        "  {} points, {} segments, route {}, {} candidates, {} SAT calls, {:.3} s",
-        v["vertices"],
-        v["segments"],
-        v["route"].as_str().unwrap_or(""),
-        v["candidates"],
-        v["sat_calls"],
-        v["seconds"].as_f64().unwrap_or(0.0)
-    );
 }

@@ -3,30 +3,15 @@
 use std::fmt;
 use std::path::Path;
 
-/// What a command found (exit 0, 1 or 3).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Verdict {
-    /// YES, valid, or work done.
-    Yes,
-    /// A definite NO, with its witness printed.
-    No,
-    /// Undecided within the time limit, with bounds printed.
-    Undecided,
-}
+/// What a command found: the library's verdict (exit 0, 1 or 3).
+pub use tetrakit::control::Verdict;
 
-impl Verdict {
-    /// `Yes` when `yes`, else `No`.
-    pub fn from_bool(yes: bool) -> Self {
-        if yes { Verdict::Yes } else { Verdict::No }
-    }
-
-    /// The exit code of the CLI contract.
-    pub fn code(self) -> u8 {
-        match self {
-            Verdict::Yes => 0,
-            Verdict::No => 1,
-            Verdict::Undecided => 3,
-        }
+/// The exit code of the CLI contract for `v`.
+pub fn code(v: Verdict) -> u8 {
+    match v {
+        Verdict::Yes => 0,
+        Verdict::No => 1,
+        Verdict::Undecided => 3,
     }
 }
 

@@ -725,7 +725,7 @@ fn seconds(text: &str) -> Result<Duration, String> {
 fn main() -> ExitCode {
     let cmd = Cli::parse().cmd;
     match in_threads(|| run(cmd)) {
-        Ok(verdict) => ExitCode::from(verdict.code()),
+        Ok(verdict) => ExitCode::from(exit::code(verdict)),
         Err(e) => {
             eprintln!("tetrakit: {e}");
             ExitCode::from(2)

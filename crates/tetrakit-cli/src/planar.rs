@@ -363,7 +363,7 @@ fn check_random(beta: Ratio, sets: usize, n: usize, as_json: bool, start: Instan
             out!("  violation: set {k} (seed {s}), edge {}-{}", e[0], e[1]);
         }
     }
-    Ok(Verdict::from_bool(bad.is_empty()))
+    Ok(Verdict::from(bad.is_empty()))
 }
 
 /// How the two optima were found.

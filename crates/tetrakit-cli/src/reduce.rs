@@ -3,13 +3,11 @@
 
 use crate::exit::{CliError, CmdResult, Verdict, WriteContext};
 use crate::progress::Run;
-use serde_json::{Value, json};
 use std::path::Path;
 use std::time::{Duration, Instant};
-use tetrakit::exact::{self, Domain, Edges, Outcome};
-use tetrakit::io;
 use tetrakit::numbering::renumber_text;
-use tetrakit::reduce::{QuasiPrism, QuasiPrismError};
+use tetrakit::reduce::QuasiPrism;
+use tetrakit::{io, report};
 
 /// Which construction `reduce trid-to-tetrad` builds.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -43,56 +41,32 @@ pub fn trid_to_tetrad(
     let refused = |e: tetrakit::reduce::ReduceError| {
         CliError::at(input, renumber_text(&e.to_string(), inp.index_base))
     };
-    let (points, segments, mut v, how) = match construction {
+    let (points, segments, facts) = match construction {
         Construction::Apexes => {
             let r = tetrakit::reduce::trid_to_tetrad(&flat, &inp.segments).map_err(refused)?;
-            let v = json!({
-                "construction": "apexes",
-                "apex_height": r.height,
-                "checked": ["no three planar points collinear", "every orientation kept from both apexes", "every lifted point a vertex of the upper hull"],
-            });
-            let how = format!("lifted to a paraboloid, apexes at height ±{}", r.height);
-            (r.points, r.segments, v, how)
+            let facts = r.facts();
+            (r.points, r.segments, facts)
         }
         Construction::Sphere => {
             let r = tetrakit::reduce::sphere_reduction(&flat, &inp.segments).map_err(refused)?;
-            let v = json!({
-                "construction": "sphere",
-                "radius": r.radius,
-                "twist_radians": r.twist,
-                "apex_height": r.height,
-                "checked": ["no three planar points collinear", "no four points coplanar", "every prism over a triangle of E a regular quasi-prism", "x* sees the upper points as the plane does", "every hull edge a segment (or a missing planar hull edge lifted)"],
-            });
-            let how = format!(
-                "on a sphere of radius {}, the lower copy twisted by {} rad, x* at height {}",
-                r.radius, r.twist, r.height
-            );
-            (r.points, r.segments, v, how)
+            let facts = r.facts();
+            (r.points, r.segments, facts)
         }
     };
     let pairs: Vec<(u32, u32)> = segments.iter().map(|&[a, b]| (a, b)).collect();
     io::write_edges(output, &points, &pairs, inp.index_base).written(output)?;
-    for (key, value) in [
-        ("verdict", json!("written")),
-        ("points", json!(points.len())),
-        ("segments", json!(segments.len())),
-        ("planar_points", json!(flat.len())),
-        ("planar_segments", json!(inp.segments.len())),
-        ("output", json!(output.display().to_string())),
-        ("seconds", json!(start.elapsed().as_secs_f64())),
-    ] {
-        v[key] = value;
-    }
+    let shown = output.display().to_string();
     if as_json {
-        out!("{v}");
+        let extra = [
+            ("verdict", "written".into()),
+            ("planar_points", flat.len().into()),
+            ("planar_segments", inp.segments.len().into()),
+            ("output", shown.into()),
+            ("seconds", start.elapsed().as_secs_f64().into()),
+        ];
+        out!("{}", report::json(&facts, extra));
     } else {
-        out!(
-            "wrote {}: {} points, {} segments (the {} planar points {how}); conditions checked exactly",
-            output.display(),
-            points.len(),
-            segments.len(),
-            flat.len(),
-        );
+        out!("{}", report::reduction_text(&facts, flat.len(), &shown));
     }
     Ok(Verdict::Yes)
 }
@@ -106,57 +80,38 @@ pub fn hull_gap(
     as_json: bool,
     time_limit: Option<Duration>,
 ) -> CmdResult {
-    use tetrakit::reduce::HullGapError;
     let start = Instant::now();
     let (inp, poly) = io::read_polyhedron(input)?;
     let base = inp.index_base;
     let run = Run::new(time_limit, poly.points.len(), 2000);
     run.stage("flipping reflex edges");
-    let mut v = json!({ "vertices": poly.points.len(), "faces": poly.faces.len() });
-    let verdict = match tetrakit::reduce::hull_gap(&poly, &run.ctl) {
-        Ok(tets) => {
-            if let Some(out) = output {
-                io::write_mesh(out, &poly.points, &tets, base).written(out)?;
-            }
-            v["verdict"] = json!("yes");
-            v["tetrahedra"] = json!(tets.len());
-            v["certified"] = json!(true);
-            Verdict::Yes
-        }
-        Err(e @ HullGapError::Stuck([a, b])) => {
-            v["verdict"] = json!("no");
-            v["witness"] = json!({
-                "kind": "stuck",
-                "edge": [a + base, b + base],
-                "detail": renumber_text(&e.to_string(), base),
-            });
-            Verdict::No
-        }
-        Err(HullGapError::Stopped) => {
-            v["verdict"] = json!("undecided");
-            Verdict::Undecided
-        }
-        Err(HullGapError::Uncertified(e)) => return Err(CliError::internal(e)),
-        Err(e) => return Err(CliError::at(input, renumber_text(&e.to_string(), base))),
-    };
-    v["seconds"] = json!(start.elapsed().as_secs_f64());
-    emit(&v, as_json, |v| match verdict {
-        Verdict::Yes => format!(
-            "YES: {} tetrahedra fill the gap between the polyhedron ({} vertices) and its convex hull, by reflex-edge flips (Lemma 2.6); certified",
-            v["tetrahedra"], v["vertices"]
-        ),
-        Verdict::No => format!("NO: {}", v["witness"]["detail"].as_str().unwrap_or("")),
-        Verdict::Undecided => "UNDECIDED: the time limit stopped the flips".to_string(),
-    });
-    Ok(verdict)
+    let o =
+        tetrakit::reduce::solve_hull_gap(&poly, &run.ctl).map_err(|e| refusal(input, e, base))?;
+    drop(run);
+    if let (Some(out), Verdict::Yes) = (output, o.verdict) {
+        io::write_mesh(out, &poly.points, &o.tets, base).written(out)?;
+    }
+    let o = o.shifted(base);
+    let seconds = start.elapsed().as_secs_f64();
+    emit(&o, as_json, seconds, report::hull_gap_text(&o));
+    Ok(o.verdict)
 }
 
-/// One JSON object, or the text `line` makes of it.
-fn emit(v: &Value, as_json: bool, line: impl Fn(&Value) -> String) {
+/// An error of the library about `input` (vertices in its numbering), or a bug.
+fn refusal(input: &Path, e: impl std::fmt::Display, base: u32) -> CliError {
+    let text = renumber_text(&e.to_string(), base);
+    match text.strip_prefix("internal error: ") {
+        Some(bug) => CliError::internal(bug),
+        None => CliError::at(input, text),
+    }
+}
+
+/// The outcome as JSON (with its timing) or as its line.
+fn emit<T: tetrakit::report::Serialize>(o: &T, as_json: bool, seconds: f64, line: String) {
     if as_json {
-        out!("{v}");
+        out!("{}", report::json(o, [("seconds", seconds.into())]));
     } else {
-        out!("{}", line(v));
+        out!("{line}");
     }
 }
 
@@ -170,12 +125,12 @@ pub fn quasi_prism(
     let start = Instant::now();
     let inp = io::read_input(input)?;
     let base = inp.index_base;
-    let at = |e: &dyn std::fmt::Display| CliError::at(input, renumber_text(&e.to_string(), base));
     if inp.points.len() % 2 == 1 {
-        return Err(at(&format!(
+        let what = format!(
             "{} points: a quasi-prism has S₁'s vertices, then as many images",
             inp.points.len()
-        )));
+        );
+        return Err(CliError::at(input, what));
     }
     let n = inp.points.len() / 2;
     let q = QuasiPrism::new(
@@ -183,110 +138,18 @@ pub fn quasi_prism(
         inp.points[n..].to_vec(),
         inp.faces.clone(),
     )
-    .map_err(|e| at(&e))?;
+    .map_err(|e| refusal(input, e, base))?;
     let run = Run::new(time_limit, q.points.len(), 40);
-    run.stage("staircases");
-    let mut v = json!({
-        "points": q.points.len(),
-        "prisms": q.triangles.len(),
-        "regular": true,
-    });
-    let (verdict, tets) = match q.tetrahedralize(&run.ctl) {
-        Ok(s) => {
-            v["verdict"] = json!("yes");
-            v["route"] = json!(if s.by_order { "order" } else { "orientation" });
-            (Verdict::Yes, Some(s.tets))
-        }
-        Err(e @ (QuasiPrismError::Irregular { .. } | QuasiPrismError::NoStaircase)) => {
-            v["regular"] = json!(!matches!(e, QuasiPrismError::Irregular { .. }));
-            v["staircase"] = json!(renumber_text(&e.to_string(), base));
-            v["route"] = json!("exact");
-            run.stage("exact solver");
-            by_exact(&q, &run, base, &mut v).map_err(|e| at(&e))?
-        }
-        Err(QuasiPrismError::Stopped) => {
-            v["verdict"] = json!("undecided");
-            (Verdict::Undecided, None)
-        }
-        Err(QuasiPrismError::Uncertified(e)) => return Err(CliError::internal(e)),
-        Err(e) => return Err(at(&e)),
-    };
-    if let Some(tets) = &tets {
-        v["tetrahedra"] = json!(tets.len());
-        v["certified"] = json!(true);
-        if let Some(out) = output {
-            io::write_mesh(out, &q.points, tets, base).written(out)?;
-        }
+    run.stage("staircases, then the exact solver");
+    let o = q.solve(&run.ctl).map_err(|e| refusal(input, e, base))?;
+    drop(run);
+    if let (Some(out), Verdict::Yes) = (output, o.verdict) {
+        io::write_mesh(out, &q.points, &o.tets, base).written(out)?;
     }
-    v["seconds"] = json!(start.elapsed().as_secs_f64());
-    emit(&v, as_json, quasi_prism_line);
-    Ok(verdict)
-}
-
-type Tets = Vec<[u32; 4]>;
-
-/// The exact solver on the quasi-prism's boundary with all its edges required.
-fn by_exact(
-    q: &QuasiPrism,
-    run: &Run,
-    base: u32,
-    v: &mut Value,
-) -> Result<(Verdict, Option<Tets>), String> {
-    let poly = q.boundary().map_err(|e| e.to_string())?;
-    let required = q.edges();
-    let edges = Edges {
-        allowed: None,
-        required: &required,
-    };
-    let opts = exact::Options {
-        any: true,
-        ..exact::Options::default()
-    };
-    let (outcome, stats) = exact::solve(Domain::Polyhedron(&poly), edges, &opts, &run.ctl)
-        .map_err(|e| e.to_string())?;
-    v["candidates"] = json!(stats.candidates);
-    Ok(match outcome {
-        Outcome::Optimal { tets, .. } | Outcome::Found { tets } => {
-            q.certify(&poly, &tets).map_err(|e| e.to_string())?;
-            v["verdict"] = json!("yes");
-            (Verdict::Yes, Some(tets))
-        }
-        Outcome::Infeasible => {
-            v["verdict"] = json!("no");
-            v["witness"] = crate::poly::exact_witness(&stats, base);
-            (Verdict::No, None)
-        }
-        Outcome::Undecided { .. } => {
-            v["verdict"] = json!("undecided");
-            (Verdict::Undecided, None)
-        }
-    })
-}
-
-/// The text line of `reduce quasi-prism`.
-fn quasi_prism_line(v: &Value) -> String {
-    let prisms = &v["prisms"];
-    let why = v["staircase"].as_str().unwrap_or("");
-    match (v["verdict"].as_str(), v["route"].as_str()) {
-        (Some("yes"), Some(route @ ("order" | "orientation"))) => format!(
-            "YES: {} tetrahedra, three per prism ({prisms} prism(s)), by {}; certified",
-            v["tetrahedra"],
-            if route == "order" {
-                "one vertex order (Algorithm QUASI-PRISM-TETRAHEDRALIZATION)"
-            } else {
-                "an orientation of the sides' diagonals with no cyclic prism (SAT)"
-            }
-        ),
-        (Some("yes"), _) => format!(
-            "YES: {} tetrahedra from the exact solver ({prisms} prism(s); no staircase: {why}); certified",
-            v["tetrahedra"]
-        ),
-        (Some("no"), _) => format!(
-            "NO: no tetrahedralization keeps every edge of the quasi-prism: {} ({why})",
-            v["witness"]["detail"].as_str().unwrap_or("")
-        ),
-        _ => format!("UNDECIDED: the time limit stopped the work {why}"),
-    }
+    let o = o.shifted(base);
+    let seconds = start.elapsed().as_secs_f64();
+    emit(&o, as_json, seconds, report::quasi_prism_text(&o));
+    Ok(o.verdict)
 }
 
 /// `generate quasi-prism`.

@@ -66,7 +66,7 @@ pub fn detect(path: &Path, as_json: bool, output: Option<&Path>, opts: Options) 
         let text = tetrakit::report::detect_text(&d, label, from_tets, seconds);
         out!("{}", text.trim_end());
     }
-    Ok(Verdict::from_bool(d.is_yes()))
+    Ok(Verdict::from(d.is_yes()))
 }
 
 pub fn check(a: &crate::CheckArgs) -> CmdResult {
@@ -125,7 +125,7 @@ pub fn check(a: &crate::CheckArgs) -> CmdResult {
         let text = tetrakit::report::check_text(&outcome, seconds, other);
         out!("{}", text.trim_end());
     }
-    Ok(Verdict::from_bool(outcome.is_valid()))
+    Ok(Verdict::from(outcome.is_valid()))
 }
 
 /// `check --output`: the mesh with its problem codes on cells and points.

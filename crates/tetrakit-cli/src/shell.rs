@@ -69,7 +69,7 @@ pub fn shell(a: ShellArgs) -> CmdResult {
     let o = tetrakit::shell::shell(&shell, opts, &run.ctl)
         .map_err(|e| blame(e, &outer_in, &inner_in))?;
     drop(run);
-    if let (Some(out), tetrakit::control::Verdict::Yes) = (a.output, o.verdict) {
+    if let (Some(out), Verdict::Yes) = (a.output, o.verdict) {
         io::write_mesh(out, &shell.points, &o.tets, 0).written(out)?;
     }
     let seconds = start.elapsed().as_secs_f64();
@@ -81,10 +81,7 @@ pub fn shell(a: ShellArgs) -> CmdResult {
     } else {
         out!("{}", tetrakit::report::shell_text(&o, seconds).trim_end());
     }
-    Ok(match o.verdict {
-        tetrakit::control::Verdict::Yes => Verdict::Yes,
-        _ => Verdict::Undecided,
-    })
+    Ok(o.verdict)
 }
 
 /// Writes two nested point sets, OUTER and INNER, as `.xyz` / `.node` / `.json`.

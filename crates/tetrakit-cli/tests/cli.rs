@@ -522,7 +522,7 @@ fn schonhardt_is_a_proved_no_and_its_bp_version_is_not_a_bp_polyhedron() {
     assert_eq!(o.status.code(), Some(1));
     // None of the 15 tetrahedra on its vertices lies inside it.
     let v = json(&o);
-    assert_eq!(v["witness"]["kind"], "obstacle");
+    assert_eq!(v["witness"]["kind"], "no_candidate");
     assert_eq!(v["witness"]["detail"], "no candidate tetrahedron exists");
     let q = d.join("sbp.off");
     assert!(
@@ -1690,5 +1690,44 @@ fn tight_memory_limits_run_on_one_thread_and_never_hang() {
             "{mib} MiB: {text} {}",
             String::from_utf8_lossy(&out.stderr)
         );
+    }
+}
+
+/// `--output` writes the certified tetrahedra of an input numbered from 1 (OBJ) in the
+/// output's own numbering, whatever the command: every written mesh checks valid with
+/// the count the JSON gives.
+#[test]
+fn written_meshes_keep_the_numbering_of_their_format() {
+    let d = dir("numbering");
+    let obj = d.join("b.obj");
+    let g = run(&["generate", "bipyramid", "--m", "6", "-o", s(&obj)]);
+    assert!(g.status.success());
+    let schonhardt = d.join("s.obj");
+    assert!(
+        run(&["generate", "schonhardt", "-o", s(&schonhardt)])
+            .status
+            .success()
+    );
+    let cases: [(&[&str], &Path); 3] = [
+        (&["mintetra"], &obj),
+        (&["tetrahedralize", "--minimal"], &obj),
+        (&["reduce", "hull-gap"], &schonhardt),
+    ];
+    for (command, input) in cases {
+        for ext in ["vtu", "ele", "vtk", "json"] {
+            let out = d.join(format!("{}.{ext}", command.join("-")));
+            let mut args = command.to_vec();
+            args.extend([s(input), "--json", "--output", s(&out)]);
+            let o = run(&args);
+            assert_eq!(o.status.code(), Some(0), "{command:?}");
+            let v = json(&o);
+            let c = run(&["check", s(&out), "--json"]);
+            assert_eq!(c.status.code(), Some(0), "{command:?} .{ext}");
+            assert_eq!(
+                json(&c)["tetrahedra"],
+                v["tetrahedra"],
+                "{command:?} .{ext}"
+            );
+        }
     }
 }

@@ -3,9 +3,9 @@
 use crate::convert::{self, Json, array, value_error};
 use numpy::{PyArray2, PyReadonlyArray2};
 use pyo3::prelude::*;
-use serde_json::json;
 use tetrakit::constrain::{self, Answer, Options, Question};
 use tetrakit::detect::Cells;
+use tetrakit::report;
 
 /// `decide(question, points, segments, minimal, time_limit)`: `question` is
 /// `"contains"` (TETRAD, TRID for coplanar points) or `"constrained"` (CT, every segment
@@ -44,37 +44,14 @@ pub fn decide<'py>(
         solve(&input.points, &input.segments, &opts, &ctl)
     })?
     .map_err(value_error)?;
-    let mut v = json!({
-        "verdict": match d.answer {
-            Answer::Yes(_) => "yes",
-            Answer::No(_) => "no",
-            Answer::Undecided => "undecided",
-        },
-        "vertices": input.points.len(),
-        "segments": input.segments.len(),
-        "planar": d.planar,
-        "route": d.route,
-        "candidates": d.stats.candidates,
-        "sat_calls": d.stats.calls,
-    });
     let cells = match &d.answer {
-        Answer::Yes(Cells::Tetrahedra(t)) => {
-            v["tetrahedra"] = json!(t.len());
-            array(py, t)
-        }
-        Answer::Yes(Cells::Triangles(t)) => {
-            v["triangles"] = json!(t.len());
-            array(py, t)
-        }
-        Answer::No(w) => {
-            v["witness"] = json!(w);
-            array::<4>(py, &[])
-        }
-        Answer::Undecided => array::<4>(py, &[]),
+        Answer::Yes(Cells::Tetrahedra(t)) => array(py, t),
+        Answer::Yes(Cells::Triangles(t)) => array(py, t),
+        _ => array::<4>(py, &[]),
     };
-    if matches!(d.answer, Answer::Yes(_)) {
-        v["minimum"] = json!(d.minimum);
-        v["certified"] = json!(true);
-    }
-    Ok((v.to_string(), cells))
+    let size = [input.points.len(), input.segments.len()];
+    Ok((
+        report::constrain_json(&d, size, 0, false, []).to_string(),
+        cells,
+    ))
 }

@@ -116,13 +116,21 @@ pub fn point_array<'py, const D: usize>(
 /// A control with the optional time limit in seconds (a `ValueError` when negative or
 /// not finite).
 pub fn control(time_limit: Option<f64>) -> PyResult<Control> {
-    match time_limit {
-        None => Ok(Control::new()),
-        Some(s) if s.is_finite() && s >= 0.0 => {
-            Ok(Control::new().with_time_limit(Duration::from_secs_f64(s)))
-        }
+    let ctl = Control::new();
+    Ok(match seconds(time_limit, "time_limit")? {
+        Some(limit) => ctl.with_time_limit(limit),
+        None => ctl,
+    })
+}
+
+/// The optional seconds of the argument `name` (a `ValueError` when negative or not
+/// finite).
+pub fn seconds(s: Option<f64>, name: &str) -> PyResult<Option<Duration>> {
+    match s {
+        None => Ok(None),
+        Some(s) if s.is_finite() && s >= 0.0 => Ok(Some(Duration::from_secs_f64(s))),
         Some(s) => Err(value_error(format!(
-            "time_limit = {s}: expected a finite number of seconds, at least 0"
+            "{name} = {s}: expected a finite number of seconds, at least 0"
         ))),
     }
 }

@@ -4,11 +4,11 @@ use crate::convert::{self, Json, Rows, array, point_array, value_error};
 use numpy::{PyArray2, PyReadonlyArray2};
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
-use serde_json::json;
 use tetrakit::control::Control;
-use tetrakit::exact::{self, Domain, Options, Outcome};
+use tetrakit::exact::{self, Domain, TetraOptions};
 use tetrakit::mesh::Polyhedron;
-use tetrakit::polyhedra;
+use tetrakit::polyhedra::{self, MintetraOptions};
+use tetrakit::report;
 use tetrakit::shell::{Method, Shell, ShellOptions};
 
 type Cells<'py> = (Json, Bound<'py, PyArray2<i64>>);
@@ -32,47 +32,29 @@ fn internal(what: impl std::fmt::Display) -> PyErr {
     PyRuntimeError::new_err(format!("{what} (a bug: please report it)"))
 }
 
-/// `mintetra(points, faces)`: MINTETRA's answer as JSON and its certified tetrahedra.
+/// `mintetra(points, faces, confirm)`: MINTETRA's outcome as JSON and its certified
+/// tetrahedra; `confirm` gives the exact solver that many seconds to confirm minimality.
 #[pyfunction]
+#[pyo3(signature = (points, faces, confirm=None))]
 pub fn mintetra<'py>(
     py: Python<'py>,
     points: PyReadonlyArray2<'py, f64>,
     faces: PyReadonlyArray2<'py, i64>,
+    confirm: Option<f64>,
 ) -> PyResult<Cells<'py>> {
     let poly = polyhedron(&points, &faces)?;
+    let opts = MintetraOptions {
+        confirm: convert::seconds(confirm, "confirm")?,
+    };
     let ctl = Control::new();
-    let (m, _) = convert::run(py, &ctl, || polyhedra::mintetra_certified(&poly))?
+    let mut o = convert::run(py, &ctl, || polyhedra::solve_mintetra(&poly, opts, &ctl))?
         .map_err(|e| internal(format!("MINTETRA's tetrahedra fail the certificate: {e}")))?;
-    let n = poly.points.len();
-    let mut v = json!({
-        "verdict": if m.yes { "yes" } else { "no" },
-        "vertices": n,
-        "faces": poly.faces.len(),
-        "lower_bound": n.saturating_sub(3),
-        "levels": m.levels,
-        "trims_per_level": m.trims_per_level,
-        "polar_edges": m.polar_edges,
-    });
-    if m.yes {
-        let status = polyhedra::minimality(&poly, &m);
-        v["certified"] = json!(true);
-        v["tetrahedra"] = json!(m.tets.len());
-        v["minimality"] = json!(status);
-        v["conjectured_minimal"] = json!(status == "conjectured");
-    } else {
-        v["reason"] = json!(m.reason);
-        v["remaining_faces"] = json!(m.remaining);
-        v["witness"] = json!({
-            "kind": "not_augmented_bp_polyhedron",
-            "detail": m.reason,
-            "remaining_faces": m.remaining,
-        });
-    }
-    Ok((v.to_string(), array(py, &m.tets)))
+    let tets = std::mem::take(&mut o.tets);
+    Ok((report::json(&o, []).to_string(), array(py, &tets)))
 }
 
 /// `tetrahedralize(points, faces, minimal, unique, time_limit)`: the exact solver's
-/// answer (`yes`, `no` with a witness, or `undecided` with bounds) and its certified
+/// outcome (`yes`, `no` with a witness, or `undecided` with bounds) and its certified
 /// tetrahedra (the best found when undecided).
 #[pyfunction]
 #[pyo3(signature = (points, faces=None, minimal=false, unique=false, time_limit=None))]
@@ -86,66 +68,22 @@ pub fn tetrahedralize<'py>(
 ) -> PyResult<Cells<'py>> {
     let ctl = convert::control(time_limit)?;
     let (poly, pts);
-    let (domain, n) = match &faces {
+    let domain = match &faces {
         Some(f) => {
             poly = polyhedron(&points, f)?;
-            (Domain::Polyhedron(&poly), poly.points.len())
+            Domain::Polyhedron(&poly)
         }
         None => {
             let (p, dim) = convert::points(&points, "points")?;
             pts = convert::input(p, dim, &Rows::default(), false)?.points;
-            (Domain::Points(&pts), pts.len())
+            Domain::Points(&pts)
         }
     };
-    let opts = Options {
-        unique,
-        any: !minimal,
-    };
-    let (outcome, stats) = convert::run(py, &ctl, || {
-        exact::minimal_tetrahedralization(domain, &opts, &ctl)
-    })?
-    .map_err(value_error)?;
-    let mut v = json!({
-        "vertices": n,
-        "domain": if faces.is_some() { "polyhedron" } else { "convex hull" },
-        "candidates": stats.candidates,
-        "sat_calls": stats.calls,
-    });
-    let tets = match outcome {
-        Outcome::Optimal { tets, unique, .. } => {
-            v["verdict"] = json!("yes");
-            v["minimum"] = json!(tets.len());
-            v["unique"] = json!(unique);
-            Some(tets)
-        }
-        Outcome::Found { tets } => {
-            v["verdict"] = json!("yes");
-            Some(tets)
-        }
-        Outcome::Infeasible => {
-            v["verdict"] = json!("no");
-            v["witness"] = match &stats.obstacle {
-                Some(o) => json!({"kind": "obstacle", "detail": o.to_string()}),
-                None => json!({"kind": "unsatisfiable"}),
-            };
-            None
-        }
-        Outcome::Undecided { best, lower } => {
-            v["verdict"] = json!("undecided");
-            v["lower_bound"] = json!(lower);
-            v["upper_bound"] = json!(best.as_ref().map(Vec::len));
-            best
-        }
-    };
-    let tets = tets.unwrap_or_default();
-    if !tets.is_empty() {
-        domain
-            .certify(&tets)
-            .map_err(|e| internal(format!("the solver's tetrahedra fail the certificate: {e}")))?;
-        v["tetrahedra"] = json!(tets.len());
-        v["certified"] = json!(true);
-    }
-    Ok((v.to_string(), array(py, &tets)))
+    let opts = TetraOptions { minimal, unique };
+    let mut o = convert::run(py, &ctl, || exact::tetrahedralize(domain, opts, &ctl))?
+        .map_err(value_error)?;
+    let tets = std::mem::take(&mut o.tets);
+    Ok((report::json(&o, []).to_string(), array(py, &tets)))
 }
 
 type ShellOut<'py> = (Json, Bound<'py, PyArray2<f64>>, Bound<'py, PyArray2<i64>>);
@@ -188,7 +126,7 @@ pub fn shell<'py>(
     let outcome =
         convert::run(py, &ctl, || tetrakit::shell::shell(&shell, opts, &ctl))?.map_err(internal)?;
     Ok((
-        tetrakit::report::json(&outcome, []).to_string(),
+        report::json(&outcome, []).to_string(),
         point_array(py, &shell.points),
         array(py, &outcome.tets),
     ))

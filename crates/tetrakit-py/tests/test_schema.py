@@ -26,10 +26,16 @@ def cli_json(*args):
     return json.loads(out.stdout)
 
 
-def fields(result):
-    """A Python result's JSON fields (its arrays left out)."""
+def fields(result, s):
+    """A Python result's JSON fields: its arrays left out, and the optional fields the
+    answer does not have (None in Python, absent in JSON; kept where the schema `s`
+    takes null)."""
+    def null_ok(name):
+        sub = {**s["properties"].get(name, {}), "$defs": s.get("$defs", {})}
+        return jsonschema.Draft202012Validator(sub).is_valid(None)
     return {f.name: getattr(result, f.name) for f in dataclasses.fields(result)
-            if not isinstance(getattr(result, f.name), np.ndarray)}
+            if not isinstance(getattr(result, f.name), np.ndarray)
+            and not (getattr(result, f.name) is None and f.default is None and not null_ok(f.name))}
 
 
 CUBE = np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)], dtype=float)
@@ -49,14 +55,14 @@ def test_check_json_follows_the_schema(tmp_path, case):
     pts, tets, opts = CASES[case]
     s = schema("check")
     result = tetrakit.check(pts, tets, **opts)
-    jsonschema.validate(fields(result), s)
+    jsonschema.validate(fields(result, s), s)
     path = tmp_path / "m.json"
     path.write_text(json.dumps({"points": pts.tolist(), "tets": np.asarray(tets).tolist()}))
     flags = [f"--{k}" for k, v in opts.items() if v]
     out = cli_json("check", path, *flags)
     jsonschema.validate(out, s)
     assert {k: v for k, v in out.items() if k in s["required"]} == {
-        k: v for k, v in fields(result).items() if k in s["required"]}
+        k: v for k, v in fields(result, s).items() if k in s["required"]}
 
 
 TET_EDGES = np.array([[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]])
@@ -74,13 +80,13 @@ def test_detect_json_follows_the_schema(tmp_path, case):
     pts, segs = DETECT[case]
     s = schema("detect")
     result = tetrakit.detect(pts, segs)
-    jsonschema.validate(fields(result), s)
+    jsonschema.validate(fields(result, s), s)
     path = tmp_path / "s.json"
     path.write_text(json.dumps({"points": pts.tolist(), "segments": segs.tolist()}))
     out = cli_json("detect", path)
     jsonschema.validate(out, s)
     shared = set(out) - {"seconds", "parse_seconds"}
-    assert {k: out[k] for k in shared} == {k: fields(result)[k] for k in shared}
+    assert {k: out[k] for k in shared} == {k: fields(result, s)[k] for k in shared}
 
 
 def sphere(n, r, seed):
@@ -94,7 +100,7 @@ def test_shell_json_follows_the_schema(tmp_path, flips, method, limit):
     outer, inner = sphere(40, 2.0, 1), sphere(15, 1.0, 2)
     s = schema("shell")
     result = tetrakit.shell(outer, inner, method=method, flips=flips, time_limit=limit)
-    jsonschema.validate(fields(result), s)
+    jsonschema.validate(fields(result, s), s)
     assert result.verdict == ("undecided" if limit == 0.0 else "yes")
     (tmp_path / "o.xyz").write_text("\n".join(" ".join(repr(float(x)) for x in p) for p in outer))
     (tmp_path / "i.xyz").write_text("\n".join(" ".join(repr(float(x)) for x in p) for p in inner))
@@ -106,4 +112,105 @@ def test_shell_json_follows_the_schema(tmp_path, flips, method, limit):
     cli = json.loads(out.stdout)
     jsonschema.validate(cli, s)
     shared = set(cli) - {"seconds"}
-    assert {k: cli[k] for k in shared} == {k: fields(result)[k] for k in shared if k in cli}
+    assert {k: cli[k] for k in shared} == {k: fields(result, s)[k] for k in shared if k in cli}
+
+
+def bipyramid(m):
+    """A bipyramid over a regular m-gon: an augmented BP-polyhedron (one level)."""
+    ring = [[np.cos(2 * np.pi * k / m), np.sin(2 * np.pi * k / m), 0.0] for k in range(m)]
+    pts = np.array(ring + [[0, 0, 1], [0, 0, -1]], dtype=float)
+    faces = [[k, (k + 1) % m, m] for k in range(m)] + [[(k + 1) % m, k, m + 1] for k in range(m)]
+    return pts, np.array(faces)
+
+
+def schonhardt():
+    """Schönhardt's twisted prism (no tetrahedralization without Steiner points)."""
+    t = [2 * np.pi * k / 3 for k in range(3)]
+    low = [[np.cos(a), np.sin(a), 0.0] for a in t]
+    high = [[np.cos(a + 0.5), np.sin(a + 0.5), 1.0] for a in t]
+    faces = [[0, 2, 1], [3, 4, 5]]
+    for k in range(3):
+        a, b = k, (k + 1) % 3
+        faces += [[a, b, b + 3], [a, b + 3, a + 3]]
+    return np.array(low + high), np.array(faces)
+
+
+def cli_on(tmp_path, command, doc, *flags, code=(0, 1)):
+    path = tmp_path / "in.json"
+    path.write_text(json.dumps({k: np.asarray(v).tolist() for k, v in doc.items()}))
+    out = subprocess.run([str(EXE), command, str(path), *flags, "--json"],
+                         capture_output=True, text=True)
+    assert out.returncode in code, out.stderr
+    return json.loads(out.stdout)
+
+
+def same_fields(cli, result, s, skip):
+    py = fields(result, s)
+    shared = set(cli) & set(py) - set(skip)
+    assert {k: cli[k] for k in shared} == {k: py[k] for k in shared}
+
+
+MINTETRA = {"bipyramid": (bipyramid(7), {}), "confirmed": (bipyramid(5), {"confirm": 30.0}),
+            "schonhardt": (schonhardt(), {})}
+
+
+@pytest.mark.parametrize("case", sorted(MINTETRA))
+def test_mintetra_json_follows_the_schema(tmp_path, case):
+    (pts, faces), opts = MINTETRA[case]
+    s = schema("mintetra")
+    result = tetrakit.mintetra(pts, faces, **opts)
+    jsonschema.validate(fields(result, s), s)
+    assert result.verdict == ("no" if case == "schonhardt" else "yes")
+    if opts:
+        assert result.minimality == "confirmed"
+    flags = ["--confirm"] if opts else []
+    cli = cli_on(tmp_path, "mintetra", {"points": pts, "faces": faces}, *flags)
+    jsonschema.validate(cli, s)
+    same_fields(cli, result, s, {"mintetra_seconds", "verify_seconds", "tets"})
+
+
+TETRA = {"minimum": (CUBE, None, {"minimal": True, "unique": True}),
+         "any": (CUBE, None, {}),
+         "polyhedron": (*bipyramid(6), {"minimal": True}),
+         "schonhardt": (*schonhardt(), {}),
+         "stopped": (CUBE, None, {"minimal": True, "time_limit": 0.0})}
+
+
+@pytest.mark.parametrize("case", sorted(TETRA))
+def test_tetrahedralize_json_follows_the_schema(tmp_path, case):
+    pts, faces, opts = TETRA[case]
+    s = schema("tetrahedralize")
+    result = tetrakit.tetrahedralize(pts, faces, **opts)
+    jsonschema.validate(fields(result, s), s)
+    want = {"schonhardt": "no", "stopped": "undecided"}.get(case, "yes")
+    assert result.verdict == want
+    if want == "no":
+        assert result.witness["kind"] == "no_candidate" and result.witness["vertices"] == []
+    doc = {"points": pts} if faces is None else {"points": pts, "faces": faces}
+    flags = [f"--{k}" for k, v in opts.items() if v is True]
+    flags += [] if "time_limit" not in opts else ["--time-limit", "0"]
+    cli = cli_on(tmp_path, "tetrahedralize", doc, *flags, code=(0, 1, 3))
+    jsonschema.validate(cli, s)
+    same_fields(cli, result, s, {"tets", "alternative", "seconds"})
+
+
+SQUARE_SEGS = np.array([[0, 1], [1, 2], [2, 3], [3, 0], [0, 2]])
+CONSTRAIN = {
+    "contains": ("contains", CUBE[[0, 1, 2, 4]], TET_EDGES, "yes"),
+    "contains-planar": ("contains", SQUARE, SQUARE_SEGS, "yes"),
+    "contains-missing": ("contains", SQUARE, SQUARE_SEGS[:4], "no"),
+    "constrained": ("constrained", CUBE, np.array([[0, 7]]), "yes"),
+    "constrained-crossing": ("constrained", SQUARE, np.array([[0, 2], [1, 3]]), "no"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(CONSTRAIN))
+def test_constrain_json_follows_the_schema(tmp_path, case):
+    command, pts, segs, want = CONSTRAIN[case]
+    s = schema("constrain")
+    result = getattr(tetrakit, command)(pts, segs)
+    jsonschema.validate(fields(result, s), s)
+    assert result.verdict == want
+    cli = cli_on(tmp_path, command, {"points": pts, "segments": segs})
+    jsonschema.validate(cli, s)
+    same_fields(cli, result, s, {"seconds"})

@@ -79,6 +79,13 @@ pub enum Verdict {
     Undecided,
 }
 
+impl From<bool> for Verdict {
+    /// `Yes` for `true`, `No` for `false`.
+    fn from(yes: bool) -> Self {
+        if yes { Verdict::Yes } else { Verdict::No }
+    }
+}
+
 /// The progress callback's type.
 type Callback = dyn Fn(Progress) + Send + Sync;
 

@@ -40,12 +40,15 @@ fn allowed(top: &str) -> Vec<&'static str> {
     // `io` writes planar results; the shell hands pieces no cone tiles to the exact
     // solver and improves its meshes by flips; `constrain` asks `detect` first and the
     // exact solver after, and builds its niche instances on `polyhedra`'s twisted prism;
-    // `reduce` triangulates its generated quasi-prisms with `planar`'s Delaunay.
+    // `reduce` triangulates its generated quasi-prisms with `planar`'s Delaunay and hands a
+    // quasi-prism without staircases to the exact solver; `mintetra`
+    // confirms its minimality with the exact solver.
     let extra: &[&str] = match top {
         "io" => &["planar"],
         "constrain" => &["detect", "exact", "polyhedra"],
         "shell" => &["exact", "flip"],
-        "reduce" => &["planar"],
+        "reduce" => &["planar", "exact"],
+        "polyhedra" => &["exact"],
         _ => &[],
     };
     [BASE, below, extra].concat()

@@ -29,3 +29,21 @@ fn the_detect_schema_names_every_witness_kind() {
     let ours: Vec<String> = WitnessKind::ALL.iter().map(|k| k.to_string()).collect();
     assert_eq!(kinds("detect", "witness"), ours);
 }
+
+#[test]
+fn the_tetrahedralize_schema_names_every_witness_kind() {
+    let ours: Vec<String> = tetrakit::exact::WitnessKind::ALL
+        .iter()
+        .map(|k| k.to_string())
+        .collect();
+    assert_eq!(kinds("tetrahedralize", "witness"), ours);
+}
+
+#[test]
+fn the_constrain_schema_names_every_witness_kind() {
+    let ours: Vec<String> = tetrakit::constrain::WitnessKind::ALL
+        .iter()
+        .map(|k| k.to_string())
+        .collect();
+    assert_eq!(kinds("constrain", "witness"), ours);
+}

@@ -285,22 +285,29 @@ class MintetraResult:
     levels: int
     trims_per_level: list
     polar_edges: list
+    mintetra_seconds: float
     tets: np.ndarray = field(repr=False)
+    verify_seconds: Optional[float] = None
     certified: Optional[bool] = None
     tetrahedra: Optional[int] = None
     minimality: Optional[str] = None
     conjectured_minimal: Optional[bool] = None
+    unique: Optional[bool] = None
+    confirm: Optional[str] = None
     reason: Optional[str] = None
     remaining_faces: Optional[list] = None
+    remaining_vertices: Optional[int] = None
     witness: Optional[dict] = None
 
 
-def mintetra(points, faces) -> MintetraResult:
+def mintetra(points, faces, confirm: Optional[float] = None) -> MintetraResult:
     """The minimal tetrahedralization of an augmented (multi-level) BP-polyhedron.
 
     ``faces`` are triangles (m, 3) of a simple polyhedron. YES gives certified ``tets``
     with the polar edges and levels (minimality ``proven`` by Theorem 3.5 or
-    ``conjectured``); NO gives the faces that are left (thesis ch. 3).
+    ``conjectured``); NO gives the faces that are left (thesis ch. 3). With ``confirm``
+    seconds, the exact solver checks minimality (``confirmed`` or ``refuted``, and
+    ``unique``).
 
     >>> import numpy as np, tetrakit
     >>> pts = np.array([[1, 0, 0], [-0.5, 0.9, 0], [-0.5, -0.9, 0], [0, 0, 1], [0, 0, -1]])
@@ -309,7 +316,7 @@ def mintetra(points, faces) -> MintetraResult:
     >>> r.verdict, r.tetrahedra, r.minimality
     ('yes', 2, 'proven')
     """
-    text, tets = _core.mintetra(_points(points), _cells(faces, 3, "faces"))
+    text, tets = _core.mintetra(_points(points), _cells(faces, 3, "faces"), confirm)
     return _make(MintetraResult, text, tets=tets)
 
 
@@ -322,9 +329,11 @@ class TetrahedralizeResult:
     domain: str
     candidates: int
     sat_calls: int
+    short_pairs_budget: Optional[int]
     tets: np.ndarray = field(repr=False)
     minimum: Optional[int] = None
     unique: Optional[bool] = None
+    alternative: Optional[list] = None
     lower_bound: Optional[int] = None
     upper_bound: Optional[int] = None
     witness: Optional[dict] = None

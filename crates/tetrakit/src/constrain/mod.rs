@@ -16,8 +16,9 @@
 //!   of the cone are exactly the apex joined to the triangulations of the points, so the
 //!   same solver decides the planar problem, and the answer is given as triangles.
 //!
-//! Every YES is certified by [`crate::mesh::certify_hull`] on the points (or the cone);
-//! every NO carries a [`Witness`]: a short one when the checks find it, otherwise the
+//! Every YES is certified by [`crate::exact::solve`] (on the points, or the cone: the hull, its
+//! edges allowed, every required one an edge); every NO carries a [`Witness`]: a short one
+//! when the checks find it, otherwise the
 //! formula's unsatisfiability, which [`crate::exact::prove_infeasible`] turns into a DRAT
 //! proof.
 
@@ -90,8 +91,6 @@ pub enum ConstrainError {
     Duplicate([u32; 2]),
     /// The solver cannot take the input (too large, collinear points).
     Exact(ExactError),
-    /// The solver's tetrahedra failed the certificate (a bug; please report the input).
-    Uncertified(String),
 }
 
 impl std::fmt::Display for ConstrainError {
@@ -102,12 +101,6 @@ impl std::fmt::Display for ConstrainError {
                 write!(f, "points #{a} and #{b} coincide")
             }
             ConstrainError::Exact(e) => e.fmt(f),
-            ConstrainError::Uncertified(e) => {
-                write!(
-                    f,
-                    "internal error: the solver's tetrahedra fail the certificate: {e}"
-                )
-            }
         }
     }
 }
@@ -333,10 +326,8 @@ impl Problem {
             unique: false,
             any: !options.minimal,
         };
+        // `exact::solve` certifies its tetrahedralizations, the edge rules included.
         let (outcome, stats) = exact::solve(Domain::Points(&self.points), edges, &opts, ctl)?;
-        if let Outcome::Optimal { tets, .. } | Outcome::Found { tets } = &outcome {
-            self.certify(tets, edges)?;
-        }
         let (answer, minimum) = match outcome {
             Outcome::Optimal { tets, .. } => (Answer::Yes(self.cells(tets)), true),
             Outcome::Found { tets } => (Answer::Yes(self.cells(tets)), false),
@@ -368,29 +359,6 @@ impl Problem {
             minimum,
             planar: self.planar,
         })
-    }
-
-    /// The independent check of a YES: a tetrahedralization of the hull of the points
-    /// (the cone) with every point a vertex, only allowed edges, every required one.
-    fn certify(&self, tets: &[[u32; 4]], edges: Edges) -> Result<(), ConstrainError> {
-        let fail = |e: String| Err(ConstrainError::Uncertified(e));
-        if let Err(e) = crate::mesh::certify_hull(&self.points, tets) {
-            return fail(e.to_string());
-        }
-        let used: std::collections::HashSet<(u32, u32)> =
-            crate::mesh::edges_of(tets).into_iter().collect();
-        let key = |[a, b]: [u32; 2]| (a.min(b), a.max(b));
-        if let Some(allowed) = edges.allowed {
-            let allowed: std::collections::HashSet<(u32, u32)> =
-                allowed.iter().map(|&s| key(s)).collect();
-            if let Some(e) = used.iter().find(|e| !allowed.contains(e)) {
-                return fail(format!("edge {e:?} is not a segment"));
-            }
-        }
-        match edges.required.iter().find(|&&s| !used.contains(&key(s))) {
-            Some(s) => fail(format!("constraint {s:?} is not an edge")),
-            None => Ok(()),
-        }
     }
 
     /// The solver's tetrahedra as the answer's cells: for planar input, the triangles

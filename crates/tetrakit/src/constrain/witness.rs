@@ -33,6 +33,20 @@ pub enum WitnessKind {
     Unsatisfiable,
 }
 
+impl WitnessKind {
+    /// Every kind, in declaration order (the order of the JSON contract's list).
+    pub const ALL: [WitnessKind; 8] = [
+        WitnessKind::CrossingConstraints,
+        WitnessKind::ConstraintThroughVertex,
+        WitnessKind::MissingHullEdge,
+        WitnessKind::UncoveredVertex,
+        WitnessKind::UnusableConstraint,
+        WitnessKind::NoCandidate,
+        WitnessKind::EmptyNicheView,
+        WitnessKind::Unsatisfiable,
+    ];
+}
+
 impl std::fmt::Display for WitnessKind {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         let v = serde_json::to_value(self).ok();

@@ -62,13 +62,15 @@
 //! a totalizer over the edge variables — far fewer than the tetrahedra — and searches
 //! downward from each solution found until the bound is unsatisfiable.
 
+mod certify;
 mod encode;
-mod separate;
-
+mod outcome;
 mod proof;
+mod separate;
 
 pub use encode::{Domain, Edges, MAX_CANDIDATES};
 
+pub use outcome::{TetraOptions, TetraOutcome, Witness, WitnessKind, tetrahedralize};
 pub use proof::{Proof, prove_infeasible};
 
 use crate::control::Control;
@@ -213,6 +215,9 @@ pub enum ExactError {
     NoAnchor,
     /// Writing a formula or proof failed.
     Io(String),
+    /// The solver's tetrahedra failed the independent certificate (a bug: please report
+    /// the input).
+    Uncertified(String),
 }
 
 impl std::fmt::Display for ExactError {
@@ -231,6 +236,10 @@ impl std::fmt::Display for ExactError {
                 write!(f, "could not place an anchor point in general position")
             }
             ExactError::Io(e) => write!(f, "writing the formula or proof: {e}"),
+            ExactError::Uncertified(e) => write!(
+                f,
+                "internal error: the solver's tetrahedra fail the certificate: {e}"
+            ),
         }
     }
 }
@@ -316,6 +325,20 @@ pub fn minimal_tetrahedralization(
 /// assert!(tets.iter().all(|t| t.contains(&1) && t.contains(&3)));
 /// ```
 pub fn solve(
+    domain: Domain,
+    edges: Edges,
+    options: &Options,
+    ctl: &Control,
+) -> Result<(Outcome, Stats), ExactError> {
+    let (outcome, stats) = solve_uncertified(domain, edges, options, ctl)?;
+    for tets in outcome.tetrahedralizations() {
+        certify::certify(domain, edges, tets).map_err(ExactError::Uncertified)?;
+    }
+    Ok((outcome, stats))
+}
+
+/// [`solve`] without the certificate.
+fn solve_uncertified(
     domain: Domain,
     edges: Edges,
     options: &Options,

@@ -28,7 +28,7 @@
 //!   level: 1 for a BP-polyhedron (Theorem 3.5), 2 for a two-level one (Theorem 3.6), h
 //!   for the conjecture's h-level ones (§3.5).
 
-use super::{Polyhedron, SurfaceGraph};
+use super::{Minimality, Polyhedron, SurfaceGraph};
 use crate::geom::{Point3, orient3d, tetrahedra_overlap};
 use crate::mesh::grid::TriangleGrid;
 use crate::mesh::rotated_face;
@@ -66,14 +66,14 @@ pub enum Checks {
     OrientationOnly,
 }
 
-/// What MINTETRA's answer proves about minimality: `"proven"` when Theorem 3.5 /
-/// Corollary 3.6 apply (at most one level and disjoint proper BP-nets), else
-/// `"conjectured"` (§3.5; the exact solver can confirm it).
-pub fn minimality(p: &Polyhedron, m: &Mintetra) -> &'static str {
+/// What MINTETRA's answer proves about minimality: [`Minimality::Proven`] when Theorem
+/// 3.5 / Corollary 3.6 apply (at most one level and disjoint proper BP-nets), else
+/// [`Minimality::Conjectured`] (§3.5; the exact solver can confirm it).
+pub fn minimality(p: &Polyhedron, m: &Mintetra) -> Minimality {
     if m.levels <= 1 && super::proper_nets_disjoint(p) {
-        "proven"
+        Minimality::Proven
     } else {
-        "conjectured"
+        Minimality::Conjectured
     }
 }
 

@@ -40,10 +40,15 @@
 //! points ([`Reduction::project`]).
 
 mod hull_gap;
+mod outcome;
 mod quasi_prism;
 mod sphere;
 
 pub use hull_gap::{HullGapError, hull_gap};
+pub use outcome::{
+    HullGapOutcome, QuasiPrismOutcome, QuasiPrismRoute, ReductionFacts, StuckWitness,
+    solve_hull_gap,
+};
 pub use quasi_prism::{QuasiPrism, QuasiPrismError, Staircase};
 pub use sphere::{SphereReduction, sphere_reduction};
 

@@ -84,6 +84,8 @@ pub enum QuasiPrismError {
     /// The tetrahedra failed the certificate (a bug, or a regular quasi-prism on which
     /// Lemma 2.7 fails).
     Uncertified(String),
+    /// The exact solver could not take the boundary (too large).
+    Exact(crate::exact::ExactError),
 }
 
 impl std::fmt::Display for QuasiPrismError {
@@ -111,6 +113,7 @@ impl std::fmt::Display for QuasiPrismError {
             ),
             QuasiPrismError::Stopped => write!(f, "stopped before a staircase was found"),
             QuasiPrismError::Uncertified(e) => write!(f, "internal error: {e}"),
+            QuasiPrismError::Exact(e) => write!(f, "no staircase, and the exact solver: {e}"),
         }
     }
 }

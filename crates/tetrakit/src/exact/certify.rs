@@ -1,0 +1,46 @@
+//! The independent check of every tetrahedralization the solver returns: the domain's
+//! certificate ([`Domain::certify`]), then the rules on edges (only allowed segments,
+//! every required one).
+
+use super::{Domain, Edges, Outcome};
+use std::collections::HashSet;
+
+impl Outcome {
+    /// The tetrahedralizations this answer holds: the minimum or the one found, the
+    /// alternative minimum, the best one found before a stop.
+    pub fn tetrahedralizations(&self) -> Vec<&[[u32; 4]]> {
+        match self {
+            Outcome::Optimal {
+                tets, alternative, ..
+            } => std::iter::once(tets.as_slice())
+                .chain(alternative.as_deref())
+                .collect(),
+            Outcome::Found { tets } => vec![tets],
+            Outcome::Undecided { best, .. } => best.as_deref().into_iter().collect(),
+            Outcome::Infeasible => Vec::new(),
+        }
+    }
+}
+
+/// The first reason `tets` is not a tetrahedralization of `domain` obeying `edges`.
+pub(super) fn certify(domain: Domain, edges: Edges, tets: &[[u32; 4]]) -> Result<(), String> {
+    domain.certify(tets).map_err(|p| p.to_string())?;
+    if edges.allowed.is_none() && edges.required.is_empty() {
+        return Ok(());
+    }
+    let key = |[a, b]: [u32; 2]| [a.min(b), a.max(b)];
+    let used: HashSet<[u32; 2]> = crate::mesh::edges_of(tets)
+        .into_iter()
+        .map(|(a, b)| [a, b])
+        .collect();
+    if let Some(allowed) = edges.allowed {
+        let allowed: HashSet<[u32; 2]> = allowed.iter().map(|&s| key(s)).collect();
+        if let Some([a, b]) = used.iter().find(|e| !allowed.contains(*e)) {
+            return Err(format!("edge (#{a}, #{b}) is not an allowed segment"));
+        }
+    }
+    match edges.required.iter().find(|&&s| !used.contains(&key(s))) {
+        Some([a, b]) => Err(format!("required segment (#{a}, #{b}) is not an edge")),
+        None => Ok(()),
+    }
+}
