@@ -21,10 +21,10 @@ for dist in uniform gaussian clustered; do
     f=$D/$dist$n.xyz
     $T generate points2d --dist "$dist" --n "$n" --seed 1 -o "$f" >/dev/null
     sp=$(RUNS=$RUNS target/release/examples/spade_bulk "$f")
-    sk=$(for _ in $(seq "$RUNS"); do $T skeleton "$f" --beta 1.16 --json | field "['seconds_algorithm']"; done | median)
+    sk=$(for _ in $(seq "$RUNS"); do $T skeleton "$f" --beta 1.16 --json | field "['algorithm_seconds']"; done | median)
     if [ "$n" -le "$MWT_MAX" ]; then
       js=$($T mwt "$f" --json)
-      mw=$(echo "$js" | field "['seconds_algorithm']")
+      mw=$(echo "$js" | field "['algorithm_seconds']")
       fixed=$(echo "$js" | python3 -c "import json,sys; v=json.load(sys.stdin); print(round(100*v['skeleton_edges']/v['edges'],1))")
       faces=$(echo "$js" | field "['faces_left']")
       holes=$(echo "$js" | field "['faces_with_holes']")

@@ -76,8 +76,8 @@ def main():
             print(f"{name:28} {len(pts):>7} {sp:>8.4f} failed: {r.stderr.strip()}")
             continue
         v = json.loads(r.stdout)
-        st = v["seconds_stages"]
-        mw = v["seconds_algorithm"]
+        st = v["stage_seconds"]
+        mw = v["algorithm_seconds"]
         print(f"{name:28} {len(pts):>7} {sp:>8.4f} {mw:>8.3f} {mw / sp:>6.1f} {st['diamond']:>8.3f} {st['lmt']:>6.3f} {st['exact']:>6.3f} "
               f"{100 * v['skeleton_edges'] / v['edges']:>6.1f} {v['faces_left']:>6} {v['largest_face']:>7}")
 

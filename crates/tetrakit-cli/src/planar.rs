@@ -2,13 +2,11 @@
 
 use crate::exit::{CliError, CmdResult, Verdict, WriteContext};
 use crate::progress::Run;
-use serde_json::json;
 use std::path::Path;
 use std::time::{Duration, Instant};
-use tetrakit::control::Control;
 use tetrakit::geom::{Point2, Ratio};
-use tetrakit::io;
-use tetrakit::planar::{self, Distribution, MwtBounds, MwtOutcome, Region};
+use tetrakit::planar::{self, Distribution, MwtOutcome, Region};
+use tetrakit::{io, report};
 
 /// Reads planar points and their heights. Without `xy` every z must be 0; with it the
 /// points are projected to the xy-plane and their z kept.
@@ -73,30 +71,16 @@ pub fn skeleton(
     if let Some(out) = output {
         io::write_planar_edges(out, &points, &sk.edges).written(out)?;
     }
-    let region_name = if lune { "lune" } else { "circle" };
+    let n = points.len();
     if as_json {
-        out!(
-            "{}",
-            json!({
-                "beta": beta.to_string(),
-                "region": region_name,
-                "vertices": points.len(),
-                "edges": sk.edges.len(),
-                "candidates": sk.candidates,
-                "cell_diameters": sk.cell_diameters,
-                "seconds": start.elapsed().as_secs_f64(),
-                "seconds_parse": parsed,
-                "seconds_algorithm": algorithm,
-            })
-        );
+        let extra = [
+            ("seconds", start.elapsed().as_secs_f64().into()),
+            ("parse_seconds", parsed.into()),
+            ("algorithm_seconds", algorithm.into()),
+        ];
+        out!("{}", report::skeleton_json(&sk, beta, region, n, extra));
     } else {
-        out!(
-            "{region_name}-based β-skeleton, β = {beta}: {} edges on {} sites ({} candidates tested exactly) in {:.3} s",
-            sk.edges.len(),
-            points.len(),
-            sk.candidates,
-            algorithm
-        );
+        out!("{}", report::skeleton_text(&sk, beta, region, n, algorithm));
     }
     Ok(Verdict::Yes)
 }
@@ -116,106 +100,31 @@ pub fn mwt(a: MwtArgs) -> CmdResult {
     let parsed = start.elapsed().as_secs_f64();
     let t = Instant::now();
     let run = Run::new(a.time_limit, points.len(), 50_000);
-    let m = match planar::mwt_or_bounds(&points, &run.ctl).map_err(CliError::new)? {
-        MwtOutcome::Solved(m) => m,
-        MwtOutcome::Stopped(b) => {
-            drop(run);
-            return undecided(&a, &points, &z, &b, start);
-        }
-    };
+    let m = planar::mwt_or_bounds(&points, &run.ctl).map_err(CliError::new)?;
     drop(run);
-    let (as_json, output) = (a.as_json, a.output);
     let algorithm = t.elapsed().as_secs_f64();
-    if let Some(out) = output {
-        io::write_planar_triangulation(out, &points, &z, &m.edges, &m.triangles).written(out)?;
-    }
-    let s = &m.stats;
-    if as_json {
-        out!(
-            "{}",
-            json!({
-                "verdict": "yes",
-                "vertices": points.len(),
-                "edges": m.edges.len(),
-                "triangles": m.triangles.len(),
-                "weight": m.weight.mid(),
-                "weight_interval": [m.weight.lo, m.weight.hi],
-                "candidates": s.candidates,
-                "skeleton_edges": s.skeleton_edges,
-                "undecided_edges": s.undecided_edges,
-                "faces_left": s.faces_left,
-                "faces_with_holes": s.faces_with_holes,
-                "largest_face": s.largest_face,
-                "seconds": start.elapsed().as_secs_f64(),
-                "seconds_parse": parsed,
-                "seconds_stages": { "diamond": s.seconds[0], "lmt": s.seconds[1], "exact": s.seconds[2] },
-                "seconds_algorithm": algorithm,
-            })
-        );
-    } else {
-        let fixed = 100.0 * s.skeleton_edges as f64 / m.edges.len().max(1) as f64;
-        out!(
-            "minimum weight triangulation of {} sites: {} edges, {} triangles, weight {:.12} (certified in [{:.17e}, {:.17e}])",
-            points.len(),
-            m.edges.len(),
-            m.triangles.len(),
-            m.weight.mid(),
-            m.weight.lo,
-            m.weight.hi
-        );
-        out!(
-            "  {} candidates after the diamond test; LMT-skeleton fixed {} edges ({fixed:.1}%); {} faces left to the exact stage ({} with holes, largest {}); {:.3} s",
-            s.candidates,
-            s.skeleton_edges,
-            s.faces_left,
-            s.faces_with_holes,
-            s.largest_face,
-            algorithm
-        );
-    }
-    Ok(Verdict::Yes)
-}
-
-/// Out of time: exit 3 with certified bounds on the minimum weight (the better of the
-/// minimum spanning tree's and the solver's, and a triangulation's: Delaunay, flipped
-/// shorter), writing that triangulation.
-fn undecided(
-    a: &MwtArgs,
-    points: &[Point2],
-    z: &[f64],
-    b: &MwtBounds,
-    start: Instant,
-) -> CmdResult {
+    let (edges, triangles, verdict) = match &m {
+        MwtOutcome::Solved(m) => (&m.edges, &m.triangles, Verdict::Yes),
+        MwtOutcome::Stopped(b) => (&b.edges, &b.triangles, Verdict::Undecided),
+    };
     if let Some(out) = a.output {
-        io::write_planar_triangulation(out, points, z, &b.edges, &b.triangles).written(out)?;
+        io::write_planar_triangulation(out, &points, &z, edges, triangles).written(out)?;
     }
-    let limit = a.time_limit.unwrap_or_default().as_secs_f64();
+    let n = points.len();
     if a.as_json {
-        out!(
-            "{}",
-            json!({
-                "verdict": "undecided",
-                "vertices": points.len(),
-                "time_limit": limit,
-                "lower_bound": b.lower.lo,
-                "lower_bound_from": b.lower_source.to_string(),
-                "upper_bound": b.upper.hi,
-                "edges": b.edges.len(),
-                "triangles": b.triangles.len(),
-                "seconds": start.elapsed().as_secs_f64(),
-            })
-        );
+        let limit = a.time_limit.map(|l| l.as_secs_f64());
+        let extra = [
+            ("seconds", start.elapsed().as_secs_f64().into()),
+            ("parse_seconds", parsed.into()),
+            ("algorithm_seconds", algorithm.into()),
+            ("time_limit", limit.into()),
+        ];
+        out!("{}", report::mwt_json(&m, n, extra));
     } else {
-        out!(
-            "undecided within the time limit ({limit} s): the minimum weight of a triangulation of {} sites is between {:.17e} ({}) and {:.17e} (Delaunay triangulation flipped shorter{})",
-            points.len(),
-            b.lower.lo,
-            b.lower_source,
-            b.upper.hi,
-            if a.output.is_some() { ", written" } else { "" }
-        );
+        let written = a.output.is_some();
+        out!("{}", report::mwt_text(&m, n, algorithm, written));
     }
-    Ok(Verdict::Undecided)
+    Ok(verdict)
 }
 
 pub fn generate_points(dist: Distribution, n: usize, seed: u64, output: &Path) -> CmdResult {
@@ -252,67 +161,25 @@ pub fn keil(a: KeilArgs) -> CmdResult {
     if let Some(sets) = a.check_random {
         return check_random(beta, sets, a.n.unwrap_or(200), a.as_json, start);
     }
-    let k = planar::keil(beta, a.n, &Control::new()).map_err(CliError::new)?;
+    let run = Run::new(None, 0, 1);
+    let k = planar::keil(beta, a.n, &run.ctl).map_err(CliError::new)?;
+    drop(run);
     if let Some(path) = a.svg {
         std::fs::write(path, io::keil_svg(&k)).written(path)?;
     }
     if let Some(path) = a.output {
         io::write_points2d(path, &k.sites).written(path)?;
     }
-    let iv = |w: &tetrakit::geom::Interval| [w.lo, w.hi];
-    let refuted = k.xy_in_skeleton && !k.xy_in_mwt;
     if a.as_json {
-        out!(
-            "{}",
-            json!({
-                "beta": beta.to_string(),
-                "n": k.n,
-                "sites": k.sites.len(),
-                "xy": k.xy,
-                "output": a.output.map(|p| p.display().to_string()),
-                "lemma_5_8_bound": k.lemma_bound,
-                "xy_in_skeleton": k.xy_in_skeleton,
-                "xy_in_mwt": k.xy_in_mwt,
-                "refutes_keil": refuted,
-                "weight_with_xy": k.with_xy.0.mid(),
-                "weight_with_xy_interval": iv(&k.with_xy.0),
-                "weight_without_xy": k.without_xy.0.mid(),
-                "weight_without_xy_interval": iv(&k.without_xy.0),
-                "with_minus_without_sign": k.with_vs_without as i8,
-                "method": method(&k),
-                "svg": a.svg.map(|p| p.display().to_string()),
-                "seconds": start.elapsed().as_secs_f64(),
-            })
-        );
+        let shown = |p: Option<&Path>| p.map(|p| p.display().to_string());
+        let extra = [
+            ("output", shown(a.output).into()),
+            ("svg", shown(a.svg).into()),
+            ("seconds", start.elapsed().as_secs_f64().into()),
+        ];
+        out!("{}", report::keil_json(&k, extra));
     } else {
-        out!(
-            "Keil construction (thesis §5.2), β = {beta}, n = {} ({} sites; Lemma 5.8 asks n > {:.1}):",
-            k.n,
-            k.sites.len(),
-            k.lemma_bound
-        );
-        out!("  method: {}", method(&k));
-        out!("  xy in the β-skeleton: {} (exact)", k.xy_in_skeleton);
-        out!(
-            "  xy in the minimum weight triangulation: {} (exact)",
-            k.xy_in_mwt
-        );
-        out!("  best triangulation with xy:    {:.15}", k.with_xy.0.mid());
-        out!(
-            "  best triangulation without xy: {:.15}",
-            k.without_xy.0.mid()
-        );
-        out!(
-            "  verdict: {}",
-            if refuted {
-                "xy is a β-skeleton edge in no MWT: Keil's conjecture fails here".to_string()
-            } else {
-                format!(
-                    "this realization does not separate xy yet at n = {}; try a larger --n (Lemma 5.8: n > {:.1} suffices)",
-                    k.n, k.lemma_bound
-                )
-            }
-        );
+        out!("{}", report::keil_text(&k));
         if let Some(p) = a.svg {
             out!("  picture: {}", p.display());
         }
@@ -330,47 +197,12 @@ fn check_random(beta: Ratio, sets: usize, n: usize, as_json: bool, start: Instan
     run.stage("random sets");
     let (checked, bad) = planar::check_random(beta, sets, n, 1, &run.ctl).map_err(CliError::new)?;
     drop(run);
+    let size = [sets, n, checked];
     if as_json {
-        let v: Vec<_> = bad
-            .iter()
-            .map(|(k, s, e)| json!({"set": k, "seed": s, "edge": e}))
-            .collect();
-        let mut v = json!({
-            "verdict": if bad.is_empty() { "yes" } else { "no" },
-            "beta": beta.to_string(),
-            "sets": sets,
-            "points": n,
-            "skeleton_edges_checked": checked,
-            "violations": v,
-            "seconds": start.elapsed().as_secs_f64(),
-        });
-        if let Some((k, s, e)) = bad.first() {
-            v["witness"] = json!({
-                "kind": "skeleton_edge_not_in_mwt",
-                "detail": format!("edge {}-{} of the β-skeleton of random set {k} (seed {s}) is in no minimum weight triangulation", e[0], e[1]),
-                "set": k,
-                "seed": s,
-                "segments": [e],
-            });
-        }
-        out!("{v}");
+        let extra = [("seconds", start.elapsed().as_secs_f64().into())];
+        out!("{}", report::check_random_json(beta, size, &bad, extra));
     } else {
-        out!(
-            "β = {beta}: {checked} skeleton edges of {sets} random sets of {n} points checked against the exact MWT; {} violations",
-            bad.len()
-        );
-        for (k, s, e) in &bad {
-            out!("  violation: set {k} (seed {s}), edge {}-{}", e[0], e[1]);
-        }
+        out!("{}", report::check_random_text(beta, size, &bad));
     }
     Ok(Verdict::from(bad.is_empty()))
-}
-
-/// How the two optima were found.
-fn method(k: &planar::KeilResult) -> &'static str {
-    if k.split {
-        "split along L (Lemma 5.6: every side of L certified to be in every triangulation), exact polygon DP"
-    } else {
-        "general exact MWT solver"
-    }
 }

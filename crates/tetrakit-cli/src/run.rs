@@ -3,7 +3,6 @@
 use crate::exit::{CliError, CmdResult, Verdict, WriteContext};
 use crate::progress::Run;
 use crate::{CorruptKind, GenCommon, GenKind};
-use serde_json::json;
 use std::path::Path;
 use std::time::Instant;
 use tetrakit::detect::{Cells, Options};
@@ -58,8 +57,8 @@ pub fn detect(path: &Path, as_json: bool, output: Option<&Path>, opts: Options) 
     let label = |v: u32| input.point_label(v as usize);
     if as_json {
         let extra = [
-            ("seconds", json!(seconds)),
-            ("parse_seconds", json!(parsed)),
+            ("seconds", seconds.into()),
+            ("parse_seconds", parsed.into()),
         ];
         out!("{}", tetrakit::report::detect_json(&d, label, extra));
     } else {
@@ -115,9 +114,9 @@ pub fn check(a: &crate::CheckArgs) -> CmdResult {
     let other = input.other_cells.as_ref();
     if as_json {
         let extra = [
-            ("other_cells", json!(other.map_or(0, |o| o.count))),
-            ("seconds", json!(seconds)),
-            ("parse_seconds", json!(parsed)),
+            ("other_cells", other.map_or(0, |o| o.count).into()),
+            ("seconds", seconds.into()),
+            ("parse_seconds", parsed.into()),
         ];
         out!("{}", tetrakit::report::json(&outcome, extra));
     } else {

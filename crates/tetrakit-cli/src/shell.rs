@@ -3,7 +3,6 @@
 
 use crate::exit::{CliError, CmdResult, Verdict, WriteContext};
 use crate::progress::Run;
-use serde_json::json;
 use std::path::Path;
 use std::time::{Duration, Instant};
 use tetrakit::geom::Point3;
@@ -76,7 +75,7 @@ pub fn shell(a: ShellArgs) -> CmdResult {
     if a.as_json {
         out!(
             "{}",
-            tetrakit::report::json(&o, [("seconds", json!(seconds))])
+            tetrakit::report::json(&o, [("seconds", seconds.into())])
         );
     } else {
         out!("{}", tetrakit::report::shell_text(&o, seconds).trim_end());

@@ -3,10 +3,10 @@
 use crate::convert::{self, Json, array, point_array, value_error};
 use numpy::{PyArray2, PyReadonlyArray2};
 use pyo3::prelude::*;
-use serde_json::json;
 use tetrakit::control::Control;
 use tetrakit::geom::{Point2, Ratio};
 use tetrakit::planar::{self, MwtOutcome, Region};
+use tetrakit::report;
 
 /// Planar sites from an `(n, 2)` array (or `(n, 3)` with every z = 0), checked as a
 /// file's points are.
@@ -42,14 +42,7 @@ pub fn skeleton<'py>(
     let ctl = Control::new();
     let sk = convert::run(py, &ctl, || planar::beta_skeleton(&pts, b, region, &ctl))?
         .map_err(value_error)?;
-    let v = json!({
-        "beta": b.to_string(),
-        "region": if lune { "lune" } else { "circle" },
-        "vertices": pts.len(),
-        "edges": sk.edges.len(),
-        "candidates": sk.candidates,
-        "cell_diameters": sk.cell_diameters,
-    });
+    let v = report::skeleton_json(&sk, b, region, pts.len(), []);
     Ok((v.to_string(), array(py, &sk.edges)))
 }
 
@@ -67,38 +60,13 @@ pub fn mwt<'py>(
 ) -> PyResult<MwtOut<'py>> {
     let pts = sites(&points)?;
     let ctl = convert::control(time_limit)?;
-    let m = convert::run(py, &ctl, || planar::mwt_or_bounds(&pts, &ctl))?;
-    let m = match m.map_err(value_error)? {
-        MwtOutcome::Solved(m) => m,
-        MwtOutcome::Stopped(b) => {
-            let v = json!({
-                "verdict": "undecided",
-                "vertices": pts.len(),
-                "lower_bound": b.lower.lo,
-                "lower_bound_from": b.lower_source.to_string(),
-                "upper_bound": b.upper.hi,
-                "edges": b.edges.len(),
-                "triangles": b.triangles.len(),
-            });
-            return Ok((v.to_string(), array(py, &b.edges), array(py, &b.triangles)));
-        }
+    let m = convert::run(py, &ctl, || planar::mwt_or_bounds(&pts, &ctl))?.map_err(value_error)?;
+    let (edges, triangles) = match &m {
+        MwtOutcome::Solved(m) => (&m.edges, &m.triangles),
+        MwtOutcome::Stopped(b) => (&b.edges, &b.triangles),
     };
-    let s = &m.stats;
-    let v = json!({
-        "verdict": "yes",
-        "vertices": pts.len(),
-        "edges": m.edges.len(),
-        "triangles": m.triangles.len(),
-        "weight": m.weight.mid(),
-        "weight_interval": [m.weight.lo, m.weight.hi],
-        "candidates": s.candidates,
-        "skeleton_edges": s.skeleton_edges,
-        "undecided_edges": s.undecided_edges,
-        "faces_left": s.faces_left,
-        "faces_with_holes": s.faces_with_holes,
-        "largest_face": s.largest_face,
-    });
-    Ok((v.to_string(), array(py, &m.edges), array(py, &m.triangles)))
+    let v = report::mwt_json(&m, pts.len(), []);
+    Ok((v.to_string(), array(py, edges), array(py, triangles)))
 }
 
 /// `keil(beta, n)`: the §5.2 construction's exact verdicts as JSON, and its sites.
@@ -115,21 +83,8 @@ pub fn keil<'py>(
     }
     let ctl = Control::new();
     let k = convert::run(py, &ctl, || planar::keil(b, n, &ctl))?.map_err(value_error)?;
-    let iv = |w: &tetrakit::geom::Interval| [w.lo, w.hi];
-    let v = json!({
-        "beta": b.to_string(),
-        "n": k.n,
-        "sites": k.sites.len(),
-        "xy": k.xy,
-        "lemma_5_8_bound": k.lemma_bound,
-        "xy_in_skeleton": k.xy_in_skeleton,
-        "xy_in_mwt": k.xy_in_mwt,
-        "refutes_keil": k.xy_in_skeleton && !k.xy_in_mwt,
-        "weight_with_xy": k.with_xy.0.mid(),
-        "weight_with_xy_interval": iv(&k.with_xy.0),
-        "weight_without_xy": k.without_xy.0.mid(),
-        "weight_without_xy_interval": iv(&k.without_xy.0),
-        "with_minus_without_sign": k.with_vs_without as i8,
-    });
-    Ok((v.to_string(), point_array(py, &k.sites)))
+    Ok((
+        report::keil_json(&k, []).to_string(),
+        point_array(py, &k.sites),
+    ))
 }

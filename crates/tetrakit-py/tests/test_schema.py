@@ -27,15 +27,21 @@ def cli_json(*args):
 
 
 def fields(result, s):
-    """A Python result's JSON fields: its arrays left out, and the optional fields the
-    answer does not have (None in Python, absent in JSON; kept where the schema `s`
-    takes null)."""
+    """A Python result's JSON fields: its arrays left out (or counted, where the JSON
+    has their count), and the optional fields the answer does not have (None in Python,
+    absent in JSON; kept where the schema `s` takes null)."""
     def null_ok(name):
         sub = {**s["properties"].get(name, {}), "$defs": s.get("$defs", {})}
         return jsonschema.Draft202012Validator(sub).is_valid(None)
-    return {f.name: getattr(result, f.name) for f in dataclasses.fields(result)
-            if not isinstance(getattr(result, f.name), np.ndarray)
-            and not (getattr(result, f.name) is None and f.default is None and not null_ok(f.name))}
+    out = {}
+    for f in dataclasses.fields(result):
+        value = getattr(result, f.name)
+        if isinstance(value, np.ndarray):
+            if s["properties"].get(f.name, {}).get("type") == "integer":
+                out[f.name] = len(value)
+        elif not (value is None and f.default is None and not null_ok(f.name)):
+            out[f.name] = value
+    return out
 
 
 CUBE = np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)], dtype=float)
@@ -214,3 +220,76 @@ def test_constrain_json_follows_the_schema(tmp_path, case):
     cli = cli_on(tmp_path, command, {"points": pts, "segments": segs})
     jsonschema.validate(cli, s)
     same_fields(cli, result, s, {"seconds"})
+
+
+PLANAR = np.array([[0, 0], [4, 0], [4, 3], [0, 3], [1, 1.5], [2.5, 0.7], [3.1, 2.2]], dtype=float)
+
+
+def planar_file(tmp_path, pts):
+    return write_points(tmp_path / "p.xyz", np.hstack([pts, np.zeros((len(pts), 1))]))
+
+
+def write_points(path, pts):
+    path.write_text("\n".join(" ".join(repr(float(x)) for x in p) for p in pts))
+    return path
+
+
+@pytest.mark.parametrize("beta, lune", [("1", False), ("0.8", True), ("2", False)])
+def test_skeleton_json_follows_the_schema(tmp_path, beta, lune):
+    s = schema("skeleton")
+    result = tetrakit.skeleton(PLANAR, beta, lune=lune)
+    jsonschema.validate(fields(result, s), s)
+    flags = ["--beta", beta] + (["--lune"] if lune else [])
+    cli = cli_json("skeleton", planar_file(tmp_path, PLANAR), *flags)
+    jsonschema.validate(cli, s)
+    same_fields(cli, result, s, {"seconds", "parse_seconds", "algorithm_seconds"})
+
+
+@pytest.mark.parametrize("limit", [None, 0.0])
+def test_mwt_json_follows_the_schema(tmp_path, limit):
+    s = schema("mwt")
+    pts = np.random.default_rng(3).random((40, 2)) if limit == 0.0 else PLANAR
+    result = tetrakit.mwt(pts, time_limit=limit)
+    jsonschema.validate(fields(result, s), s)
+    assert result.verdict == ("undecided" if limit == 0.0 else "yes")
+    flags = [] if limit is None else ["--time-limit", "0"]
+    path = planar_file(tmp_path, pts)
+    out = subprocess.run([str(EXE), "mwt", str(path), *flags, "--json"], capture_output=True, text=True)
+    assert out.returncode == (3 if limit == 0.0 else 0), out.stderr
+    cli = json.loads(out.stdout)
+    jsonschema.validate(cli, s)
+    same_fields(cli, result, s, {"seconds", "parse_seconds", "algorithm_seconds", "stage_seconds"})
+
+
+def test_keil_json_follows_the_schema():
+    s = schema("keil")
+    result = tetrakit.keil("1.156")
+    construction = s["oneOf"][0]
+    jsonschema.validate(fields(result, construction), s)
+    cli = cli_json("keil", "--beta", "1.156")
+    jsonschema.validate(cli, s)
+    same_fields(cli, result, construction, {"seconds", "output", "svg"})
+    jsonschema.validate(cli_json("keil", "--beta", "1.2", "--check-random", "3", "--n", "30"), s)
+
+
+def test_reduce_json_follows_the_schema(tmp_path):
+    s = schema("reduce")
+    run = lambda *a: subprocess.run([str(EXE), *map(str, a)], capture_output=True, text=True)
+    poly, prism = tmp_path / "s.obj", tmp_path / "q.off"
+    assert run("generate", "schonhardt", "-o", poly).returncode == 0
+    gap = cli_json("reduce", "hull-gap", poly)
+    jsonschema.validate(gap, s)
+    assert (gap["verdict"], gap["tetrahedra"]) == ("yes", 3)
+    for twist in ("0", "3"):
+        assert run("generate", "quasi-prism", "--ring", "8", "--inner", "6", "--twist", twist,
+                   "-o", prism).returncode == 0
+        q = cli_json("reduce", "quasi-prism", prism)
+        jsonschema.validate(q, s)
+        assert q["verdict"] == "yes"
+    pts = np.array([[0, 0, 0], [2, 0, 0], [2, 2, 0], [0, 2, 0], [1, 0.5, 0]])
+    segs = [[0, 1], [1, 2], [2, 3], [3, 0], [0, 4], [1, 4], [2, 4], [3, 4]]
+    src = tmp_path / "trid.json"
+    src.write_text(json.dumps({"points": pts.tolist(), "segments": segs}))
+    for how in ("apexes", "sphere"):
+        w = cli_json("reduce", "trid-to-tetrad", src, tmp_path / f"{how}.json", "--construction", how)
+        jsonschema.validate(w, s)

@@ -19,10 +19,8 @@ ROOT = Path(__file__).resolve().parents[3]
 UNIT_TET = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], dtype=float)
 # Timing fields, file names and file contents (other_cells: the non-tet cells of a mesh
 # file) the CLI prints that a call on arrays has no use for.
-CLI_ONLY = {"seconds", "parse_seconds", "seconds_parse", "seconds_algorithm", "seconds_stages",
-            "mintetra_seconds", "verify_seconds", "faces_beside_not_read", "short_pairs_budget",
-            "output", "svg", "method", "tets", "alternative",
-            "other_cells", "tris", "proof"}
+CLI_ONLY = {"seconds", "parse_seconds", "algorithm_seconds", "time_limit",
+            "faces_beside_not_read", "output", "svg", "tets", "other_cells", "tris", "proof"}
 
 
 def cli(*args):

@@ -1,6 +1,7 @@
 //! Vertex numbers and message text: a renumbering of points for locality
-//! ([`Renumbering`]), vertex and cell numbers in the text of witnesses and problems, and
-//! input tokens quoted for messages ([`quote`]).
+//! ([`Renumbering`]), vertex and cell numbers in the text of witnesses and problems,
+//! input tokens quoted for messages ([`quote`]), and the contract's names of kinds
+//! ([`json_name`]).
 //!
 //! Sentences for a person name vertices as `#12` and cells (tetrahedra, triangles) as
 //! `T12`. The library numbers both from 0; a file may number from 1 (TetGen), may number
@@ -147,4 +148,13 @@ pub fn quote(tok: &str) -> String {
         q.push('…');
     }
     format!("'{q}'")
+}
+
+/// The name a unit enum variant has in the JSON contract (its serde name: `"no_candidate"`),
+/// for the `Display` of the kinds of problems and witnesses; `fallback` if it has none.
+pub fn json_name(value: &impl serde::Serialize, fallback: &'static str) -> String {
+    match serde_json::to_value(value) {
+        Ok(serde_json::Value::String(s)) => s,
+        _ => fallback.to_string(),
+    }
 }

@@ -573,6 +573,17 @@ fn vtu_files_fail_with_the_line() {
             "{needle}: no line in {e}"
         );
     }
+    // An offset past the last one, or before the previous one, names the connectivity's
+    // line (the fuzzer's 3925868552 once sliced past the 24 entries).
+    for offsets in ["4 8 3925868552 16 20 24", "4 8 12 10 20 24"] {
+        let bad = ascii.replacen("4 8 12 16 20 24", offsets, 1);
+        assert_ne!(bad, ascii);
+        let e = read_input(&write("bad.vtu", &bad)).unwrap_err();
+        assert!(
+            e.line == conn_line && e.message.contains("is not between the previous one"),
+            "{e}"
+        );
+    }
     // A point index out of range names the connectivity's line.
     let bad = ascii.replacen("0 4 6 7 0 4", "9 4 6 7 0 4", 1);
     assert_ne!(bad, ascii);

@@ -408,6 +408,7 @@ def shell(outer, inner, method: str = "cap", flips: bool = True,
 class SkeletonResult:
     """The β-skeleton of :func:`skeleton` (``tetrakit skeleton --json``)."""
 
+    verdict: str
     beta: str
     region: str
     vertices: int
@@ -445,6 +446,7 @@ class MwtResult:
     faces_left: Optional[int] = None
     faces_with_holes: Optional[int] = None
     largest_face: Optional[int] = None
+    stage_seconds: Optional[dict] = None
     lower_bound: Optional[float] = None
     lower_bound_from: Optional[str] = None
     upper_bound: Optional[float] = None
@@ -471,6 +473,7 @@ def mwt(points, time_limit: Optional[float] = None) -> MwtResult:
 class KeilResult:
     """The §5.2 construction of :func:`keil` (``tetrakit keil --json``)."""
 
+    verdict: str
     beta: str
     n: int
     sites: np.ndarray = field(repr=False)
@@ -484,6 +487,7 @@ class KeilResult:
     weight_without_xy: float = 0.0
     weight_without_xy_interval: list = field(default_factory=list)
     with_minus_without_sign: int = 0
+    method: str = ""
 
 
 def keil(beta, n: Optional[int] = None) -> KeilResult:

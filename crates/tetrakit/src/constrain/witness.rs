@@ -49,8 +49,7 @@ impl WitnessKind {
 
 impl std::fmt::Display for WitnessKind {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let v = serde_json::to_value(self).ok();
-        f.write_str(v.as_ref().and_then(|v| v.as_str()).unwrap_or("witness"))
+        f.write_str(&crate::numbering::json_name(self, "witness"))
     }
 }
 

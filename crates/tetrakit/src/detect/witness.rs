@@ -44,12 +44,7 @@ impl WitnessKind {
 
 impl fmt::Display for WitnessKind {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let v = serde_json::to_value(self).ok();
-        write!(
-            f,
-            "{}",
-            v.as_ref().and_then(|v| v.as_str()).unwrap_or("witness")
-        )
+        f.write_str(&crate::numbering::json_name(self, "witness"))
     }
 }
 

@@ -424,8 +424,13 @@ fn add_piece(
     let mut begin = 0usize;
     let mut cell = Vec::new();
     for (k, (&end, &t)) in offsets.iter().zip(&types).enumerate() {
-        let Some(end) = usize::try_from(end).ok().filter(|&e| e >= begin) else {
-            let why = format!("cell {k} of piece {p}: offset {end} is before the previous one");
+        let Some(end) = usize::try_from(end)
+            .ok()
+            .filter(|&e| e >= begin && e <= entries)
+        else {
+            let why = format!(
+                "cell {k} of piece {p}: offset {end} is not between the previous one ({begin}) and the last ({entries})"
+            );
             return Err(err(conn, why));
         };
         cell.clear();

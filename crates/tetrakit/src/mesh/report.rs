@@ -79,12 +79,7 @@ impl ProblemKind {
 
 impl fmt::Display for ProblemKind {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let s = serde_json::to_value(self).ok();
-        write!(
-            f,
-            "{}",
-            s.as_ref().and_then(|v| v.as_str()).unwrap_or("problem")
-        )
+        f.write_str(&crate::numbering::json_name(self, "problem"))
     }
 }
 

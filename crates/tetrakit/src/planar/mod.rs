@@ -27,7 +27,9 @@ pub use delaunay::{Delaunay, DelaunayEdge, delaunay};
 pub use error::PlanarError;
 pub use forced::{Blocker, blocked_pairs, edge_blocker};
 pub use generate::{Distribution, points2d};
-pub use keil::{KeilResult, above_cheng_xu, check_random, in_keil_interval, keil, keil_sites};
+pub use keil::{
+    KeilResult, Violation, above_cheng_xu, check_random, in_keil_interval, keil, keil_sites,
+};
 pub use mwt::{
     LowerBound, Mwt, MwtBounds, MwtOptions, MwtOutcome, MwtStats, candidate_edges, cmp_edge_sets,
     mwt, mwt_bounds, mwt_or_bounds, mwt_stage, weight_of,

@@ -141,11 +141,10 @@ pub fn constrain_text(
             let _ = writeln!(s, "undecided within the time limit");
         }
     }
-    let route = serde_json::to_value(d.route).unwrap_or_default();
     let _ = writeln!(
         s,
         "  {vertices} points, {segments} segments, route {}, {} candidates, {} SAT calls, {seconds:.3} s",
-        route.as_str().unwrap_or(""),
+        crate::numbering::json_name(&d.route, ""),
         d.stats.candidates,
         d.stats.calls
     );

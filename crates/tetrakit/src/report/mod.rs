@@ -4,12 +4,13 @@
 //! search). A front end parses its input, calls the capability, and hands the outcome
 //! here with the few facts only it knows (timings, the file's other cells).
 //!
-//! Capabilities move here one by one (`check`, `detect`, `shell`, `mintetra`, `tetrahedralize`, `contains`, `constrained` and `reduce` so far); until then a command
+//! Capabilities move here one by one (`check`, `detect`, `shell`, `mintetra`, `tetrahedralize`, `contains`, `constrained`, `reduce`, `skeleton`, `mwt` and `keil`); until then a command
 //! builds its JSON itself.
 
 mod check;
 mod constrain;
 mod detect;
+mod planar;
 mod poly;
 mod reduce;
 mod shell;
@@ -17,6 +18,10 @@ mod shell;
 pub use check::check_text;
 pub use constrain::{constrain_json, constrain_text, decision_verdict};
 pub use detect::{detect_json, detect_text};
+pub use planar::{
+    check_random_json, check_random_text, keil_json, keil_text, mwt_json, mwt_text, skeleton_json,
+    skeleton_text,
+};
 pub use poly::{ProofFiles, mintetra_text, tetrahedralize_text};
 pub use reduce::{hull_gap_text, quasi_prism_text, reduction_text};
 pub use shell::shell_text;
