@@ -51,7 +51,8 @@ fn blame(e: ShellError, outer: &Input, inner: &Input) -> CliError {
                 CliError::new(format!("{file}: {what}"))
             }
         }
-        ShellError::Stopped | ShellError::Internal(_) => CliError::internal(e),
+        ShellError::Internal(why) => CliError::internal(why),
+        ShellError::Stopped => CliError::internal(e),
     }
 }
 

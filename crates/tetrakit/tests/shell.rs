@@ -140,8 +140,7 @@ fn random_nested_shells_are_certified_and_obey_lemma_4_9() {
 #[test]
 fn touching_and_coplanar_shells() {
     let big = cube([0.0; 3], 4.0);
-    // A shared corner, three facets in common planes (bigcap: see the next test).
-    solve_by(&big, &cube([0.0; 3], 2.0), &[Method::Cap]);
+    solve(&big, &cube([0.0; 3], 2.0)); // a shared corner, three facets in common planes
     solve(&big, &cube([0.0, 0.0, 1.0], 4.0 - 1.0)); // a shared edge segment
     solve(&big, &cube([1.0, 1.0, 1.0], 2.0)); // apart, all facets squares
     let tip = [
@@ -260,19 +259,10 @@ fn coaxial_prisms() {
 /// polyhedron where the bottom lies on an outer facet). The answer is then an internal
 /// error, never an uncertified mesh.
 #[test]
-fn shared_facet_planes_are_never_a_wrong_answer() {
+fn shared_facet_planes_are_solved() {
     let big = cube([0.0; 3], 4.0);
     for inner in [cube([1.0, 0.0, 0.0], 2.0), cube([0.0; 3], 2.0)] {
-        let shell = Shell::new(&big, &inner).unwrap();
-        for m in [Method::Cap, Method::Bigcap] {
-            match tetrahedralize(&shell, m, &Control::new()) {
-                Ok(mesh) => {
-                    let cert = certify_shell(&shell.points, &mesh.tets, &shell.inner);
-                    assert_eq!(cert, Ok(()), "{m:?}");
-                }
-                Err(e) => assert!(matches!(e, ShellError::Internal(_)), "{e}"),
-            }
-        }
+        solve(&big, &inner);
     }
 }
 
@@ -613,4 +603,94 @@ mod property {
             }
         }
     }
+}
+
+/// `Q` a box with integer corners anywhere in `P = [0, 4]³`: on the floor, in a corner,
+/// along an edge, across, sharing facets, edges and vertices with `P` (999 boxes), each
+/// in its order and reversed, both methods certified within 9n − 6. Q's facets inside
+/// P's facets are recovered in the surface (`shell::recover`); before, 156 of 366 such
+/// contact runs failed.
+#[test]
+fn boxes_touching_a_box_anywhere() {
+    let big = cube([0.0; 3], 4.0);
+    let mut failed = Vec::new();
+    let spans: Vec<[f64; 2]> = (0..4)
+        .flat_map(|lo| (lo + 1..=4).map(move |hi| [lo as f64, hi as f64]))
+        .collect();
+    for &[x0, x1] in &spans {
+        for &[y0, y1] in &spans {
+            for &[z0, z1] in &spans {
+                let mut inner: Vec<Point3> = [x0, x1]
+                    .iter()
+                    .flat_map(|&x| [y0, y1].map(|y| [x, y]))
+                    .flat_map(|[x, y]| [z0, z1].map(|z| [x, y, z]))
+                    .collect();
+                if inner.iter().all(|p| big.contains(p)) {
+                    continue; // Q = P
+                }
+                for reversed in [false, true] {
+                    if reversed {
+                        inner.reverse();
+                    }
+                    let shell = Shell::new(&big, &inner).unwrap();
+                    for m in [Method::Cap, Method::Bigcap] {
+                        match tetrahedralize(&shell, m, &Control::new()) {
+                            Ok(mesh) => {
+                                let cert = certify_shell(&shell.points, &mesh.tets, &shell.inner);
+                                assert_eq!(cert, Ok(()), "{m:?} {inner:?}");
+                                assert!(mesh.tets.len() <= 9 * shell.n() - 6);
+                            }
+                            Err(e) => failed.push(format!("{m:?} {inner:?}: {e}")),
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        failed.is_empty(),
+        "{} failed:\n{}",
+        failed.len(),
+        failed.join("\n")
+    );
+}
+
+/// `Q` filling a corner of `P` (sharing the corner and three facet planes): the shared
+/// corner is in no tetrahedron, since the region is empty around it. The exact solver
+/// once called such a shell infeasible (it asked every vertex to be used); in this order
+/// the greedy bigcaps reach a dead end in every order of the tips, and the exact solver
+/// on the whole shell, the last resort, finishes it.
+#[test]
+fn a_corner_filled_by_the_inner_box() {
+    let outer = [
+        [0.0, 4.0, 4.0],
+        [4.0, 4.0, 0.0],
+        [0.0, 0.0, 4.0],
+        [4.0, 0.0, 4.0],
+        [4.0, 4.0, 4.0],
+        [0.0, 0.0, 0.0],
+        [4.0, 0.0, 0.0],
+        [0.0, 4.0, 0.0],
+    ];
+    let inner = [
+        [3.0, 4.0, 0.0],
+        [3.0, 1.0, 2.0],
+        [4.0, 1.0, 2.0],
+        [4.0, 4.0, 2.0],
+        [4.0, 1.0, 0.0],
+        [4.0, 4.0, 0.0],
+        [3.0, 4.0, 2.0],
+        [3.0, 1.0, 0.0],
+    ];
+    let (shell, mesh) = solve(&outer, &inner);
+    assert!(
+        mesh.tets.iter().flatten().all(|&v| v != 1),
+        "the shared corner"
+    );
+    let (best, _) = optimum(&shell, &Control::new()).unwrap();
+    let Outcome::Optimal { tets, .. } = best else {
+        panic!("{best:?}")
+    };
+    assert_eq!(certify_shell(&shell.points, &tets, &shell.inner), Ok(()));
+    assert!(tets.len() <= mesh.tets.len());
 }

@@ -183,11 +183,14 @@ impl Obstacle {
         if cand.tets.is_empty() {
             return Some(Obstacle::NoCandidate);
         }
+        // A shell may have a vertex no tetrahedron uses: a corner of `Q` that fills the
+        // corner of `P` it shares (the region is empty around it).
         let mut covered = vec![false; domain.points().len()];
         for &v in cand.tets.iter().flatten() {
             covered[v as usize] = true;
         }
-        if let Some(v) = covered.iter().position(|&c| !c) {
+        let shell = matches!(domain, Domain::Shell { .. });
+        if let Some(v) = covered.iter().position(|&c| !c).filter(|_| !shell) {
             return Some(Obstacle::UncoveredVertex(v as u32));
         }
         if let Some(k) = cand.required.iter().position(|h| h.is_empty()) {

@@ -38,8 +38,20 @@
 //! or of a tip and a neighbour, is tetrahedralized as a polyhedron by the exact solver
 //! ([`crate::exact`], at most 60 vertices and 10 s), and last the whole region left
 //! (cubes in cubes, where planes of `P̄` through tips are parallel to facets of `Q`): the
-//! surface's triangles fixed, `Q`'s facets free, at most 60 vertices. Beyond that the
-//! answer is [`ShellError::Internal`], never an uncertified mesh.
+//! surface's triangles fixed, `Q`'s facets free, at most 60 vertices. When even that
+//! fails (earlier pieces triangulated a plane through the last tips in a way nothing
+//! completes), the removal starts again with another order of the tips of equal degree
+//! (up to 8), and last, for a shell of at most 60 vertices, the exact solver takes the
+//! whole shell. Beyond that the answer is [`ShellError::Internal`], never an
+//! uncertified mesh.
+//!
+//! **Contact.** Where `Q` touches `P̄` in a facet (Q's facet inside a facet of `P`, or in
+//! the plane of a removal's flat bottom), the surface's triangulation of that facet gets
+//! Q's edges by exact 2-2 flips ([`recover`](self)), so that Q's facet is a union of
+//! surface triangles and no piece is built on a triangle reaching into `Q`. On 999 boxes
+//! with integer corners in `[0, 4]³` (every contact with a box: floor, corner, edge,
+//! shared facets), each in two orders, both methods: 1,750 of the 3,996 runs failed
+//! before, none now (test `boxes_touching_a_box_anywhere`).
 //!
 //! **Input.** `P` and `Q` are the exact convex hulls of two point sets ([`Shell::new`]).
 //! Their vertices are the extreme points; other points (inside a hull, or on it but not
@@ -71,10 +83,12 @@ pub mod generate;
 mod improve;
 mod optimum;
 mod outcome;
+mod recover;
 mod removal;
 mod surface;
 
 use crate::control::{Control, Stopped};
+use crate::exact::Domain;
 use crate::geom::{Hull3, Point3, point_key};
 pub use improve::{DELAUNAY_ABOVE, Improvement, improve};
 pub use optimum::optimum;
@@ -296,6 +310,9 @@ impl ShellMesh {
     }
 }
 
+/// How many orders of the tips [`tetrahedralize`] tries before it gives up.
+const ORDERS: u64 = 8;
+
 /// Tetrahedralizes the shell by `method`. The result is not yet certified: pass it to
 /// [`certify_shell`](crate::mesh::certify_shell) (the CLI always does).
 pub fn tetrahedralize(
@@ -309,8 +326,7 @@ pub fn tetrahedralize(
         .copied()
         .filter(|&v| v as usize >= shell.outer.len())
         .collect();
-    let mut surface = Surface::new(&shell.points, &shell.hull, &hidden, &shell.touching)
-        .map_err(|r| ShellError::Internal(r.0.to_string()))?;
+    let q_edges = recover::QEdges::new(&shell.points, &shell.inner);
     let removable: Vec<u32> = {
         let inner: HashSet<u32> = shell.inner.iter().copied().collect();
         shell
@@ -320,12 +336,43 @@ pub fn tetrahedralize(
             .filter(|v| !inner.contains(v))
             .collect()
     };
-    let (tets, pieces) = removal::run(&mut surface, &removable, &shell.inner, method, ctl)?;
-    if surface.hidden.count() > 0 {
-        return Err(ShellError::Internal(format!(
-            "{} inner vertices never reached the surface",
-            surface.hidden.count()
-        )));
+    // A removal can reach a dead end: earlier pieces triangulated a plane through the
+    // last tips so that no cone (and no tetrahedralization, the exact solver finds)
+    // completes it. Another order of the tips of equal degree avoids it.
+    let mut last = None;
+    for seed in 0..ORDERS {
+        let mut surface = Surface::new(
+            &shell.points,
+            &shell.hull,
+            &hidden,
+            &shell.touching,
+            q_edges.clone(),
+        )
+        .map_err(|r| ShellError::Internal(r.0.to_string()))?;
+        let run = removal::run(&mut surface, &removable, &shell.inner, (method, seed), ctl);
+        match run {
+            Ok(_) if surface.hidden.count() > 0 => {
+                last = Some(ShellError::Internal(format!(
+                    "{} inner vertices never reached the surface",
+                    surface.hidden.count()
+                )));
+            }
+            Ok((tets, pieces)) => return Ok(ShellMesh { tets, pieces }),
+            Err(e @ ShellError::Internal(_)) => last = Some(e),
+            Err(e) => return Err(e),
+        }
     }
-    Ok(ShellMesh { tets, pieces })
+    // The last resort for a small shell: the exact solver on the whole of it.
+    let whole = Domain::Shell {
+        points: &shell.points,
+        inner: &shell.inner,
+        outer_faces: None,
+    };
+    if shell.n() <= crate::exact::MAX_VERTICES
+        && let Some(tets) = removal::exact_tets(whole, ctl)
+    {
+        return Ok(ShellMesh { tets, pieces: 1 });
+    }
+    ctl.check()?;
+    Err(last.unwrap_or(ShellError::Internal("no order was tried".into())))
 }

@@ -21,7 +21,9 @@ const EXACT_PIECE_SECONDS: u64 = 10;
 struct Removal<'s, 'a> {
     surface: &'s mut Surface<'a>,
     left: HashSet<u32>,
-    heap: BinaryHeap<Reverse<(usize, u32)>>,
+    heap: BinaryHeap<Reverse<(usize, u64, u32)>>,
+    /// The tie-break among tips of one degree (see [`run`]).
+    seed: u64,
     tets: Vec<[u32; 4]>,
     pieces: usize,
     /// The caller's control (the exact fallback stops with it).
@@ -103,7 +105,8 @@ impl Removal<'_, '_> {
         }
         for u in around {
             if self.left.contains(&u) {
-                self.heap.push(Reverse((self.surface.degree(u), u)));
+                let key = (self.surface.degree(u), rank(u, self.seed), u);
+                self.heap.push(Reverse(key));
             }
         }
     }
@@ -200,22 +203,8 @@ impl Removal<'_, '_> {
         true
     }
 
-    /// Any tetrahedralization of `domain` by the exact solver, within
-    /// [`EXACT_PIECE_SECONDS`] and the caller's control.
     fn exact_tets(&self, domain: crate::exact::Domain) -> Option<Vec<[u32; 4]>> {
-        let limit = std::time::Duration::from_secs(EXACT_PIECE_SECONDS);
-        let ctl = self.ctl.child().with_time_limit(limit);
-        let options = crate::exact::Options {
-            unique: false,
-            any: true,
-        };
-        match crate::exact::minimal_tetrahedralization(domain, &options, &ctl) {
-            Ok((
-                crate::exact::Outcome::Found { tets } | crate::exact::Outcome::Optimal { tets, .. },
-                _,
-            )) => Some(tets),
-            _ => None,
-        }
+        exact_tets(domain, &self.ctl)
     }
 
     /// When every cap is refused (coplanar facets of the current hull inside `P`, where a
@@ -233,19 +222,48 @@ impl Removal<'_, '_> {
     }
 }
 
-/// Bern's order: the removable vertex of least degree first, degrees updated as the
-/// surface changes (a lazy heap: stale entries are skipped). A refused cap is tried
-/// again once the surface has changed.
+/// Any tetrahedralization of `domain` by the exact solver, within
+/// [`EXACT_PIECE_SECONDS`] and `ctl` (certified by [`crate::exact::solve`]).
+pub(super) fn exact_tets(domain: crate::exact::Domain, ctl: &Control) -> Option<Vec<[u32; 4]>> {
+    let limit = std::time::Duration::from_secs(EXACT_PIECE_SECONDS);
+    let ctl = ctl.child().with_time_limit(limit);
+    let options = crate::exact::Options {
+        unique: false,
+        any: true,
+    };
+    match crate::exact::minimal_tetrahedralization(domain, &options, &ctl) {
+        Ok((
+            crate::exact::Outcome::Found { tets } | crate::exact::Outcome::Optimal { tets, .. },
+            _,
+        )) => Some(tets),
+        _ => None,
+    }
+}
+
+/// The tie-break of tips of one degree: by number for seed 0, else a fixed shuffle.
+fn rank(v: u32, seed: u64) -> u64 {
+    if seed == 0 {
+        return v as u64;
+    }
+    let mut x = (v as u64) ^ seed.wrapping_mul(0x9E37_79B9_7F4A_7C15);
+    x = (x ^ (x >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    x = (x ^ (x >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    x ^ (x >> 31)
+}
+
+/// Bern's order: the removable vertex of least degree first (ties broken by
+/// [`rank`] with `seed`), degrees updated as the surface changes (a lazy heap: stale
+/// entries are skipped). A refused cap is tried again once the surface has changed.
 pub(super) fn run(
     surface: &mut Surface,
     removable: &[u32],
     inner: &[u32],
-    method: Method,
+    (method, seed): (Method, u64),
     ctl: &Control,
 ) -> Result<(Vec<[u32; 4]>, usize), ShellError> {
     let heap = removable
         .iter()
-        .map(|&v| Reverse((surface.degree(v), v)))
+        .map(|&v| Reverse((surface.degree(v), rank(v, seed), v)))
         .collect();
     let mut r = Removal {
         surface,
@@ -254,11 +272,12 @@ pub(super) fn run(
         tets: Vec::new(),
         pieces: 0,
         ctl: ctl.clone(),
+        seed,
     };
     let total = removable.len();
     let mut refused: Vec<u32> = Vec::new();
     loop {
-        let Some(Reverse((d, v))) = r.heap.pop() else {
+        let Some(Reverse((d, _, v))) = r.heap.pop() else {
             // Some refused tips have been removed since, by a pair.
             refused.retain(|v| r.left.contains(v));
             if refused.is_empty() {

@@ -26,6 +26,7 @@
 //! ([`crate::mesh::certify_shell`]).
 
 use super::bins::Bins;
+use super::recover::QEdges;
 use crate::geom::{Hull3, Point3, bounding_box, orient2d_drop, orient3d, projection_axis};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
@@ -42,6 +43,8 @@ pub(super) struct Surface<'a> {
     pub(super) hidden: Bins,
     /// `P` itself, to tell the surface's facets on `∂P` from those inside it.
     outer_hull: &'a Hull3,
+    /// Q's edges, recovered wherever a facet of the surface holds them.
+    q_edges: QEdges,
 }
 
 /// What a removal takes off the surface (triangle ids) and the bottom it leaves.
@@ -107,6 +110,7 @@ impl<'a> Surface<'a> {
         outer_hull: &'a Hull3,
         hidden: &[u32],
         on_outer: &[u32],
+        q_edges: QEdges,
     ) -> Result<Surface<'a>, Refused> {
         let mut tris = outer_hull.triangles.clone();
         let corners: HashSet<u32> = tris.iter().flatten().copied().collect();
@@ -120,6 +124,11 @@ impl<'a> Surface<'a> {
                 "an inner vertex on the outer hull is on none of its triangles",
             ));
         }
+        if !flat.is_empty() || outer_hull.facet_count() < outer_hull.triangles.len() {
+            q_edges
+                .recover(pts, &mut tris, &HashSet::default())
+                .map_err(Refused)?;
+        }
         let mut s = Surface {
             pts,
             tris: Vec::new(),
@@ -128,6 +137,7 @@ impl<'a> Surface<'a> {
             incident: vec![Vec::new(); pts.len()],
             hidden: Bins::new(pts, hidden),
             outer_hull,
+            q_edges,
         };
         for &v in on_outer {
             s.hidden.expose(pts, v);
@@ -410,12 +420,19 @@ impl<'a> Surface<'a> {
         if refine(self.pts, &mut tris, &flat)? != flat.len() {
             return Err(Refused("a point on the hull is on none of its triangles"));
         }
+        let walls: HashSet<(u32, u32)> = boundary.iter().copied().collect();
+        // Every facet a triangle: an edge of Q in a facet is one of its edges already.
+        let simplicial = hull.dimension == 3 && hull.facet_count() == hull.triangles.len();
+        if !simplicial || !flat.is_empty() {
+            self.q_edges
+                .recover(self.pts, &mut tris, &walls)
+                .map_err(Refused)?;
+        }
         let by_edge: HashMap<(u32, u32), usize> = tris
             .iter()
             .enumerate()
             .flat_map(|(i, t)| (0..3).map(move |k| ((t[k], t[(k + 1) % 3]), i)))
             .collect();
-        let walls: HashSet<(u32, u32)> = boundary.iter().copied().collect();
         let mut seen = vec![false; tris.len()];
         let mut stack = Vec::new();
         for e in boundary {
