@@ -86,7 +86,7 @@ pub fn run(a: Args) -> CmdResult {
             out!("{}", p.line());
         }
     }
-    Ok(report::decision_verdict(&d))
+    Ok(d.verdict())
 }
 
 /// The constraints of `path`, whose points must be those of the first input.

@@ -6,7 +6,7 @@ use crate::progress::Run;
 use std::path::Path;
 use std::time::{Duration, Instant};
 use tetrakit::numbering::renumber_text;
-use tetrakit::reduce::QuasiPrism;
+use tetrakit::reduce::{HullGapError, QuasiPrism, QuasiPrismError};
 use tetrakit::{io, report};
 
 /// Which construction `reduce trid-to-tetrad` builds.
@@ -85,8 +85,10 @@ pub fn hull_gap(
     let base = inp.index_base;
     let run = Run::new(time_limit, poly.points.len(), 2000);
     run.stage("flipping reflex edges");
-    let o =
-        tetrakit::reduce::solve_hull_gap(&poly, &run.ctl).map_err(|e| refusal(input, e, base))?;
+    let o = tetrakit::reduce::solve_hull_gap(&poly, &run.ctl).map_err(|e| match e {
+        HullGapError::Uncertified(why) => CliError::internal(why),
+        e => refusal(input, e, base),
+    })?;
     drop(run);
     if let (Some(out), Verdict::Yes) = (output, o.verdict) {
         io::write_mesh(out, &poly.points, &o.tets, base).written(out)?;
@@ -97,13 +99,9 @@ pub fn hull_gap(
     Ok(o.verdict)
 }
 
-/// An error of the library about `input` (vertices in its numbering), or a bug.
+/// An error of the library about `input` (vertices in its numbering).
 fn refusal(input: &Path, e: impl std::fmt::Display, base: u32) -> CliError {
-    let text = renumber_text(&e.to_string(), base);
-    match text.strip_prefix("internal error: ") {
-        Some(bug) => CliError::internal(bug),
-        None => CliError::at(input, text),
-    }
+    CliError::at(input, renumber_text(&e.to_string(), base))
 }
 
 /// The outcome as JSON (with its timing) or as its line.
@@ -141,7 +139,10 @@ pub fn quasi_prism(
     .map_err(|e| refusal(input, e, base))?;
     let run = Run::new(time_limit, q.points.len(), 40);
     run.stage("staircases, then the exact solver");
-    let o = q.solve(&run.ctl).map_err(|e| refusal(input, e, base))?;
+    let o = q.solve(&run.ctl).map_err(|e| match e {
+        QuasiPrismError::Uncertified(why) => CliError::internal(why),
+        e => refusal(input, e, base),
+    })?;
     drop(run);
     if let (Some(out), Verdict::Yes) = (output, o.verdict) {
         io::write_mesh(out, &q.points, &o.tets, base).written(out)?;

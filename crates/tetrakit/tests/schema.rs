@@ -18,32 +18,17 @@ fn kinds(name: &str, def: &str) -> Vec<String> {
         .collect()
 }
 
-#[test]
-fn the_check_schema_names_every_problem_kind() {
-    let ours: Vec<String> = ProblemKind::ALL.iter().map(|k| k.to_string()).collect();
-    assert_eq!(kinds("check", "problem"), ours);
+/// The names of `all`, as the library prints them.
+fn names<T: std::fmt::Display>(all: &[T]) -> Vec<String> {
+    all.iter().map(|k| k.to_string()).collect()
 }
 
 #[test]
-fn the_detect_schema_names_every_witness_kind() {
-    let ours: Vec<String> = WitnessKind::ALL.iter().map(|k| k.to_string()).collect();
-    assert_eq!(kinds("detect", "witness"), ours);
-}
-
-#[test]
-fn the_tetrahedralize_schema_names_every_witness_kind() {
-    let ours: Vec<String> = tetrakit::exact::WitnessKind::ALL
-        .iter()
-        .map(|k| k.to_string())
-        .collect();
-    assert_eq!(kinds("tetrahedralize", "witness"), ours);
-}
-
-#[test]
-fn the_constrain_schema_names_every_witness_kind() {
-    let ours: Vec<String> = tetrakit::constrain::WitnessKind::ALL
-        .iter()
-        .map(|k| k.to_string())
-        .collect();
-    assert_eq!(kinds("constrain", "witness"), ours);
+fn every_schema_names_every_kind_in_order() {
+    assert_eq!(kinds("check", "problem"), names(&ProblemKind::ALL));
+    assert_eq!(kinds("detect", "witness"), names(&WitnessKind::ALL));
+    let exact = names(&tetrakit::exact::WitnessKind::ALL);
+    assert_eq!(kinds("tetrahedralize", "witness"), exact);
+    let constrain = names(&tetrakit::constrain::WitnessKind::ALL);
+    assert_eq!(kinds("constrain", "witness"), constrain);
 }

@@ -82,6 +82,18 @@ pub struct Decision {
     pub planar: bool,
 }
 
+impl Decision {
+    /// The verdict of the answer: `yes`, `no` (with its witness), or `undecided`.
+    pub fn verdict(&self) -> crate::control::Verdict {
+        use crate::control::Verdict;
+        match self.answer {
+            Answer::Yes(_) => Verdict::Yes,
+            Answer::No(_) => Verdict::No,
+            Answer::Undecided => Verdict::Undecided,
+        }
+    }
+}
+
 /// Why no decision could be made.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum ConstrainError {

@@ -33,15 +33,6 @@ struct DecisionJson {
     witness: Option<Witness>,
 }
 
-/// The verdict of a decision.
-pub fn decision_verdict(d: &Decision) -> Verdict {
-    match d.answer {
-        Answer::Yes(_) => Verdict::Yes,
-        Answer::No(_) => Verdict::No,
-        Answer::Undecided => Verdict::Undecided,
-    }
-}
-
 /// The JSON of `d` on `vertices` points and `segments` segments, numbered from `base`;
 /// the cells themselves (`tets` or `tris`) when `cells`, then `extra` fields.
 ///
@@ -63,7 +54,7 @@ pub fn constrain_json<'a>(
 ) -> Value {
     let yes = matches!(d.answer, Answer::Yes(_));
     let mut j = DecisionJson {
-        verdict: decision_verdict(d),
+        verdict: d.verdict(),
         vertices,
         segments,
         planar: d.planar,

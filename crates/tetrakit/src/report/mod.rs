@@ -16,7 +16,7 @@ mod reduce;
 mod shell;
 
 pub use check::check_text;
-pub use constrain::{constrain_json, constrain_text, decision_verdict};
+pub use constrain::{constrain_json, constrain_text};
 pub use detect::{detect_json, detect_text};
 pub use planar::{
     check_random_json, check_random_text, keil_json, keil_text, mwt_json, mwt_text, skeleton_json,

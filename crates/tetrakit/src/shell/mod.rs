@@ -346,7 +346,7 @@ pub fn tetrahedralize(
             &shell.hull,
             &hidden,
             &shell.touching,
-            q_edges.clone(),
+            &q_edges,
         )
         .map_err(|r| ShellError::Internal(r.0.to_string()))?;
         let run = removal::run(&mut surface, &removable, &shell.inner, (method, seed), ctl);

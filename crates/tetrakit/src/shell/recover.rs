@@ -16,7 +16,7 @@ use crate::geom::{Point3, orient2d_drop, orient3d, projection_axis};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
 /// Q's edges, by vertex: `edges[v]` are the vertices joined to `v` by an edge of `Q`.
-#[derive(Clone, Debug, Default)]
+#[derive(Debug, Default)]
 pub(super) struct QEdges(HashMap<u32, Vec<u32>>);
 
 impl QEdges {

@@ -133,7 +133,7 @@ impl Removal<'_, '_> {
         let Ok(poly) = crate::mesh::Polyhedron::new(points, faces) else {
             return false;
         };
-        let Some(tets) = self.exact_tets(crate::exact::Domain::Polyhedron(&poly)) else {
+        let Some(tets) = exact_tets(crate::exact::Domain::Polyhedron(&poly), &self.ctl) else {
             return false;
         };
         let tets = tets.iter().map(|t| t.map(|k| ids[k as usize])).collect();
@@ -192,7 +192,7 @@ impl Removal<'_, '_> {
             inner: &inner_local,
             outer_faces: Some(&faces),
         };
-        let Some(tets) = self.exact_tets(domain) else {
+        let Some(tets) = exact_tets(domain, &self.ctl) else {
             return false;
         };
         self.tets
@@ -201,10 +201,6 @@ impl Removal<'_, '_> {
         self.surface.clear();
         self.left.clear();
         true
-    }
-
-    fn exact_tets(&self, domain: crate::exact::Domain) -> Option<Vec<[u32; 4]>> {
-        exact_tets(domain, &self.ctl)
     }
 
     /// When every cap is refused (coplanar facets of the current hull inside `P`, where a

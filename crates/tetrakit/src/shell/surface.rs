@@ -44,7 +44,7 @@ pub(super) struct Surface<'a> {
     /// `P` itself, to tell the surface's facets on `∂P` from those inside it.
     outer_hull: &'a Hull3,
     /// Q's edges, recovered wherever a facet of the surface holds them.
-    q_edges: QEdges,
+    q_edges: &'a QEdges,
 }
 
 /// What a removal takes off the surface (triangle ids) and the bottom it leaves.
@@ -110,7 +110,7 @@ impl<'a> Surface<'a> {
         outer_hull: &'a Hull3,
         hidden: &[u32],
         on_outer: &[u32],
-        q_edges: QEdges,
+        q_edges: &'a QEdges,
     ) -> Result<Surface<'a>, Refused> {
         let mut tris = outer_hull.triangles.clone();
         let corners: HashSet<u32> = tris.iter().flatten().copied().collect();
