@@ -156,8 +156,7 @@ pub fn generate_gadget_grid(
     spacing: f64,
     output: &Path,
 ) -> CmdResult {
-    let (pts, segs) = constrain::generate::gadget_grid(rows, cols, layers, twist, spacing)
-        .map_err(CliError::new)?;
+    let (pts, segs) = constrain::generate::gadget_grid(rows, cols, layers, twist, spacing)?;
     write_constraints(output, &pts, &segs)?;
     out!(
         "wrote {}: {} points, {} constraints ({rows} × {cols} towers of {layers} Schönhardt gadget(s))",
@@ -176,7 +175,7 @@ pub fn generate_niche(
     seed: u64,
     output: &Path,
 ) -> CmdResult {
-    let g = constrain::generate::niche(twist, extra, in_view, seed).map_err(CliError::new)?;
+    let g = constrain::generate::niche(twist, extra, in_view, seed)?;
     let (pts, segs, n) = (g.points, g.constraints, g.niche);
     write_constraints(output, &pts, &segs)?;
     out!(

@@ -49,6 +49,28 @@ impl From<tetrakit::io::InputError> for CliError {
     }
 }
 
+/// A generator's refusal, its parameter named as the command-line flag (`--n-outer 3:
+/// expected at least 4`).
+impl From<tetrakit::params::GenerateError> for CliError {
+    fn from(e: tetrakit::params::GenerateError) -> Self {
+        use tetrakit::params::GenerateError;
+        match e {
+            GenerateError::OutOfRange {
+                parameter,
+                value,
+                expected,
+            } => {
+                let flag = match parameter.contains(' ') {
+                    true => parameter.to_string(),
+                    false => format!("--{}", parameter.replace('_', "-")),
+                };
+                CliError(format!("{flag} {value}: expected {expected}"))
+            }
+            GenerateError::Unbuildable(why) => CliError(why),
+        }
+    }
+}
+
 /// What every command returns.
 pub type CmdResult = Result<Verdict, CliError>;
 

@@ -7,6 +7,7 @@ use std::time::{Duration, Instant};
 use tetrakit::control::Verdict;
 use tetrakit::exact::{self, Domain, TetraOptions};
 use tetrakit::mesh::Polyhedron;
+use tetrakit::params::GenerateError;
 use tetrakit::polyhedra::{self, Checks, MintetraOptions, generate, hard};
 use tetrakit::{io, report};
 
@@ -165,8 +166,7 @@ pub fn generate(kind: PolyGen, seed: u64, output: &Path) -> CmdResult {
         }
         PolyGen::Schonhardt { twist: None } => (generate::schonhardt(), String::new()),
         PolyGen::Schonhardt { twist: Some(deg) } => {
-            let p =
-                generate::twisted_prism(deg).map_err(|e| CliError::new(format!("--twist: {e}")))?;
+            let p = generate::twisted_prism(deg)?;
             let reflex = generate::reflex_edges(&p).len();
             (p, format!(", {reflex} reflex edge(s)"))
         }
@@ -186,8 +186,8 @@ pub fn generate(kind: PolyGen, seed: u64, output: &Path) -> CmdResult {
 }
 
 /// A polyhedron of [`hard`] with its reflex edges counted, or its refusal.
-fn hard_family(p: Result<Polyhedron, String>) -> Result<(Polyhedron, String), CliError> {
-    let p = p.map_err(CliError::new)?;
+fn hard_family(p: Result<Polyhedron, GenerateError>) -> Result<(Polyhedron, String), CliError> {
+    let p = p?;
     let reflex = generate::reflex_edges(&p).len();
     Ok((p, format!(", {reflex} reflex edge(s)")))
 }

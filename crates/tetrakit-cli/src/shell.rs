@@ -90,7 +90,7 @@ pub fn generate_nested(
     outer: &Path,
     inner: &Path,
 ) -> CmdResult {
-    let (o, i, radius) = tetrakit::shell::generate::nested(p).map_err(CliError::new)?;
+    let (o, i, radius) = tetrakit::shell::generate::nested(p)?;
     write_pair(&o, outer, &i, inner, &format!(" (radius {radius:.4})"))
 }
 
@@ -102,7 +102,7 @@ pub fn generate_bern_disk(
     outer: &Path,
     inner: &Path,
 ) -> CmdResult {
-    let (o, i) = tetrakit::shell::generate::bern_disk(ridge, ring, seed).map_err(CliError::new)?;
+    let (o, i) = tetrakit::shell::generate::bern_disk(ridge, ring, seed)?;
     write_pair(&o, outer, &i, inner, "")
 }
 
@@ -114,8 +114,7 @@ pub fn generate_contact(
     outer: &Path,
     inner: &Path,
 ) -> CmdResult {
-    let (o, i) =
-        tetrakit::shell::generate::contact(kind, n_outer, n_inner, seed).map_err(CliError::new)?;
+    let (o, i) = tetrakit::shell::generate::contact(kind, n_outer, n_inner, seed)?;
     write_pair(&o, outer, &i, inner, "")
 }
 

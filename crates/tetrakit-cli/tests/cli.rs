@@ -1088,7 +1088,7 @@ fn shell_bad_input_and_time_limit() {
         a.extend_from_slice(extra);
         run(&a)
     };
-    one_line(&g(&["--gap", "1.5"]), "gap 1.5 is not in (0, 1)");
+    one_line(&g(&["--gap", "1.5"]), "--gap 1.5: expected in (0, 1)");
     one_line(
         &g(&["--outer", "cube", "--n-outer", "5"]),
         "at least 8 points",
@@ -1107,7 +1107,7 @@ fn shell_bad_input_and_time_limit() {
             s(&i),
         ])
     };
-    one_line(&disk("2"), "at least 3 ridge and 3 ring points");
+    one_line(&disk("2"), "--ridge 2: expected at least 3");
     let touch = |kind: &str, n: &str| {
         run(&[
             "generate",
@@ -1122,7 +1122,7 @@ fn shell_bad_input_and_time_limit() {
             s(&i),
         ])
     };
-    one_line(&touch("edge", "3"), "at least 4 outer and 4 inner points");
+    one_line(&touch("edge", "3"), "--n-inner 3: expected at least 4");
     for kind in ["vertex", "edge", "facet", "facet-point"] {
         assert!(touch(kind, "12").status.success(), "{kind}");
         let v = json(&run(&["shell", s(&o), s(&i), "--json"]));

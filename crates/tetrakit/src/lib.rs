@@ -34,6 +34,7 @@ pub mod geom;
 pub mod io;
 pub mod mesh;
 pub mod numbering;
+pub mod params;
 mod partition;
 pub mod planar;
 pub mod polyhedra;

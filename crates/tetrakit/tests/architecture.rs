@@ -12,7 +12,7 @@ type Module = Vec<String>;
 /// What each top-level module may use (besides itself): the layers below it, and the
 /// few algorithm-to-algorithm edges ARCHITECTURE.md names.
 fn allowed(top: &str) -> Vec<&'static str> {
-    const BASE: &[&str] = &["control", "numbering", "partition", "rows", "rng"];
+    const BASE: &[&str] = &["control", "numbering", "params", "partition", "rows", "rng"];
     if BASE.contains(&top) {
         return Vec::new();
     }

@@ -694,3 +694,27 @@ fn a_corner_filled_by_the_inner_box() {
     assert_eq!(certify_shell(&shell.points, &tets, &shell.inner), Ok(()));
     assert!(tets.len() <= mesh.tets.len());
 }
+
+/// The generators refuse with the parameter, its value and its range, as a variant.
+#[test]
+fn generators_name_the_parameter_out_of_range() {
+    use tetrakit::params::GenerateError;
+    let out_of_range = |e: GenerateError| match e {
+        GenerateError::OutOfRange { parameter, .. } => parameter,
+        GenerateError::Unbuildable(why) => panic!("{why}"),
+    };
+    assert_eq!(out_of_range(bern_disk(2, 10, 1).unwrap_err()), "ridge");
+    assert_eq!(
+        out_of_range(contact(Contact::Edge, 10, 3, 1).unwrap_err()),
+        "n_inner"
+    );
+    let bad_gap = NestedParams {
+        outer: Shape::Sphere,
+        inner: Shape::Sphere,
+        n_outer: 20,
+        n_inner: 20,
+        gap: 1.5,
+        seed: 1,
+    };
+    assert_eq!(out_of_range(nested(&bad_gap).unwrap_err()), "gap");
+}

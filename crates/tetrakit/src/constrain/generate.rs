@@ -2,6 +2,7 @@
 
 use super::niche::{Niche, find_niches};
 use crate::geom::Point3;
+use crate::params::GenerateError;
 use crate::rng::Rng;
 
 /// A generated CT instance and the niche it was built around.
@@ -29,22 +30,30 @@ pub struct NicheInstance {
 /// let Answer::No(w) = d.answer else { panic!() };
 /// assert_eq!(w.kind, WitnessKind::EmptyNicheView);
 /// ```
-pub fn niche(twist: f64, extra: usize, in_view: bool, seed: u64) -> Result<NicheInstance, String> {
+pub fn niche(
+    twist: f64,
+    extra: usize,
+    in_view: bool,
+    seed: u64,
+) -> Result<NicheInstance, GenerateError> {
     if !(twist > 0.0 && twist < 120.0) {
-        return Err(format!(
-            "a twist of {twist}°: a niche needs a twist in (0°, 120°)"
+        return Err(GenerateError::range(
+            "twist",
+            twist,
+            "in (0°, 120°) for a niche",
         ));
     }
     if extra > 10_000 {
-        return Err(format!("{extra} extra points: at most 10000"));
+        return Err(GenerateError::range("extra", extra, "at most 10000"));
     }
-    let s = crate::polyhedra::generate::twisted_prism(twist)
-        .map_err(|e| format!("a twist of {twist}°: the prism is not a simple polyhedron ({e})"))?;
+    let s = crate::polyhedra::generate::twisted_prism(twist)?;
     let segs = s.edges();
     let n = *find_niches(&s.points, &segs)
         .iter()
         .find(|n| n.base.iter().all(|&v| v < 3))
-        .ok_or("the twisted prism has no niche at its bottom")?;
+        .ok_or(GenerateError::Unbuildable(
+            "the twisted prism has no niche at its bottom".into(),
+        ))?;
     let mut pts = s.points.clone();
     let mut rng = Rng::new(seed);
     while pts.len() < 6 + extra {
@@ -67,9 +76,9 @@ pub fn niche(twist: f64, extra: usize, in_view: bool, seed: u64) -> Result<Niche
             .iter()
             .any(|m| !m.sees_base(&pts, centre))
         {
-            return Err(format!(
+            return Err(GenerateError::Unbuildable(format!(
                 "at a twist of {twist}° the centre does not see both niches' bases"
-            ));
+            )));
         }
     }
     Ok(NicheInstance {
@@ -97,17 +106,22 @@ pub fn gadget_grid(
     layers: usize,
     twist: f64,
     spacing: f64,
-) -> Result<(Vec<Point3>, Vec<[u32; 2]>), String> {
-    let ok = twist > 0.0 && twist < 60.0 && spacing >= 2.5 && rows * cols * layers > 0;
-    if !ok {
-        return Err(format!(
-            "a {rows} × {cols} grid at twist {twist}° and spacing {spacing}: at least one gadget, a twist in (0°, 60°), a spacing of at least 2.5"
+) -> Result<(Vec<Point3>, Vec<[u32; 2]>), GenerateError> {
+    let gadgets = rows.saturating_mul(cols).saturating_mul(layers);
+    if !(1..=100_000).contains(&gadgets) {
+        let value = format!("{rows} × {cols} × {layers}");
+        let expected = "between 1 and 100000 gadgets";
+        return Err(GenerateError::range(
+            "rows × cols × layers",
+            value,
+            expected,
         ));
     }
-    if rows.saturating_mul(cols).saturating_mul(layers) > 100_000 {
-        return Err(format!(
-            "{rows} × {cols} × {layers} gadgets: at most 100000"
-        ));
+    if !(twist > 0.0 && twist < 60.0) {
+        return Err(GenerateError::range("twist", twist, "in (0°, 60°)"));
+    }
+    if spacing.is_nan() || spacing < 2.5 {
+        return Err(GenerateError::range("spacing", spacing, "at least 2.5"));
     }
     let s = crate::polyhedra::hard::schonhardt_tower(layers, twist)?;
     let edges = s.edges();

@@ -517,7 +517,7 @@ pub fn schonhardt() -> Polyhedron {
 /// assert!(reflex_edges(&twisted_prism(-30.0).unwrap()).is_empty());
 /// assert!(twisted_prism(130.0).is_err());
 /// ```
-pub fn twisted_prism(degrees: f64) -> Result<Polyhedron, String> {
+pub fn twisted_prism(degrees: f64) -> Result<Polyhedron, crate::params::GenerateError> {
     super::hard::schonhardt_tower(1, degrees)
 }
 

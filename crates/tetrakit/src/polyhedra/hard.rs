@@ -13,6 +13,7 @@
 
 use super::Polyhedron;
 use crate::geom::{Hull3, Point2, Point3, orient2d};
+use crate::params::GenerateError;
 use crate::rng::Rng;
 
 /// Schönhardt's prism stacked: `layers + 1` equilateral triangles of circumradius 1 at
@@ -27,14 +28,17 @@ use crate::rng::Rng;
 /// let t = schonhardt_tower(3, 30.0).unwrap();
 /// assert_eq!((t.points.len(), reflex_edges(&t).len()), (12, 9));
 /// ```
-pub fn schonhardt_tower(layers: usize, twist: f64) -> Result<Polyhedron, String> {
+pub fn schonhardt_tower(layers: usize, twist: f64) -> Result<Polyhedron, GenerateError> {
     if twist.is_nan() || twist.abs() >= 120.0 {
-        return Err(format!(
-            "a twist of {twist}°: the prism's sides cross at 120° or more (and NaN is no angle)"
-        ));
+        let expected = "an angle in (-120°, 120°) (the prism's sides cross at 120°)";
+        return Err(GenerateError::range("twist", twist, expected));
     }
     if !(1..=10_000).contains(&layers) {
-        return Err(format!("{layers} layers: between 1 and 10000"));
+        return Err(GenerateError::range(
+            "layers",
+            layers,
+            "between 1 and 10000",
+        ));
     }
     let step = twist.to_radians();
     let mut points = Vec::with_capacity(3 * (layers + 1));
@@ -53,7 +57,7 @@ pub fn schonhardt_tower(layers: usize, twist: f64) -> Result<Polyhedron, String>
             faces.extend([[b + i, b + j, u + j], [b + i, u + j, u + i]]);
         }
     }
-    Polyhedron::new(points, faces).map_err(|e| e.describe(0))
+    Polyhedron::new(points, faces).map_err(not_simple)
 }
 
 /// Chazelle's polyhedron with `k` grooves on each side (`12k + 8` vertices): the box
@@ -68,9 +72,9 @@ pub fn schonhardt_tower(layers: usize, twist: f64) -> Result<Polyhedron, String>
 /// let p = chazelle(2).unwrap();
 /// assert_eq!(p.points.len(), 32);
 /// ```
-pub fn chazelle(k: usize) -> Result<Polyhedron, String> {
+pub fn chazelle(k: usize) -> Result<Polyhedron, GenerateError> {
     if !(1..=1000).contains(&k) {
-        return Err(format!("{k} grooves: between 1 and 1000"));
+        return Err(GenerateError::range("grooves", k, "between 1 and 1000"));
     }
     let l = (k + 1) as f64;
     let (c, s, delta, w) = (l / 2.0, 0.1, 0.05, 0.25);
@@ -121,7 +125,7 @@ pub fn chazelle(k: usize) -> Result<Polyhedron, String> {
         polygon.extend(close);
         faces.extend(ear_clip(&points, &polygon, axis)?);
     }
-    Polyhedron::new(points, faces).map_err(|e| e.describe(0))
+    Polyhedron::new(points, faces).map_err(not_simple)
 }
 
 /// `n` random points on the unit sphere, the triangles of their convex hull, and each
@@ -136,11 +140,12 @@ pub fn chazelle(k: usize) -> Result<Polyhedron, String> {
 /// assert_eq!(p.points.len(), 20);
 /// assert!(!reflex_edges(&p).is_empty());
 /// ```
-pub fn perturbed(n: usize, dent: f64, seed: u64) -> Result<Polyhedron, String> {
-    if !(4..=100_000).contains(&n) || !(0.0..1.0).contains(&dent) {
-        return Err(format!(
-            "{n} points, dent {dent}: between 4 and 100000 points, a dent in [0, 1)"
-        ));
+pub fn perturbed(n: usize, dent: f64, seed: u64) -> Result<Polyhedron, GenerateError> {
+    if !(4..=100_000).contains(&n) {
+        return Err(GenerateError::range("n", n, "between 4 and 100000"));
+    }
+    if !(0.0..1.0).contains(&dent) {
+        return Err(GenerateError::range("dent", dent, "in [0, 1)"));
     }
     let mut rng = Rng::new(seed);
     for _ in 0..100 {
@@ -164,9 +169,14 @@ pub fn perturbed(n: usize, dent: f64, seed: u64) -> Result<Polyhedron, String> {
             return Ok(p);
         }
     }
-    Err(format!(
+    Err(GenerateError::Unbuildable(format!(
         "no simple polyhedron in 100 draws of {n} points with dent {dent}"
-    ))
+    )))
+}
+
+/// The surface built is not a simple polyhedron.
+fn not_simple(e: crate::mesh::SurfaceError) -> GenerateError {
+    GenerateError::Unbuildable(format!("not a simple polyhedron: {}", e.describe(0)))
 }
 
 fn on_sphere(rng: &mut Rng) -> Point3 {
@@ -181,7 +191,11 @@ fn on_sphere(rng: &mut Rng) -> Point3 {
 
 /// Triangles of a simple polygon lying in a plane `coordinate[axis] = const`, by ear
 /// clipping: an ear is a convex corner whose triangle holds no other corner (closed).
-fn ear_clip(points: &[Point3], polygon: &[u32], axis: usize) -> Result<Vec<[u32; 3]>, String> {
+fn ear_clip(
+    points: &[Point3],
+    polygon: &[u32],
+    axis: usize,
+) -> Result<Vec<[u32; 3]>, GenerateError> {
     let flat = |v: u32| -> Point2 {
         let p = points[v as usize];
         if axis == 0 {
@@ -225,7 +239,9 @@ fn ear_clip(points: &[Point3], polygon: &[u32], axis: usize) -> Result<Vec<[u32;
                     })
         });
         let Some(i) = ear else {
-            return Err("a side polygon has no ear (not simple)".into());
+            return Err(GenerateError::Unbuildable(
+                "a side polygon has no ear (not simple)".into(),
+            ));
         };
         out.push([poly[(i + k - 1) % k], poly[i], poly[(i + 1) % k]]);
         poly.remove(i);

@@ -2,6 +2,7 @@
 
 use super::{Shell, ShellError};
 use crate::geom::Point3;
+use crate::params::GenerateError;
 use crate::rng::Rng;
 use std::f64::consts::TAU;
 
@@ -103,17 +104,19 @@ pub struct NestedParams {
 /// assert_eq!((outer.len(), inner.len()), (40, 8));
 /// assert!(radius <= 0.5);
 /// ```
-pub fn nested(p: &NestedParams) -> Result<(Vec<Point3>, Vec<Point3>, f64), String> {
-    for (shape, n, which) in [(p.outer, p.n_outer, "outer"), (p.inner, p.n_inner, "inner")] {
+pub fn nested(p: &NestedParams) -> Result<(Vec<Point3>, Vec<Point3>, f64), GenerateError> {
+    let sizes = [
+        (p.outer, p.n_outer, "n_outer"),
+        (p.inner, p.n_inner, "n_inner"),
+    ];
+    for (shape, n, which) in sizes {
         if n < min_points(shape) {
-            return Err(format!(
-                "{which} {shape:?} needs at least {} points, not {n}",
-                min_points(shape)
-            ));
+            let expected = format!("at least {} points ({shape:?})", min_points(shape));
+            return Err(GenerateError::range(which, n, expected));
         }
     }
     if !(p.gap > 0.0 && p.gap < 1.0) {
-        return Err(format!("gap {} is not in (0, 1)", p.gap));
+        return Err(GenerateError::range("gap", p.gap, "in (0, 1)"));
     }
     let mut rng = Rng::new(p.seed);
     let outer = shape_points(p.outer, p.n_outer, 1.0, &mut rng);
@@ -133,7 +136,9 @@ pub fn nested(p: &NestedParams) -> Result<(Vec<Point3>, Vec<Point3>, f64), Strin
             _ => return Ok((outer, inner, radius)),
         }
     }
-    Err("the inner shape does not fit inside the outer hull".into())
+    Err(GenerateError::Unbuildable(
+        "the inner shape does not fit inside the outer hull".into(),
+    ))
 }
 
 /// Heights of the Bern disk: the outer rings at `±RING_HEIGHT`, the inner apexes at
@@ -167,11 +172,12 @@ pub fn bern_disk(
     ridge: usize,
     ring: usize,
     seed: u64,
-) -> Result<(Vec<Point3>, Vec<Point3>), String> {
-    if ridge < 3 || ring < 3 {
-        return Err(format!(
-            "a Bern disk needs at least 3 ridge and 3 ring points, not {ridge} and {ring}"
-        ));
+) -> Result<(Vec<Point3>, Vec<Point3>), GenerateError> {
+    if ridge < 3 {
+        return Err(GenerateError::range("ridge", ridge, "at least 3"));
+    }
+    if ring < 3 {
+        return Err(GenerateError::range("ring", ring, "at least 3"));
     }
     let mut rng = Rng::new(seed);
     let radius = 1.0 / (1.5 * std::f64::consts::PI / ring as f64).cos();
@@ -227,11 +233,12 @@ pub fn contact(
     n_outer: usize,
     n_inner: usize,
     seed: u64,
-) -> Result<(Vec<Point3>, Vec<Point3>), String> {
-    if n_outer < 4 || n_inner < 4 {
-        return Err(format!(
-            "a contact shell needs at least 4 outer and 4 inner points, not {n_outer} and {n_inner}"
-        ));
+) -> Result<(Vec<Point3>, Vec<Point3>), GenerateError> {
+    if n_outer < 4 {
+        return Err(GenerateError::range("n_outer", n_outer, "at least 4"));
+    }
+    if n_inner < 4 {
+        return Err(GenerateError::range("n_inner", n_inner, "at least 4"));
     }
     let mut rng = Rng::new(seed);
     let outer: Vec<Point3> = match kind {
@@ -240,7 +247,9 @@ pub fn contact(
     };
     let hull = crate::geom::Hull3::new(&outer);
     if hull.dimension < 3 {
-        return Err("the outer points are flat".into());
+        return Err(GenerateError::Unbuildable(
+            "the outer points are flat".into(),
+        ));
     }
     let corners: Vec<usize> = (0..outer.len()).filter(|&v| hull.on_boundary(v)).collect();
     let k = corners.len() as f64;
