@@ -7,7 +7,9 @@ use tetrakit::exact::Outcome;
 use tetrakit::geom::{Expansion, Hull3, Point3, orient3d_value};
 use tetrakit::mesh::certify_shell;
 use tetrakit::shell::generate::{Contact, NestedParams, Shape, bern_disk, contact, nested};
-use tetrakit::shell::{Method, Shell, ShellError, ShellMesh, improve, optimum, tetrahedralize};
+use tetrakit::shell::{
+    Method, Shell, ShellError, ShellMesh, ShellOptions, improve, optimum, tetrahedralize,
+};
 
 /// Both methods, each certified and within 9n − 6; the cap removal's mesh is returned.
 fn solve(outer: &[Point3], inner: &[Point3]) -> (Shell, ShellMesh) {
@@ -324,6 +326,18 @@ fn bern_disks_within_the_bound_after_flips() {
         );
         let t = improved(&shell, mesh);
         assert!(t <= 3 * shell.n(), "{m:?}: {t} after flips");
+    }
+    // The capability says how it ended: without flips every route is above the bound,
+    // and the smaller mesh is printed with `within_bound: false`; with them, within.
+    for flips in [false, true] {
+        let opts = ShellOptions {
+            method: Method::Cap,
+            flips,
+        };
+        let o = tetrakit::shell::shell(&shell, opts, &Control::new()).unwrap();
+        let t = o.tetrahedra.unwrap();
+        assert_eq!(o.within_bound, Some(flips), "{t} against {}", o.bound);
+        assert_eq!(o.within_bound, Some(t <= o.bound));
     }
 }
 

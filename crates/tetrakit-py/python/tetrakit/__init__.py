@@ -378,6 +378,7 @@ class ShellResult:
     points: np.ndarray = field(repr=False)
     tets: np.ndarray = field(repr=False)
     tetrahedra: Optional[int] = None
+    within_bound: Optional[bool] = None
     tetrahedra_before_flips: Optional[int] = None
     interior_edges: Optional[int] = None
     pieces: Optional[int] = None

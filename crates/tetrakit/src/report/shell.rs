@@ -13,15 +13,26 @@ pub fn shell_text(o: &ShellOutcome, seconds: f64) -> String {
         );
         return s;
     };
+    let bound = match o.within_bound {
+        Some(false) => "ABOVE the bound",
+        _ => "bound",
+    };
     let _ = writeln!(
         s,
-        "YES: {t} tetrahedra for the shell between {} outer and {} inner vertices (n = {}, bound 9n − 6 = {}, {:.2} per vertex), no Steiner point, certified. [{seconds:.3} s]",
+        "YES: {t} tetrahedra for the shell between {} outer and {} inner vertices (n = {}, {bound} 9n − 6 = {}, {:.2} per vertex), no Steiner point, certified. [{seconds:.3} s]",
         o.outer_vertices,
         o.inner_vertices,
         o.n,
         o.bound,
         t as f64 / o.n as f64
     );
+    if o.within_bound == Some(false) {
+        let _ = writeln!(
+            s,
+            "  both methods ended above 9n − 6; the smaller mesh ({}) is printed",
+            o.method
+        );
+    }
     if let (Some(before), Some(Some(f))) = (o.tetrahedra_before_flips, o.flips)
         && before != t
     {

@@ -24,7 +24,8 @@
 //! when they end lower ([`crate::flip`]). They keep both surfaces and add no vertex; on
 //! Bern disks they reach TetGen's count (3.0 per vertex), on random spheres the 3-2
 //! flips remove about 6 %. This, not the removal, is what keeps every output we have
-//! found within 9n − 6.
+//! found within 9n − 6. When the asked method still ends above it, [`shell`] runs the
+//! other and keeps the smaller mesh, and says in `within_bound` how it ended.
 //!
 //! **Optimum** ([`optimum`]): for small shells the exact solver's minimum over every
 //! tetrahedralization (polygon facets triangulated freely), [`crate::exact::Domain::Shell`].

@@ -1,6 +1,8 @@
 //! The `shell` capability as one call: removal by the chosen method, the flips inside the
 //! shell, and the certificate ([`certify_shell`](crate::mesh::certify_shell)), composed
-//! here so that every front end gets the same certified outcome.
+//! here so that every front end gets the same certified outcome. A mesh above Theorem
+//! 4.2's bound 9n − 6 is not the answer while another route may stay within it: the
+//! other method is run too and the smaller mesh kept; `within_bound` says how it ended.
 
 use super::{Improvement, Method, Shell, ShellError, improve, tetrahedralize};
 use crate::control::{Control, Verdict};
@@ -47,8 +49,12 @@ pub struct ShellOutcome {
     pub bound: usize,
     /// Always 0.
     pub steiner_points: usize,
-    /// The method's name.
+    /// The method whose mesh is printed: the one asked for, or the other one when the
+    /// asked one ended above the bound and the other did not (or ended lower).
     pub method: &'static str,
+    /// Whether the printed mesh has at most `bound` tetrahedra (a YES).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub within_bound: Option<bool>,
     /// Tetrahedra (a YES).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub tetrahedra: Option<usize>,
@@ -105,6 +111,7 @@ pub fn shell(s: &Shell, opts: ShellOptions, ctl: &Control) -> Result<ShellOutcom
         bound: 9 * n - 6,
         steiner_points: 0,
         method: opts.method.name(),
+        within_bound: None,
         tetrahedra: None,
         tetrahedra_before_flips: None,
         interior_edges: None,
@@ -112,7 +119,7 @@ pub fn shell(s: &Shell, opts: ShellOptions, ctl: &Control) -> Result<ShellOutcom
         flips: None,
         tets: Vec::new(),
     };
-    let (mesh, done) = match mesh(s, opts, ctl) {
+    let (mesh, done, method) = match within_bound(s, opts, o.bound, ctl) {
         Ok(m) => m,
         Err(ShellError::Stopped) => return Ok(o),
         Err(e) => return Err(e),
@@ -120,6 +127,8 @@ pub fn shell(s: &Shell, opts: ShellOptions, ctl: &Control) -> Result<ShellOutcom
     crate::mesh::certify_shell(&s.points, &mesh.tets, &s.inner)
         .map_err(|p| ShellError::Internal(format!("the shell mesh failed its certificate: {p}")))?;
     o.verdict = Verdict::Yes;
+    o.method = method.name();
+    o.within_bound = Some(mesh.tets.len() <= o.bound);
     o.tetrahedra = Some(mesh.tets.len());
     o.tetrahedra_before_flips = Some(done.before);
     o.interior_edges = Some(mesh.interior_edges());
@@ -130,6 +139,36 @@ pub fn shell(s: &Shell, opts: ShellOptions, ctl: &Control) -> Result<ShellOutcom
     }));
     o.tets = mesh.tets;
     Ok(o)
+}
+
+/// The mesh of the method asked for, or, when it ends above `bound` (Theorem 4.2's
+/// 9n − 6), the smaller of it and the other method's.
+fn within_bound(
+    s: &Shell,
+    opts: ShellOptions,
+    bound: usize,
+    ctl: &Control,
+) -> Result<(super::ShellMesh, Improvement, Method), ShellError> {
+    let (first, done) = mesh(s, opts, ctl)?;
+    if first.tets.len() <= bound {
+        return Ok((first, done, opts.method));
+    }
+    let other = match opts.method {
+        Method::Cap => Method::Bigcap,
+        Method::Bigcap => Method::Cap,
+    };
+    let second = mesh(
+        s,
+        ShellOptions {
+            method: other,
+            ..opts
+        },
+        ctl,
+    )?;
+    Ok(match second.0.tets.len() < first.tets.len() {
+        true => (second.0, second.1, other),
+        false => (first, done, opts.method),
+    })
 }
 
 /// The removals' mesh, improved by flips when asked.
