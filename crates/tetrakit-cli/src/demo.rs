@@ -421,6 +421,20 @@ fn shell_section() {
         );
         shell_line(&shell, Method::Cap);
     }
+    let (outer, inner, _) = tetrakit::shell::lemma41::counterexample();
+    if let Ok(shell) = Shell::new(&outer, &inner) {
+        let opts = tetrakit::shell::ShellOptions {
+            method: Method::Thesis,
+            flips: true,
+        };
+        match tetrakit::shell::shell(&shell, opts, &Control::new()) {
+            Ok(o) if o.witness.is_some() => out!(
+                "  the thesis's Lemma 4.1 fails (`generate lemma41`, 10 points; `shell --method thesis`):\n    {}",
+                o.witness.map(|w| w.detail).unwrap_or_default()
+            ),
+            other => out!("  Lemma 4.1's counterexample: {other:?}"),
+        }
+    }
 }
 
 fn certified(shell: &tetrakit::shell::Shell, tets: &[[u32; 4]]) -> String {

@@ -10,7 +10,7 @@ pub use tetrakit::control::Verdict;
 pub fn code(v: Verdict) -> u8 {
     match v {
         Verdict::Yes => 0,
-        Verdict::No => 1,
+        Verdict::No | Verdict::AssumptionFails => 1,
         Verdict::Undecided => 3,
     }
 }

@@ -313,6 +313,9 @@ enum ShellMethod {
     Cap,
     /// Greedy bigcaps (§4.2–4.3).
     Bigcap,
+    /// BIGCAP-REMOVE's Lemma 4.1 checked exactly first (exit 1 with a witness where it
+    /// fails); steps 2–6 are not built, so where it holds the greedy bigcaps run.
+    Thesis,
 }
 
 #[derive(Args)]
@@ -578,6 +581,15 @@ enum GenKind {
         #[command(flatten)]
         out: PairOutput,
     },
+    /// The smallest counterexample to the thesis's Lemma 4.1 we found (10 points, no four
+    /// coplanar): a tip whose bigcap is simple but not star-shaped from it.
+    Lemma41 {
+        #[command(flatten)]
+        out: PairOutput,
+        /// Print the check's outcome as JSON (that of `shell --method thesis --json`).
+        #[arg(long = "json")]
+        as_json: bool,
+    },
     /// A CT instance for `constrained`: Schönhardt's polyhedron's twelve edges as
     /// constraints, among random points outside its niche's view (Theorem 2.10: NO).
     Niche {
@@ -807,6 +819,7 @@ fn run(cmd: Cmd) -> CmdResult {
             method: match a.method {
                 ShellMethod::Cap => tetrakit::shell::Method::Cap,
                 ShellMethod::Bigcap => tetrakit::shell::Method::Bigcap,
+                ShellMethod::Thesis => tetrakit::shell::Method::Thesis,
             },
             flips: !a.no_flips,
             time_limit: a.time_limit,
@@ -898,6 +911,9 @@ fn run(cmd: Cmd) -> CmdResult {
                     out,
                 },
         }) => shell::generate_bern_disk(ridge, ring, seed, &out.outer_output, &out.inner_output),
+        Cmd::Generate(GenerateArgs {
+            kind: GenKind::Lemma41 { out, as_json },
+        }) => shell::generate_lemma41(&out.outer_output, &out.inner_output, as_json),
         Cmd::Generate(GenerateArgs {
             kind:
                 GenKind::Points2d {

@@ -118,6 +118,45 @@ pub fn generate_contact(
     write_pair(&o, outer, &i, inner, "")
 }
 
+/// `generate lemma41`: writes [`tetrakit::shell::lemma41::counterexample`] and reports
+/// the check of `shell --method thesis` on it.
+pub fn generate_lemma41(outer: &Path, inner: &Path, as_json: bool) -> CmdResult {
+    let (o, i, _) = tetrakit::shell::lemma41::counterexample();
+    io::write_points(outer, &o).written(outer)?;
+    io::write_points(inner, &i).written(inner)?;
+    let shell = Shell::new(&o, &i).map_err(CliError::internal)?;
+    let opts = ShellOptions {
+        method: Method::Thesis,
+        flips: true,
+    };
+    let found = tetrakit::shell::shell(&shell, opts, &tetrakit::control::Control::new())
+        .map_err(CliError::internal)?;
+    let Some(w) = found.witness.as_ref() else {
+        return Err(CliError::internal(
+            "the stored counterexample to Lemma 4.1 does not fail it",
+        ));
+    };
+    if as_json {
+        let shown = |p: &Path| p.display().to_string().into();
+        let extra = [
+            ("outer_output", shown(outer)),
+            ("inner_output", shown(inner)),
+        ];
+        out!("{}", tetrakit::report::json(&found, extra));
+    } else {
+        out!(
+            "wrote {} outer points to {} and {} inner points to {}: tip {}\n{}",
+            o.len(),
+            outer.display(),
+            i.len(),
+            inner.display(),
+            w.tip,
+            w.detail
+        );
+    }
+    Ok(Verdict::Yes)
+}
+
 fn write_pair(o: &[Point3], outer: &Path, i: &[Point3], inner: &Path, note: &str) -> CmdResult {
     io::write_points(outer, o).written(outer)?;
     io::write_points(inner, i).written(inner)?;

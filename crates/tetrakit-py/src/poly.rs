@@ -104,9 +104,10 @@ pub fn shell<'py>(
     let method = match method {
         "cap" => Method::Cap,
         "bigcap" => Method::Bigcap,
+        "thesis" => Method::Thesis,
         m => {
             return Err(value_error(format!(
-                "method '{m}': expected 'cap' or 'bigcap'"
+                "method '{m}': expected 'cap', 'bigcap' or 'thesis'"
             )));
         }
     };

@@ -77,6 +77,10 @@ pub enum Verdict {
     No,
     /// Stopped (time limit or stop request) before an answer.
     Undecided,
+    /// An assumption of the thesis's algorithm fails on this input (`shell --method
+    /// thesis`: Lemma 4.1), with a witness; the exit code of a NO.
+    #[serde(rename = "assumption_fails")]
+    AssumptionFails,
 }
 
 impl From<bool> for Verdict {

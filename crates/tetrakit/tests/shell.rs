@@ -732,3 +732,70 @@ fn generators_name_the_parameter_out_of_range() {
     };
     assert_eq!(out_of_range(nested(&bad_gap).unwrap_err()), "gap");
 }
+
+/// Lemma 4.1 fails as stated: `--method thesis` answers `assumption_fails` on the stored
+/// counterexample, with the tip, `U_v` and a bottom triangle the tip is behind (checked
+/// here with `orient3d_value`, not the module's code); where the lemma holds the shell is
+/// meshed.
+#[test]
+fn thesis_method_names_the_lemma_that_fails() {
+    use tetrakit::control::Verdict;
+    use tetrakit::shell::lemma41::counterexample;
+    let (outer, inner, tip) = counterexample();
+    let shell = Shell::new(&outer, &inner).unwrap();
+    let opts = ShellOptions {
+        method: Method::Thesis,
+        flips: true,
+    };
+    let o = tetrakit::shell::shell(&shell, opts, &Control::new()).unwrap();
+    assert_eq!(
+        (o.verdict, o.lemma_4_1),
+        (Verdict::AssumptionFails, Some("fails"))
+    );
+    let w = o.witness.expect("a witness");
+    assert_eq!((w.tip, w.removed.clone()), (tip, vec![2, 5]));
+    let point = |v: tetrakit::shell::FileVertex| match v.polytope {
+        "outer" => outer[v.index as usize],
+        _ => inner[v.index as usize],
+    };
+    let [a, b, c] = w.bottom.map(point);
+    let sign = |x: &Point3| orient3d_value(&a, &b, &c, x).sign();
+    assert_eq!((sign(&outer[tip as usize]), sign(&point(w.kept))), (-1, -1));
+    // Every point of the new hull (the points not removed) is on that side or the plane.
+    for (k, p) in outer
+        .iter()
+        .enumerate()
+        .filter(|(k, _)| !w.removed.contains(&(*k as u32)))
+    {
+        assert!(sign(p) <= 0, "outer {k}");
+    }
+    assert!(inner.iter().all(|p| sign(p) <= 0));
+    // The other methods mesh it.
+    let cap = ShellOptions {
+        method: Method::Cap,
+        flips: true,
+    };
+    assert_eq!(
+        tetrakit::shell::shell(&shell, cap, &Control::new())
+            .unwrap()
+            .verdict,
+        Verdict::Yes
+    );
+    // In a tetrahedron every other vertex has the facet opposite the tip, and the cone
+    // from the tip over it holds Q: `U_v` is the tip alone and the bigcap a cap.
+    let outer = [
+        [0.0, 0.0, 0.0],
+        [8.0, 0.0, 0.0],
+        [0.0, 8.0, 0.0],
+        [0.0, 0.0, 8.0],
+    ];
+    let inner = [
+        [1.0, 1.0, 1.0],
+        [3.0, 1.0, 1.0],
+        [1.0, 3.0, 1.0],
+        [1.0, 1.0, 3.0],
+    ];
+    let shell = Shell::new(&outer, &inner).unwrap();
+    let o = tetrakit::shell::shell(&shell, opts, &Control::new()).unwrap();
+    assert_eq!((o.verdict, o.lemma_4_1), (Verdict::Yes, Some("holds")));
+}

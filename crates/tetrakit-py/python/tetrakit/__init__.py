@@ -378,6 +378,8 @@ class ShellResult:
     points: np.ndarray = field(repr=False)
     tets: np.ndarray = field(repr=False)
     tetrahedra: Optional[int] = None
+    lemma_4_1: Optional[str] = None
+    witness: Optional[dict] = None
     within_bound: Optional[bool] = None
     tetrahedra_before_flips: Optional[int] = None
     interior_edges: Optional[int] = None
@@ -391,8 +393,10 @@ def shell(outer, inner, method: str = "cap", flips: bool = True,
     (nested point sets) without Steiner points, certified (thesis ch. 4).
 
     ``points`` are the hull vertices (outer, then inner) and ``tets`` index them;
-    ``bound`` is the thesis's 9n - 6. ``method`` is ``"cap"`` (Bern's cap removal) or
-    ``"bigcap"``; ``flips`` improves the result by exact flips inside the shell.
+    ``bound`` is the thesis's 9n - 6. ``method`` is ``"cap"`` (Bern's cap removal),
+    ``"bigcap"``, or ``"thesis"`` (Lemma 4.1 checked first: ``verdict`` is
+    ``"assumption_fails"`` with a ``witness`` where it fails); ``flips`` improves the
+    result by exact flips inside the shell.
 
     >>> import numpy as np, tetrakit
     >>> cube = np.array([[x, y, z] for x in (-2, 2) for y in (-2, 2) for z in (-2, 2)], dtype=float)

@@ -150,7 +150,7 @@ pub fn tetrahedralize_text(o: &TetraOutcome, seconds: f64) -> String {
                 "  certified: orientation, face pairing, no overlap, boundary"
             );
         }
-        Verdict::No => {
+        Verdict::No | Verdict::AssumptionFails => {
             let _ = writeln!(
                 s,
                 "NO: {} cannot be tetrahedralized without Steiner points",

@@ -21,7 +21,7 @@ pub fn hull_gap_text(o: &HullGapOutcome) -> String {
             o.tetrahedra.unwrap_or(0),
             o.vertices
         ),
-        Verdict::No => format!(
+        Verdict::No | Verdict::AssumptionFails => format!(
             "NO: {}",
             o.witness.as_ref().map_or("", |w| w.detail.as_str())
         ),
@@ -43,7 +43,7 @@ pub fn quasi_prism_text(o: &QuasiPrismOutcome) -> String {
         (Verdict::Yes, _) => format!(
             "YES: {t} tetrahedra from the exact solver ({prisms} prism(s); no staircase: {why}); certified"
         ),
-        (Verdict::No, _) => format!(
+        (Verdict::No | Verdict::AssumptionFails, _) => format!(
             "NO: no tetrahedralization keeps every edge of the quasi-prism: {} ({why})",
             o.witness.as_ref().map_or("", |w| w.detail.as_str())
         ),

@@ -6,6 +6,10 @@ use std::fmt::Write;
 /// The lines a person reads for `o`, found in `seconds`.
 pub fn shell_text(o: &ShellOutcome, seconds: f64) -> String {
     let mut s = String::new();
+    if let Some(w) = &o.witness {
+        let _ = writeln!(s, "ASSUMPTION FAILS: {} [{seconds:.3} s]", w.detail);
+        return s;
+    }
     let Some(t) = o.tetrahedra else {
         let _ = writeln!(
             s,
@@ -26,6 +30,21 @@ pub fn shell_text(o: &ShellOutcome, seconds: f64) -> String {
         o.bound,
         t as f64 / o.n as f64
     );
+    match o.lemma_4_1 {
+        Some("holds") => {
+            let _ = writeln!(
+                s,
+                "  Lemma 4.1 holds at every tip of the outer polytope; BIGCAP-REMOVE's steps 2–6 are not built, the greedy bigcaps ran"
+            );
+        }
+        Some(_) => {
+            let _ = writeln!(
+                s,
+                "  Lemma 4.1 not examined (the inner polytope touches the outer one); the greedy bigcaps ran"
+            );
+        }
+        None => {}
+    }
     if o.within_bound == Some(false) {
         let _ = writeln!(
             s,

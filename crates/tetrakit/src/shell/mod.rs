@@ -18,6 +18,11 @@
 //!   (the surface's plan refuses "a bottom triangle is behind the tip"), although both
 //!   are visible past `Q` with their facets, so the thesis's `U_v` does not give a
 //!   star-shaped bigcap there (Lemma 4.1 assumes it does), and bigcaps equal caps.
+//! - [`Method::Thesis`]: Lemma 4.1 checked first, exactly, at every tip ([`lemma41`]).
+//!   The lemma is false as stated: on 260 of 300 random small shells some tip's bigcap
+//!   is simple and not star-shaped from it, and [`lemma41::counterexample`] has 10
+//!   points. Where it fails the answer is the witness; steps 2–6 are not built, so where
+//!   it holds the greedy bigcaps run (they are the repair: pieces kept star-shaped).
 //!
 //! **Flips** ([`improve`]): after the removals, exact 3-2 flips, and above 3 tetrahedra
 //! per vertex Lawson's flips towards the constrained Delaunay tetrahedralization, kept
@@ -82,6 +87,7 @@
 mod bins;
 pub mod generate;
 mod improve;
+pub mod lemma41;
 mod optimum;
 mod outcome;
 mod recover;
@@ -93,7 +99,7 @@ use crate::exact::Domain;
 use crate::geom::{Hull3, Point3, point_key};
 pub use improve::{DELAUNAY_ABOVE, Improvement, improve};
 pub use optimum::optimum;
-pub use outcome::{FlipCounts, ShellOptions, ShellOutcome, shell};
+pub use outcome::{AssumptionWitness, FileVertex, FlipCounts, ShellOptions, ShellOutcome, shell};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use std::fmt;
 use surface::Surface;
@@ -261,6 +267,21 @@ impl Shell {
         })
     }
 
+    /// Vertex `k` of [`Shell::points`] as its input file names it: an outer vertex by
+    /// its index among the outer points, an inner one by its index among the inner.
+    pub fn file_vertex(&self, k: u32) -> outcome::FileVertex {
+        match self.inner.iter().position(|&q| q == k) {
+            Some(i) if k as usize >= self.outer.len() => outcome::FileVertex {
+                polytope: "inner",
+                index: self.inner_source[i],
+            },
+            _ => outcome::FileVertex {
+                polytope: "outer",
+                index: self.outer_source[k as usize],
+            },
+        }
+    }
+
     /// `n = |V(P) ∪ V(Q)|`, the `n` of the thesis's bound `9n − 6`.
     pub fn n(&self) -> usize {
         self.points.len()
@@ -275,6 +296,11 @@ pub enum Method {
     /// Greedy bigcaps (§4.2–4.3): from each tip, in Bern's order, the largest set of
     /// neighbouring outer vertices whose piece stays star-shaped from the tip.
     Bigcap,
+    /// BIGCAP-REMOVE's assumption first: Lemma 4.1 checked exactly at every tip of `P`
+    /// ([`lemma41`]); where it fails the answer is that witness, not a mesh. Steps 2–6
+    /// are not built: where the lemma holds (or `Q` touches `P`, where it is not
+    /// examined) the removal is [`Method::Bigcap`]'s.
+    Thesis,
 }
 
 impl Method {
@@ -283,6 +309,7 @@ impl Method {
         match self {
             Method::Cap => "cap",
             Method::Bigcap => "bigcap",
+            Method::Thesis => "thesis",
         }
     }
 }

@@ -4,8 +4,10 @@
 //! 4.2's bound 9n − 6 is not the answer while another route may stay within it: the
 //! other method is run too and the smaller mesh kept; `within_bound` says how it ended.
 
+use super::lemma41::{Lemma41, Lemma41Witness, lemma_4_1};
 use super::{Improvement, Method, Shell, ShellError, improve, tetrahedralize};
 use crate::control::{Control, Verdict};
+use crate::geom::orient3d_value;
 use serde::Serialize;
 
 /// What [`shell`] is asked.
@@ -52,6 +54,13 @@ pub struct ShellOutcome {
     /// The method whose mesh is printed: the one asked for, or the other one when the
     /// asked one ended above the bound and the other did not (or ended lower).
     pub method: &'static str,
+    /// `--method thesis`: what the check of Lemma 4.1 found (`holds`, `fails`, or
+    /// `not_examined` where `Q` touches `P`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lemma_4_1: Option<&'static str>,
+    /// Where the lemma fails: the tip, `U_v` and the bottom triangle the tip cannot see.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub witness: Option<AssumptionWitness>,
     /// Whether the printed mesh has at most `bound` tetrahedra (a YES).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub within_bound: Option<bool>,
@@ -111,6 +120,8 @@ pub fn shell(s: &Shell, opts: ShellOptions, ctl: &Control) -> Result<ShellOutcom
         bound: 9 * n - 6,
         steiner_points: 0,
         method: opts.method.name(),
+        lemma_4_1: None,
+        witness: None,
         within_bound: None,
         tetrahedra: None,
         tetrahedra_before_flips: None,
@@ -119,6 +130,22 @@ pub fn shell(s: &Shell, opts: ShellOptions, ctl: &Control) -> Result<ShellOutcom
         flips: None,
         tets: Vec::new(),
     };
+    if opts.method == Method::Thesis {
+        let found = match lemma_4_1(s, ctl) {
+            Ok(found) => found,
+            Err(_) => return Ok(o),
+        };
+        o.lemma_4_1 = Some(match &found {
+            Lemma41::Holds { .. } => "holds",
+            Lemma41::Fails(_) => "fails",
+            Lemma41::NotExamined => "not_examined",
+        });
+        if let Lemma41::Fails(w) = found {
+            o.verdict = Verdict::AssumptionFails;
+            o.witness = Some(AssumptionWitness::new(s, &w));
+            return Ok(o);
+        }
+    }
     let (mesh, done, method) = match within_bound(s, opts, o.bound, ctl) {
         Ok(m) => m,
         Err(ShellError::Stopped) => return Ok(o),
@@ -155,7 +182,7 @@ fn within_bound(
     }
     let other = match opts.method {
         Method::Cap => Method::Bigcap,
-        Method::Bigcap => Method::Cap,
+        Method::Bigcap | Method::Thesis => Method::Cap,
     };
     let second = mesh(
         s,
@@ -186,4 +213,75 @@ fn mesh(
         },
     };
     Ok((mesh, done))
+}
+
+/// A vertex of a shell named in its input file: `polytope` is `outer` or `inner`, `index`
+/// 0-based among that file's points.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct FileVertex {
+    /// `outer` or `inner`.
+    pub polytope: &'static str,
+    /// The point's 0-based index in that file.
+    pub index: u32,
+}
+
+/// Lemma 4.1 failing at a tip, in the files' numbering (JSON `witness`).
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct AssumptionWitness {
+    /// Always `lemma_4_1`.
+    pub kind: &'static str,
+    /// The tip `v`, an outer point.
+    pub tip: u32,
+    /// `U_v`, outer points (the tip among them).
+    pub removed: Vec<u32>,
+    /// A bottom triangle `(a, b, c)` of the bigcap, on a facet of the new hull `H` and
+    /// oriented out of it: `det[b − a, c − a, x − a] <= 0` for every vertex `x` of `H`.
+    pub bottom: [FileVertex; 3],
+    /// The sign of `det[b − a, c − a, tip − a]`: `-1`, the side of `H`'s interior, so the
+    /// tip is behind the triangle and sees none of its interior.
+    pub orientation: i8,
+    /// A vertex of `H` off the triangle's plane, on the same side as the tip.
+    pub kept: FileVertex,
+    /// The sign of `det[b − a, c − a, kept − a]`, equal to `orientation`.
+    pub kept_orientation: i8,
+    /// The same in one sentence.
+    pub detail: String,
+}
+
+impl AssumptionWitness {
+    fn new(s: &Shell, w: &Lemma41Witness) -> Self {
+        let file = |k: u32| s.file_vertex(k);
+        let p = |k: u32| &s.points[k as usize];
+        let [a, b, c] = w.bottom;
+        let side = |d: u32| orient3d_value(p(a), p(b), p(c), p(d)).sign();
+        let bottom = w.bottom.map(file);
+        let name = |v: FileVertex| format!("{} {}", v.polytope, v.index);
+        let detail = format!(
+            "Lemma 4.1 fails at tip outer {}: U_v = outer {:?} gives a simple bigcap, but its bottom triangle ({}, {}, {}) faces away from the tip: det[b − a, c − a, tip − a] has the sign {:+} of the new hull's vertex {} (the hull's side)",
+            s.outer_source[w.tip as usize],
+            w.removed
+                .iter()
+                .map(|&r| s.outer_source[r as usize])
+                .collect::<Vec<_>>(),
+            name(bottom[0]),
+            name(bottom[1]),
+            name(bottom[2]),
+            side(w.tip),
+            name(file(w.kept)),
+        );
+        AssumptionWitness {
+            kind: "lemma_4_1",
+            tip: s.outer_source[w.tip as usize],
+            removed: w
+                .removed
+                .iter()
+                .map(|&r| s.outer_source[r as usize])
+                .collect(),
+            bottom,
+            orientation: side(w.tip),
+            kept: file(w.kept),
+            kept_orientation: side(w.kept),
+            detail,
+        }
+    }
 }

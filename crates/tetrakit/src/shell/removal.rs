@@ -300,7 +300,7 @@ pub(super) fn run(
         ctl.check()?;
         let done = match method {
             Method::Cap => r.cap(v),
-            Method::Bigcap => r.bigcap(v),
+            Method::Bigcap | Method::Thesis => r.bigcap(v),
         };
         if done {
             ctl.items((total - r.left.len()) as u64, total as u64);
