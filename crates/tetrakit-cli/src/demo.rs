@@ -426,6 +426,7 @@ fn shell_section() {
         let opts = tetrakit::shell::ShellOptions {
             method: Method::Thesis,
             flips: true,
+            optimum: false,
         };
         match tetrakit::shell::shell(&shell, opts, &Control::new()) {
             Ok(o) if o.witness.is_some() => out!(

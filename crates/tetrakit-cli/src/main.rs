@@ -295,6 +295,10 @@ struct ShellCliArgs {
     /// above 3 tetrahedra per vertex, each keeping both surfaces).
     #[arg(long)]
     no_flips: bool,
+    /// Also the exact minimum over every tetrahedralization (SAT; at most 60 vertices),
+    /// printed instead when proven; stopped by --time-limit, its bounds.
+    #[arg(long)]
+    optimum: bool,
     /// Give up after this many seconds (exit 3).
     #[arg(long, value_parser = seconds)]
     time_limit: Option<Duration>,
@@ -822,6 +826,7 @@ fn run(cmd: Cmd) -> CmdResult {
                 ShellMethod::Thesis => tetrakit::shell::Method::Thesis,
             },
             flips: !a.no_flips,
+            optimum: a.optimum,
             time_limit: a.time_limit,
             as_json: a.json,
             output: a.output.as_deref(),

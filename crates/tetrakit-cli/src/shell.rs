@@ -15,6 +15,7 @@ pub struct ShellArgs<'a> {
     pub inner: &'a Path,
     pub method: Method,
     pub flips: bool,
+    pub optimum: bool,
     pub time_limit: Option<Duration>,
     pub as_json: bool,
     pub output: Option<&'a Path>,
@@ -51,6 +52,7 @@ fn blame(e: ShellError, outer: &Input, inner: &Input) -> CliError {
                 CliError::new(format!("{file}: {what}"))
             }
         }
+        ShellError::TooLargeForOptimum { .. } => CliError::new(format!("--optimum: {e}")),
         ShellError::Internal(why) => CliError::internal(why),
         ShellError::Stopped => CliError::internal(e),
     }
@@ -65,6 +67,7 @@ pub fn shell(a: ShellArgs) -> CmdResult {
     let opts = ShellOptions {
         method: a.method,
         flips: a.flips,
+        optimum: a.optimum,
     };
     let o = tetrakit::shell::shell(&shell, opts, &run.ctl)
         .map_err(|e| blame(e, &outer_in, &inner_in))?;
@@ -128,6 +131,7 @@ pub fn generate_lemma41(outer: &Path, inner: &Path, as_json: bool) -> CmdResult 
     let opts = ShellOptions {
         method: Method::Thesis,
         flips: true,
+        optimum: false,
     };
     let found = tetrakit::shell::shell(&shell, opts, &tetrakit::control::Control::new())
         .map_err(CliError::internal)?;

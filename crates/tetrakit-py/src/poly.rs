@@ -88,17 +88,18 @@ pub fn tetrahedralize<'py>(
 
 type ShellOut<'py> = (Json, Bound<'py, PyArray2<f64>>, Bound<'py, PyArray2<i64>>);
 
-/// `shell(outer, inner, method, flips, time_limit)`: the region between the hulls of two
+/// `shell(outer, inner, method, flips, optimum, time_limit)`: the region between the hulls of two
 /// nested point sets, its JSON, its points (outer vertices, then inner) and its certified
 /// tetrahedra on them (none when undecided).
 #[pyfunction]
-#[pyo3(signature = (outer, inner, method="cap", flips=true, time_limit=None))]
+#[pyo3(signature = (outer, inner, method="cap", flips=true, optimum=false, time_limit=None))]
 pub fn shell<'py>(
     py: Python<'py>,
     outer: PyReadonlyArray2<'py, f64>,
     inner: PyReadonlyArray2<'py, f64>,
     method: &str,
     flips: bool,
+    optimum: bool,
     time_limit: Option<f64>,
 ) -> PyResult<ShellOut<'py>> {
     let method = match method {
@@ -123,7 +124,11 @@ pub fn shell<'py>(
     let (o, i) = (three_d(&outer, "outer")?, three_d(&inner, "inner")?);
     let shell = Shell::new(&o, &i).map_err(value_error)?;
     let ctl = convert::control(time_limit)?;
-    let opts = ShellOptions { method, flips };
+    let opts = ShellOptions {
+        method,
+        flips,
+        optimum,
+    };
     let outcome =
         convert::run(py, &ctl, || tetrakit::shell::shell(&shell, opts, &ctl))?.map_err(internal)?;
     Ok((

@@ -121,6 +121,21 @@ def test_shell_json_follows_the_schema(tmp_path, flips, method, limit):
     assert {k: cli[k] for k in shared} == {k: fields(result, s)[k] for k in shared if k in cli}
 
 
+def test_shell_optimum_json_follows_the_schema(tmp_path):
+    outer, inner = sphere(9, 3.0, 4), sphere(6, 0.5, 5)
+    s = schema("shell")
+    result = tetrakit.shell(outer, inner, optimum=True)
+    jsonschema.validate(fields(result, s), s)
+    best = result.optimum
+    assert best["proven"] and best["lower_bound"] == best["upper_bound"] == result.tetrahedra
+    assert best["upper_bound"] <= best["heuristic"]
+    (tmp_path / "o.xyz").write_text("\n".join(" ".join(repr(float(x)) for x in p) for p in outer))
+    (tmp_path / "i.xyz").write_text("\n".join(" ".join(repr(float(x)) for x in p) for p in inner))
+    cli = cli_json("shell", tmp_path / "o.xyz", tmp_path / "i.xyz", "--optimum")
+    jsonschema.validate(cli, s)
+    assert cli["optimum"] == best
+
+
 def bipyramid(m):
     """A bipyramid over a regular m-gon: an augmented BP-polyhedron (one level)."""
     ring = [[np.cos(2 * np.pi * k / m), np.sin(2 * np.pi * k / m), 0.0] for k in range(m)]

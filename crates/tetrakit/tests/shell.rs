@@ -333,6 +333,7 @@ fn bern_disks_within_the_bound_after_flips() {
         let opts = ShellOptions {
             method: Method::Cap,
             flips,
+            optimum: false,
         };
         let o = tetrakit::shell::shell(&shell, opts, &Control::new()).unwrap();
         let t = o.tetrahedra.unwrap();
@@ -746,6 +747,7 @@ fn thesis_method_names_the_lemma_that_fails() {
     let opts = ShellOptions {
         method: Method::Thesis,
         flips: true,
+        optimum: false,
     };
     let o = tetrakit::shell::shell(&shell, opts, &Control::new()).unwrap();
     assert_eq!(
@@ -774,6 +776,7 @@ fn thesis_method_names_the_lemma_that_fails() {
     let cap = ShellOptions {
         method: Method::Cap,
         flips: true,
+        optimum: false,
     };
     assert_eq!(
         tetrakit::shell::shell(&shell, cap, &Control::new())
@@ -798,4 +801,51 @@ fn thesis_method_names_the_lemma_that_fails() {
     let shell = Shell::new(&outer, &inner).unwrap();
     let o = tetrakit::shell::shell(&shell, opts, &Control::new()).unwrap();
     assert_eq!((o.verdict, o.lemma_4_1), (Verdict::Yes, Some("holds")));
+}
+
+/// `optimum`: the exact minimum beside the removals' and flips' count, its mesh printed
+/// (and certified) when it has fewer; a shell above the exact solver's size is refused.
+#[test]
+fn shell_reports_the_exact_minimum() {
+    let p = NestedParams {
+        outer: Shape::Random,
+        inner: Shape::Sphere,
+        n_outer: 9,
+        n_inner: 6,
+        gap: 0.5,
+        seed: 4,
+    };
+    let (outer, inner, _) = nested(&p).unwrap();
+    let shell = Shell::new(&outer, &inner).unwrap();
+    let opts = ShellOptions {
+        method: Method::Cap,
+        flips: true,
+        optimum: true,
+    };
+    let o = tetrakit::shell::shell(&shell, opts, &Control::new()).unwrap();
+    let best = o.optimum.expect("asked");
+    let Outcome::Optimal { tets, .. } = optimum(&shell, &Control::new()).unwrap().0 else {
+        panic!("small")
+    };
+    assert!(best.proven);
+    assert_eq!(
+        (best.lower_bound, best.upper_bound),
+        (tets.len(), tets.len())
+    );
+    assert_eq!(o.tetrahedra, Some(tets.len()));
+    assert!(
+        best.heuristic > tets.len(),
+        "this shell's flips stop above the minimum"
+    );
+    assert_eq!(certify_shell(&shell.points, &o.tets, &shell.inner), Ok(()));
+    let p = NestedParams {
+        outer: Shape::Sphere,
+        n_outer: 60,
+        n_inner: 20,
+        ..p
+    };
+    let (outer, inner, _) = nested(&p).unwrap();
+    let big = Shell::new(&outer, &inner).unwrap();
+    let refused = tetrakit::shell::shell(&big, opts, &Control::new());
+    assert!(matches!(refused, Err(ShellError::TooLargeForOptimum { n }) if n == big.n()));
 }

@@ -380,6 +380,7 @@ class ShellResult:
     tetrahedra: Optional[int] = None
     lemma_4_1: Optional[str] = None
     witness: Optional[dict] = None
+    optimum: Optional[dict] = None
     within_bound: Optional[bool] = None
     tetrahedra_before_flips: Optional[int] = None
     interior_edges: Optional[int] = None
@@ -387,7 +388,7 @@ class ShellResult:
     flips: Optional[dict] = None
 
 
-def shell(outer, inner, method: str = "cap", flips: bool = True,
+def shell(outer, inner, method: str = "cap", flips: bool = True, optimum: bool = False,
           time_limit: Optional[float] = None) -> ShellResult:
     """Tetrahedralizes the region between the convex hulls of ``outer`` and ``inner``
     (nested point sets) without Steiner points, certified (thesis ch. 4).
@@ -396,7 +397,8 @@ def shell(outer, inner, method: str = "cap", flips: bool = True,
     ``bound`` is the thesis's 9n - 6. ``method`` is ``"cap"`` (Bern's cap removal),
     ``"bigcap"``, or ``"thesis"`` (Lemma 4.1 checked first: ``verdict`` is
     ``"assumption_fails"`` with a ``witness`` where it fails); ``flips`` improves the
-    result by exact flips inside the shell.
+    result by exact flips inside the shell; ``optimum`` adds the exact minimum (at most
+    60 vertices; ``optimum`` holds its bounds) and returns its mesh when proven.
 
     >>> import numpy as np, tetrakit
     >>> cube = np.array([[x, y, z] for x in (-2, 2) for y in (-2, 2) for z in (-2, 2)], dtype=float)
@@ -405,7 +407,8 @@ def shell(outer, inner, method: str = "cap", flips: bool = True,
     >>> r.verdict, r.steiner_points, r.tetrahedra <= r.bound
     ('yes', 0, True)
     """
-    text, pts, tets = _core.shell(_points(outer, "outer"), _points(inner, "inner"), method, flips, time_limit)
+    text, pts, tets = _core.shell(_points(outer, "outer"), _points(inner, "inner"), method, flips,
+                                  optimum, time_limit)
     return _make(ShellResult, text, points=pts, tets=tets)
 
 

@@ -30,6 +30,20 @@ pub fn shell_text(o: &ShellOutcome, seconds: f64) -> String {
         o.bound,
         t as f64 / o.n as f64
     );
+    if let Some(opt) = o.optimum {
+        let _ = match opt.proven {
+            true => writeln!(
+                s,
+                "  the exact minimum (SAT over every tetrahedralization): {} tetrahedra, the mesh printed",
+                opt.upper_bound
+            ),
+            false => writeln!(
+                s,
+                "  the exact minimum: between {} and {} tetrahedra (stopped first)",
+                opt.lower_bound, opt.upper_bound
+            ),
+        };
+    }
     match o.lemma_4_1 {
         Some("holds") => {
             let _ = writeln!(
@@ -52,8 +66,9 @@ pub fn shell_text(o: &ShellOutcome, seconds: f64) -> String {
             o.method
         );
     }
+    let flipped = o.optimum.map_or(t, |x| x.heuristic);
     if let (Some(before), Some(Some(f))) = (o.tetrahedra_before_flips, o.flips)
-        && before != t
+        && before != flipped
     {
         let how = match f.delaunay {
             Some(_) => " (Delaunay flips, then 3-2 flips)",
@@ -61,7 +76,7 @@ pub fn shell_text(o: &ShellOutcome, seconds: f64) -> String {
         };
         let _ = writeln!(
             s,
-            "  the removals made {before}; flips inside the shell took it to {t}{how}"
+            "  the removals made {before}; flips inside the shell took it to {flipped}{how}"
         );
     }
     if o.outer_ignored + o.inner_ignored > 0 {

@@ -99,7 +99,9 @@ use crate::exact::Domain;
 use crate::geom::{Hull3, Point3, point_key};
 pub use improve::{DELAUNAY_ABOVE, Improvement, improve};
 pub use optimum::optimum;
-pub use outcome::{AssumptionWitness, FileVertex, FlipCounts, ShellOptions, ShellOutcome, shell};
+pub use outcome::{
+    AssumptionWitness, FileVertex, FlipCounts, Optimum, ShellOptions, ShellOutcome, shell,
+};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use std::fmt;
 use surface::Surface;
@@ -150,6 +152,11 @@ pub enum ShellError {
         /// The point.
         point: Point3,
     },
+    /// `optimum` was asked of a shell larger than the exact solver takes.
+    TooLargeForOptimum {
+        /// The shell's vertices.
+        n: usize,
+    },
     /// The control stopped the run.
     Stopped,
     /// A removal the construction guarantees was refused by its exact checks (a bug).
@@ -171,6 +178,11 @@ impl fmt::Display for ShellError {
                 f,
                 "inner point {index} ({} {} {}) lies outside the outer hull",
                 point[0], point[1], point[2]
+            ),
+            ShellError::TooLargeForOptimum { n } => write!(
+                f,
+                "the exact minimum takes shells of at most {} vertices; this one has {n}",
+                crate::exact::MAX_VERTICES
             ),
             ShellError::Stopped => write!(f, "stopped"),
             ShellError::Internal(why) => write!(f, "internal error: {why}"),

@@ -17,6 +17,10 @@ pub struct ShellOptions {
     pub method: Method,
     /// Improve the removals' mesh by flips inside the shell.
     pub flips: bool,
+    /// Also the exact minimum ([`super::optimum`], at most
+    /// [`crate::exact::MAX_VERTICES`] vertices); the minimum mesh is the one returned
+    /// when proven.
+    pub optimum: bool,
 }
 
 /// The flips the improvement kept.
@@ -61,6 +65,9 @@ pub struct ShellOutcome {
     /// Where the lemma fails: the tip, `U_v` and the bottom triangle the tip cannot see.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub witness: Option<AssumptionWitness>,
+    /// With `optimum`: the exact minimum, or its bounds when stopped first.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub optimum: Option<Optimum>,
     /// Whether the printed mesh has at most `bound` tetrahedra (a YES).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub within_bound: Option<bool>,
@@ -97,7 +104,7 @@ fn undecided(f: &Option<Option<FlipCounts>>) -> bool {
 /// use tetrakit::shell::{Method, Shell, ShellOptions, generate::bern_disk, shell};
 /// let (outer, inner) = bern_disk(60, 12, 1).unwrap();
 /// let s = Shell::new(&outer, &inner).unwrap();
-/// let opts = ShellOptions { method: Method::Cap, flips: true };
+/// let opts = ShellOptions { method: Method::Cap, flips: true, optimum: false };
 /// let o = shell(&s, opts, &Control::new()).unwrap();
 /// assert_eq!(o.verdict, tetrakit::control::Verdict::Yes);
 /// assert!(o.tetrahedra.unwrap() <= o.bound);
@@ -122,6 +129,7 @@ pub fn shell(s: &Shell, opts: ShellOptions, ctl: &Control) -> Result<ShellOutcom
         method: opts.method.name(),
         lemma_4_1: None,
         witness: None,
+        optimum: None,
         within_bound: None,
         tetrahedra: None,
         tetrahedra_before_flips: None,
@@ -146,11 +154,21 @@ pub fn shell(s: &Shell, opts: ShellOptions, ctl: &Control) -> Result<ShellOutcom
             return Ok(o);
         }
     }
-    let (mesh, done, method) = match within_bound(s, opts, o.bound, ctl) {
+    if opts.optimum && n > crate::exact::MAX_VERTICES {
+        return Err(ShellError::TooLargeForOptimum { n });
+    }
+    let (mut mesh, done, method) = match within_bound(s, opts, o.bound, ctl) {
         Ok(m) => m,
         Err(ShellError::Stopped) => return Ok(o),
         Err(e) => return Err(e),
     };
+    if opts.optimum {
+        let (report, best) = exact_minimum(s, mesh.tets.len(), ctl)?;
+        o.optimum = Some(report);
+        if let Some(best) = best {
+            mesh.tets = best;
+        }
+    }
     crate::mesh::certify_shell(&s.points, &mesh.tets, &s.inner)
         .map_err(|p| ShellError::Internal(format!("the shell mesh failed its certificate: {p}")))?;
     o.verdict = Verdict::Yes;
@@ -284,4 +302,47 @@ impl AssumptionWitness {
             detail,
         }
     }
+}
+
+/// The exact minimum of a shell's tetrahedra (`shell --optimum`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct Optimum {
+    /// The minimum was proven (then `lower_bound == upper_bound`).
+    pub proven: bool,
+    /// No tetrahedralization has fewer tetrahedra.
+    pub lower_bound: usize,
+    /// The fewest found: the removals' and flips' mesh, or the exact solver's.
+    pub upper_bound: usize,
+    /// The removals' and flips' count, before the exact solver.
+    pub heuristic: usize,
+}
+
+type Tets = Vec<[u32; 4]>;
+
+/// The exact solver's minimum against `found` tetrahedra, and its mesh when it has fewer.
+fn exact_minimum(
+    s: &Shell,
+    found: usize,
+    ctl: &Control,
+) -> Result<(Optimum, Option<Tets>), ShellError> {
+    use crate::exact::Outcome;
+    let (outcome, _) = super::optimum(s, ctl).map_err(|e| ShellError::Internal(e.to_string()))?;
+    let (proven, lower, best) = match outcome {
+        Outcome::Optimal { tets, .. } | Outcome::Found { tets } => (true, tets.len(), Some(tets)),
+        Outcome::Undecided { best, lower } => (false, lower, best),
+        Outcome::Infeasible => {
+            return Err(ShellError::Internal(
+                "the exact solver found no tetrahedralization of a shell that has one".into(),
+            ));
+        }
+    };
+    let best = best.filter(|b| b.len() < found);
+    let upper = best.as_ref().map_or(found, Vec::len);
+    let report = Optimum {
+        proven,
+        lower_bound: if proven { upper } else { lower.min(upper) },
+        upper_bound: upper,
+        heuristic: found,
+    };
+    Ok((report, best))
 }
