@@ -402,9 +402,13 @@ struct GenerateArgs {
 
 #[derive(Args, Clone)]
 struct GenCommon {
-    /// Output file: .ele (writes .node, .ele and .edge), .edge (with .node), .obj, .json or .vtk.
+    /// Output file: .ele (writes .node, .ele and .edge), .edge (with .node), .obj, .json,
+    /// .vtk, .vtu, or .pvtu (ParaView's partitioned layout: one .vtu per piece beside it).
     #[arg(long, short)]
     output: PathBuf,
+    /// With a .pvtu output, the number of pieces (slabs along x).
+    #[arg(long, default_value_t = 4)]
+    pieces: usize,
     /// Break the instance so that it is not a tetrahedralization.
     #[arg(long, value_enum)]
     corrupt: Option<CorruptKind>,

@@ -106,6 +106,9 @@ pub fn check(a: &crate::CheckArgs) -> CmdResult {
     if let Some(out) = &a.output {
         write_problems(out, &input.points, &outcome)?;
     }
+    let partitioned = !input.pieces.is_empty();
+    let placed = tetrakit::report::problem_pieces(&outcome, &input);
+    let pieces_text = tetrakit::report::pieces_text(&outcome, &input);
     let outcome = outcome.relabeled(
         |v| input.point_label(v as usize),
         |t| input.tet_label(t as usize),
@@ -113,16 +116,23 @@ pub fn check(a: &crate::CheckArgs) -> CmdResult {
     let seconds = start.elapsed().as_secs_f64();
     let other = input.other_cells.as_ref();
     if as_json {
-        let extra = [
+        let mut extra = vec![
             ("other_cells", other.map_or(0, |o| o.count).into()),
             ("seconds", seconds.into()),
             ("parse_seconds", parsed.into()),
         ];
+        if partitioned {
+            extra.push(("pieces", input.pieces.len().into()));
+            extra.push(("problem_pieces", serde_json::json!(placed)));
+        }
         out!("{}", tetrakit::report::json(&outcome, extra));
     } else {
         let other = other.map(|o| (o.count, o.message.as_str()));
         let text = tetrakit::report::check_text(&outcome, seconds, other);
         out!("{}", text.trim_end());
+        if partitioned {
+            out!("{}", pieces_text.trim_end());
+        }
     }
     Ok(Verdict::from(outcome.is_valid()))
 }
@@ -204,7 +214,15 @@ fn write_generated(name: &str, mut mesh: Tetrahedralization, c: &GenCommon) -> C
         (mesh, edges) = corrupted(mesh, &edges, k, c.seed)?;
     }
     let out = &c.output;
-    io::write_instance(out, &mesh.points, &mesh.tets, &edges).written(out)?;
+    let partitioned = out
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("pvtu"));
+    if partitioned {
+        let pieces = tetrakit::generate::slabs(&mesh.points, &mesh.tets, c.pieces);
+        io::write_pieces(out, &mesh.points, &mesh.tets, &pieces).written(out)?;
+    } else {
+        io::write_instance(out, &mesh.points, &mesh.tets, &edges).written(out)?;
+    }
     let corrupted = c
         .corrupt
         .map(|k| format!(", corrupted by {}", user_name(k)))

@@ -95,6 +95,20 @@ def test_detect_json_follows_the_schema(tmp_path, case):
     assert {k: out[k] for k in shared} == {k: fields(result, s)[k] for k in shared}
 
 
+@pytest.mark.parametrize("corrupt", [None, "add-overlap"])
+def test_partitioned_check_json_follows_the_schema(tmp_path, corrupt):
+    path = tmp_path / "k.pvtu"
+    args = ["generate", "kuhn", "--size", "4", "-o", path, "--pieces", "3"]
+    args += [] if corrupt is None else ["--corrupt", corrupt]
+    subprocess.run([str(EXE), *map(str, args)], check=True, capture_output=True)
+    out = cli_json("check", path)
+    jsonschema.validate(out, schema("check"))
+    assert out["pieces"] == 3 and len(out["problem_pieces"]) == len(out["problems"])
+    assert out["verdict"] == ("yes" if corrupt is None else "no")
+    for placed, problem in zip(out["problem_pieces"], out["problems"]):
+        assert len(placed) == len(problem["tets"]) and all(0 <= p < 3 for p, _ in placed)
+
+
 def sphere(n, r, seed):
     g = np.random.default_rng(seed).normal(size=(n, 3))
     return r * g / np.linalg.norm(g, axis=1)[:, None]

@@ -421,6 +421,31 @@ pub fn add_overlapping_tet(t: &Tetrahedralization, seed: u64) -> Option<Tetrahed
     Some(out)
 }
 
+/// A partition of `tets` into `k` slabs along x, as a domain decomposition makes them:
+/// the tetrahedra ordered by their lowest corner's x (ties by index) and cut into `k`
+/// runs of equal size; the piece of each tetrahedron.
+///
+/// ```
+/// let t = tetrakit::generate::kuhn(2);
+/// let pieces = tetrakit::generate::slabs(&t.points, &t.tets, 4);
+/// assert_eq!((pieces.len(), pieces.iter().max()), (48, Some(&3)));
+/// ```
+pub fn slabs(points: &[Point3], tets: &[[u32; 4]], k: usize) -> Vec<u32> {
+    let low = |t: &[u32; 4]| {
+        t.iter()
+            .map(|&v| points[v as usize][0])
+            .fold(f64::INFINITY, f64::min)
+    };
+    let mut order: Vec<usize> = (0..tets.len()).collect();
+    order.sort_by(|&a, &b| low(&tets[a]).total_cmp(&low(&tets[b])).then(a.cmp(&b)));
+    let mut piece = vec![0u32; tets.len()];
+    let k = k.clamp(1, tets.len().max(1));
+    for (rank, &t) in order.iter().enumerate() {
+        piece[t] = (rank * k / tets.len()) as u32;
+    }
+    piece
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -18,6 +18,7 @@ mod medit;
 mod obj;
 mod off;
 mod planar;
+mod pvtu;
 mod stl;
 mod stream;
 mod svg;
@@ -31,8 +32,8 @@ mod write;
 pub use planar::{keil_svg, write_planar_edges, write_planar_triangulation, write_points2d};
 pub use svg::{Figure, Svg};
 pub use write::{
-    Fields, write_edges, write_instance, write_mesh, write_mesh_with_fields, write_points,
-    write_surface, write_triangulation, write_vtk,
+    Fields, write_edges, write_instance, write_mesh, write_mesh_with_fields, write_pieces,
+    write_points, write_surface, write_triangulation, write_vtk,
 };
 
 use crate::geom::{Point3, coordinate_in_range, lex_cmp};
@@ -142,6 +143,19 @@ pub struct Input {
     /// `.ele` numbered with gaps, or from another base than its `.node`); empty otherwise.
     /// See [`Input::tet_label`].
     pub tet_labels: Vec<u32>,
+    /// The pieces of a partitioned mesh (a `.pvtu`'s files, or the `Piece`s of a
+    /// `.vtu`), in order, each with its first tetrahedron; empty for other formats.
+    pub pieces: Vec<Piece>,
+}
+
+/// One piece of a partitioned mesh: its file, and where its tetrahedra start among
+/// [`Input::tets`].
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Piece {
+    /// The file the piece was read from.
+    pub file: PathBuf,
+    /// Its first tetrahedron's index in [`Input::tets`].
+    pub first_tet: u32,
 }
 
 /// Cells a reader found but does not keep: how many, and where the first is.
@@ -198,12 +212,27 @@ impl Input {
         }
     }
 
-    /// Where tetrahedron `k` was read, for messages: `file:line` or `file` (`tets[k]`).
+    /// Where tetrahedron `k` was read, for messages: `file:line` or `file` (`tets[k]`);
+    /// in a partitioned mesh, the piece's file.
     pub fn tet_origin(&self, k: usize) -> String {
+        let file = match self.tet_piece(k) {
+            Some((p, _)) => self.pieces[p].file.display(),
+            None => self.tet_file.display(),
+        };
         match self.tet_lines.get(k) {
-            Some(&line) if line > 0 => format!("{}:{line}", self.tet_file.display()),
-            _ => format!("{}: tets[{k}]", self.tet_file.display()),
+            Some(&line) if line > 0 => format!("{file}:{line}"),
+            _ => format!("{file}: tets[{k}]"),
         }
+    }
+
+    /// In a partitioned mesh, the piece of tetrahedron `k` and its 0-based index among
+    /// that piece's tetrahedra.
+    pub fn tet_piece(&self, k: usize) -> Option<(usize, u32)> {
+        let p = self
+            .pieces
+            .partition_point(|p| p.first_tet as usize <= k)
+            .checked_sub(1)?;
+        Some((p, k as u32 - self.pieces[p].first_tet))
     }
 }
 
@@ -315,6 +344,7 @@ fn read_any(path: &Path) -> Result<Input, InputError> {
             }
         }
         "vtu" => vtu::read(path)?,
+        "pvtu" => pvtu::read(path)?,
         "msh" if gmsh::is_binary(path) => gmsh_binary::read(path)?,
         "msh" => gmsh::read(path)?,
         "json" => json::read(path)?,
@@ -324,7 +354,7 @@ fn read_any(path: &Path) -> Result<Input, InputError> {
                 path,
                 0,
                 format!(
-                    "unknown input format '.{ext}' (expected .node, .edge, .ele, .face, .obj, .off, .stl, .mesh, .msh, .vtk, .vtu, .json, .xyz or .txt)"
+                    "unknown input format '.{ext}' (expected .node, .edge, .ele, .face, .obj, .off, .stl, .mesh, .msh, .vtk, .vtu, .pvtu, .json, .xyz or .txt)"
                 ),
             ));
         }

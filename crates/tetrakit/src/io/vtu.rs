@@ -22,7 +22,9 @@ use super::vtu_data::{
     Compressor, Layout, Values, ascii_values, binary_values, block, block_from_base64, width,
 };
 use super::{Input, InputError, read_bytes};
+use crate::geom::point_key;
 use quick_xml::events::{BytesStart, Event};
+use rustc_hash::FxHashMap as HashMap;
 use std::path::Path;
 
 /// What a `DataArray` holds, by where it sits.
@@ -68,19 +70,90 @@ enum Appended<'a> {
 }
 
 pub(super) fn read(path: &Path) -> Result<Input, InputError> {
+    let mut merged = Merged::new(path);
+    read_into(path, &mut merged)?;
+    merged.finish(path)
+}
+
+/// Pieces read so far, one mesh: a point of a later piece (or piece file) at the exact
+/// coordinates of a point of an earlier one is that point (the interface vertices a
+/// partition repeats in each piece), while points repeated inside one piece stay
+/// apart, as in a single-piece file.
+pub(super) struct Merged {
+    input: Input,
+    sorter: CellSorter,
+    earlier: HashMap<[u64; 3], u32>,
+    /// Where the current piece's points start.
+    first: usize,
+    /// Each local point of the current piece as an index into the merged points.
+    local: Vec<u32>,
+    /// The file being read.
+    file: std::path::PathBuf,
+}
+
+impl Merged {
+    pub(super) fn new(path: &Path) -> Self {
+        Merged {
+            input: Input {
+                dim: 3,
+                point_file: path.to_path_buf(),
+                tet_file: path.to_path_buf(),
+                ..Default::default()
+            },
+            sorter: CellSorter::default(),
+            earlier: HashMap::default(),
+            first: 0,
+            local: Vec::new(),
+            file: path.to_path_buf(),
+        }
+    }
+
+    /// Adds a piece's points, sharing those of earlier pieces.
+    fn add_points(&mut self, coordinates: &[f64]) {
+        for k in self.first..self.input.points.len() {
+            self.earlier
+                .entry(point_key(&self.input.points[k]))
+                .or_insert(k as u32);
+        }
+        self.first = self.input.points.len();
+        self.local.clear();
+        for c in coordinates.chunks_exact(3) {
+            let p = [c[0], c[1], c[2]];
+            let k = match self.earlier.get(&point_key(&p)) {
+                Some(&k) => k,
+                None => {
+                    self.input.points.push(p);
+                    (self.input.points.len() - 1) as u32
+                }
+            };
+            self.local.push(k);
+        }
+        let first_tet = self.input.tets.len() as u32;
+        let file = self.file.clone();
+        self.input.pieces.push(super::Piece { file, first_tet });
+    }
+
+    pub(super) fn finish(mut self, path: &Path) -> Result<Input, InputError> {
+        self.sorter.finish(&mut self.input);
+        if self.input.pieces.len() == 1 {
+            self.input.pieces.clear();
+        }
+        if self.input.points.is_empty() {
+            return Err(InputError::new(path, 0, "no points"));
+        }
+        Ok(self.input)
+    }
+}
+
+/// Reads the pieces of the `.vtu` at `path` into `merged`.
+pub(super) fn read_into(path: &Path, merged: &mut Merged) -> Result<(), InputError> {
+    merged.file = path.to_path_buf();
     let bytes = read_bytes(path)?;
     let lines = LineIndex::new(&bytes);
     let (xml, appended) = split_appended(&bytes, path, &lines)?;
     let xml = std::str::from_utf8(xml)
         .map_err(|e| InputError::new(path, lines.at(e.valid_up_to()), "not UTF-8 text"))?;
     let (layout, arrays, pieces) = scan(xml, path, &lines)?;
-    let mut input = Input {
-        dim: 3,
-        point_file: path.to_path_buf(),
-        tet_file: path.to_path_buf(),
-        ..Default::default()
-    };
-    let mut sorter = CellSorter::default();
     let source = Decoder {
         path,
         layout,
@@ -94,13 +167,9 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
                 return Err(InputError::new(path, a.line, why));
             }
         }
-        add_piece(&source, p, *piece, mine, &mut input, &mut sorter)?;
+        add_piece(&source, p, *piece, mine, merged)?;
     }
-    sorter.finish(&mut input);
-    if input.points.is_empty() {
-        return Err(InputError::new(path, pieces[0].line, "no points"));
-    }
-    Ok(input)
+    Ok(())
 }
 
 /// Line numbers of byte offsets.
@@ -408,11 +477,9 @@ fn add_piece(
     p: usize,
     piece: Piece,
     [points, conn, offsets, types]: [Option<&Array>; 4],
-    input: &mut Input,
-    sorter: &mut CellSorter,
+    merged: &mut Merged,
 ) -> Result<(), InputError> {
-    let first = input.points.len();
-    add_points(d, piece, points, input)?;
+    add_points(d, piece, points, merged)?;
     let offsets = d.ints(offsets, piece.cells, piece)?;
     let types = d.ints(types, piece.cells, piece)?;
     let line = |a: Option<&Array>| a.map_or(piece.line, |a| a.line);
@@ -442,10 +509,11 @@ fn add_piece(
                 );
                 return Err(err(conn, why));
             }
-            cell.push((first + v as usize) as u32);
+            cell.push(merged.local[v as usize]);
         }
-        sorter
-            .add(t, &cell, line(conn), input)
+        merged
+            .sorter
+            .add(t, &cell, line(conn), &mut merged.input)
             .map_err(|why| err(conn, format!("cell {k} of piece {p}: {why}")))?;
         begin = end;
     }
@@ -457,21 +525,22 @@ fn add_points(
     d: &Decoder,
     piece: Piece,
     points: Option<&Array>,
-    input: &mut Input,
+    merged: &mut Merged,
 ) -> Result<(), InputError> {
     let want = piece.points.saturating_mul(3);
     match points.map(|a| (a, d.values(a, want))) {
         Some((_, Ok(Values::Float(c)))) => {
-            input
-                .points
-                .extend(c.chunks_exact(3).map(|c| [c[0], c[1], c[2]]));
+            merged.add_points(&c);
             Ok(())
         }
         Some((a, Ok(Values::Int(_)))) => {
             Err(InputError::new(d.path, a.line, "integer point coordinates"))
         }
         Some((_, Err(e))) => Err(e),
-        None if piece.points == 0 => Ok(()),
+        None if piece.points == 0 => {
+            merged.add_points(&[]);
+            Ok(())
+        }
         None => {
             let why = format!("a Piece of {} points without Points", piece.points);
             Err(InputError::new(d.path, piece.line, why))

@@ -242,6 +242,49 @@ fn join_lines<T: std::fmt::Display>(s: &mut String, values: impl Iterator<Item =
     s.push('\n');
 }
 
+/// Writes a partitioned mesh as ParaView does: piece `k` (the tetrahedra `t` with
+/// `piece_of[t] == k`, on the points they use, renumbered from 0) as `<stem>_<k>.vtu`
+/// beside `path`, and the `.pvtu` index naming them at `path`. Interface points are
+/// written once in every piece that uses them.
+pub fn write_pieces(
+    path: &Path,
+    points: &[Point3],
+    tets: &[[u32; 4]],
+    piece_of: &[u32],
+) -> io::Result<()> {
+    let pieces = piece_of.iter().map(|&k| k as usize + 1).max().unwrap_or(0);
+    let stem = path
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let mut names = Vec::with_capacity(pieces);
+    for k in 0..pieces {
+        let mine: Vec<[u32; 4]> = tets
+            .iter()
+            .zip(piece_of)
+            .filter(|&(_, &p)| p as usize == k)
+            .map(|(t, _)| *t)
+            .collect();
+        let mut local = std::collections::HashMap::new();
+        let mut pts = Vec::new();
+        let renumbered: Vec<[u32; 4]> = mine
+            .iter()
+            .map(|t| {
+                t.map(|v| {
+                    *local.entry(v).or_insert_with(|| {
+                        pts.push(points[v as usize]);
+                        (pts.len() - 1) as u32
+                    })
+                })
+            })
+            .collect();
+        let name = path.with_file_name(format!("{stem}_{k}.vtu"));
+        save(&name, vtu_text(&pts, &renumbered, &Fields::default()))?;
+        names.push(name);
+    }
+    save(path, super::pvtu::index_text(&names))
+}
+
 pub(super) fn ext(path: &Path) -> String {
     path.extension()
         .and_then(|e| e.to_str())
@@ -347,7 +390,7 @@ pub fn write_instance(
     match ext(path).as_str() {
         "ele" => write_mesh(path, points, tets, 1)
             .and_then(|_| write_edges(&path.with_extension("edge"), points, segments, 1)),
-        "vtk" => write_mesh(path, points, tets, 0),
+        "vtk" | "vtu" => write_mesh(path, points, tets, 0),
         "json" => {
             let segs: Vec<[u32; 2]> = segments.iter().map(|&(a, b)| [a, b]).collect();
             let v = serde_json::json!({ "points": points, "segments": segs, "tets": tets });

@@ -70,3 +70,47 @@ pub fn check_text(
     }
     s
 }
+
+/// Where the tetrahedra of each problem of `o` lie in a partitioned mesh `input` (its
+/// pieces, [`crate::io::Input::pieces`]): for each problem, `[piece, cell]` per
+/// tetrahedron, both 0-based. `o` must not be relabeled yet.
+pub fn problem_pieces(o: &CheckOutcome, input: &crate::io::Input) -> Vec<Vec<[u32; 2]>> {
+    o.problems
+        .iter()
+        .map(|p| {
+            p.cells
+                .iter()
+                .filter_map(|&t| input.tet_piece(t as usize))
+                .map(|(piece, cell)| [piece as u32, cell])
+                .collect()
+        })
+        .collect()
+}
+
+/// The lines that place the first problems' tetrahedra in their pieces, after
+/// [`check_text`]: `T900 is cell 17 of piece 2 (k_2.vtu)`.
+pub fn pieces_text(o: &CheckOutcome, input: &crate::io::Input) -> String {
+    let mut s = format!(
+        "  read from {} pieces, interface vertices merged by exact coordinates\n",
+        input.pieces.len()
+    );
+    let mut named: Vec<u32> = o
+        .problems
+        .iter()
+        .take(10)
+        .flat_map(|p| p.cells.iter().copied())
+        .collect();
+    named.sort_unstable();
+    named.dedup();
+    for t in named {
+        if let Some((piece, cell)) = input.tet_piece(t as usize) {
+            let file = input.pieces[piece].file.display();
+            let _ = writeln!(
+                s,
+                "  T{} is cell {cell} of piece {piece} ({file})",
+                input.tet_label(t as usize)
+            );
+        }
+    }
+    s
+}

@@ -1,0 +1,198 @@
+//! Partitioned meshes (`.pvtu` and multi-piece `.vtu`): checking the pieces gives the
+//! verdict and the problems of checking the merged mesh, on valid and corrupted meshes
+//! cut into pieces in several ways (slabs, random labels), interface vertices written
+//! once per piece.
+
+use std::path::{Path, PathBuf};
+use tetrakit::geom::Point3;
+use tetrakit::io::{ReadOptions, read_input_with, write_pieces};
+use tetrakit::mesh::{CheckOptions, check};
+use tetrakit::rng::Rng;
+
+fn dir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!(
+        "tetrakit-partitioned-{name}-{}",
+        std::process::id()
+    ));
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// A problem's kind and its tetrahedra, each as its sorted corners' coordinate bits.
+type Named = (String, Vec<[[u64; 3]; 4]>);
+
+/// The problems of a check as (kind, the tetrahedra named as their corners' coordinates),
+/// sorted: comparable across numberings.
+fn problems(points: &[Point3], tets: &[[u32; 4]]) -> (bool, Vec<Named>) {
+    let o = check(points, tets.to_vec(), CheckOptions::default());
+    let corners = |t: u32| {
+        let mut c = tets[t as usize].map(|v| points[v as usize].map(f64::to_bits));
+        c.sort();
+        c
+    };
+    let mut found: Vec<_> = o
+        .problems
+        .iter()
+        .map(|p| {
+            let mut cells: Vec<_> = p.cells.iter().map(|&t| corners(t)).collect();
+            cells.sort();
+            (p.kind.to_string(), cells)
+        })
+        .collect();
+    found.sort();
+    (o.is_valid(), found)
+}
+
+/// Writes `tets` in pieces by `piece_of` and reads them back as one mesh.
+fn through_pieces(
+    path: &Path,
+    points: &[Point3],
+    tets: &[[u32; 4]],
+    piece_of: &[u32],
+) -> (Vec<Point3>, Vec<[u32; 4]>) {
+    write_pieces(path, points, tets, piece_of).unwrap();
+    let opts = ReadOptions {
+        mesh: true,
+        ..Default::default()
+    };
+    let input = read_input_with(path, opts).unwrap();
+    (input.points, input.tets)
+}
+
+/// Cuts by the first coordinate of each tetrahedron's lowest corner (slabs) or at random.
+fn partitions(points: &[Point3], tets: &[[u32; 4]], k: u32, rng: &mut Rng) -> [Vec<u32>; 2] {
+    let lo = points.iter().map(|p| p[0]).fold(f64::INFINITY, f64::min);
+    let hi = points
+        .iter()
+        .map(|p| p[0])
+        .fold(f64::NEG_INFINITY, f64::max);
+    let slab = |t: &[u32; 4]| {
+        let x = t
+            .iter()
+            .map(|&v| points[v as usize][0])
+            .fold(f64::INFINITY, f64::min);
+        (((x - lo) / (hi - lo + 1e-9) * k as f64) as u32).min(k - 1)
+    };
+    [
+        tets.iter().map(slab).collect(),
+        tets.iter().map(|_| rng.below(k as usize) as u32).collect(),
+    ]
+}
+
+#[test]
+fn pieces_check_as_the_merged_mesh() {
+    let d = dir("diff");
+    let mut rng = Rng::new(46);
+    let (mut cases, mut invalid) = (0, 0);
+    for round in 0..60u64 {
+        let t = match round % 3 {
+            0 => tetrakit::generate::kuhn(2 + (round as usize % 3)),
+            1 => {
+                tetrakit::generate::random_tetrahedralization(20 + round as usize, 30, round, None)
+            }
+            _ => tetrakit::generate::random_tetrahedralization(30, 20, round, Some(4)),
+        };
+        let (points, mut tets) = (t.points, t.tets);
+        // Corruptions, at whatever piece boundary they fall on: a tetrahedron dropped,
+        // one inverted, one repeated.
+        match round % 4 {
+            1 => {
+                tets.remove(rng.below(tets.len()));
+            }
+            2 => {
+                let k = rng.below(tets.len());
+                tets[k].swap(0, 1);
+            }
+            3 => {
+                let k = rng.below(tets.len());
+                tets.push(tets[k]);
+            }
+            _ => {}
+        }
+        let want = problems(&points, &tets);
+        for (how, piece_of) in partitions(&points, &tets, 2 + (round % 4) as u32, &mut rng)
+            .iter()
+            .enumerate()
+        {
+            let path = d.join(format!("m{round}_{how}.pvtu"));
+            let (p, t) = through_pieces(&path, &points, &tets, piece_of);
+            assert_eq!(t.len(), tets.len());
+            assert_eq!(problems(&p, &t), want, "round {round}, partition {how}");
+            cases += 1;
+            invalid += usize::from(!want.0);
+        }
+    }
+    assert!(
+        cases == 120 && invalid >= 40,
+        "{cases} cases, {invalid} invalid"
+    );
+    let _ = std::fs::remove_dir_all(&d);
+}
+
+#[test]
+fn a_piece_outside_the_folder_or_missing_is_named() {
+    let d = dir("bad");
+    let t = tetrakit::generate::kuhn(1);
+    let path = d.join("k.pvtu");
+    write_pieces(&path, &t.points, &t.tets, &[0, 0, 0, 1, 1, 1]).unwrap();
+    let read = |text: &str| {
+        std::fs::write(&path, text).unwrap();
+        tetrakit::io::read_input(&path)
+            .map(|_| ())
+            .unwrap_err()
+            .to_string()
+    };
+    let index = std::fs::read_to_string(&path).unwrap();
+    let outside = read(&index.replace("k_1.vtu", "../k_1.vtu"));
+    assert!(outside.contains("k.pvtu:8:"), "{outside}");
+    assert!(
+        outside.contains("not a file inside the .pvtu's folder"),
+        "{outside}"
+    );
+    let missing = read(&index.replace("k_1.vtu", "k_9.vtu"));
+    assert!(missing.contains("k_9.vtu"), "{missing}");
+    let none = read(
+        "<VTKFile type=\"PUnstructuredGrid\"><PUnstructuredGrid></PUnstructuredGrid></VTKFile>",
+    );
+    assert!(none.contains("without a Piece"), "{none}");
+    let _ = std::fs::remove_dir_all(&d);
+}
+
+/// An interface vertex one ulp off in one piece is not the same vertex: the merged mesh
+/// has two vertices there, and the faces around them, unpaired, are boundary: a cavity
+/// one ulp thick, closed, so a valid mesh of a domain with a void (what checking the
+/// merged mesh says too). Naming it as an interface mismatch needs the interface itself
+/// (global ids, or the pieces' own boundaries): not yet.
+#[test]
+fn an_interface_vertex_one_ulp_apart_is_a_problem() {
+    let d = dir("ulp");
+    let t = tetrakit::generate::kuhn(2);
+    let right = |tt: &[u32; 4]| tt.iter().any(|&v| t.points[v as usize][0] > 1.0);
+    let piece_of: Vec<u32> = t.tets.iter().map(|tt| u32::from(right(tt))).collect();
+    let path = d.join("u.pvtu");
+    let (p, tets) = through_pieces(&path, &t.points, &t.tets, &piece_of);
+    let whole = check(&p, tets, CheckOptions::default());
+    assert!(whole.is_valid());
+    // The interface vertex (1, 1, 1), one ulp further in piece 1.
+    let v = t.points.iter().position(|q| *q == [1.0, 1.0, 1.0]).unwrap() as u32;
+    let mut points = t.points.clone();
+    points.push([f64::from_bits(1.0f64.to_bits() + 1), 1.0, 1.0]);
+    let nudged = points.len() as u32 - 1;
+    let tets: Vec<[u32; 4]> = t
+        .tets
+        .iter()
+        .map(|tt| match right(tt) {
+            true => tt.map(|x| if x == v { nudged } else { x }),
+            false => *tt,
+        })
+        .collect();
+    let (p, tets) = through_pieces(&path, &points, &tets, &piece_of);
+    assert_eq!(p.len(), t.points.len() + 1, "two vertices, one ulp apart");
+    let o = check(&p, tets, CheckOptions::default());
+    assert!(
+        o.boundary_faces > whole.boundary_faces,
+        "the cavity's faces"
+    );
+    assert_eq!(o.is_valid(), problems(&p, &o.tets).0);
+    let _ = std::fs::remove_dir_all(&d);
+}
