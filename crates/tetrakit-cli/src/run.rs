@@ -123,7 +123,8 @@ pub fn check(a: &crate::CheckArgs) -> CmdResult {
         ];
         if partitioned {
             extra.push(("pieces", input.pieces.len().into()));
-            extra.push(("problem_pieces", serde_json::json!(placed)));
+            let placed = serde_json::to_value(placed).unwrap_or_default();
+            extra.push(("problem_pieces", placed));
         }
         out!("{}", tetrakit::report::json(&outcome, extra));
     } else {

@@ -3,7 +3,6 @@
 use crate::convert::{self, Json, Rows, array, value_error};
 use numpy::{PyArray1, PyArray2, PyReadonlyArray2};
 use pyo3::prelude::*;
-use serde_json::json;
 use tetrakit::detect::{Cells, Options};
 use tetrakit::mesh;
 
@@ -78,20 +77,9 @@ pub fn read<'py>(
     let ctl = tetrakit::control::Control::new();
     let input = convert::run(py, &ctl, || tetrakit::io::read_input_with(&path, opts))?
         .map_err(value_error)?;
-    let labels: Vec<u32> = (0..input.points.len())
-        .map(|k| input.point_label(k))
-        .collect();
-    let tet_labels: Vec<u32> = (0..input.tets.len()).map(|k| input.tet_label(k)).collect();
-    let v = json!({
-        "dimension": input.dim,
-        "index_base": input.index_base,
-        "point_labels": labels,
-        "tet_labels": tet_labels,
-        "regions": input.regions,
-        "other_cells": input.other_cells.as_ref().map_or(0, |o| o.count),
-    });
+    let facts = tetrakit::report::json(&tetrakit::report::mesh_facts(&input), []);
     Ok((
-        v.to_string(),
+        facts.to_string(),
         convert::point_array(py, &input.points),
         array(py, &input.tets),
         array(py, &input.faces),

@@ -107,6 +107,10 @@ def test_partitioned_check_json_follows_the_schema(tmp_path, corrupt):
     assert out["verdict"] == ("yes" if corrupt is None else "no")
     for placed, problem in zip(out["problem_pieces"], out["problems"]):
         assert len(placed) == len(problem["tets"]) and all(0 <= p < 3 for p, _ in placed)
+    m = tetrakit.read(path)
+    assert [f.rsplit("/", 1)[-1] for f, _ in m.pieces] == ["k_0.vtu", "k_1.vtu", "k_2.vtu"]
+    assert m.pieces[0][1] == 0 and len(m.tets) == out["tetrahedra"] and len(m.points) == 125
+    assert tetrakit.check(m.points, m.tets).verdict == out["verdict"]
 
 
 def sphere(n, r, seed):

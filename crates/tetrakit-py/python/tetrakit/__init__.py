@@ -102,6 +102,7 @@ class Mesh:
     tet_labels: list
     regions: list
     other_cells: int
+    pieces: list
     points: np.ndarray = field(repr=False)
     tets: np.ndarray = field(repr=False)
     faces: np.ndarray = field(repr=False)
@@ -110,11 +111,13 @@ class Mesh:
 
 def read(path, tets_only: bool = False) -> Mesh:
     r"""Reads a mesh file with tetrakit's exact, validating readers: TetGen, Gmsh ``.msh``
-    (2.2 and 4.1, ASCII and binary), Medit ``.mesh``, legacy ``.vtk``, VTK XML ``.vtu``,
+    (2.2 and 4.1, ASCII and binary), Medit ``.mesh``, legacy ``.vtk``, VTK XML ``.vtu`` and ``.pvtu``,
     OBJ, OFF, STL, JSON and ``.xyz``. Points, tetrahedra (the corners of quadratic ones),
     triangles and segments come back 0-based; ``point_labels`` and ``tet_labels`` are the
     file's own numbers (Gmsh tags), ``regions`` the tetrahedra's physical groups or
-    entities where the format has them. A file with other cells (hexahedra, prisms) is
+    entities where the format has them. A ParaView ``.pvtu`` (or a ``.vtu`` of several
+    pieces) is read as one mesh, interface vertices merged by exact coordinates;
+    ``pieces`` lists each piece's file and first tetrahedron. A file with other cells (hexahedra, prisms) is
     a ``ValueError`` that counts them unless ``tets_only``. Every coordinate is checked to
     lie where the exact predicates are exact; a damaged or hostile file is a
     ``ValueError`` naming the file, the line (or byte) and the problem.

@@ -114,3 +114,42 @@ pub fn pieces_text(o: &CheckOutcome, input: &crate::io::Input) -> String {
     }
     s
 }
+
+/// What a mesh reader found besides the arrays (Python's `tetrakit.read`): the numbering,
+/// regions, other cells, and the pieces of a partitioned mesh.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct MeshFacts {
+    /// 2 or 3.
+    pub dimension: usize,
+    /// The file's numbering, 0 or 1.
+    pub index_base: u32,
+    /// The file's number of each point.
+    pub point_labels: Vec<u32>,
+    /// The file's number of each tetrahedron.
+    pub tet_labels: Vec<u32>,
+    /// Each tetrahedron's region, where the format has them.
+    pub regions: Vec<i64>,
+    /// Cells of other kinds, counted.
+    pub other_cells: usize,
+    /// A partitioned mesh's pieces: `[file, first tetrahedron]`; empty otherwise.
+    pub pieces: Vec<(String, u32)>,
+}
+
+/// The facts of `input` for [`MeshFacts`].
+pub fn mesh_facts(input: &crate::io::Input) -> MeshFacts {
+    MeshFacts {
+        dimension: input.dim,
+        index_base: input.index_base,
+        point_labels: (0..input.points.len())
+            .map(|k| input.point_label(k))
+            .collect(),
+        tet_labels: (0..input.tets.len()).map(|k| input.tet_label(k)).collect(),
+        regions: input.regions.clone(),
+        other_cells: input.other_cells.as_ref().map_or(0, |o| o.count),
+        pieces: input
+            .pieces
+            .iter()
+            .map(|p| (p.file.display().to_string(), p.first_tet))
+            .collect(),
+    }
+}
