@@ -102,7 +102,8 @@ pub fn check(a: &crate::CheckArgs) -> CmdResult {
         manifold: a.manifold,
         reorient: a.reorient,
     };
-    let outcome = mesh::check(&input.points, std::mem::take(&mut input.tets), opts);
+    let outcome = mesh::check(&input.points, std::mem::take(&mut input.tets), opts)
+        .with_problems(input.interface_problems());
     if let Some(out) = &a.output {
         write_problems(out, &input.points, &outcome)?;
     }
@@ -220,7 +221,7 @@ fn write_generated(name: &str, mut mesh: Tetrahedralization, c: &GenCommon) -> C
         .is_some_and(|e| e.eq_ignore_ascii_case("pvtu"));
     if partitioned {
         let pieces = tetrakit::generate::slabs(&mesh.points, &mesh.tets, c.pieces);
-        io::write_pieces(out, &mesh.points, &mesh.tets, &pieces).written(out)?;
+        io::write_pieces(out, &mesh.points, &mesh.tets, &pieces, None).written(out)?;
     } else {
         io::write_instance(out, &mesh.points, &mesh.tets, &edges).written(out)?;
     }

@@ -50,7 +50,7 @@ fn through_pieces(
     tets: &[[u32; 4]],
     piece_of: &[u32],
 ) -> (Vec<Point3>, Vec<[u32; 4]>) {
-    write_pieces(path, points, tets, piece_of).unwrap();
+    write_pieces(path, points, tets, piece_of, None).unwrap();
     let opts = ReadOptions {
         mesh: true,
         ..Default::default()
@@ -134,7 +134,7 @@ fn a_piece_outside_the_folder_or_missing_is_named() {
     let d = dir("bad");
     let t = tetrakit::generate::kuhn(1);
     let path = d.join("k.pvtu");
-    write_pieces(&path, &t.points, &t.tets, &[0, 0, 0, 1, 1, 1]).unwrap();
+    write_pieces(&path, &t.points, &t.tets, &[0, 0, 0, 1, 1, 1], None).unwrap();
     let read = |text: &str| {
         std::fs::write(&path, text).unwrap();
         tetrakit::io::read_input(&path)
@@ -158,11 +158,11 @@ fn a_piece_outside_the_folder_or_missing_is_named() {
     let _ = std::fs::remove_dir_all(&d);
 }
 
-/// An interface vertex one ulp off in one piece is not the same vertex: the merged mesh
-/// has two vertices there, and the faces around them, unpaired, are boundary: a cavity
-/// one ulp thick, closed, so a valid mesh of a domain with a void (what checking the
-/// merged mesh says too). Naming it as an interface mismatch needs the interface itself
-/// (global ids, or the pieces' own boundaries): not yet.
+/// An interface vertex one ulp off in one piece. Without a shared global id it is
+/// another vertex: the merged mesh has two vertices there, and the faces around them,
+/// unpaired, are boundary: a cavity one ulp thick, closed, so a valid mesh of a domain
+/// with a void (what checking the merged mesh says too). With the global id the pieces
+/// give it (`GlobalNodeIds`), it is an `interface_mismatch` naming both points.
 #[test]
 fn an_interface_vertex_one_ulp_apart_is_a_problem() {
     let d = dir("ulp");

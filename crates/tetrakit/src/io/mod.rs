@@ -146,6 +146,23 @@ pub struct Input {
     /// The pieces of a partitioned mesh (a `.pvtu`'s files, or the `Piece`s of a
     /// `.vtu`), in order, each with its first tetrahedron; empty for other formats.
     pub pieces: Vec<Piece>,
+    /// Points of a partitioned mesh that share a global id with a point of an earlier
+    /// piece but not its coordinates (an interface written differently by two pieces).
+    pub id_mismatches: Vec<IdMismatch>,
+}
+
+/// Two points of a partitioned mesh with one global id (`GlobalNodeIds`) at different
+/// coordinates: kept apart, and a problem for `check`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct IdMismatch {
+    /// The global id.
+    pub id: i64,
+    /// The point of the earlier piece.
+    pub first: u32,
+    /// The point of the later piece.
+    pub second: u32,
+    /// The later piece.
+    pub piece: u32,
 }
 
 /// One piece of a partitioned mesh: its file, and where its tetrahedra start among
@@ -223,6 +240,29 @@ impl Input {
             Some(&line) if line > 0 => format!("{file}:{line}"),
             _ => format!("{file}: tets[{k}]"),
         }
+    }
+
+    /// The problems of [`Input::id_mismatches`], for [`crate::mesh::CheckOutcome::with_problems`].
+    pub fn interface_problems(&self) -> Vec<crate::mesh::Problem> {
+        let at = |k: u32| {
+            let [x, y, z] = self.points[k as usize];
+            format!("[{x:?}, {y:?}, {z:?}]")
+        };
+        (self.id_mismatches.iter())
+            .map(|m| {
+                let detail = format!(
+                    "global id {} names #{} at {} and #{} (piece {}) at {}: the pieces disagree on an interface vertex",
+                    m.id,
+                    m.first,
+                    at(m.first),
+                    m.second,
+                    m.piece,
+                    at(m.second)
+                );
+                let kind = crate::mesh::ProblemKind::InterfaceMismatch;
+                crate::mesh::Problem::new(kind, Vec::new(), vec![m.first, m.second], detail)
+            })
+            .collect()
     }
 
     /// In a partitioned mesh, the piece of tetrahedron `k` and its 0-based index among

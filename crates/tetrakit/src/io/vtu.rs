@@ -34,6 +34,9 @@ enum Role {
     Connectivity,
     Offsets,
     Types,
+    /// `PointData`'s `GlobalNodeIds` (ParaView's D3, PETSc) or `GlobalPointIds` (VTK's
+    /// `vtkGenerateGlobalIds`): one id per point, the same in every piece.
+    GlobalIds,
 }
 
 /// Where an array's values are.
@@ -89,6 +92,12 @@ pub(super) struct Merged {
     local: Vec<u32>,
     /// The file being read.
     file: std::path::PathBuf,
+    /// The current piece's global point ids, where it has them.
+    ids: Option<Vec<i64>>,
+    /// Each global id of the earlier pieces, with its point.
+    earlier_ids: HashMap<i64, u32>,
+    /// The global id of each merged point that had one.
+    point_ids: HashMap<u32, i64>,
 }
 
 impl Merged {
@@ -105,27 +114,54 @@ impl Merged {
             first: 0,
             local: Vec::new(),
             file: path.to_path_buf(),
+            ids: None,
+            earlier_ids: HashMap::default(),
+            point_ids: HashMap::default(),
         }
     }
 
-    /// Adds a piece's points, sharing those of earlier pieces.
+    /// Adds a piece's points, sharing those of earlier pieces: by global id where the
+    /// piece has ids (an id of an earlier piece at other coordinates is a new point and
+    /// an [`IdMismatch`](super::IdMismatch)), else by exact coordinates.
     fn add_points(&mut self, coordinates: &[f64]) {
         for k in self.first..self.input.points.len() {
             self.earlier
                 .entry(point_key(&self.input.points[k]))
                 .or_insert(k as u32);
+            if let Some(&id) = self.point_ids.get(&(k as u32)) {
+                self.earlier_ids.entry(id).or_insert(k as u32);
+            }
         }
         self.first = self.input.points.len();
         self.local.clear();
-        for c in coordinates.chunks_exact(3) {
+        let ids = self.ids.take();
+        for (i, c) in coordinates.chunks_exact(3).enumerate() {
             let p = [c[0], c[1], c[2]];
-            let k = match self.earlier.get(&point_key(&p)) {
-                Some(&k) => k,
-                None => {
+            let id = ids.as_ref().and_then(|ids| ids.get(i).copied());
+            let same = match id {
+                Some(id) => self.earlier_ids.get(&id).copied(),
+                None => self.earlier.get(&point_key(&p)).copied(),
+            };
+            let k = match same {
+                Some(k) if self.input.points[k as usize] == p => k,
+                other => {
                     self.input.points.push(p);
-                    (self.input.points.len() - 1) as u32
+                    let k = (self.input.points.len() - 1) as u32;
+                    if let (Some(first), Some(id)) = (other, id) {
+                        let piece = self.input.pieces.len() as u32;
+                        self.input.id_mismatches.push(super::IdMismatch {
+                            id,
+                            first,
+                            second: k,
+                            piece,
+                        });
+                    }
+                    k
                 }
             };
+            if let Some(id) = id {
+                self.point_ids.insert(k, id);
+            }
             self.local.push(k);
         }
         let first_tet = self.input.tets.len() as u32;
@@ -160,7 +196,7 @@ pub(super) fn read_into(path: &Path, merged: &mut Merged) -> Result<(), InputErr
         appended: &appended,
     };
     for (p, piece) in pieces.iter().enumerate() {
-        let mut mine: [Option<&Array>; 4] = [None; 4];
+        let mut mine: [Option<&Array>; 5] = [None; 5];
         for a in arrays.iter().filter(|a| a.piece == p) {
             if mine[a.role as usize].replace(a).is_some() {
                 let why = format!("a second {:?} array in piece {p}", a.role);
@@ -375,6 +411,10 @@ fn role(stack: &[Vec<u8>], e: &BytesStart) -> Option<Role> {
             Some("types") => Some(Role::Types),
             _ => None,
         },
+        Some(b"PointData") => match attr(e, b"Name").as_deref() {
+            Some("GlobalNodeIds" | "GlobalPointIds") => Some(Role::GlobalIds),
+            _ => None,
+        },
         _ => None,
     }
 }
@@ -476,9 +516,13 @@ fn add_piece(
     d: &Decoder,
     p: usize,
     piece: Piece,
-    [points, conn, offsets, types]: [Option<&Array>; 4],
+    [points, conn, offsets, types, ids]: [Option<&Array>; 5],
     merged: &mut Merged,
 ) -> Result<(), InputError> {
+    merged.ids = match ids {
+        Some(_) => Some(d.ints(ids, piece.points, piece)?),
+        None => None,
+    };
     add_points(d, piece, points, merged)?;
     let offsets = d.ints(offsets, piece.cells, piece)?;
     let types = d.ints(types, piece.cells, piece)?;

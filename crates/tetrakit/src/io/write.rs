@@ -245,12 +245,14 @@ fn join_lines<T: std::fmt::Display>(s: &mut String, values: impl Iterator<Item =
 /// Writes a partitioned mesh as ParaView does: piece `k` (the tetrahedra `t` with
 /// `piece_of[t] == k`, on the points they use, renumbered from 0) as `<stem>_<k>.vtu`
 /// beside `path`, and the `.pvtu` index naming them at `path`. Interface points are
-/// written once in every piece that uses them.
+/// written once in every piece that uses them, each with its `GlobalNodeIds` (its index
+/// in `points`, or `ids[index]` when given) in `PointData`, as ParaView's D3 writes them.
 pub fn write_pieces(
     path: &Path,
     points: &[Point3],
     tets: &[[u32; 4]],
     piece_of: &[u32],
+    ids: Option<&[i32]>,
 ) -> io::Result<()> {
     let pieces = piece_of.iter().map(|&k| k as usize + 1).max().unwrap_or(0);
     let stem = path
@@ -266,20 +268,25 @@ pub fn write_pieces(
             .map(|(t, _)| *t)
             .collect();
         let mut local = std::collections::HashMap::new();
-        let mut pts = Vec::new();
+        let (mut pts, mut global) = (Vec::new(), Vec::new());
         let renumbered: Vec<[u32; 4]> = mine
             .iter()
             .map(|t| {
                 t.map(|v| {
                     *local.entry(v).or_insert_with(|| {
                         pts.push(points[v as usize]);
+                        global.push(ids.map_or(v as i32, |ids| ids[v as usize]));
                         (pts.len() - 1) as u32
                     })
                 })
             })
             .collect();
         let name = path.with_file_name(format!("{stem}_{k}.vtu"));
-        save(&name, vtu_text(&pts, &renumbered, &Fields::default()))?;
+        let fields = Fields {
+            cells: Vec::new(),
+            points: vec![("GlobalNodeIds", &global)],
+        };
+        save(&name, vtu_text(&pts, &renumbered, &fields))?;
         names.push(name);
     }
     save(path, super::pvtu::index_text(&names))

@@ -114,6 +114,24 @@ pub fn check(points: &[Point3], mut tets: Vec<[u32; 4]>, opts: CheckOptions) -> 
 }
 
 impl CheckOutcome {
+    /// The outcome with `found` (problems a reader found, such as
+    /// [`ProblemKind::InterfaceMismatch`]) before the others: they count, they mark their
+    /// cells and points, and any of them makes the verdict a NO.
+    pub fn with_problems(mut self, found: Vec<super::Problem>) -> Self {
+        if found.is_empty() {
+            return self;
+        }
+        for p in &found {
+            p.mark(&mut self.cell_problems, &mut self.point_problems);
+        }
+        self.problem_count += found.len();
+        self.problems.splice(0..0, found);
+        self.problems.truncate(Report::LIMIT);
+        self.witness = self.problems.first().cloned();
+        self.verdict = Verdict::No;
+        self
+    }
+
     /// True when the mesh passed every check.
     pub fn is_valid(&self) -> bool {
         self.verdict == Verdict::Yes

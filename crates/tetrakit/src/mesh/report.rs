@@ -42,11 +42,14 @@ pub enum ProblemKind {
     /// Two vertices of tetrahedra at the same place: pieces meshed apart and not merged
     /// (a non-conforming assembly).
     CoincidentVertices,
+    /// Two points of a partitioned mesh with one global id at different coordinates: the
+    /// pieces disagree on an interface vertex.
+    InterfaceMismatch,
 }
 
 impl ProblemKind {
     /// Every kind, in the order of their [`code`](Self::code)s (1, 2, …).
-    pub const ALL: [ProblemKind; 15] = [
+    pub const ALL: [ProblemKind; 16] = [
         ProblemKind::BadIndex,
         ProblemKind::RepeatedVertex,
         ProblemKind::Degenerate,
@@ -62,6 +65,7 @@ impl ProblemKind {
         ProblemKind::BoundaryNotSurface,
         ProblemKind::SteinerPoint,
         ProblemKind::CoincidentVertices,
+        ProblemKind::InterfaceMismatch,
     ];
 
     /// The kind's number in the `problem` fields `check --output` writes for a viewer:
@@ -117,6 +121,18 @@ impl Problem {
         self.cells.iter_mut().for_each(|t| *t = cell(*t));
         self.vertices.iter_mut().for_each(|v| *v = vertex(*v));
         self.detail = crate::numbering::relabel_text(&self.detail, vertex, cell);
+    }
+
+    /// Writes this problem's code on its cells and vertices where no earlier problem did.
+    pub(crate) fn mark(&self, cells: &mut [i32], vertices: &mut [i32]) {
+        let code = self.kind.code();
+        let mark = |field: &mut [i32], k: u32| {
+            if let Some(c) = field.get_mut(k as usize).filter(|c| **c == 0) {
+                *c = code;
+            }
+        };
+        self.cells.iter().for_each(|&t| mark(cells, t));
+        self.vertices.iter().for_each(|&v| mark(vertices, v));
     }
 
     /// A problem of `kind` naming `cells` and `vertices`, with a sentence for a person.
@@ -191,13 +207,7 @@ impl Report {
         let mut cell_code = vec![0; cells];
         let mut vertex_code = vec![0; vertices];
         for p in self.problems.iter().chain(&self.non_manifold) {
-            let mark = |field: &mut Vec<i32>, k: u32| {
-                if let Some(c) = field.get_mut(k as usize).filter(|c| **c == 0) {
-                    *c = p.kind.code();
-                }
-            };
-            p.cells.iter().for_each(|&t| mark(&mut cell_code, t));
-            p.vertices.iter().for_each(|&v| mark(&mut vertex_code, v));
+            p.mark(&mut cell_code, &mut vertex_code);
         }
         (cell_code, vertex_code)
     }
