@@ -326,3 +326,26 @@ def test_reduce_json_follows_the_schema(tmp_path):
     for how in ("apexes", "sphere"):
         w = cli_json("reduce", "trid-to-tetrad", src, tmp_path / f"{how}.json", "--construction", how)
         jsonschema.validate(w, s)
+
+
+def test_pvtu_global_ids_that_disagree(tmp_path):
+    """Two pieces written by meshio with GlobalNodeIds; the second writes the shared
+    vertex of id 1 one ulp off: interface_mismatch, in the CLI and in Python's read."""
+    meshio = pytest.importorskip("meshio")
+    nudged = np.nextafter(1.0, 2.0)
+    pieces = [
+        ([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], [0, 1, 2, 3]),
+        ([[nudged, 0, 0], [0, 1, 0], [0, 0, 1], [1, 1, 1]], [1, 2, 3, 4]),
+    ]
+    for k, (pts, ids) in enumerate(pieces):
+        meshio.write(tmp_path / f"p_{k}.vtu", meshio.Mesh(np.array(pts, float), [("tetra", [[0, 1, 2, 3]])],
+                                                       point_data={"GlobalNodeIds": np.array(ids, np.int64)}))
+    (tmp_path / "p.pvtu").write_text(
+        '<?xml version="1.0"?>\n<VTKFile type="PUnstructuredGrid" version="0.1">\n<PUnstructuredGrid GhostLevel="0">\n'
+        '<Piece Source="p_0.vtu"/>\n<Piece Source="p_1.vtu"/>\n</PUnstructuredGrid>\n</VTKFile>\n')
+    out = cli_json("check", tmp_path / "p.pvtu")
+    jsonschema.validate(out, schema("check"))
+    assert out["verdict"] == "no" and out["witness"]["kind"] == "interface_mismatch", out
+    assert out["witness"]["vertices"] == [1, 4]
+    m = tetrakit.read(tmp_path / "p.pvtu")
+    assert m.id_mismatches == [[1, 1, 4, 1]] and len(m.points) == 6

@@ -103,6 +103,7 @@ class Mesh:
     regions: list
     other_cells: int
     pieces: list
+    id_mismatches: list
     points: np.ndarray = field(repr=False)
     tets: np.ndarray = field(repr=False)
     faces: np.ndarray = field(repr=False)
@@ -117,7 +118,9 @@ def read(path, tets_only: bool = False) -> Mesh:
     file's own numbers (Gmsh tags), ``regions`` the tetrahedra's physical groups or
     entities where the format has them. A ParaView ``.pvtu`` (or a ``.vtu`` of several
     pieces) is read as one mesh, interface vertices merged by exact coordinates;
-    ``pieces`` lists each piece's file and first tetrahedron. A file with other cells (hexahedra, prisms) is
+    ``pieces`` lists each piece's file and first tetrahedron, and ``id_mismatches`` each
+    global id found at two coordinates, ``[id, first point, second point, piece]`` (kept
+    as two points; ``tetrakit check`` reports them as ``interface_mismatch``). A file with other cells (hexahedra, prisms) is
     a ``ValueError`` that counts them unless ``tets_only``. Every coordinate is checked to
     lie where the exact predicates are exact; a damaged or hostile file is a
     ``ValueError`` naming the file, the line (or byte) and the problem.

@@ -91,7 +91,7 @@ pub fn problem_pieces(o: &CheckOutcome, input: &crate::io::Input) -> Vec<Vec<[u3
 /// [`check_text`]: `T900 is cell 17 of piece 2 (k_2.vtu)`.
 pub fn pieces_text(o: &CheckOutcome, input: &crate::io::Input) -> String {
     let mut s = format!(
-        "  read from {} pieces, interface vertices merged by exact coordinates\n",
+        "  read from {} pieces, interface vertices merged by global id where the pieces have one, else by exact coordinates\n",
         input.pieces.len()
     );
     let mut named: Vec<u32> = o
@@ -133,6 +133,8 @@ pub struct MeshFacts {
     pub other_cells: usize,
     /// A partitioned mesh's pieces: `[file, first tetrahedron]`; empty otherwise.
     pub pieces: Vec<(String, u32)>,
+    /// Global ids at two coordinates: `[id, first point, second point, piece]`.
+    pub id_mismatches: Vec<[i64; 4]>,
 }
 
 /// The facts of `input` for [`MeshFacts`].
@@ -150,6 +152,9 @@ pub fn mesh_facts(input: &crate::io::Input) -> MeshFacts {
             .pieces
             .iter()
             .map(|p| (p.file.display().to_string(), p.first_tet))
+            .collect(),
+        id_mismatches: (input.id_mismatches.iter())
+            .map(|m| [m.id, m.first.into(), m.second.into(), m.piece.into()])
             .collect(),
     }
 }
