@@ -107,9 +107,13 @@ pub fn check(a: &crate::CheckArgs) -> CmdResult {
     if let Some(out) = &a.output {
         write_problems(out, &input.points, &outcome)?;
     }
+    // Where each problem lies in its piece, placed before relabeling, for the one
+    // output asked.
     let partitioned = !input.pieces.is_empty();
-    let placed = tetrakit::report::problem_pieces(&outcome, &input);
-    let pieces_text = tetrakit::report::pieces_text(&outcome, &input);
+    let placed =
+        (partitioned && as_json).then(|| tetrakit::report::problem_pieces(&outcome, &input));
+    let pieces_text =
+        (partitioned && !as_json).then(|| tetrakit::report::pieces_text(&outcome, &input));
     let outcome = outcome.relabeled(
         |v| input.point_label(v as usize),
         |t| input.tet_label(t as usize),
@@ -122,7 +126,7 @@ pub fn check(a: &crate::CheckArgs) -> CmdResult {
             ("seconds", seconds.into()),
             ("parse_seconds", parsed.into()),
         ];
-        if partitioned {
+        if let Some(placed) = placed {
             extra.push(("pieces", input.pieces.len().into()));
             let placed = serde_json::to_value(placed).unwrap_or_default();
             extra.push(("problem_pieces", placed));
@@ -132,8 +136,8 @@ pub fn check(a: &crate::CheckArgs) -> CmdResult {
         let other = other.map(|o| (o.count, o.message.as_str()));
         let text = tetrakit::report::check_text(&outcome, seconds, other);
         out!("{}", text.trim_end());
-        if partitioned {
-            out!("{}", pieces_text.trim_end());
+        if let Some(text) = pieces_text {
+            out!("{}", text.trim_end());
         }
     }
     Ok(Verdict::from(outcome.is_valid()))

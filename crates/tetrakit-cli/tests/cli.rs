@@ -1731,3 +1731,61 @@ fn written_meshes_keep_the_numbering_of_their_format() {
         }
     }
 }
+
+/// The bad inputs of the commands this change added or changed: a `.pvtu` piece outside
+/// its folder or missing, `shell --optimum` above the exact solver's size. Exit 2, one
+/// line, naming the file (and the line).
+#[test]
+fn partitioned_and_shell_bad_inputs_exit_2_with_one_line() {
+    let d = dir("pvtu-bad");
+    let index = d.join("k.pvtu");
+    let made = run(&[
+        "generate",
+        "kuhn",
+        "--size",
+        "2",
+        "-o",
+        s(&index),
+        "--pieces",
+        "2",
+    ]);
+    assert!(made.status.success());
+    let text = std::fs::read_to_string(&index).unwrap();
+    let one_line = |o: &Output, wants: &[&str]| {
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+        for w in wants {
+            assert!(err.contains(w), "{w} in {err}");
+        }
+    };
+    std::fs::write(&index, text.replace("k_1.vtu", "/etc/passwd")).unwrap();
+    one_line(
+        &run(&["check", s(&index)]),
+        &["k.pvtu:", "not a file inside"],
+    );
+    std::fs::write(&index, text.replace("k_1.vtu", "k_7.vtu")).unwrap();
+    one_line(&run(&["check", s(&index)]), &["k_7.vtu"]);
+    let (o, i) = (d.join("o.xyz"), d.join("i.xyz"));
+    let args = [
+        "generate",
+        "nested",
+        "--n-outer",
+        "60",
+        "--n-inner",
+        "20",
+        "--gap",
+        "0.3",
+    ];
+    let made = run(&[
+        &args[..],
+        &["--outer-output", s(&o), "--inner-output", s(&i)],
+    ]
+    .concat());
+    assert!(made.status.success());
+    one_line(
+        &run(&["shell", s(&o), s(&i), "--optimum"]),
+        &["--optimum", "at most 60 vertices"],
+    );
+    let _ = std::fs::remove_dir_all(&d);
+}

@@ -59,22 +59,10 @@ fn through_pieces(
     (input.points, input.tets)
 }
 
-/// Cuts by the first coordinate of each tetrahedron's lowest corner (slabs) or at random.
+/// Cuts in slabs along x (`generate::slabs`, as `generate -o X.pvtu` does) or at random.
 fn partitions(points: &[Point3], tets: &[[u32; 4]], k: u32, rng: &mut Rng) -> [Vec<u32>; 2] {
-    let lo = points.iter().map(|p| p[0]).fold(f64::INFINITY, f64::min);
-    let hi = points
-        .iter()
-        .map(|p| p[0])
-        .fold(f64::NEG_INFINITY, f64::max);
-    let slab = |t: &[u32; 4]| {
-        let x = t
-            .iter()
-            .map(|&v| points[v as usize][0])
-            .fold(f64::INFINITY, f64::min);
-        (((x - lo) / (hi - lo + 1e-9) * k as f64) as u32).min(k - 1)
-    };
     [
-        tets.iter().map(slab).collect(),
+        tetrakit::generate::slabs(points, tets, k as usize),
         tets.iter().map(|_| rng.below(k as usize) as u32).collect(),
     ]
 }
