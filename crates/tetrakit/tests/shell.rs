@@ -772,6 +772,11 @@ fn thesis_method_names_the_lemma_that_fails() {
         assert!(sign(p) <= 0, "outer {k}");
     }
     assert!(inner.iter().all(|p| sign(p) <= 0));
+    // Stopped before the check ends, the answer is undecided, with no witness.
+    let stopped = Control::new();
+    stopped.stop();
+    let o = tetrakit::shell::shell(&shell, opts, &stopped).unwrap();
+    assert_eq!((o.verdict, o.witness.is_none()), (Verdict::Undecided, true));
     // The other methods mesh it.
     let cap = ShellOptions {
         method: Method::Cap,
