@@ -102,7 +102,10 @@ pub fn check(a: &crate::CheckArgs) -> CmdResult {
         manifold: a.manifold,
         reorient: a.reorient,
     };
-    let outcome = mesh::check(&input.points, std::mem::take(&mut input.tets), opts)
+    // A partitioned mesh is checked part by part (the merged mesh's answer).
+    let first: Vec<u32> = input.pieces.iter().map(|p| p.first_tet).collect();
+    let tets = std::mem::take(&mut input.tets);
+    let outcome = mesh::check_pieces(&input.points, tets, &first, opts)
         .with_problems(input.interface_problems());
     if let Some(out) = &a.output {
         write_problems(out, &input.points, &outcome)?;

@@ -184,3 +184,147 @@ fn an_interface_vertex_one_ulp_apart_is_a_problem() {
     assert_eq!(o.is_valid(), problems(&p, &o.tets).0);
     let _ = std::fs::remove_dir_all(&d);
 }
+
+/// The tetrahedra of `tets` grouped by `piece_of` (stable), with each piece's first.
+fn grouped(tets: &[[u32; 4]], piece_of: &[u32], k: u32) -> (Vec<[u32; 4]>, Vec<u32>) {
+    let mut order: Vec<usize> = (0..tets.len()).collect();
+    order.sort_by_key(|&i| piece_of[i]);
+    let first = (0..k)
+        .map(|p| piece_of.iter().filter(|&&q| q < p).count() as u32)
+        .collect();
+    (order.iter().map(|&i| tets[i]).collect(), first)
+}
+
+/// A corruption of kind `kind` of a mesh: what a partitioned mesh goes wrong with.
+fn corrupt(points: &mut Vec<Point3>, tets: &mut Vec<[u32; 4]>, kind: u64, rng: &mut Rng) {
+    let k = rng.below(tets.len());
+    match kind {
+        1 => {
+            tets.remove(k);
+        }
+        2 => tets[k].swap(0, 1),
+        3 => tets.push(tets[k]),
+        4 => {
+            // A tetrahedron over a face of another, its apex some other vertex.
+            let apex = tets[rng.below(tets.len())][rng.below(4)];
+            let t = tets[k];
+            if !t.contains(&apex) {
+                tets.push([t[0], t[1], t[2], apex]);
+            }
+        }
+        5 => {
+            // A small separate tetrahedron inside another one.
+            let c = tets[k].map(|v| points[v as usize]);
+            let at = |w: [f64; 4]| -> Point3 {
+                std::array::from_fn(|i| (0..4).map(|j| w[j] * c[j][i]).sum::<f64>())
+            };
+            let n = points.len() as u32;
+            points.extend([
+                at([0.4, 0.2, 0.2, 0.2]),
+                at([0.2, 0.4, 0.2, 0.2]),
+                at([0.2, 0.2, 0.4, 0.2]),
+                at([0.2, 0.2, 0.2, 0.4]),
+            ]);
+            tets.push([n, n + 1, n + 2, n + 3]);
+        }
+        6 => {
+            // A vertex moved far: tetrahedra around it turn or overlap.
+            let v = tets[k][0] as usize;
+            points[v] = std::array::from_fn(|i| points[v][i] + rng.unit() - 0.5);
+        }
+        7 | 8 => {
+            // A vertex copied (exactly, or one ulp off) for some of its tetrahedra.
+            let v = tets[k][rng.below(4)];
+            let mut p = points[v as usize];
+            if kind == 8 {
+                p[0] = f64::from_bits(p[0].to_bits() + 1);
+            }
+            points.push(p);
+            let copy = points.len() as u32 - 1;
+            for t in tets.iter_mut().filter(|_| rng.below(2) == 0) {
+                t.iter_mut().filter(|x| **x == v).for_each(|x| *x = copy);
+            }
+        }
+        _ => {}
+    }
+}
+
+/// Checked part by part (`check_pieces`), a mesh gives exactly what the merged check
+/// gives (verdict, problems in order with their texts, counts), valid or corrupted in
+/// nine ways, cut in slabs, at random and in blocks into 2 to 6 pieces, with and without
+/// `convex` and `manifold`.
+#[test]
+fn checking_part_by_part_is_checking_the_merged_mesh() {
+    use tetrakit::mesh::check_pieces;
+    let mut rng = Rng::new(4646);
+    let (mut cases, mut invalid, mut kinds) = (0, 0, std::collections::BTreeSet::new());
+    for round in 0..450u64 {
+        let t = match round % 3 {
+            0 => tetrakit::generate::kuhn(2 + (round as usize % 3)),
+            1 => tetrakit::generate::random_tetrahedralization(
+                12 + round as usize % 40,
+                30,
+                round,
+                None,
+            ),
+            _ => tetrakit::generate::random_tetrahedralization(20, 20, round, Some(3)),
+        };
+        let (mut points, mut tets) = (t.points, t.tets);
+        corrupt(&mut points, &mut tets, round % 9, &mut rng);
+        let k = 2 + (round % 5) as u32;
+        let [slabs, random] = partitions(&points, &tets, k, &mut rng);
+        let blocks: Vec<u32> = (0..tets.len())
+            .map(|i| (i * k as usize / tets.len()) as u32)
+            .collect();
+        for (how, piece_of) in [slabs, random, blocks].iter().enumerate() {
+            let (tets, first) = grouped(&tets, piece_of, k);
+            for (convex, manifold) in [(false, false), (true, false), (false, true)] {
+                let opts = CheckOptions {
+                    convex,
+                    manifold,
+                    reorient: false,
+                };
+                let whole = check(&points, tets.clone(), opts);
+                let parts = check_pieces(&points, tets.clone(), &first, opts);
+                let at =
+                    format!("round {round}, partition {how}, convex {convex}, manifold {manifold}");
+                assert_eq!(parts.problems, whole.problems, "{at}");
+                assert_eq!(
+                    (
+                        parts.verdict,
+                        parts.problem_count,
+                        parts.boundary_faces,
+                        parts.non_manifold_edges
+                    ),
+                    (
+                        whole.verdict,
+                        whole.problem_count,
+                        whole.boundary_faces,
+                        whole.non_manifold_edges
+                    ),
+                    "{at}"
+                );
+                assert_eq!(parts.cell_problems, whole.cell_problems, "{at}");
+                cases += 1;
+                invalid += usize::from(!whole.is_valid());
+                kinds.extend(whole.problems.iter().map(|p| p.kind.to_string()));
+            }
+        }
+    }
+    assert!(
+        cases >= 4000 && invalid >= 1500,
+        "{cases} cases, {invalid} invalid"
+    );
+    for kind in [
+        "inverted",
+        "same_side",
+        "face_shared_by_more",
+        "open_boundary",
+        "overlap",
+        "coincident_vertices",
+        "boundary_not_on_hull",
+        "non_manifold_edge",
+    ] {
+        assert!(kinds.contains(kind), "no case found {kind}: {kinds:?}");
+    }
+}

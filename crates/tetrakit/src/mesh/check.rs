@@ -81,7 +81,18 @@ pub fn check(points: &[Point3], mut tets: Vec<[u32; 4]>, opts: CheckOptions) -> 
     if opts.manifold {
         report = report.require_manifold();
     }
-    let (cell_problems, point_problems) = report.fields(tets.len(), points.len());
+    outcome(report, tets, points.len(), opts, reoriented)
+}
+
+/// The outcome of a check whose report is `report`, over `points` points.
+pub(super) fn outcome(
+    report: Report,
+    tets: Vec<[u32; 4]>,
+    points: usize,
+    opts: CheckOptions,
+    reoriented: Option<usize>,
+) -> CheckOutcome {
+    let (cell_problems, point_problems) = report.fields(tets.len(), points);
     let Report {
         problems,
         problem_count,
@@ -95,7 +106,7 @@ pub fn check(points: &[Point3], mut tets: Vec<[u32; 4]>, opts: CheckOptions) -> 
             Verdict::No
         },
         tetrahedra: tets.len(),
-        vertices: points.len(),
+        vertices: points,
         boundary_faces,
         non_manifold_edges: non_manifold.len(),
         convex: opts.convex,

@@ -27,11 +27,13 @@ use crate::partition;
 use rayon::prelude::*;
 
 /// Overlaps near vertices. `tets` are positively oriented (degenerate ones are skipped by
-/// the caller); `on_boundary[v]` tells whether `v` is a vertex of a boundary face.
+/// the caller); `on_boundary[v]` tells whether `v` is a vertex of a boundary face; only
+/// the vertices `v` with `which(v)` are tested.
 pub(super) fn vertex_overlaps(
     points: &[Point3],
     tets: &[[u32; 4]],
     on_boundary: &[bool],
+    which: &(dyn Fn(usize) -> bool + Sync),
 ) -> Vec<Problem> {
     let n = points.len();
     let mut start = vec![0usize; n + 1];
@@ -53,6 +55,7 @@ pub(super) fn vertex_overlaps(
     }
     (0..n)
         .into_par_iter()
+        .filter(|&v| which(v))
         .filter_map(|v| {
             let around = &star[start[v]..start[v + 1]];
             let cone = |t: u32| {
@@ -176,13 +179,28 @@ pub(super) fn boundary_self_intersections(
 }
 
 /// Pieces of mesh nested inside others: for one vertex `v` of each boundary component
-/// (the first face of the component, as `(vertex, tet)`), the tetrahedra not incident
-/// to `v` whose closure contains it (exact; a hash grid of tetrahedron boxes).
+/// (the first face of the component, as `(vertex, tet)`), the first tetrahedron not
+/// incident to `v` whose closure contains it (exact; see [`containing_tets`]).
 pub(super) fn nested_overlaps(
     points: &[Point3],
     tets: &[[u32; 4]],
     reps: &[(u32, u32)],
 ) -> Vec<Problem> {
+    let queries: Vec<(Point3, u32)> = reps.iter().map(|&(v, _)| (points[v as usize], v)).collect();
+    let hits = containing_tets(points, tets, &queries);
+    (reps.iter().zip(hits))
+        .filter_map(|(&(v, own), t)| t.map(|t| nested_problem(v, own, t, &tets[t as usize])))
+        .collect()
+}
+
+/// For each query `(x, v)`, the smallest index of a tetrahedron of `tets` that does not
+/// have `v` as a corner and whose closure contains `x` (exact; a hash grid of
+/// tetrahedron boxes). `v` may name no point of `points` (`u32::MAX`).
+pub(super) fn containing_tets(
+    points: &[Point3],
+    tets: &[[u32; 4]],
+    queries: &[(Point3, u32)],
+) -> Vec<Option<u32>> {
     let corners = |t: &[u32; 4]| t.map(|v| points[v as usize]);
     let boxes: Vec<Aabb> = tets
         .par_iter()
@@ -200,29 +218,34 @@ pub(super) fn nested_overlaps(
     for (i, b) in boxes.iter().enumerate() {
         grid.insert_item(b, [i as u32, 0, 0]); // keyed by tetrahedron index
     }
-    reps.par_iter()
-        .filter_map(|&(v, own)| {
-            let x = points[v as usize];
-            let mut found = None;
+    queries
+        .par_iter()
+        .map(|&(x, v)| {
+            let mut found: Option<u32> = None;
             grid.visit(&(x, x), |item| {
                 let t = &tets[item[0] as usize];
                 let hit = !t.contains(&v)
+                    && found.is_none_or(|f| item[0] < f)
                     && boxes_meet(&boxes[item[0] as usize], &(x, x))
                     && point_in_closed_tetrahedron(&x, &corners(t));
                 if hit {
                     found = Some(item[0]);
                 }
-                hit
+                false
             });
-            found.map(|t| {
-                let detail = format!(
-                    "vertex #{v} of a boundary component lies in tetrahedron T{t} ({}): a separate piece of mesh overlaps another",
-                    ids(&tets[t as usize])
-                );
-                Problem::new(ProblemKind::Overlap, vec![t, own], vec![v], detail)
-            })
+            found
         })
         .collect()
+}
+
+/// Vertex `v` of the boundary component of tetrahedron `own` lies in tetrahedron `t`
+/// (corners `tet`).
+pub(super) fn nested_problem(v: u32, own: u32, t: u32, tet: &[u32; 4]) -> Problem {
+    let detail = format!(
+        "vertex #{v} of a boundary component lies in tetrahedron T{t} ({}): a separate piece of mesh overlaps another",
+        ids(tet)
+    );
+    Problem::new(ProblemKind::Overlap, vec![t, own], vec![v], detail)
 }
 
 /// One `(vertex, tet)` per connected component of the boundary surface (faces joined

@@ -97,7 +97,7 @@ pub(crate) fn verify_faces(points: &[Point3], tets: &[[u32; 4]]) -> (Report, Vec
 /// Vertices of tetrahedra at the same place, each after the first of its place named
 /// with the first, and a tetrahedron using each. (Only a file can make them: every
 /// algorithm's points are distinct.)
-fn coincident_vertices(points: &[Point3], tets: &[[u32; 4]]) -> Vec<Problem> {
+pub(super) fn coincident_vertices(points: &[Point3], tets: &[[u32; 4]]) -> Vec<Problem> {
     let mut first_tet = vec![u32::MAX; points.len()];
     for (k, t) in tets.iter().enumerate().rev() {
         t.iter().for_each(|&v| first_tet[v as usize] = k as u32);
@@ -141,7 +141,7 @@ fn check_embedding(
     for f in boundary {
         f.v.iter().for_each(|&x| on_boundary[x as usize] = true);
     }
-    for p in embed::vertex_overlaps(points, tets, &on_boundary) {
+    for p in embed::vertex_overlaps(points, tets, &on_boundary, &|_| true) {
         report.push(p);
     }
     let faces: Vec<([u32; 3], u32)> = boundary.iter().map(|f| (f.v, f.tet)).collect();
@@ -160,7 +160,7 @@ fn check_embedding(
 /// tetrahedron (0 when it is degenerate or malformed), computed once for the face pairing.
 /// The orientations are computed first and problems only for the tetrahedra whose sign
 /// is not +1, so a valid mesh allocates nothing per tetrahedron beyond its sign.
-fn check_tets(points: &[Point3], tets: &[[u32; 4]]) -> (Vec<Problem>, Vec<i8>) {
+pub(super) fn check_tets(points: &[Point3], tets: &[[u32; 4]]) -> (Vec<Problem>, Vec<i8>) {
     let n = points.len() as u32;
     let malformed = |t: &[u32; 4]| t.iter().any(|&v| v >= n) || repeats(t);
     let signs: Vec<i8> = tets
@@ -237,7 +237,11 @@ fn outward_faces(t: [u32; 4]) -> [[u32; 3]; 4] {
 }
 
 /// Pairs the faces of the tetrahedra with orientation `signs` (degenerate ones skipped).
-fn pair_faces(n: usize, tets: &[[u32; 4]], signs: &[i8]) -> (Vec<BoundaryFace>, Vec<Problem>) {
+pub(super) fn pair_faces(
+    n: usize,
+    tets: &[[u32; 4]],
+    signs: &[i8],
+) -> (Vec<BoundaryFace>, Vec<Problem>) {
     let (start, mut recs) = bucket_faces(tets, signs, n);
     let results: Vec<(Vec<BoundaryFace>, Vec<Problem>)> = split_at_offsets(&mut recs, &start)
         .into_par_iter()
@@ -314,10 +318,11 @@ fn pair_bucket(a: u32, recs: &mut [[u32; 3]]) -> (Vec<BoundaryFace>, Vec<Problem
             }
             k => {
                 let tets = tets();
+                let named: Vec<String> = tets.iter().map(|t| format!("T{t}")).collect();
                 let detail = format!(
-                    "triangle {} is a face of {k} tetrahedra {}",
+                    "triangle {} is a face of {k} tetrahedra: {}",
                     ids(&face),
-                    ids(&tets)
+                    named.join(", ")
                 );
                 let kind = ProblemKind::FaceSharedByMore;
                 problems.push(Problem::new(kind, tets, face.to_vec(), detail));
@@ -334,7 +339,7 @@ fn pair_bucket(a: u32, recs: &mut [[u32; 3]]) -> (Vec<BoundaryFace>, Vec<Problem
 /// One sort of the edges by their unordered ends, each record marked with its direction
 /// (`a < b` or not) and its tetrahedron; a group of equal ends counts both directions.
 /// Problems are listed by directed edge, as `(a, b)` ascending.
-fn check_closed(boundary: &[BoundaryFace]) -> (Vec<Problem>, Vec<Problem>) {
+pub(super) fn check_closed(boundary: &[BoundaryFace]) -> (Vec<Problem>, Vec<Problem>) {
     let mut edges: Vec<(u32, u32, bool, u32)> = boundary
         .par_iter()
         .flat_map_iter(|f| {
@@ -373,7 +378,7 @@ fn check_closed(boundary: &[BoundaryFace]) -> (Vec<Problem>, Vec<Problem>) {
     (open, non_manifold)
 }
 
-fn check_hull(
+pub(super) fn check_hull(
     points: &[Point3],
     tets: &[[u32; 4]],
     boundary: &[BoundaryFace],
