@@ -27,6 +27,7 @@
 pub mod constrain;
 pub mod control;
 pub mod detect;
+pub mod distributed;
 pub mod exact;
 pub mod flip;
 pub mod generate;

@@ -45,6 +45,7 @@ fn allowed(top: &str) -> Vec<&'static str> {
     // confirms its minimality with the exact solver.
     let extra: &[&str] = match top {
         "io" => &["planar"],
+        "distributed" => &["io"],
         "constrain" => &["detect", "exact", "polyhedra"],
         "shell" => &["exact", "flip"],
         "reduce" => &["planar", "exact"],

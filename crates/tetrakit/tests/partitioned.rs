@@ -236,8 +236,8 @@ fn corrupt(points: &mut Vec<Point3>, tets: &mut Vec<[u32; 4]>, kind: u64, rng: &
             // A vertex copied (exactly, or one ulp off) for some of its tetrahedra.
             let v = tets[k][rng.below(4)];
             let mut p = points[v as usize];
-            if kind == 8 {
-                p[0] = f64::from_bits(p[0].to_bits() + 1);
+            if let Some(c) = (0..3).rev().find(|&c| p[c] != 0.0).filter(|_| kind == 8) {
+                p[c] = f64::from_bits(p[c].to_bits() + 1);
             }
             points.push(p);
             let copy = points.len() as u32 - 1;
@@ -327,4 +327,109 @@ fn checking_part_by_part_is_checking_the_merged_mesh() {
     ] {
         assert!(kinds.contains(kind), "no case found {kind}: {kinds:?}");
     }
+}
+
+/// What `tetrakit check X.pvtu` says: the merged mesh checked part by part, in the
+/// file's numbering.
+fn cli_check(path: &Path, opts: CheckOptions) -> tetrakit::mesh::CheckOutcome {
+    let read = ReadOptions {
+        mesh: true,
+        ..Default::default()
+    };
+    let input = read_input_with(path, read).unwrap();
+    let first: Vec<u32> = input.pieces.iter().map(|p| p.first_tet).collect();
+    tetrakit::mesh::check_pieces(&input.points, input.tets.clone(), &first, opts)
+        .with_problems(input.interface_problems())
+        .relabeled(
+            |v| input.point_label(v as usize),
+            |t| input.tet_label(t as usize),
+        )
+}
+
+/// Checked by 1 to 5 ranks that each read only their pieces and exchange messages
+/// (`distributed::check_in_ranks`, what `mpirun python3 -m tetrakit.mpi` runs), a
+/// `.pvtu` gives what `tetrakit check` gives, problem for problem, with and without
+/// global ids, and with more ranks than pieces.
+#[test]
+fn ranks_check_as_the_merged_mesh() {
+    use tetrakit::distributed::check_in_ranks;
+    let d = dir("ranks");
+    let mut rng = Rng::new(4647);
+    let (mut cases, mut invalid) = (0, 0);
+    for round in 0..120u64 {
+        let t = match round % 3 {
+            0 => tetrakit::generate::kuhn(2 + (round as usize % 2)),
+            1 => tetrakit::generate::random_tetrahedralization(
+                12 + round as usize % 30,
+                30,
+                round,
+                None,
+            ),
+            _ => tetrakit::generate::random_tetrahedralization(20, 20, round, Some(3)),
+        };
+        let (mut points, mut tets) = (t.points, t.tets);
+        corrupt(&mut points, &mut tets, round % 9, &mut rng);
+        let k = 2 + (round % 4) as u32;
+        let [slabs, random] = partitions(&points, &tets, k, &mut rng);
+        for (how, piece_of) in [slabs, random].iter().enumerate() {
+            let path = d.join(format!("r{round}_{how}.pvtu"));
+            let ids: Vec<i32> = (0..points.len() as i32).collect();
+            let with_ids = (round / 2) % 2 == 0;
+            write_pieces(
+                &path,
+                &points,
+                &tets,
+                piece_of,
+                with_ids.then_some(&ids[..]),
+            )
+            .unwrap();
+            let opts = match round % 4 {
+                1 => CheckOptions {
+                    convex: true,
+                    ..Default::default()
+                },
+                2 => CheckOptions {
+                    manifold: true,
+                    reorient: true,
+                    ..Default::default()
+                },
+                _ => CheckOptions::default(),
+            };
+            let want = cli_check(&path, opts);
+            for size in [1, 2, 3, 5] {
+                let (got, sent) = check_in_ranks(&path, size, opts);
+                let got = got.unwrap();
+                let at = format!("round {round}, partition {how}, {size} ranks, {opts:?}");
+                assert_eq!(got.problems, want.problems, "{at}");
+                assert_eq!(
+                    (
+                        got.verdict,
+                        got.problem_count,
+                        got.boundary_faces,
+                        got.non_manifold_edges
+                    ),
+                    (
+                        want.verdict,
+                        want.problem_count,
+                        want.boundary_faces,
+                        want.non_manifold_edges
+                    ),
+                    "{at}"
+                );
+                assert_eq!(
+                    (got.tetrahedra, got.vertices, got.reoriented),
+                    (want.tetrahedra, want.vertices, want.reoriented),
+                    "{at}"
+                );
+                assert!(sent.iter().all(|&b| b > 0), "{at}");
+                cases += 1;
+                invalid += usize::from(!want.is_valid());
+            }
+        }
+    }
+    assert!(
+        cases >= 900 && invalid >= 300,
+        "{cases} cases, {invalid} invalid"
+    );
+    let _ = std::fs::remove_dir_all(&d);
 }

@@ -165,6 +165,24 @@ pub struct IdMismatch {
     pub piece: u32,
 }
 
+impl IdMismatch {
+    /// The problem it is, its points at `first` and `second`.
+    pub fn problem(&self, first: Point3, second: Point3) -> crate::mesh::Problem {
+        let at = |[x, y, z]: Point3| format!("[{x:?}, {y:?}, {z:?}]");
+        let detail = format!(
+            "global id {} names #{} at {} and #{} (piece {}) at {}: the pieces disagree on an interface vertex",
+            self.id,
+            self.first,
+            at(first),
+            self.second,
+            self.piece,
+            at(second)
+        );
+        let kind = crate::mesh::ProblemKind::InterfaceMismatch;
+        crate::mesh::Problem::new(kind, Vec::new(), vec![self.first, self.second], detail)
+    }
+}
+
 /// One piece of a partitioned mesh: its file, and where its tetrahedra start among
 /// [`Input::tets`].
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -244,24 +262,9 @@ impl Input {
 
     /// The problems of [`Input::id_mismatches`], for [`crate::mesh::CheckOutcome::with_problems`].
     pub fn interface_problems(&self) -> Vec<crate::mesh::Problem> {
-        let at = |k: u32| {
-            let [x, y, z] = self.points[k as usize];
-            format!("[{x:?}, {y:?}, {z:?}]")
-        };
+        let at = |k: u32| self.points[k as usize];
         (self.id_mismatches.iter())
-            .map(|m| {
-                let detail = format!(
-                    "global id {} names #{} at {} and #{} (piece {}) at {}: the pieces disagree on an interface vertex",
-                    m.id,
-                    m.first,
-                    at(m.first),
-                    m.second,
-                    m.piece,
-                    at(m.second)
-                );
-                let kind = crate::mesh::ProblemKind::InterfaceMismatch;
-                crate::mesh::Problem::new(kind, Vec::new(), vec![m.first, m.second], detail)
-            })
+            .map(|m| m.problem(at(m.first), at(m.second)))
             .collect()
     }
 
@@ -274,6 +277,19 @@ impl Input {
             .checked_sub(1)?;
         Some((p, k as u32 - self.pieces[p].first_tet))
     }
+}
+
+/// The piece files of the `.pvtu` at `path`, in order, each a file inside its folder
+/// (an index naming another is an error at its line).
+pub fn pvtu_pieces(path: &Path) -> Result<Vec<PathBuf>, InputError> {
+    pvtu::piece_files(path)
+}
+
+/// Reads one piece of a partitioned mesh (a `.vtu`; its own `Piece`s merged as
+/// [`read_input`] merges them): the mesh, and each point's global id (`GlobalNodeIds`
+/// or `GlobalPointIds`) where every point has one.
+pub fn read_piece(path: &Path) -> Result<(Input, Option<Vec<i64>>), InputError> {
+    vtu::read_piece(path)
 }
 
 /// Reads `path`, choosing the format by extension: `.node` (with sibling `.edge`, `.ele`

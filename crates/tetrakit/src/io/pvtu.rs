@@ -14,20 +14,28 @@ use quick_xml::events::Event;
 use std::path::{Component, Path, PathBuf};
 
 pub(super) fn read(path: &Path) -> Result<Input, InputError> {
-    let pieces = sources(path)?;
-    let folder = path.parent().unwrap_or(Path::new(""));
     let mut merged = Merged::new(path);
-    for (line, source) in &pieces {
-        let inside = Path::new(source)
+    for file in piece_files(path)? {
+        read_into(&file, &mut merged)?;
+    }
+    merged.finish(path)
+}
+
+/// The piece files the `.pvtu` at `path` names, each checked to be inside its folder.
+pub(super) fn piece_files(path: &Path) -> Result<Vec<PathBuf>, InputError> {
+    let folder = path.parent().unwrap_or(Path::new(""));
+    let mut files = Vec::new();
+    for (line, source) in sources(path)? {
+        let inside = Path::new(&source)
             .components()
             .all(|c| matches!(c, Component::Normal(_) | Component::CurDir));
         if !inside || source.is_empty() {
             let why = format!("piece Source \"{source}\" is not a file inside the .pvtu's folder");
-            return Err(InputError::new(path, *line, why));
+            return Err(InputError::new(path, line, why));
         }
-        read_into(&folder.join(source), &mut merged)?;
+        files.push(folder.join(source));
     }
-    merged.finish(path)
+    Ok(files)
 }
 
 /// The `Source` of every `Piece` of the index, with its line.

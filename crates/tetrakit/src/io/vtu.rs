@@ -78,6 +78,17 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
     merged.finish(path)
 }
 
+/// Reads one `.vtu` as a piece of a partitioned mesh: the mesh, and each point's global
+/// id where every point has one.
+pub(super) fn read_piece(path: &Path) -> Result<(Input, Option<Vec<i64>>), InputError> {
+    let mut merged = Merged::new(path);
+    read_into(path, &mut merged)?;
+    let ids: Option<Vec<i64>> = (0..merged.input.points.len() as u32)
+        .map(|k| merged.point_ids.get(&k).copied())
+        .collect();
+    Ok((merged.finish(path)?, ids))
+}
+
 /// Pieces read so far, one mesh: a point of a later piece (or piece file) at the exact
 /// coordinates of a point of an earlier one is that point (the interface vertices a
 /// partition repeats in each piece), while points repeated inside one piece stay
@@ -98,6 +109,8 @@ pub(super) struct Merged {
     earlier_ids: HashMap<i64, u32>,
     /// The global id of each merged point that had one.
     point_ids: HashMap<u32, i64>,
+    /// How many points the pieces read so far hold (repeated ones counted).
+    concat: u32,
 }
 
 impl Merged {
@@ -117,6 +130,7 @@ impl Merged {
             ids: None,
             earlier_ids: HashMap::default(),
             point_ids: HashMap::default(),
+            concat: 0,
         }
     }
 
@@ -146,6 +160,7 @@ impl Merged {
                 Some(k) if self.input.points[k as usize] == p => k,
                 other => {
                     self.input.points.push(p);
+                    self.input.point_labels.push(self.concat + i as u32);
                     let k = (self.input.points.len() - 1) as u32;
                     if let (Some(first), Some(id)) = (other, id) {
                         let piece = self.input.pieces.len() as u32;
@@ -164,6 +179,7 @@ impl Merged {
             }
             self.local.push(k);
         }
+        self.concat += (coordinates.len() / 3) as u32;
         let first_tet = self.input.tets.len() as u32;
         let file = self.file.clone();
         self.input.pieces.push(super::Piece { file, first_tet });
@@ -173,6 +189,7 @@ impl Merged {
         self.sorter.finish(&mut self.input);
         if self.input.pieces.len() == 1 {
             self.input.pieces.clear();
+            self.input.point_labels.clear();
         }
         if self.input.points.is_empty() {
             return Err(InputError::new(path, 0, "no points"));

@@ -85,7 +85,7 @@ pub fn check(points: &[Point3], mut tets: Vec<[u32; 4]>, opts: CheckOptions) -> 
 }
 
 /// The outcome of a check whose report is `report`, over `points` points.
-pub(super) fn outcome(
+pub(crate) fn outcome(
     report: Report,
     tets: Vec<[u32; 4]>,
     points: usize,

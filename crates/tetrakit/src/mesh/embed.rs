@@ -153,7 +153,7 @@ fn dot(a: &Point3, b: &Point3) -> f64 {
 
 /// Pairs of boundary faces that meet other than in shared vertices and edges (sweep over
 /// bounding boxes, exact tests). `faces[i] = (vertices, tetrahedron)`.
-pub(super) fn boundary_self_intersections(
+pub(crate) fn boundary_self_intersections(
     points: &[Point3],
     faces: &[([u32; 3], u32)],
 ) -> Vec<Problem> {
@@ -240,7 +240,7 @@ pub(super) fn containing_tets(
 
 /// Vertex `v` of the boundary component of tetrahedron `own` lies in tetrahedron `t`
 /// (corners `tet`).
-pub(super) fn nested_problem(v: u32, own: u32, t: u32, tet: &[u32; 4]) -> Problem {
+pub(crate) fn nested_problem(v: u32, own: u32, t: u32, tet: &[u32; 4]) -> Problem {
     let detail = format!(
         "vertex #{v} of a boundary component lies in tetrahedron T{t} ({}): a separate piece of mesh overlaps another",
         ids(tet)
@@ -250,7 +250,7 @@ pub(super) fn nested_problem(v: u32, own: u32, t: u32, tet: &[u32; 4]) -> Proble
 
 /// One `(vertex, tet)` per connected component of the boundary surface (faces joined
 /// across edges): a vertex of the component's first face and that face's tetrahedron.
-pub(super) fn boundary_components(faces: &[([u32; 3], u32)]) -> Vec<(u32, u32)> {
+pub(crate) fn boundary_components(faces: &[([u32; 3], u32)]) -> Vec<(u32, u32)> {
     let mut parent = partition::singletons(faces.len());
     let mut by_edge: std::collections::HashMap<(u32, u32), u32> = std::collections::HashMap::new();
     for (i, (f, _)) in faces.iter().enumerate() {

@@ -18,12 +18,16 @@ mod verify_planar;
 pub use crate::control::Verdict;
 pub(crate) use certify::boundary_faces;
 pub use certify::{certify_boundary, certify_hull, certify_polyhedron, certify_shell};
+pub(crate) use check::outcome;
 pub use check::{CheckOptions, CheckOutcome, check};
+pub(crate) use embed::{boundary_components, boundary_self_intersections, nested_problem};
+pub(crate) use partitioned::assemble_faces;
 pub use partitioned::{Part, PartFaces, check_pieces, parts};
 pub use report::{Problem, ProblemKind, Report};
 pub use surface::{Polyhedron, SurfaceError};
 pub use verify::verify;
 pub(crate) use verify::verify_faces;
+pub(crate) use verify::{BoundaryFace, coincident_runs, hull_faces, unused_vertex};
 pub use verify_planar::verify_triangulation;
 
 use crate::geom::{Point3, orient3d};

@@ -27,6 +27,7 @@ use super::verify::{
 use super::{CheckOptions, CheckOutcome, check, reorient};
 use crate::geom::{Hull3, Point3};
 use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
 
 /// A part of a mesh, checked on its own: points and tetrahedra in the part's own
 /// numbering, each with its number in the whole mesh.
@@ -49,7 +50,7 @@ pub struct Part {
 }
 
 /// What a part decides about faces and edges, in the whole mesh's numbering.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
 pub struct PartFaces {
     /// Index, repeated-vertex and orientation problems of the part's tetrahedra.
     pub tet_problems: Vec<Problem>,
@@ -61,8 +62,11 @@ pub struct PartFaces {
     pub non_manifold: Vec<Problem>,
     /// The boundary faces the part decides, outward, as `(vertices, tetrahedron)`.
     pub boundary: Vec<([u32; 3], u32)>,
+    /// The places of the vertices of `boundary`, as `(vertex, place)`.
+    pub places: Vec<(u32, Point3)>,
     /// For each of the part's points, whether it is on a boundary face (right for the
     /// points the part owns), for [`Part::vertex_overlaps`].
+    #[serde(skip)]
     pub on_boundary: Vec<bool>,
 }
 
@@ -111,7 +115,15 @@ impl Part {
             let v = f.v.map(|x| self.vertex_labels[x as usize]);
             (v, self.tet_labels[f.tet as usize])
         };
+        let mine: Vec<&BoundaryFace> = boundary.iter().filter(|f| self.decides(&f.v)).collect();
+        let mut places: Vec<(u32, Point3)> = (mine.iter())
+            .flat_map(|f| f.v)
+            .map(|x| (self.vertex_labels[x as usize], self.points[x as usize]))
+            .collect();
+        places.sort_unstable_by_key(|p| p.0);
+        places.dedup_by_key(|p| p.0);
         PartFaces {
+            places,
             tet_problems: match self.reports_tets {
                 true => self.relabeled_all(tet_problems),
                 false => Vec::new(),
@@ -119,10 +131,7 @@ impl Part {
             face_problems: self.relabeled_all(face_problems),
             open_edges: decided(open),
             non_manifold: decided(non_manifold),
-            boundary: (boundary.iter())
-                .filter(|f| self.decides(&f.v))
-                .map(label)
-                .collect(),
+            boundary: mine.into_iter().map(label).collect(),
             on_boundary,
         }
     }
@@ -161,6 +170,35 @@ impl Part {
     }
 }
 
+impl Part {
+    /// The part of the tetrahedra `tets` over `points`, numbered `tet_labels` in the
+    /// whole mesh (ascending): point `k` is vertex `label(k)` of the whole mesh (points
+    /// with one label are one vertex), and the part owns the vertices whose points
+    /// `owned` picks.
+    pub fn new(
+        points: &[Point3],
+        label: impl Fn(u32) -> u32 + Sync,
+        tets: &[[u32; 4]],
+        tet_labels: Vec<u32>,
+        owned: impl Fn(u32) -> bool,
+        reports_tets: bool,
+    ) -> Part {
+        let mut used: Vec<(u32, u32)> = tets.iter().flatten().map(|&k| (label(k), k)).collect();
+        used.par_sort_unstable();
+        used.dedup_by_key(|u| u.0);
+        let vertex_labels: Vec<u32> = used.iter().map(|u| u.0).collect();
+        let local = |k: u32| vertex_labels.binary_search(&label(k)).unwrap_or(0) as u32;
+        Part {
+            points: used.iter().map(|u| points[u.1 as usize]).collect(),
+            tets: tets.iter().map(|t| t.map(local)).collect(),
+            owned: used.iter().map(|u| owned(u.1)).collect(),
+            vertex_labels,
+            tet_labels,
+            reports_tets,
+        }
+    }
+}
+
 /// A part holding the tetrahedra `which` (ascending) of `tets` over `points`, owning the
 /// vertices `owned` picks.
 fn part_of(
@@ -170,18 +208,8 @@ fn part_of(
     owned: impl Fn(u32) -> bool,
     reports_tets: bool,
 ) -> Part {
-    let mut labels: Vec<u32> = which.iter().flat_map(|&t| tets[t as usize]).collect();
-    labels.par_sort_unstable();
-    labels.dedup();
-    let local = |v: u32| labels.binary_search(&v).unwrap_or(0) as u32;
-    Part {
-        points: labels.iter().map(|&v| points[v as usize]).collect(),
-        tets: which.iter().map(|&t| tets[t as usize].map(local)).collect(),
-        owned: labels.iter().map(|&v| owned(v)).collect(),
-        vertex_labels: labels,
-        tet_labels: which.to_vec(),
-        reports_tets,
-    }
+    let mine: Vec<[u32; 4]> = which.iter().map(|&t| tets[t as usize]).collect();
+    Part::new(points, |v| v, &mine, which.to_vec(), owned, reports_tets)
 }
 
 /// The parts of a mesh in pieces (piece `p` holds the tetrahedra from `first_tet[p]` to

@@ -1,10 +1,10 @@
 //! What the verifiers find: [`Problem`]s of a [`ProblemKind`], gathered in a [`Report`].
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use std::fmt;
 
 /// What is wrong with a mesh.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum ProblemKind {
     /// A vertex index is out of range.
@@ -88,7 +88,7 @@ impl fmt::Display for ProblemKind {
 }
 
 /// One problem, naming the tetrahedra (indices into the tet list) and vertices involved.
-#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Problem {
     /// What is wrong.
     pub kind: ProblemKind,

@@ -102,28 +102,31 @@ pub(super) fn coincident_vertices(points: &[Point3], tets: &[[u32; 4]]) -> Vec<P
     for (k, t) in tets.iter().enumerate().rev() {
         t.iter().for_each(|&v| first_tet[v as usize] = k as u32);
     }
-    let mut used: Vec<u32> = (0..points.len() as u32)
+    let mut used: Vec<(Point3, u32, u32)> = (0..points.len() as u32)
         .filter(|&v| first_tet[v as usize] != u32::MAX)
+        .map(|v| (points[v as usize], v, first_tet[v as usize]))
         .collect();
-    used.par_sort_unstable_by(|&a, &b| {
-        crate::geom::lex_cmp(&points[a as usize], &points[b as usize]).then(a.cmp(&b))
-    });
+    coincident_runs(&mut used)
+}
+
+/// [`coincident_vertices`] of the used vertices `(place, vertex, first tetrahedron)`,
+/// each vertex once: sorted by place, then vertex.
+pub(crate) fn coincident_runs(used: &mut [(Point3, u32, u32)]) -> Vec<Problem> {
+    used.par_sort_unstable_by(|a, b| crate::geom::lex_cmp(&a.0, &b.0).then(a.1.cmp(&b.1)));
     let mut problems = Vec::new();
     let mut run_start = 0;
     for k in 1..used.len() {
-        let (a, b) = (used[run_start], used[k]);
-        if points[a as usize] != points[b as usize] {
+        let ((pa, a, ta), (pb, b, tb)) = (used[run_start], used[k]);
+        if pa != pb {
             run_start = k;
             continue;
         }
-        let (ta, tb) = (first_tet[a as usize], first_tet[b as usize]);
         problems.push(Problem::new(
             ProblemKind::CoincidentVertices,
             vec![ta, tb],
             vec![a, b],
             format!(
-                "vertices #{a} (of T{ta}) and #{b} (of T{tb}) are both at {:?}: the tetrahedra around them are not joined there (a non-conforming assembly)",
-                points[a as usize]
+                "vertices #{a} (of T{ta}) and #{b} (of T{tb}) are both at {pa:?}: the tetrahedra around them are not joined there (a non-conforming assembly)"
             ),
         ));
     }
@@ -384,22 +387,36 @@ pub(super) fn check_hull(
     boundary: &[BoundaryFace],
     hull: &Hull3,
 ) -> Vec<Problem> {
-    let mut problems = Vec::new();
     let mut used = vec![false; points.len()];
     for t in tets {
         for &v in t {
             used[v as usize] = true;
         }
     }
-    for (v, _) in used.iter().enumerate().filter(|(_, u)| !**u) {
-        let v = v as u32;
-        problems.push(Problem::new(
-            ProblemKind::UnusedVertex,
-            vec![],
-            vec![v],
-            format!("point #{v} is not a vertex of any tetrahedron"),
-        ));
-    }
+    let mut problems: Vec<Problem> = (0..points.len() as u32)
+        .filter(|&v| !used[v as usize])
+        .map(unused_vertex)
+        .collect();
+    let unused = !problems.is_empty();
+    problems.extend(hull_faces(points, boundary, hull, unused));
+    problems
+}
+
+/// Point `v` is a vertex of no tetrahedron.
+pub(crate) fn unused_vertex(v: u32) -> Problem {
+    let d = format!("point #{v} is not a vertex of any tetrahedron");
+    Problem::new(ProblemKind::UnusedVertex, vec![], vec![v], d)
+}
+
+/// The boundary faces not on the hull, and, when all are and nothing else is wrong
+/// (`wrong` false), those overlapping the first one on its facet.
+pub(crate) fn hull_faces(
+    points: &[Point3],
+    boundary: &[BoundaryFace],
+    hull: &Hull3,
+    wrong: bool,
+) -> Vec<Problem> {
+    let mut problems = Vec::new();
     let facets: Vec<Option<u32>> = boundary
         .iter()
         .map(|f| hull.common_facet(f.v[0] as usize, f.v[1] as usize, f.v[2] as usize))
@@ -414,7 +431,7 @@ pub(super) fn check_hull(
             ));
         }
     }
-    if !problems.is_empty() || boundary.is_empty() {
+    if wrong || !problems.is_empty() || boundary.is_empty() {
         return problems;
     }
     // Covering degree: boundary faces over one facet must not overlap the first one.

@@ -1,0 +1,759 @@
+//! The check of a partitioned mesh (`.pvtu`) by several processes that each read only
+//! their pieces: one process's side of it ([`RankCheck`]), a sequence of all-to-all
+//! exchanges of byte messages that any transport carries (MPI's `alltoall` under
+//! `python3 -m tetrakit.mpi`; [`check_in_ranks`] in memory). Its outcome, on rank 0, is
+//! the outcome `tetrakit check X.pvtu` prints ([`crate::mesh::check_pieces`] on the merged
+//! mesh), problem for problem.
+//!
+//! Piece `p` is read by rank `p mod K`. The rounds:
+//! 1. every rank sends every piece's point counts, and each of its points (its global
+//!    id, or its exact coordinates) to the point's *key owner* (a hash of the key);
+//! 2. a key owner numbers each point as the merged reader does: the first occurrence (by
+//!    piece, then index) is the vertex, numbered by its place among all the pieces'
+//!    points; a later piece's point with that key is that vertex (with global ids: if its
+//!    coordinates agree, else an `interface_mismatch`); a vertex that several pieces use
+//!    is on an interface and is owned by the key owner's layer;
+//! 3. each rank builds one [`Part`] per piece and sends every tetrahedron around an
+//!    interface vertex (a ghost) to the vertex's owner, and its points to the owner of
+//!    their coordinates (coincident and unused vertices);
+//! 4. each rank checks its parts' faces and edges ([`Part::faces`]) and sends what they
+//!    decide, with the boundary faces, to rank 0;
+//! 5. rank 0 puts them in the merged check's order and, where the embedding checks are
+//!    due, sends one vertex of every boundary component to all ranks;
+//! 6. every rank runs the cone tests of the vertices it owns and the nesting test of
+//!    its pieces; rank 0 finishes.
+//!
+//! Memory per rank: its pieces, its parts (each piece's tetrahedra again, compacted) and
+//! its layer (the ghosts); rank 0 also holds the boundary faces. A vertex number in the
+//! problems is its place among all pieces' points (piece 0's first), as `tetrakit check`
+//! numbers a `.pvtu`'s vertices. A piece file is one piece (a file of several `Piece`s is
+//! read as one).
+
+use crate::geom::{Hull3, Point3, lex_cmp, point_key};
+use crate::io::{self, IdMismatch, Input, Piece};
+use crate::mesh::{
+    self, BoundaryFace, CheckOptions, CheckOutcome, Part, PartFaces, Problem, Report,
+};
+use serde::{Deserialize, Serialize, de::DeserializeOwned};
+use std::path::{Path, PathBuf};
+
+/// How many exchanges a check takes (all ranks take part in each).
+pub const ROUNDS: usize = 6;
+
+/// One process's side of a partitioned check: [`start`](Self::start), then
+/// [`step`](Self::step) with what every rank sent it until it returns `None`; then
+/// [`outcome`](Self::outcome) on rank 0.
+pub struct RankCheck {
+    rank: usize,
+    size: usize,
+    opts: CheckOptions,
+    index: PathBuf,
+    files: Vec<PathBuf>,
+    round: usize,
+    mine: Vec<Local>,
+    pieces: Vec<Info>,
+    failure: Option<String>,
+    parts: Vec<Part>,
+    on_boundary: Vec<Vec<bool>>,
+    mismatches: Vec<Problem>,
+    /// Rank 0: what is gathered, then the outcome.
+    gathered: Gathered,
+    hull_points: Vec<(Point3, u32)>,
+    report: Report,
+    boundary: Vec<([u32; 3], u32, [Point3; 3])>,
+    reps: Vec<(u32, u32, Point3)>,
+    embedding: bool,
+    outcome: Option<CheckOutcome>,
+    /// Bytes this rank sent, all rounds.
+    pub bytes_sent: usize,
+}
+
+/// A piece this rank read.
+struct Local {
+    piece: u32,
+    input: Input,
+    /// Each point's vertex number, and whether it is on an interface and who owns it.
+    labels: Vec<u32>,
+    shared: Vec<bool>,
+    owner: Vec<u32>,
+}
+
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
+struct Info {
+    piece: u32,
+    points: u32,
+    tets: u32,
+    other_cells: u32,
+    ids: bool,
+}
+
+#[derive(Default, Serialize, Deserialize)]
+struct Hello {
+    failure: Option<(u32, String)>,
+    pieces: Vec<Info>,
+    keys: Vec<Occurrence>,
+}
+
+#[derive(Clone, Copy, Serialize, Deserialize)]
+struct Occurrence {
+    key: [u64; 3],
+    piece: u32,
+    index: u32,
+    at: Point3,
+}
+
+#[derive(Clone, Copy, Serialize, Deserialize)]
+struct Label {
+    piece: u32,
+    index: u32,
+    label: u32,
+    shared: bool,
+}
+
+#[derive(Clone, Copy, Serialize, Deserialize)]
+struct Ghost {
+    label: u32,
+    v: [u32; 4],
+    at: [Point3; 4],
+    owned: u8,
+}
+
+#[derive(Default, Serialize, Deserialize)]
+struct Spread {
+    ghosts: Vec<Ghost>,
+    /// `(place, vertex, first tetrahedron or u32::MAX)`, to the owner of the place.
+    points: Vec<(Point3, u32, u32)>,
+    /// To rank 0 with `convex`: points on the hull of this rank's pieces.
+    hull: Vec<(Point3, u32)>,
+}
+
+#[derive(Default, Serialize, Deserialize)]
+struct Gathered {
+    faces: Vec<PartFaces>,
+    coincident: Vec<(Point3, Problem)>,
+    unused: Vec<u32>,
+    mismatches: Vec<Problem>,
+    vertices: u32,
+    reoriented: u32,
+}
+
+#[derive(Default, Serialize, Deserialize)]
+struct Decision {
+    embed: bool,
+    reps: Vec<(Point3, u32)>,
+}
+
+#[derive(Default, Serialize, Deserialize)]
+struct Embedded {
+    overlaps: Vec<Problem>,
+    hits: Vec<Option<(u32, [u32; 4])>>,
+}
+
+fn encode<T: Serialize>(x: &T) -> Vec<u8> {
+    postcard::to_stdvec(x).unwrap_or_default()
+}
+
+/// Our own ranks' messages: one that does not decode is a bug, read as nothing.
+fn decode<T: DeserializeOwned + Default>(b: &[u8]) -> T {
+    match b.is_empty() {
+        true => T::default(),
+        false => postcard::from_bytes(b).unwrap_or_default(),
+    }
+}
+
+/// The rank that owns a key.
+fn owner_of(key: &[u64; 3], size: usize) -> usize {
+    let mut h = 0x9e37_79b9_7f4a_7c15u64;
+    for &k in key {
+        h = (h ^ k).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        h ^= h >> 31;
+    }
+    (h % size as u64) as usize
+}
+
+impl RankCheck {
+    /// Rank `rank` of `size` checking the `.pvtu` at `index`.
+    pub fn new(index: &Path, rank: usize, size: usize, opts: CheckOptions) -> Self {
+        RankCheck {
+            rank,
+            size: size.max(1),
+            opts,
+            index: index.to_path_buf(),
+            files: Vec::new(),
+            round: 0,
+            mine: Vec::new(),
+            pieces: Vec::new(),
+            failure: None,
+            parts: Vec::new(),
+            on_boundary: Vec::new(),
+            mismatches: Vec::new(),
+            gathered: Gathered::default(),
+            hull_points: Vec::new(),
+            report: Report::default(),
+            boundary: Vec::new(),
+            reps: Vec::new(),
+            embedding: false,
+            outcome: None,
+            bytes_sent: 0,
+        }
+    }
+
+    /// The first messages (one per rank): this rank reads its pieces.
+    pub fn start(&mut self) -> Vec<Vec<u8>> {
+        let mut hello = Hello::default();
+        let mut keys: Vec<Vec<Occurrence>> = vec![Vec::new(); self.size];
+        match io::pvtu_pieces(&self.index) {
+            Err(e) => hello.failure = Some((0, e.to_string())),
+            Ok(files) => self.files = files,
+        }
+        for p in (self.rank..self.files.len()).step_by(self.size) {
+            match io::read_piece(&self.files[p]) {
+                Err(e) => {
+                    hello.failure.get_or_insert((p as u32, e.to_string()));
+                }
+                Ok((input, ids)) => {
+                    let piece = p as u32;
+                    for (i, at) in input.points.iter().enumerate() {
+                        let key = match &ids {
+                            Some(ids) => [ids[i] as u64, 0, 0],
+                            None => point_key(at),
+                        };
+                        let o = Occurrence {
+                            key,
+                            piece,
+                            index: i as u32,
+                            at: *at,
+                        };
+                        keys[owner_of(&key, self.size)].push(o);
+                    }
+                    hello.pieces.push(Info {
+                        piece,
+                        points: input.points.len() as u32,
+                        tets: input.tets.len() as u32,
+                        other_cells: input.other_cells.as_ref().map_or(0, |o| o.count as u32),
+                        ids: ids.is_some(),
+                    });
+                    let n = input.points.len();
+                    self.mine.push(Local {
+                        piece,
+                        input,
+                        labels: vec![u32::MAX; n],
+                        shared: vec![false; n],
+                        owner: vec![0; n],
+                    });
+                }
+            }
+        }
+        let out = keys
+            .into_iter()
+            .map(|keys| {
+                let h = Hello {
+                    failure: hello.failure.clone(),
+                    pieces: hello.pieces.clone(),
+                    keys,
+                };
+                encode(&h)
+            })
+            .collect();
+        self.sent(out)
+    }
+
+    fn sent(&mut self, out: Vec<Vec<u8>>) -> Vec<Vec<u8>> {
+        self.bytes_sent += out.iter().map(Vec::len).sum::<usize>();
+        self.round += 1;
+        out
+    }
+
+    fn send_to_rank0<T: Serialize>(&mut self, x: &T) -> Vec<Vec<u8>> {
+        let mut out = vec![Vec::new(); self.size];
+        out[0] = encode(x);
+        self.sent(out)
+    }
+
+    /// The next messages, given what every rank sent this one (`inbox[r]` from rank
+    /// `r`); `None` when the check is over (on every rank in the same round).
+    pub fn step(&mut self, inbox: Vec<Vec<u8>>) -> Option<Vec<Vec<u8>>> {
+        if self.failure.is_some() || self.round > ROUNDS {
+            return None;
+        }
+        let out = match self.round {
+            1 => self.number(&inbox),
+            2 => self.spread(&inbox),
+            3 => self.faces(&inbox),
+            4 => self.decide(&inbox),
+            5 => self.embed(&inbox),
+            _ => {
+                self.finish(&inbox);
+                self.round += 1;
+                return None;
+            }
+        };
+        if self.failure.is_some() {
+            return None;
+        }
+        Some(out)
+    }
+
+    /// The error that stopped the check (every rank has it), as `file:line: problem`.
+    pub fn failure(&self) -> Option<&str> {
+        self.failure.as_deref()
+    }
+
+    /// Round 2: the pieces' table, and the vertex numbers of the keys this rank owns.
+    fn number(&mut self, inbox: &[Vec<u8>]) -> Vec<Vec<u8>> {
+        let hellos: Vec<Hello> = inbox.iter().map(|b| decode(b)).collect();
+        let mut failures: Vec<(u32, String)> =
+            hellos.iter().filter_map(|h| h.failure.clone()).collect();
+        failures.sort();
+        let mut pieces: Vec<Info> = hellos.iter().flat_map(|h| h.pieces.clone()).collect();
+        pieces.sort_by_key(|i| i.piece);
+        if failures.is_empty() {
+            let with = pieces.iter().find(|i| i.ids);
+            let without = pieces.iter().find(|i| !i.ids);
+            if let (Some(a), Some(b)) = (with, without) {
+                let why = format!(
+                    "piece {} ({}) has global point ids but piece {} ({}) has none: the pieces disagree in layout",
+                    a.piece,
+                    self.files[a.piece as usize].display(),
+                    b.piece,
+                    self.files[b.piece as usize].display()
+                );
+                failures.push((0, format!("{}: {why}", self.index.display())));
+            }
+        }
+        if let Some((_, why)) = failures.into_iter().next() {
+            self.failure = Some(why);
+            return Vec::new();
+        }
+        self.pieces = pieces;
+        let offsets = self.point_offsets();
+        let mut occ: Vec<Occurrence> = hellos.into_iter().flat_map(|h| h.keys).collect();
+        occ.sort_by_key(|o| (o.key, o.piece, o.index));
+        let ids = self.pieces.first().is_some_and(|i| i.ids);
+        let mut out: Vec<Vec<Label>> = vec![Vec::new(); self.size];
+        for group in occ.chunk_by(|a, b| a.key == b.key) {
+            let c = group[0];
+            let concat = |o: &Occurrence| offsets[o.piece as usize] + o.index;
+            let new = |o: &Occurrence| o.piece == c.piece || (ids && o.at != c.at);
+            let merged = group.iter().any(|o| !new(o));
+            for o in group {
+                let label = match new(o) {
+                    true => concat(o),
+                    false => concat(&c),
+                };
+                let shared = !new(o) || (concat(o) == concat(&c) && merged);
+                if ids && new(o) && o.piece != c.piece {
+                    let m = IdMismatch {
+                        id: c.key[0] as i64,
+                        first: concat(&c),
+                        second: concat(o),
+                        piece: o.piece,
+                    };
+                    self.mismatches.push(m.problem(c.at, o.at));
+                }
+                let l = Label {
+                    piece: o.piece,
+                    index: o.index,
+                    label,
+                    shared,
+                };
+                out[o.piece as usize % self.size].push(l);
+            }
+        }
+        let out = out.iter().map(encode).collect();
+        self.sent(out)
+    }
+
+    fn point_offsets(&self) -> Vec<u32> {
+        let mut offsets = vec![0u32; self.pieces.len() + 1];
+        for (k, i) in self.pieces.iter().enumerate() {
+            offsets[k + 1] = offsets[k] + i.points;
+        }
+        offsets
+    }
+
+    fn tet_offsets(&self) -> Vec<u32> {
+        let mut offsets = vec![0u32; self.pieces.len() + 1];
+        for (k, i) in self.pieces.iter().enumerate() {
+            offsets[k + 1] = offsets[k] + i.tets;
+        }
+        offsets
+    }
+
+    /// Round 3: this rank's parts; ghosts to the owners of interface vertices, points to
+    /// the owners of their places, the hull's candidates to rank 0.
+    fn spread(&mut self, inbox: &[Vec<u8>]) -> Vec<Vec<u8>> {
+        for (from, b) in inbox.iter().enumerate() {
+            let labels: Vec<Label> = decode(b);
+            for l in labels {
+                if let Some(m) = self.mine.iter_mut().find(|m| m.piece == l.piece) {
+                    let k = l.index as usize;
+                    (m.labels[k], m.shared[k], m.owner[k]) = (l.label, l.shared, from as u32);
+                }
+            }
+        }
+        let tet_offsets = self.tet_offsets();
+        let mut out: Vec<Spread> = (0..self.size).map(|_| Spread::default()).collect();
+        let mut reoriented = 0;
+        for m in &mut self.mine {
+            if self.opts.reorient {
+                reoriented += mesh::reorient(&m.input.points, &mut m.input.tets);
+            }
+            let first = tet_offsets[m.piece as usize];
+            spread_piece(m, first, self.opts.convex, &mut out, self.size);
+            let tet_labels = (first..first + m.input.tets.len() as u32).collect();
+            let labels = &m.labels;
+            let part = Part::new(
+                &m.input.points,
+                |k| labels[k as usize],
+                &m.input.tets,
+                tet_labels,
+                |k| !m.shared[k as usize],
+                true,
+            );
+            self.parts.push(part);
+        }
+        self.gathered.reoriented = reoriented as u32;
+        let offsets = self.point_offsets();
+        self.gathered.vertices = (self.mine.iter())
+            .map(|m| {
+                let base = offsets[m.piece as usize];
+                (m.labels.iter().enumerate())
+                    .filter(|&(k, &l)| l == base + k as u32)
+                    .count() as u32
+            })
+            .sum();
+        let out = out.iter().map(encode).collect();
+        self.sent(out)
+    }
+
+    /// Round 4: the layer of this rank's interface vertices; every part's faces, the
+    /// coincident and unused vertices of the places this rank owns, to rank 0.
+    fn faces(&mut self, inbox: &[Vec<u8>]) -> Vec<Vec<u8>> {
+        let mut ghosts = Vec::new();
+        let mut points = Vec::new();
+        for b in inbox {
+            let s: Spread = decode(b);
+            ghosts.extend(s.ghosts);
+            points.extend(s.points);
+            self.hull_points.extend(s.hull);
+        }
+        ghosts.sort_by_key(|g| g.label);
+        ghosts.dedup_by_key(|g| g.label);
+        let at: Vec<Point3> = ghosts.iter().flat_map(|g| g.at).collect();
+        let tets: Vec<[u32; 4]> = (0..ghosts.len() as u32)
+            .map(|g| std::array::from_fn(|i| 4 * g + i as u32))
+            .collect();
+        let owned = |k: u32| ghosts[k as usize / 4].owned >> (k % 4) & 1 == 1;
+        let labels = |k: u32| ghosts[k as usize / 4].v[k as usize % 4];
+        let tet_labels = ghosts.iter().map(|g| g.label).collect();
+        self.parts
+            .push(Part::new(&at, labels, &tets, tet_labels, owned, false));
+        let mut faces: Vec<PartFaces> = self.parts.iter().map(Part::faces).collect();
+        self.on_boundary = (faces.iter_mut())
+            .map(|f| std::mem::take(&mut f.on_boundary))
+            .collect();
+        let (coincident, unused) = places(points);
+        let g = Gathered {
+            faces,
+            coincident,
+            unused: if self.opts.convex { unused } else { Vec::new() },
+            mismatches: std::mem::take(&mut self.mismatches),
+            vertices: self.gathered.vertices,
+            reoriented: self.gathered.reoriented,
+        };
+        self.send_to_rank0(&g)
+    }
+
+    /// Round 5, rank 0: the report so far in the merged check's order, and whether (and
+    /// where) the embedding checks run.
+    fn decide(&mut self, inbox: &[Vec<u8>]) -> Vec<Vec<u8>> {
+        if self.rank != 0 {
+            return self.sent(vec![Vec::new(); self.size]);
+        }
+        let mut all = Gathered::default();
+        for b in inbox {
+            let g: Gathered = decode(b);
+            all.faces.extend(g.faces);
+            all.coincident.extend(g.coincident);
+            all.unused.extend(g.unused);
+            all.mismatches.extend(g.mismatches);
+            all.vertices += g.vertices;
+            all.reoriented += g.reoriented;
+        }
+        let corners: std::collections::HashMap<u32, Point3> = (all.faces.iter())
+            .flat_map(|f| f.places.iter().copied())
+            .collect();
+        let (mut report, boundary) = mesh::assemble_faces(std::mem::take(&mut all.faces));
+        all.coincident
+            .sort_by(|a, b| lex_cmp(&a.0, &b.0).then(a.1.vertices[1].cmp(&b.1.vertices[1])));
+        for (_, p) in std::mem::take(&mut all.coincident) {
+            report.push(p);
+        }
+        self.boundary = (boundary.iter())
+            .map(|f| (f.v, f.tet, f.v.map(|v| corners[&v])))
+            .collect();
+        let mut decision = Decision::default();
+        if self.opts.convex {
+            all.unused.sort_unstable();
+            for &v in &all.unused {
+                report.push(mesh::unused_vertex(v));
+            }
+            for p in self.hull_faces(!all.unused.is_empty()) {
+                report.push(p);
+            }
+        } else if report.is_valid() {
+            let faces: Vec<([u32; 3], u32)> = boundary.iter().map(|f| (f.v, f.tet)).collect();
+            let reps = mesh::boundary_components(&faces);
+            if reps.len() > 1 {
+                self.reps = reps.iter().map(|&(v, t)| (v, t, corners[&v])).collect();
+            }
+            self.embedding = true;
+            decision = Decision {
+                embed: true,
+                reps: self.reps.iter().map(|&(v, _, x)| (x, v)).collect(),
+            };
+        }
+        self.report = report;
+        self.gathered = all;
+        let out = vec![encode(&decision); self.size];
+        self.sent(out)
+    }
+
+    /// The boundary faces (gathered) not on the hull of all points, or overlapping on it.
+    fn hull_faces(&self, wrong: bool) -> Vec<Problem> {
+        let mut points: Vec<(Point3, u32)> = self.hull_points.clone();
+        for (v, _, at) in &self.boundary {
+            points.extend((0..3).map(|i| (at[i], v[i])));
+        }
+        points.sort_by_key(|p| p.1);
+        points.dedup_by_key(|p| p.1);
+        let place: Vec<Point3> = points.iter().map(|p| p.0).collect();
+        let local = |v: u32| points.binary_search_by_key(&v, |p| p.1).unwrap_or(0) as u32;
+        let faces: Vec<BoundaryFace> = (self.boundary.iter())
+            .map(|(v, tet, _)| BoundaryFace {
+                v: v.map(local),
+                tet: *tet,
+            })
+            .collect();
+        let hull = Hull3::new(&place);
+        let found = mesh::hull_faces(&place, &faces, &hull, wrong);
+        relabeled(found, |k| points[k as usize].1)
+    }
+
+    /// Round 6: the cone tests of this rank's vertices and its pieces' nesting test.
+    fn embed(&mut self, inbox: &[Vec<u8>]) -> Vec<Vec<u8>> {
+        let decision: Decision = decode(&inbox[0]);
+        if !decision.embed {
+            return self.send_to_rank0(&Embedded::default());
+        }
+        let mut e = Embedded::default();
+        for (part, on) in self.parts.iter().zip(&self.on_boundary) {
+            e.overlaps.extend(part.vertex_overlaps(on));
+        }
+        e.hits = vec![None; decision.reps.len()];
+        if !decision.reps.is_empty() {
+            for part in self.parts.iter().filter(|p| p.reports_tets) {
+                first_hits(&mut e.hits, part.containing(&decision.reps));
+            }
+        }
+        self.send_to_rank0(&e)
+    }
+
+    /// Rank 0: the last problems and the outcome.
+    fn finish(&mut self, inbox: &[Vec<u8>]) {
+        if self.rank != 0 {
+            return;
+        }
+        let mut report = std::mem::take(&mut self.report);
+        let mut overlaps = Vec::new();
+        let mut hits = vec![None; self.reps.len()];
+        for b in inbox {
+            let e: Embedded = decode(b);
+            overlaps.extend(e.overlaps);
+            first_hits(&mut hits, e.hits);
+        }
+        overlaps.sort_by_key(|p| p.vertices[0]);
+        for p in overlaps {
+            report.push(p);
+        }
+        if self.embedding {
+            for p in self.self_intersections() {
+                report.push(p);
+            }
+        }
+        for (&(v, own, _), hit) in self.reps.iter().zip(hits) {
+            if let Some((t, corners)) = hit {
+                report.push(mesh::nested_problem(v, own, t, &corners));
+            }
+        }
+        if self.opts.manifold {
+            report = report.require_manifold();
+        }
+        let g = &self.gathered;
+        let reoriented = self.opts.reorient.then_some(g.reoriented as usize);
+        let tets: usize = self.pieces.iter().map(|i| i.tets as usize).sum();
+        let mut o = mesh::outcome(
+            report,
+            Vec::new(),
+            g.vertices as usize,
+            self.opts,
+            reoriented,
+        );
+        o.tetrahedra = tets;
+        self.outcome = Some(o.with_problems(std::mem::take(&mut self.gathered.mismatches)));
+    }
+
+    /// The gathered boundary's self-intersections.
+    fn self_intersections(&self) -> Vec<Problem> {
+        let mut points: Vec<(u32, Point3)> = (self.boundary.iter())
+            .flat_map(|(v, _, at)| (0..3).map(|i| (v[i], at[i])))
+            .collect();
+        points.sort_by_key(|p| p.0);
+        points.dedup_by_key(|p| p.0);
+        let place: Vec<Point3> = points.iter().map(|p| p.1).collect();
+        let local = |v: u32| points.binary_search_by_key(&v, |p| p.0).unwrap_or(0) as u32;
+        let faces: Vec<([u32; 3], u32)> = (self.boundary.iter())
+            .map(|(v, t, _)| (v.map(local), *t))
+            .collect();
+        let found = mesh::boundary_self_intersections(&place, &faces);
+        relabeled(found, |k| points[k as usize].0)
+    }
+
+    /// Rank 0, when the check is over: its outcome.
+    pub fn outcome(&self) -> Option<&CheckOutcome> {
+        self.outcome.as_ref()
+    }
+
+    /// Rank 0, when the check is over: the mesh's reading facts for the report layer
+    /// (its pieces, where each starts, and the other cells), without points or tetrahedra.
+    pub fn input(&self) -> Input {
+        let offsets = self.tet_offsets();
+        let other: usize = self.pieces.iter().map(|i| i.other_cells as usize).sum();
+        Input {
+            dim: 3,
+            point_file: self.index.clone(),
+            tet_file: self.index.clone(),
+            pieces: (self.files.iter().zip(&offsets))
+                .map(|(file, &first_tet)| Piece {
+                    file: file.clone(),
+                    first_tet,
+                })
+                .collect(),
+            other_cells: (other > 0).then(|| io::OtherCells {
+                count: other,
+                line: 0,
+                message: format!("{other} cells that are not tetrahedra"),
+            }),
+            ..Default::default()
+        }
+    }
+}
+
+/// Keeps, per query, the hit with the smallest tetrahedron.
+fn first_hits(best: &mut [Option<(u32, [u32; 4])>], found: Vec<Option<(u32, [u32; 4])>>) {
+    for (b, hit) in best.iter_mut().zip(found) {
+        if hit.is_some_and(|h| b.is_none_or(|g| h.0 < g.0)) {
+            *b = hit;
+        }
+    }
+}
+
+fn relabeled(found: Vec<Problem>, label: impl Fn(u32) -> u32) -> Vec<Problem> {
+    let mut found = found;
+    for p in &mut found {
+        p.relabel(&label, &|t| t);
+    }
+    found
+}
+
+/// A piece's ghosts (every tetrahedron around an interface vertex, to the vertex's
+/// owner), its points (to the owner of their place) and, with `convex`, its hull's.
+fn spread_piece(m: &Local, first: u32, convex: bool, out: &mut [Spread], size: usize) {
+    let mut first_tet = vec![u32::MAX; m.input.points.len()];
+    for (t, tet) in m.input.tets.iter().enumerate().rev() {
+        tet.iter()
+            .for_each(|&k| first_tet[k as usize] = first + t as u32);
+        let mut owners: Vec<u32> = (tet.iter())
+            .filter(|&&k| m.shared[k as usize])
+            .map(|&k| m.owner[k as usize])
+            .collect();
+        owners.sort_unstable();
+        owners.dedup();
+        for r in owners {
+            let mut owned = 0u8;
+            for (i, &k) in tet.iter().enumerate() {
+                if m.shared[k as usize] && m.owner[k as usize] == r {
+                    owned |= 1 << i;
+                }
+            }
+            out[r as usize].ghosts.push(Ghost {
+                label: first + t as u32,
+                v: tet.map(|k| m.labels[k as usize]),
+                at: tet.map(|k| m.input.points[k as usize]),
+                owned,
+            });
+        }
+    }
+    for (k, at) in m.input.points.iter().enumerate() {
+        let r = owner_of(&point_key(at), size);
+        out[r].points.push((*at, m.labels[k], first_tet[k]));
+    }
+    if convex {
+        let hull = Hull3::new(&m.input.points);
+        let on = (0..m.input.points.len()).filter(|&k| hull.on_boundary(k));
+        out[0]
+            .hull
+            .extend(on.map(|k| (m.input.points[k], m.labels[k])));
+    }
+}
+
+/// The coincident vertices among `points` (`(place, vertex, first tetrahedron)`, a
+/// vertex possibly many times) with the place of each problem, and the unused vertices.
+fn places(mut points: Vec<(Point3, u32, u32)>) -> (Vec<(Point3, Problem)>, Vec<u32>) {
+    points.sort_by_key(|p| (p.1, p.2));
+    points.dedup_by_key(|p| p.1);
+    let unused = (points.iter())
+        .filter(|p| p.2 == u32::MAX)
+        .map(|p| p.1)
+        .collect();
+    let mut used: Vec<(Point3, u32, u32)> =
+        points.into_iter().filter(|p| p.2 != u32::MAX).collect();
+    let found = mesh::coincident_runs(&mut used);
+    let at: std::collections::HashMap<u32, Point3> = used.iter().map(|u| (u.1, u.0)).collect();
+    let found = found.into_iter().map(|p| (at[&p.vertices[1]], p)).collect();
+    (found, unused)
+}
+
+/// Runs the ranks of a partitioned check of `index` in this process, exchanging their
+/// messages in memory: rank 0's outcome (or the failure), and the bytes each rank sent.
+pub fn check_in_ranks(
+    index: &Path,
+    size: usize,
+    opts: CheckOptions,
+) -> (Result<CheckOutcome, String>, Vec<usize>) {
+    let mut ranks: Vec<RankCheck> = (0..size)
+        .map(|r| RankCheck::new(index, r, size, opts))
+        .collect();
+    let mut outs: Vec<Vec<Vec<u8>>> = ranks.iter_mut().map(RankCheck::start).collect();
+    loop {
+        let mut next = Vec::new();
+        for (r, rank) in ranks.iter_mut().enumerate() {
+            let inbox: Vec<Vec<u8>> = outs.iter_mut().map(|o| std::mem::take(&mut o[r])).collect();
+            next.push(rank.step(inbox));
+        }
+        if next.iter().any(Option::is_none) {
+            break;
+        }
+        outs = next.into_iter().map(Option::unwrap_or_default).collect();
+    }
+    let sent = ranks.iter().map(|r| r.bytes_sent).collect();
+    let result = match ranks[0].failure() {
+        Some(f) => Err(f.to_string()),
+        None => ranks[0]
+            .outcome
+            .clone()
+            .ok_or_else(|| "no outcome".to_string()),
+    };
+    (result, sent)
+}
