@@ -110,40 +110,11 @@ pub fn check(a: &crate::CheckArgs) -> CmdResult {
     if let Some(out) = &a.output {
         write_problems(out, &input.points, &outcome)?;
     }
-    // Where each problem lies in its piece, placed before relabeling, for the one
-    // output asked.
-    let partitioned = !input.pieces.is_empty();
-    let placed =
-        (partitioned && as_json).then(|| tetrakit::report::problem_pieces(&outcome, &input));
-    let pieces_text =
-        (partitioned && !as_json).then(|| tetrakit::report::pieces_text(&outcome, &input));
-    let outcome = outcome.relabeled(
-        |v| input.point_label(v as usize),
-        |t| input.tet_label(t as usize),
-    );
+    let verdict = Verdict::from(outcome.is_valid());
     let seconds = start.elapsed().as_secs_f64();
-    let other = input.other_cells.as_ref();
-    if as_json {
-        let mut extra = vec![
-            ("other_cells", other.map_or(0, |o| o.count).into()),
-            ("seconds", seconds.into()),
-            ("parse_seconds", parsed.into()),
-        ];
-        if let Some(placed) = placed {
-            extra.push(("pieces", input.pieces.len().into()));
-            let placed = serde_json::to_value(placed).unwrap_or_default();
-            extra.push(("problem_pieces", placed));
-        }
-        out!("{}", tetrakit::report::json(&outcome, extra));
-    } else {
-        let other = other.map(|o| (o.count, o.message.as_str()));
-        let text = tetrakit::report::check_text(&outcome, seconds, other);
-        out!("{}", text.trim_end());
-        if let Some(text) = pieces_text {
-            out!("{}", text.trim_end());
-        }
-    }
-    Ok(Verdict::from(outcome.is_valid()))
+    let printed = tetrakit::report::check_printed(outcome, &input, seconds, parsed, as_json);
+    out!("{printed}");
+    Ok(verdict)
 }
 
 /// `check --output`: the mesh with its problem codes on cells and points.

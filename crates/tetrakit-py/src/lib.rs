@@ -12,6 +12,7 @@
 mod constrain;
 mod convert;
 mod mesh;
+mod mpi;
 mod planar;
 mod poly;
 
@@ -30,5 +31,6 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(planar::skeleton, m)?)?;
     m.add_function(wrap_pyfunction!(planar::mwt, m)?)?;
     m.add_function(wrap_pyfunction!(planar::keil, m)?)?;
+    m.add_class::<mpi::RankCheck>()?;
     Ok(())
 }

@@ -1,7 +1,49 @@
 //! The text of a `check` outcome.
 
+use crate::io::Input;
 use crate::mesh::{CheckOutcome, Report};
 use std::fmt::Write;
+
+/// What `tetrakit check` prints for `outcome`, the check of the mesh read as `input`
+/// (`parsed` seconds to read, `seconds` in all): the JSON object (`json`) or the text,
+/// numbered as the file numbers its points and cells, partitioned meshes' pieces placed.
+pub fn check_printed(
+    outcome: CheckOutcome,
+    input: &Input,
+    seconds: f64,
+    parsed: f64,
+    json: bool,
+) -> String {
+    // Where each problem lies in its piece, placed before relabeling.
+    let partitioned = !input.pieces.is_empty();
+    let placed = (partitioned && json).then(|| problem_pieces(&outcome, input));
+    let pieces = (partitioned && !json).then(|| pieces_text(&outcome, input));
+    let outcome = outcome.relabeled(
+        |v| input.point_label(v as usize),
+        |t| input.tet_label(t as usize),
+    );
+    let other = input.other_cells.as_ref();
+    if json {
+        let mut extra = vec![
+            ("other_cells", other.map_or(0, |o| o.count).into()),
+            ("seconds", seconds.into()),
+            ("parse_seconds", parsed.into()),
+        ];
+        if let Some(placed) = placed {
+            extra.push(("pieces", input.pieces.len().into()));
+            let placed = serde_json::to_value(placed).unwrap_or_default();
+            extra.push(("problem_pieces", placed));
+        }
+        return super::json(&outcome, extra).to_string();
+    }
+    let other = other.map(|o| (o.count, o.message.as_str()));
+    let mut text = check_text(&outcome, seconds, other).trim_end().to_string();
+    if let Some(p) = pieces {
+        text.push('\n');
+        text.push_str(p.trim_end());
+    }
+    text
+}
 
 /// How many problems the text lists (the JSON keeps up to [`Report::LIMIT`]).
 const LISTED: usize = 20;
