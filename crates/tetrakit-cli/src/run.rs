@@ -73,8 +73,9 @@ pub fn check(a: &crate::CheckArgs) -> CmdResult {
     let start = Instant::now();
     if let Some(out) = &a.output {
         let ext = out.extension().and_then(|e| e.to_str()).unwrap_or("");
-        if !matches!(ext.to_ascii_lowercase().as_str(), "vtk" | "vtu") {
-            let why = "--output takes a .vtk or .vtu file (the mesh with its problem fields)";
+        if !matches!(ext.to_ascii_lowercase().as_str(), "vtk" | "vtu" | "pvtu") {
+            let why =
+                "--output takes a .vtk, .vtu or .pvtu file (the mesh with its problem fields)";
             return Err(CliError::at(out, why));
         }
     }
@@ -108,7 +109,7 @@ pub fn check(a: &crate::CheckArgs) -> CmdResult {
     let outcome = mesh::check_pieces(&input.points, tets, &first, opts)
         .with_problems(input.interface_problems());
     if let Some(out) = &a.output {
-        write_problems(out, &input.points, &outcome)?;
+        write_problems(out, &input, &outcome)?;
     }
     let verdict = Verdict::from(outcome.is_valid());
     let seconds = start.elapsed().as_secs_f64();
@@ -117,17 +118,28 @@ pub fn check(a: &crate::CheckArgs) -> CmdResult {
     Ok(verdict)
 }
 
-/// `check --output`: the mesh with its problem codes on cells and points.
-fn write_problems(
-    out: &Path,
-    points: &[tetrakit::geom::Point3],
-    o: &mesh::CheckOutcome,
-) -> Result<(), CliError> {
+/// `check --output`: the mesh with its problem codes on cells and points; a `.pvtu`
+/// writes one `.vtu` per piece (the input's pieces, or one), vertices numbered as
+/// `check` names them (`GlobalNodeIds`).
+fn write_problems(out: &Path, input: &io::Input, o: &mesh::CheckOutcome) -> Result<(), CliError> {
     let fields = io::Fields {
         cells: vec![("problem", &o.cell_problems)],
         points: vec![("problem", &o.point_problems)],
     };
-    io::write_mesh_with_fields(out, points, &o.tets, &fields).written(out)
+    let pvtu = out
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("pvtu"));
+    if !pvtu {
+        return io::write_mesh_with_fields(out, &input.points, &o.tets, &fields).written(out);
+    }
+    let piece_of: Vec<u32> = (0..o.tets.len())
+        .map(|t| input.tet_piece(t).map_or(0, |(p, _)| p as u32))
+        .collect();
+    let ids: Vec<i32> = (0..input.points.len())
+        .map(|v| input.point_label(v) as i32)
+        .collect();
+    io::write_pieces_with_fields(out, &input.points, &o.tets, &piece_of, Some(&ids), &fields)
+        .written(out)
 }
 
 pub fn generate(kind: GenKind) -> CmdResult {

@@ -407,6 +407,119 @@ fn gmsh_meshes_read_with_one_verdict() {
     assert_eq!(w["tets"][0].to_string(), tag, "{w}");
 }
 
+/// Gmsh's partitioned meshes in one file (`-part 3`, `.msh` 2.2 and 4.1): one piece per
+/// partition, checked part by part with the tetrahedra of the unpartitioned mesh; a
+/// tetrahedron turned inside out is named by its element tag and placed in its partition.
+/// The binary 4.1 file is read as one mesh. Needs `gmsh` (as above).
+#[test]
+fn gmsh_partitioned_meshes_are_read_in_pieces() {
+    if Command::new("gmsh").arg("--version").output().is_err() {
+        assert!(
+            std::env::var_os("TETRAKIT_REQUIRE_GMSH").is_none(),
+            "gmsh is required here"
+        );
+        return;
+    }
+    let d = dir("gmsh-part");
+    let geo = "SetFactory(\"OpenCASCADE\");\nBox(1) = {0,0,0, 1,1,1};\nMesh.MeshSizeMax = 0.25;\n";
+    std::fs::write(d.join("p.geo"), geo).unwrap();
+    let mut facts = Vec::new();
+    for (name, args) in [
+        ("p.msh", &["-format", "msh41"][..]),
+        ("p22.msh", &["-format", "msh22", "-part", "3"]),
+        ("p41.msh", &["-format", "msh41", "-part", "3"]),
+        ("pbin.msh", &["-format", "msh41", "-bin", "-part", "3"]),
+    ] {
+        let out = d.join(name);
+        let g = Command::new("gmsh")
+            .arg(d.join("p.geo"))
+            .arg("-3")
+            .args(args)
+            .arg("-o")
+            .arg(&out)
+            .output()
+            .unwrap();
+        assert!(g.status.success(), "{}", String::from_utf8_lossy(&g.stderr));
+        let o = run(&["check", s(&out), "--json"]);
+        assert_eq!(o.status.code(), Some(0), "{name}");
+        let j = json(&o);
+        facts.push((
+            j["tetrahedra"].as_u64().unwrap(),
+            j["pieces"].as_u64().unwrap_or(1),
+        ));
+    }
+    let t = facts[0].0;
+    assert_eq!(facts, [(t, 1), (t, 3), (t, 3), (t, 1)]);
+    // Turn a tetrahedron of the partitioned 2.2 file inside out.
+    let text = std::fs::read_to_string(d.join("p22.msh")).unwrap();
+    let mut lines: Vec<String> = text.lines().map(String::from).collect();
+    let k = lines
+        .iter()
+        .rposition(|l| l.split(' ').nth(1) == Some("4"))
+        .unwrap();
+    let mut f: Vec<&str> = lines[k].split(' ').collect();
+    let n = f.len();
+    f.swap(n - 1, n - 2);
+    let (tag, partition) = (f[0].to_string(), f[6].parse::<u64>().unwrap());
+    lines[k] = f.join(" ");
+    std::fs::write(d.join("bad.msh"), lines.join("\n")).unwrap();
+    let o = run(&["check", s(&d.join("bad.msh")), "--json"]);
+    assert_eq!(o.status.code(), Some(1));
+    let j = json(&o);
+    assert_eq!(j["witness"]["tets"][0].to_string(), tag);
+    assert_eq!(
+        j["problem_pieces"][0][0][0].as_u64(),
+        Some(partition - 1),
+        "{j}"
+    );
+    let text = run(&["check", s(&d.join("bad.msh"))]);
+    let text = String::from_utf8_lossy(&text.stdout);
+    assert!(
+        text.contains(&format!("bad.msh, partition {partition})")),
+        "{text}"
+    );
+}
+
+/// `check X.pvtu --output P.pvtu` writes one `.vtu` per piece with its `problem` fields
+/// and the vertices' numbers as `GlobalNodeIds`: read back, the same mesh and problems.
+#[test]
+fn partitioned_problems_are_written_per_piece() {
+    let d = dir("pvtu-output");
+    let parts = d.join("parts.pvtu");
+    let g = run(&[
+        "generate",
+        "kuhn",
+        "--size",
+        "3",
+        "--corrupt",
+        "add-overlap",
+        "-o",
+        s(&parts),
+        "--pieces",
+        "3",
+    ]);
+    assert_eq!(g.status.code(), Some(0));
+    let out = d.join("out.pvtu");
+    let first = run(&["check", s(&parts), "--json", "--output", s(&out)]);
+    assert_eq!(first.status.code(), Some(1));
+    for k in 0..3 {
+        let piece = std::fs::read_to_string(d.join(format!("out_{k}.vtu"))).unwrap();
+        assert!(piece.contains("Name=\"problem\"") && piece.contains("Name=\"GlobalNodeIds\""));
+    }
+    let again = run(&["check", s(&out), "--json"]);
+    let (a, b) = (json(&first), json(&again));
+    for key in [
+        "tetrahedra",
+        "vertices",
+        "problem_count",
+        "problems",
+        "pieces",
+        "problem_pieces",
+    ] {
+        assert_eq!(a[key], b[key], "{key}");
+    }
+}
+
 #[test]
 fn planar_input_is_a_triangulation_question() {
     let d = dir("planar");

@@ -638,6 +638,7 @@ impl RankCheck {
                 .map(|(file, &first_tet)| Piece {
                     file: file.clone(),
                     first_tet,
+                    partition: None,
                 })
                 .collect(),
             other_cells: (other > 0).then(|| io::OtherCells {

@@ -8,7 +8,10 @@
 //! writes them), the entity tag of its block in 4.1. Any other element (quadrangles,
 //! hexahedra, prisms, pyramids, higher orders) is an error that counts them, at the
 //! line of the first. Other sections (`$PhysicalNames`, `$Entities`, `$NodeData`, …)
-//! are skipped.
+//! are skipped. A partitioned mesh in one file (`gmsh -part K`: 2.2 element tags `physical
+//! elementary count partition…`, 4.1 `$PartitionedEntities` volumes) is read in pieces, one
+//! per partition ([`Input::pieces`], the tetrahedra grouped by partition); the binary
+//! reader reads such a file as one mesh.
 //!
 //! Node tags may be any distinct positive numbers below 2^32, in any order (Gmsh leaves
 //! gaps after boolean operations and with physical groups); messages name vertices by
@@ -70,6 +73,10 @@ pub(super) struct Cells<'p> {
     lookup: Vec<(u64, u32)>,
     /// Cells refused, by name, with their counts and the line of the first.
     refused: Vec<(&'static str, usize, usize)>,
+    /// Each tetrahedron's partition (0 for none), and the partition of each 4.1
+    /// partitioned volume entity.
+    partitions: Vec<i64>,
+    volume_partition: std::collections::HashMap<i64, i64>,
     pub(super) path: &'p Path,
 }
 
@@ -93,6 +100,7 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
             "$Nodes" if version == Some(4) => r.nodes_41()?,
             "$Elements" if version == Some(2) => r.elements_22()?,
             "$Elements" if version == Some(4) => r.elements_41()?,
+            "$PartitionedEntities" if version == Some(4) => r.partitioned_entities()?,
             "$Nodes" | "$Elements" => {
                 return Err(r.err(line, format!("{key} before $MeshFormat")));
             }
@@ -101,7 +109,8 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
                 return Err(r.err(line, format!("{} outside a section", super::quote(other))));
             }
         }
-        if matches!(key, "$Nodes" | "$Elements") {
+        let partitioned = key == "$PartitionedEntities" && version == Some(4);
+        if matches!(key, "$Nodes" | "$Elements") || partitioned {
             r.end(key)?;
         }
     }
@@ -122,6 +131,8 @@ impl<'p> Cells<'p> {
                 ..Default::default()
             },
             refused: Vec::new(),
+            partitions: Vec::new(),
+            volume_partition: Default::default(),
             tags: None,
             lookup: Vec::new(),
             path,
@@ -151,7 +162,39 @@ impl<'p> Cells<'p> {
                 ),
             });
         }
+        self.split_partitions();
         Ok(self.input)
+    }
+
+    /// A partitioned mesh (Gmsh's `-part K` in one file): its tetrahedra grouped by
+    /// partition (stable, each keeping its element tag), one piece per partition.
+    fn split_partitions(&mut self) {
+        let parts = std::mem::take(&mut self.partitions);
+        let mut tags: Vec<i64> = parts.clone();
+        tags.sort_unstable();
+        tags.dedup();
+        if tags.len() < 2 || parts.len() != self.input.tets.len() {
+            return;
+        }
+        let mut order: Vec<usize> = (0..parts.len()).collect();
+        order.sort_by_key(|&k| parts[k]);
+        let i = &mut self.input;
+        let pick = |v: &mut Vec<_>| *v = order.iter().map(|&k| v[k]).collect();
+        pick(&mut i.tets);
+        if i.tet_lines.len() == order.len() {
+            i.tet_lines = order.iter().map(|&k| i.tet_lines[k]).collect();
+        }
+        i.tet_labels = order.iter().map(|&k| i.tet_labels[k]).collect();
+        i.regions = order.iter().map(|&k| i.regions[k]).collect();
+        let mut first = 0;
+        for tag in tags {
+            i.pieces.push(super::Piece {
+                file: self.path.to_path_buf(),
+                first_tet: first as u32,
+                partition: Some(tag),
+            });
+            first += parts.iter().filter(|&&p| p == tag).count();
+        }
     }
 
     /// One node, `tag` a positive number below 2^32 (checked for repeats by
@@ -230,6 +273,7 @@ impl<'p> Cells<'p> {
         name: &'static str,
         corners: &[u32],
         region: i64,
+        partition: i64,
     ) -> Result<(), InputError> {
         let label = u32::try_from(tag)
             .map_err(|_| self.err(line, format!("element tag {tag} is out of range")))?;
@@ -241,6 +285,7 @@ impl<'p> Cells<'p> {
                 i.tet_lines.push(line as u32);
                 i.tet_labels.push(label);
                 i.regions.push(region);
+                self.partitions.push(partition);
             }
             "triangle" => self.input.faces.push([corners[0], corners[1], corners[2]]),
             "line" => {
@@ -383,7 +428,13 @@ impl Reader<'_, '_> {
     }
 
     /// One element of `kind` with its tag, region and node tags read from the stream.
-    fn element(&mut self, line: usize, tag: i64, kind: i64, region: i64) -> Result<(), InputError> {
+    fn element(
+        &mut self,
+        line: usize,
+        tag: i64,
+        kind: i64,
+        [region, partition]: [i64; 2],
+    ) -> Result<(), InputError> {
         let Some((n, name)) = element_nodes(kind) else {
             return Err(self.err(line, format!("element {tag} has unknown type {kind}")));
         };
@@ -392,7 +443,8 @@ impl Reader<'_, '_> {
             let (l, t) = self.int("a node tag of an element")?;
             corners.push(self.cells.vertex(t).map_err(|e| self.err(l, e))?);
         }
-        self.cells.keep(line, tag, name, &corners, region)
+        self.cells
+            .keep(line, tag, name, &corners, region, partition)
     }
 
     fn elements_22(&mut self) -> Result<(), InputError> {
@@ -403,7 +455,62 @@ impl Reader<'_, '_> {
             for _ in 0..self.count("the number of tags")? {
                 tags.push(self.int("a tag")?.1);
             }
-            self.element(line, tag, kind, tags.first().copied().unwrap_or(0))?;
+            // Tags: physical, elementary, then (partitioned) the number of partitions
+            // and the partitions, the first the element's own.
+            let region = tags.first().copied().unwrap_or(0);
+            let partition = match tags.get(2) {
+                Some(&k) if k >= 1 => tags.get(3).copied().unwrap_or(0),
+                _ => 0,
+            };
+            self.element(line, tag, kind, [region, partition])?;
+        }
+        Ok(())
+    }
+
+    /// 4.1 `$PartitionedEntities`: the partition of each partitioned volume (its first
+    /// partition tag); ghost entities, points, curves and surfaces are read past.
+    fn partitioned_entities(&mut self) -> Result<(), InputError> {
+        self.count("the number of partitions")?;
+        for _ in 0..self.count("the number of ghost entities")? {
+            self.int("a ghost entity tag")?;
+            self.int("a ghost entity's partition")?;
+        }
+        let mut counts = [0usize; 4];
+        for (d, c) in counts.iter_mut().enumerate() {
+            *c = self.count(
+                [
+                    "the number of points",
+                    "the number of curves",
+                    "the number of surfaces",
+                    "the number of volumes",
+                ][d],
+            )?;
+        }
+        for (dim, &count) in counts.iter().enumerate() {
+            for _ in 0..count {
+                let (_, tag) = self.int("an entity tag")?;
+                self.int("a parent dimension")?;
+                self.int("a parent tag")?;
+                let mut partitions = Vec::new();
+                for _ in 0..self.count("the number of partitions of an entity")? {
+                    partitions.push(self.int("a partition tag")?.1);
+                }
+                let coordinates = if dim == 0 { 3 } else { 6 };
+                for _ in 0..coordinates {
+                    self.s.want("a bounding coordinate")?;
+                }
+                for _ in 0..self.count("the number of physical tags")? {
+                    self.int("a physical tag")?;
+                }
+                if dim > 0 {
+                    for _ in 0..self.count("the number of bounding entities")? {
+                        self.int("a bounding entity tag")?;
+                    }
+                }
+                if let (3, Some(&p)) = (dim, partitions.first()) {
+                    self.cells.volume_partition.insert(tag, p);
+                }
+            }
         }
         Ok(())
     }
@@ -417,7 +524,8 @@ impl Reader<'_, '_> {
             for _ in 0..self.count("the number of elements in a block")? {
                 let (line, tag) = self.int("an element tag")?;
                 totals.add(tag);
-                self.element(line, tag, kind, entity)?;
+                let partition = self.cells.volume_partition.get(&entity).copied();
+                self.element(line, tag, kind, [entity, partition.unwrap_or(0)])?;
             }
         }
         totals.check().map_err(|(l, e)| self.err(l, e))

@@ -258,7 +258,7 @@ impl Bytes<'_, '_> {
             *c = self.cells.vertex(raw).map_err(|e| self.err_at(at, e))?;
         }
         self.cells
-            .keep(0, tag, name, &corners[..nodes], region)
+            .keep(0, tag, name, &corners[..nodes], region, 0)
             .map_err(|e| self.err(e.message))
     }
 

@@ -33,7 +33,7 @@ pub use planar::{keil_svg, write_planar_edges, write_planar_triangulation, write
 pub use svg::{Figure, Svg};
 pub use write::{
     Fields, write_edges, write_instance, write_mesh, write_mesh_with_fields, write_pieces,
-    write_points, write_surface, write_triangulation, write_vtk,
+    write_pieces_with_fields, write_points, write_surface, write_triangulation, write_vtk,
 };
 
 use crate::geom::{Point3, coordinate_in_range, lex_cmp};
@@ -191,6 +191,8 @@ pub struct Piece {
     pub file: PathBuf,
     /// Its first tetrahedron's index in [`Input::tets`].
     pub first_tet: u32,
+    /// Gmsh's tag of the partition, for a partitioned `.msh` (its pieces are in one file).
+    pub partition: Option<i64>,
 }
 
 /// Cells a reader found but does not keep: how many, and where the first is.

@@ -182,7 +182,11 @@ impl Merged {
         self.concat += (coordinates.len() / 3) as u32;
         let first_tet = self.input.tets.len() as u32;
         let file = self.file.clone();
-        self.input.pieces.push(super::Piece { file, first_tet });
+        self.input.pieces.push(super::Piece {
+            file,
+            first_tet,
+            partition: None,
+        });
     }
 
     pub(super) fn finish(mut self, path: &Path) -> Result<Input, InputError> {

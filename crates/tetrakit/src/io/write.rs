@@ -254,6 +254,20 @@ pub fn write_pieces(
     piece_of: &[u32],
     ids: Option<&[i32]>,
 ) -> io::Result<()> {
+    write_pieces_with_fields(path, points, tets, piece_of, ids, &Fields::default())
+}
+
+/// [`write_pieces`] with integer fields on the tetrahedra and points (indexed as
+/// `tets` and `points`), each piece written with its share of them: `check --output
+/// P.pvtu` for ParaView.
+pub fn write_pieces_with_fields(
+    path: &Path,
+    points: &[Point3],
+    tets: &[[u32; 4]],
+    piece_of: &[u32],
+    ids: Option<&[i32]>,
+    fields: &Fields,
+) -> io::Result<()> {
     let pieces = piece_of.iter().map(|&k| k as usize + 1).max().unwrap_or(0);
     let stem = path
         .file_stem()
@@ -261,32 +275,43 @@ pub fn write_pieces(
         .unwrap_or_default();
     let mut names = Vec::with_capacity(pieces);
     for k in 0..pieces {
-        let mine: Vec<[u32; 4]> = tets
-            .iter()
-            .zip(piece_of)
-            .filter(|&(_, &p)| p as usize == k)
-            .map(|(t, _)| *t)
+        let mine: Vec<usize> = (0..tets.len())
+            .filter(|&t| piece_of[t] as usize == k)
             .collect();
         let mut local = std::collections::HashMap::new();
-        let (mut pts, mut global) = (Vec::new(), Vec::new());
+        let (mut pts, mut used) = (Vec::new(), Vec::new());
         let renumbered: Vec<[u32; 4]> = mine
             .iter()
-            .map(|t| {
-                t.map(|v| {
+            .map(|&t| {
+                tets[t].map(|v| {
                     *local.entry(v).or_insert_with(|| {
                         pts.push(points[v as usize]);
-                        global.push(ids.map_or(v as i32, |ids| ids[v as usize]));
+                        used.push(v as usize);
                         (pts.len() - 1) as u32
                     })
                 })
             })
             .collect();
+        let global: Vec<i32> = (used.iter())
+            .map(|&v| ids.map_or(v as i32, |ids| ids[v]))
+            .collect();
+        let cells: Vec<Vec<i32>> = (fields.cells.iter())
+            .map(|f| mine.iter().map(|&t| f.1[t]).collect())
+            .collect();
+        let at_points: Vec<Vec<i32>> = (fields.points.iter())
+            .map(|f| used.iter().map(|&v| f.1[v]).collect())
+            .collect();
         let name = path.with_file_name(format!("{stem}_{k}.vtu"));
-        let fields = Fields {
-            cells: Vec::new(),
-            points: vec![("GlobalNodeIds", &global)],
+        let mut share = Fields {
+            cells: (fields.cells.iter().zip(&cells))
+                .map(|(f, c)| (f.0, &c[..]))
+                .collect(),
+            points: (fields.points.iter().zip(&at_points))
+                .map(|(f, c)| (f.0, &c[..]))
+                .collect(),
         };
-        save(&name, vtu_text(&pts, &renumbered, &fields))?;
+        share.points.push(("GlobalNodeIds", &global));
+        save(&name, vtu_text(&pts, &renumbered, &share))?;
         names.push(name);
     }
     save(path, super::pvtu::index_text(&names))

@@ -146,7 +146,11 @@ pub fn pieces_text(o: &CheckOutcome, input: &crate::io::Input) -> String {
     named.dedup();
     for t in named {
         if let Some((piece, cell)) = input.tet_piece(t as usize) {
-            let file = input.pieces[piece].file.display();
+            let p = &input.pieces[piece];
+            let file = match p.partition {
+                Some(tag) => format!("{}, partition {tag}", p.file.display()),
+                None => p.file.display().to_string(),
+            };
             let _ = writeln!(
                 s,
                 "  T{} is cell {cell} of piece {piece} ({file})",
