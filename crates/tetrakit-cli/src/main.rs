@@ -109,6 +109,9 @@ struct DetectArgs {
 struct CheckArgs {
     /// X.ele (with X.node beside it), or .json with "tets".
     input: PathBuf,
+    /// More pieces of the same mesh, read with INPUT as one partitioned mesh: Gmsh's
+    /// `-part_split` files (mesh_1.msh mesh_2.msh …, merged by node tag) or `.vtu` pieces.
+    more: Vec<PathBuf>,
     /// Also certify that the mesh tetrahedralizes the convex hull of all its points.
     #[arg(long)]
     convex: bool,

@@ -3,7 +3,7 @@
 use crate::exit::{CliError, CmdResult, Verdict, WriteContext};
 use crate::progress::Run;
 use crate::{CorruptKind, GenCommon, GenKind};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
 use tetrakit::detect::{Cells, Options};
 use tetrakit::generate::{self, Corruption};
@@ -83,7 +83,8 @@ pub fn check(a: &crate::CheckArgs) -> CmdResult {
         tets_only: a.tets_only,
         mesh: true,
     };
-    let mut input = io::read_input_with(path, opts)?;
+    let files: Vec<PathBuf> = std::iter::once(&a.input).chain(&a.more).cloned().collect();
+    let mut input = io::read_files(&files, opts)?;
     let parsed = start.elapsed().as_secs_f64();
     if input.tets.is_empty() {
         let others = match &input.other_cells {

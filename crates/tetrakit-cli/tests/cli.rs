@@ -450,6 +450,30 @@ fn gmsh_partitioned_meshes_are_read_in_pieces() {
     }
     let t = facts[0].0;
     assert_eq!(facts, [(t, 1), (t, 3), (t, 3), (t, 1)]);
+    // The other layout: one file per partition (`-part_split`), given together.
+    let split = d.join("s.msh");
+    let g = Command::new("gmsh")
+        .arg(d.join("p.geo"))
+        .arg("-3")
+        .args(["-part", "3", "-part_split", "-format", "msh41", "-o"])
+        .arg(&split)
+        .output()
+        .unwrap();
+    assert!(g.status.success());
+    let files: Vec<PathBuf> = (1..=3).map(|k| d.join(format!("s_{k}.msh"))).collect();
+    let o = run(&["check", s(&files[0]), s(&files[1]), s(&files[2]), "--json"]);
+    assert_eq!(o.status.code(), Some(0));
+    let j = json(&o);
+    assert_eq!(
+        (j["tetrahedra"].as_u64(), j["pieces"].as_u64()),
+        (Some(t), Some(3))
+    );
+    let missing = run(&["check", s(&files[0]), s(&d.join("s_9.msh"))]);
+    let err = String::from_utf8_lossy(&missing.stderr);
+    assert!(
+        missing.status.code() == Some(2) && err.contains("s_9.msh") && err.lines().count() == 1,
+        "{err}"
+    );
     // Turn a tetrahedron of the partitioned 2.2 file inside out.
     let text = std::fs::read_to_string(d.join("p22.msh")).unwrap();
     let mut lines: Vec<String> = text.lines().map(String::from).collect();

@@ -287,6 +287,18 @@ pub fn pvtu_pieces(path: &Path) -> Result<Vec<PathBuf>, InputError> {
     pvtu::piece_files(path)
 }
 
+/// Reads several files as the pieces of one partitioned mesh, as a `.pvtu`'s are read:
+/// `.vtu` pieces, or Gmsh's `-part_split` files (`mesh_1.msh`, …; nodes merged by tag,
+/// vertices and tetrahedra named by their node and element tags), or other meshes
+/// (merged by exact coordinates).
+pub fn read_files(files: &[PathBuf], opts: ReadOptions) -> Result<Input, InputError> {
+    match files {
+        [] => Err(InputError::new(Path::new(""), 0, "no input file")),
+        [one] => read_input_with(one, opts),
+        _ => vtu::read_files(files, opts),
+    }
+}
+
 /// Reads one piece of a partitioned mesh (a `.vtu`; its own `Piece`s merged as
 /// [`read_input`] merges them): the mesh, and each point's global id (`GlobalNodeIds`
 /// or `GlobalPointIds`) where every point has one.

@@ -78,6 +78,31 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
     merged.finish(path)
 }
 
+/// Reads `files` as the pieces of one mesh: `.vtu` pieces (merged as a `.pvtu`'s), or
+/// Gmsh's `-part_split` files (merged by node tag, named by node and element tags), or
+/// other meshes (merged by exact coordinates).
+pub(super) fn read_files(
+    files: &[std::path::PathBuf],
+    opts: super::ReadOptions,
+) -> Result<Input, InputError> {
+    let mut merged = Merged::new(&files[0]);
+    for file in files {
+        let ext = super::write::ext(file);
+        if ext == "vtu" {
+            read_into(file, &mut merged)?;
+            continue;
+        }
+        let piece = super::read_input_with(file, opts)?;
+        let ids = (ext == "msh").then(|| {
+            (0..piece.points.len())
+                .map(|k| i64::from(piece.point_label(k)))
+                .collect()
+        });
+        merged.add_input(file, piece, ids);
+    }
+    merged.finish(&files[0])
+}
+
 /// Reads one `.vtu` as a piece of a partitioned mesh: the mesh, and each point's global
 /// id where every point has one.
 pub(super) fn read_piece(path: &Path) -> Result<(Input, Option<Vec<i64>>), InputError> {
@@ -111,6 +136,8 @@ pub(super) struct Merged {
     point_ids: HashMap<u32, i64>,
     /// How many points the pieces read so far hold (repeated ones counted).
     concat: u32,
+    /// Name each point by its global id (Gmsh's node tags), not its place.
+    by_id: bool,
 }
 
 impl Merged {
@@ -131,6 +158,7 @@ impl Merged {
             earlier_ids: HashMap::default(),
             point_ids: HashMap::default(),
             concat: 0,
+            by_id: false,
         }
     }
 
@@ -160,7 +188,11 @@ impl Merged {
                 Some(k) if self.input.points[k as usize] == p => k,
                 other => {
                     self.input.points.push(p);
-                    self.input.point_labels.push(self.concat + i as u32);
+                    let label = match id {
+                        Some(id) if self.by_id => id as u32,
+                        _ => self.concat + i as u32,
+                    };
+                    self.input.point_labels.push(label);
                     let k = (self.input.points.len() - 1) as u32;
                     if let (Some(first), Some(id)) = (other, id) {
                         let piece = self.input.pieces.len() as u32;
@@ -187,6 +219,26 @@ impl Merged {
             first_tet,
             partition: None,
         });
+    }
+
+    /// Adds a piece read by another reader from `file` (its points' global ids, where
+    /// it has them): Gmsh's `-part_split` files, named by their node and element tags.
+    pub(super) fn add_input(&mut self, file: &Path, piece: Input, ids: Option<Vec<i64>>) {
+        self.file = file.to_path_buf();
+        self.by_id = ids.is_some();
+        self.ids = ids;
+        let coordinates: Vec<f64> = piece.points.iter().flatten().copied().collect();
+        self.add_points(&coordinates);
+        for (k, t) in piece.tets.iter().enumerate() {
+            self.input.tets.push(t.map(|v| self.local[v as usize]));
+            self.input.tet_labels.push(piece.tet_label(k));
+        }
+        if let Some(o) = piece.other_cells {
+            let all = self.input.other_cells.get_or_insert(o.clone());
+            if all.message != o.message || all.line != o.line {
+                all.count += o.count;
+            }
+        }
     }
 
     pub(super) fn finish(mut self, path: &Path) -> Result<Input, InputError> {
