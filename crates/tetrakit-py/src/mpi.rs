@@ -3,6 +3,8 @@
 //! mpi4py carries the messages (`alltoall`).
 
 use crate::convert::run;
+use numpy::PyReadonlyArray1;
+use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyBytes;
 use tetrakit::control::Control;
@@ -16,10 +18,12 @@ pub struct RankCheck {
     inner: distributed::RankCheck,
 }
 
-type Messages<'py> = Vec<Bound<'py, PyBytes>>;
+/// Messages as one buffer, rank after rank, and each one's length (for `Alltoallv`).
+type Messages<'py> = (Bound<'py, PyBytes>, Vec<usize>);
 
 fn to_py<'py>(py: Python<'py>, out: Vec<Vec<u8>>) -> Messages<'py> {
-    out.iter().map(|b| PyBytes::new(py, b)).collect()
+    let counts = out.iter().map(Vec::len).collect();
+    (PyBytes::new(py, &out.concat()), counts)
 }
 
 #[pymethods]
@@ -44,21 +48,35 @@ impl RankCheck {
         }
     }
 
-    /// The first messages, one per rank (this rank reads its pieces).
+    /// The first messages, to every rank (this rank reads its pieces): `(buffer, counts)`.
     fn start<'py>(&mut self, py: Python<'py>) -> PyResult<Messages<'py>> {
         let inner = &mut self.inner;
         let out = run(py, &Control::new(), || inner.start())?;
         Ok(to_py(py, out))
     }
 
-    /// The next messages given `inbox` (`inbox[r]` from rank `r`); `None` when over.
+    /// The next messages given what every rank sent this one, `buffer` (a uint8 array)
+    /// holding rank 0's message, then rank 1's, … (`counts` long each); `None` when over.
     fn step<'py>(
         &mut self,
         py: Python<'py>,
-        inbox: Vec<Vec<u8>>,
+        buffer: PyReadonlyArray1<'py, u8>,
+        counts: Vec<usize>,
     ) -> PyResult<Option<Messages<'py>>> {
+        let bytes = buffer.as_slice()?;
+        if counts.iter().sum::<usize>() != bytes.len() {
+            return Err(PyValueError::new_err(
+                "the counts do not add up to the buffer",
+            ));
+        }
+        let mut inbox = Vec::with_capacity(counts.len());
+        let mut at = 0;
+        for c in counts {
+            inbox.push(&bytes[at..at + c]);
+            at += c;
+        }
         let inner = &mut self.inner;
-        let out = run(py, &Control::new(), || inner.step(inbox))?;
+        let out = run(py, &Control::new(), || inner.step(&inbox))?;
         Ok(out.map(|out| to_py(py, out)))
     }
 

@@ -272,18 +272,18 @@ impl RankCheck {
 
     /// The next messages, given what every rank sent this one (`inbox[r]` from rank
     /// `r`); `None` when the check is over (on every rank in the same round).
-    pub fn step(&mut self, inbox: Vec<Vec<u8>>) -> Option<Vec<Vec<u8>>> {
+    pub fn step(&mut self, inbox: &[&[u8]]) -> Option<Vec<Vec<u8>>> {
         if self.failure.is_some() || self.round > ROUNDS {
             return None;
         }
         let out = match self.round {
-            1 => self.number(&inbox),
-            2 => self.spread(&inbox),
-            3 => self.faces(&inbox),
-            4 => self.decide(&inbox),
-            5 => self.embed(&inbox),
+            1 => self.number(inbox),
+            2 => self.spread(inbox),
+            3 => self.faces(inbox),
+            4 => self.decide(inbox),
+            5 => self.embed(inbox),
             _ => {
-                self.finish(&inbox);
+                self.finish(inbox);
                 self.round += 1;
                 return None;
             }
@@ -300,7 +300,7 @@ impl RankCheck {
     }
 
     /// Round 2: the pieces' table, and the vertex numbers of the keys this rank owns.
-    fn number(&mut self, inbox: &[Vec<u8>]) -> Vec<Vec<u8>> {
+    fn number(&mut self, inbox: &[&[u8]]) -> Vec<Vec<u8>> {
         let hellos: Vec<Hello> = inbox.iter().map(|b| decode(b)).collect();
         let mut failures: Vec<(u32, String)> =
             hellos.iter().filter_map(|h| h.failure.clone()).collect();
@@ -382,7 +382,7 @@ impl RankCheck {
 
     /// Round 3: this rank's parts; ghosts to the owners of interface vertices, points to
     /// the owners of their places, the hull's candidates to rank 0.
-    fn spread(&mut self, inbox: &[Vec<u8>]) -> Vec<Vec<u8>> {
+    fn spread(&mut self, inbox: &[&[u8]]) -> Vec<Vec<u8>> {
         for (from, b) in inbox.iter().enumerate() {
             let labels: Vec<Label> = decode(b);
             for l in labels {
@@ -423,13 +423,17 @@ impl RankCheck {
                     .count() as u32
             })
             .sum();
+        // The parts hold what the checks need: the pieces as read go.
+        for m in &mut self.mine {
+            m.input = Input::default();
+        }
         let out = out.iter().map(encode).collect();
         self.sent(out)
     }
 
     /// Round 4: the layer of this rank's interface vertices; every part's faces, the
     /// coincident and unused vertices of the places this rank owns, to rank 0.
-    fn faces(&mut self, inbox: &[Vec<u8>]) -> Vec<Vec<u8>> {
+    fn faces(&mut self, inbox: &[&[u8]]) -> Vec<Vec<u8>> {
         let mut ghosts = Vec::new();
         let mut points = Vec::new();
         for b in inbox {
@@ -467,7 +471,7 @@ impl RankCheck {
 
     /// Round 5, rank 0: the report so far in the merged check's order, and whether (and
     /// where) the embedding checks run.
-    fn decide(&mut self, inbox: &[Vec<u8>]) -> Vec<Vec<u8>> {
+    fn decide(&mut self, inbox: &[&[u8]]) -> Vec<Vec<u8>> {
         if self.rank != 0 {
             return self.sent(vec![Vec::new(); self.size]);
         }
@@ -542,8 +546,8 @@ impl RankCheck {
     }
 
     /// Round 6: the cone tests of this rank's vertices and its pieces' nesting test.
-    fn embed(&mut self, inbox: &[Vec<u8>]) -> Vec<Vec<u8>> {
-        let decision: Decision = decode(&inbox[0]);
+    fn embed(&mut self, inbox: &[&[u8]]) -> Vec<Vec<u8>> {
+        let decision: Decision = decode(inbox[0]);
         if !decision.embed {
             return self.send_to_rank0(&Embedded::default());
         }
@@ -561,7 +565,7 @@ impl RankCheck {
     }
 
     /// Rank 0: the last problems and the outcome.
-    fn finish(&mut self, inbox: &[Vec<u8>]) {
+    fn finish(&mut self, inbox: &[&[u8]]) {
         if self.rank != 0 {
             return;
         }
@@ -740,8 +744,8 @@ pub fn check_in_ranks(
     loop {
         let mut next = Vec::new();
         for (r, rank) in ranks.iter_mut().enumerate() {
-            let inbox: Vec<Vec<u8>> = outs.iter_mut().map(|o| std::mem::take(&mut o[r])).collect();
-            next.push(rank.step(inbox));
+            let inbox: Vec<&[u8]> = outs.iter().map(|o| &o[r][..]).collect();
+            next.push(rank.step(&inbox));
         }
         if next.iter().any(Option::is_none) {
             break;

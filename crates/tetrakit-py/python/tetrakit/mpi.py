@@ -15,10 +15,11 @@ The rounds themselves are :class:`tetrakit._core.RankCheck`, a byte-message stat
 that any transport can drive:
 
 >>> from tetrakit import _core
+>>> import numpy as np
 >>> rc = _core.RankCheck("missing.pvtu", 0, 1)
->>> out = rc.start()
->>> len(out), rc.step(out)
-(1, None)
+>>> buffer, counts = rc.start()
+>>> rc.step(np.frombuffer(buffer, np.uint8), counts) is None
+True
 >>> rc.printed(False, 0.0, 0.0)[0]
 2
 """
@@ -26,6 +27,7 @@ that any transport can drive:
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 import time
 from typing import List, Optional
@@ -45,7 +47,22 @@ def _parser() -> argparse.ArgumentParser:
     c.add_argument("--convex", action="store_true", help="certify the convex hull is tetrahedralized")
     c.add_argument("--manifold", action="store_true", help="non-manifold boundary edges are problems")
     c.add_argument("--reorient", action="store_true", help="turn negatively oriented tetrahedra")
+    c.add_argument("--stats", action="store_true",
+                   help="each rank prints to stderr the bytes it sent, its peak memory and its seconds")
     return p
+
+
+def _exchange(comm, buffer: bytes, counts: List[int]):
+    """All-to-all of one message per rank (``buffer``, rank after rank, ``counts`` long
+    each): what every rank sent this one, as a uint8 array and its counts."""
+    import numpy as np
+    from mpi4py import MPI
+    got = comm.alltoall(counts)
+    send = np.frombuffer(buffer, dtype=np.uint8)
+    recv = np.empty(sum(got), dtype=np.uint8)
+    at = lambda c: np.concatenate([[0], np.cumsum(c)[:-1]]).astype(np.int64)  # noqa: E731
+    comm.Alltoallv([send, (counts, at(counts)), MPI.BYTE], [recv, (got, at(got)), MPI.BYTE])
+    return recv, got
 
 
 def run(comm, argv: Optional[List[str]] = None) -> int:
@@ -58,14 +75,22 @@ def run(comm, argv: Optional[List[str]] = None) -> int:
                   "(use `tetrakit check` for one file)", file=sys.stderr)
         return 2
     start = time.perf_counter()
+    # The ranks on one machine share its cores (Open MPI says how many ranks it has).
+    local = int(os.environ.get("OMPI_COMM_WORLD_LOCAL_SIZE", "1"))
+    os.environ.setdefault("RAYON_NUM_THREADS", str(max(1, (os.cpu_count() or 1) // local)))
     rc = _core.RankCheck(args.input, comm.rank, comm.size,
                          convex=args.convex, manifold=args.manifold, reorient=args.reorient)
     out = rc.start()
     parsed = time.perf_counter() - start
     while out is not None:
-        out = rc.step(comm.alltoall(out))
+        out = rc.step(*_exchange(comm, *out))
     code, text = rc.printed(args.json, time.perf_counter() - start, parsed)
     code = comm.bcast(code, root=0)
+    if args.stats:
+        import resource
+        peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss  # KiB on Linux
+        print(f"rank {comm.rank}/{comm.size}: sent {rc.bytes_sent} bytes, peak {peak} KiB, "
+              f"{time.perf_counter() - start:.2f} s", file=sys.stderr)
     if comm.rank == 0:
         if code == 2:
             print(f"tetrakit: {text}", file=sys.stderr)

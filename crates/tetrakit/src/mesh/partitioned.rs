@@ -183,20 +183,62 @@ impl Part {
         owned: impl Fn(u32) -> bool,
         reports_tets: bool,
     ) -> Part {
-        let mut used: Vec<(u32, u32)> = tets.iter().flatten().map(|&k| (label(k), k)).collect();
-        used.par_sort_unstable();
-        used.dedup_by_key(|u| u.0);
-        let vertex_labels: Vec<u32> = used.iter().map(|u| u.0).collect();
-        let local = |k: u32| vertex_labels.binary_search(&label(k)).unwrap_or(0) as u32;
+        let (used, lookup) = used_vertices(tets, &label);
+        let local = |k: u32| lookup.local(label(k));
         Part {
             points: used.iter().map(|u| points[u.1 as usize]).collect(),
-            tets: tets.iter().map(|t| t.map(local)).collect(),
+            tets: tets.par_iter().map(|t| t.map(local)).collect(),
             owned: used.iter().map(|u| owned(u.1)).collect(),
-            vertex_labels,
+            vertex_labels: used.iter().map(|u| u.0).collect(),
             tet_labels,
             reports_tets,
         }
     }
+}
+
+/// From a vertex label to its place in a part: a table when the labels are dense
+/// enough, else a search among the sorted labels.
+enum Lookup {
+    Table(Vec<u32>),
+    Sorted(Vec<u32>),
+}
+
+impl Lookup {
+    fn local(&self, label: u32) -> u32 {
+        match self {
+            Lookup::Table(t) => t[label as usize],
+            Lookup::Sorted(s) => s.binary_search(&label).unwrap_or(0) as u32,
+        }
+    }
+}
+
+/// The vertices of `tets` as `(label, first point with it)`, by label, and the lookup
+/// of their places: one pass over a table of the labels when they are dense enough
+/// (a part of a mesh in one process), else a sort (a rank's layer).
+fn used_vertices(
+    tets: &[[u32; 4]],
+    label: &(impl Fn(u32) -> u32 + Sync),
+) -> (Vec<(u32, u32)>, Lookup) {
+    let top = (tets.iter().flatten().map(|&k| label(k)).max()).map_or(0, |m| m as usize + 1);
+    if top > 16 * tets.len() + 1024 {
+        let mut used: Vec<(u32, u32)> = tets.iter().flatten().map(|&k| (label(k), k)).collect();
+        used.par_sort_unstable();
+        used.dedup_by_key(|u| u.0);
+        let sorted = used.iter().map(|u| u.0).collect();
+        return (used, Lookup::Sorted(sorted));
+    }
+    let mut table = vec![u32::MAX; top];
+    for &k in tets.iter().flatten().rev() {
+        table[label(k) as usize] = k;
+    }
+    let mut used = Vec::new();
+    for (l, slot) in table.iter_mut().enumerate() {
+        if *slot != u32::MAX {
+            used.push((l as u32, *slot));
+            *slot = (used.len() - 1) as u32;
+        }
+    }
+    (used, Lookup::Table(table))
 }
 
 /// A part holding the tetrahedra `which` (ascending) of `tets` over `points`, owning the
