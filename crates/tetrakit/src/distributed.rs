@@ -13,11 +13,12 @@
 //!    points; a later piece's point with that key is that vertex (with global ids: if its
 //!    coordinates agree, else an `interface_mismatch`); a vertex that several pieces use
 //!    is on an interface and is owned by the key owner's layer;
-//! 3. each rank builds one [`Part`] per piece and sends every tetrahedron around an
-//!    interface vertex (a ghost) to the vertex's owner, and its points to the owner of
-//!    their coordinates (coincident and unused vertices);
-//! 4. each rank checks its parts' faces and edges ([`Part::faces`]) and sends what they
-//!    decide, with the boundary faces, to rank 0;
+//! 3. each rank builds one part per piece (as [`crate::mesh::check_pieces`] does) and
+//!    sends every tetrahedron around an interface vertex (a ghost) to the vertex's
+//!    owner, and its points to the owner of their coordinates (coincident and unused
+//!    vertices);
+//! 4. each rank checks its parts' faces and edges (the owner's layer of ghosts is one
+//!    more part) and sends what they decide, with the boundary faces, to rank 0;
 //! 5. rank 0 puts them in the merged check's order and, where the embedding checks are
 //!    due, sends one vertex of every boundary component to all ranks;
 //! 6. every rank runs the cone tests of the vertices it owns and the nesting test of
@@ -43,6 +44,7 @@ pub const ROUNDS: usize = 6;
 /// One process's side of a partitioned check: [`start`](Self::start), then
 /// [`step`](Self::step) with what every rank sent it until it returns `None`; then
 /// [`outcome`](Self::outcome) on rank 0.
+#[derive(Default)]
 pub struct RankCheck {
     rank: usize,
     size: usize,
@@ -56,7 +58,10 @@ pub struct RankCheck {
     parts: Vec<Part>,
     on_boundary: Vec<Vec<bool>>,
     mismatches: Vec<Problem>,
-    /// Rank 0: what is gathered, then the outcome.
+    /// This rank's pieces' vertices (each first seen there) and tetrahedra turned.
+    vertices: u32,
+    reoriented: u32,
+    /// Rank 0: the totals gathered, then the outcome.
     gathered: Gathered,
     hull_points: Vec<(Point3, u32)>,
     report: Report,
@@ -179,22 +184,7 @@ impl RankCheck {
             size: size.max(1),
             opts,
             index: index.to_path_buf(),
-            files: Vec::new(),
-            round: 0,
-            mine: Vec::new(),
-            pieces: Vec::new(),
-            failure: None,
-            parts: Vec::new(),
-            on_boundary: Vec::new(),
-            mismatches: Vec::new(),
-            gathered: Gathered::default(),
-            hull_points: Vec::new(),
-            report: Report::default(),
-            boundary: Vec::new(),
-            reps: Vec::new(),
-            embedding: false,
-            outcome: None,
-            bytes_sent: 0,
+            ..Default::default()
         }
     }
 
@@ -413,9 +403,9 @@ impl RankCheck {
             );
             self.parts.push(part);
         }
-        self.gathered.reoriented = reoriented as u32;
+        self.reoriented = reoriented as u32;
         let offsets = self.point_offsets();
-        self.gathered.vertices = (self.mine.iter())
+        self.vertices = (self.mine.iter())
             .map(|m| {
                 let base = offsets[m.piece as usize];
                 (m.labels.iter().enumerate())
@@ -463,8 +453,8 @@ impl RankCheck {
             coincident,
             unused: if self.opts.convex { unused } else { Vec::new() },
             mismatches: std::mem::take(&mut self.mismatches),
-            vertices: self.gathered.vertices,
-            reoriented: self.gathered.reoriented,
+            vertices: self.vertices,
+            reoriented: self.reoriented,
         };
         self.send_to_rank0(&g)
     }

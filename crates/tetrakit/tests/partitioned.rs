@@ -249,6 +249,21 @@ fn corrupt(points: &mut Vec<Point3>, tets: &mut Vec<[u32; 4]>, kind: u64, rng: &
     }
 }
 
+/// Mesh number `round`: a Kuhn grid, a random tetrahedralization or one on an integer
+/// grid, with corruption `round mod 9` ([`corrupt`]).
+fn corrupted(round: u64, rng: &mut Rng) -> (Vec<Point3>, Vec<[u32; 4]>) {
+    let t = match round % 3 {
+        0 => tetrakit::generate::kuhn(2 + (round as usize % 3)),
+        1 => {
+            tetrakit::generate::random_tetrahedralization(12 + round as usize % 40, 30, round, None)
+        }
+        _ => tetrakit::generate::random_tetrahedralization(20, 20, round, Some(3)),
+    };
+    let (mut points, mut tets) = (t.points, t.tets);
+    corrupt(&mut points, &mut tets, round % 9, rng);
+    (points, tets)
+}
+
 /// Checked part by part (`check_pieces`), a mesh gives exactly what the merged check
 /// gives (verdict, problems in order with their texts, counts), valid or corrupted in
 /// nine ways, cut in slabs, at random and in blocks into 2 to 6 pieces, with and without
@@ -259,18 +274,7 @@ fn checking_part_by_part_is_checking_the_merged_mesh() {
     let mut rng = Rng::new(4646);
     let (mut cases, mut invalid, mut kinds) = (0, 0, std::collections::BTreeSet::new());
     for round in 0..450u64 {
-        let t = match round % 3 {
-            0 => tetrakit::generate::kuhn(2 + (round as usize % 3)),
-            1 => tetrakit::generate::random_tetrahedralization(
-                12 + round as usize % 40,
-                30,
-                round,
-                None,
-            ),
-            _ => tetrakit::generate::random_tetrahedralization(20, 20, round, Some(3)),
-        };
-        let (mut points, mut tets) = (t.points, t.tets);
-        corrupt(&mut points, &mut tets, round % 9, &mut rng);
+        let (points, tets) = corrupted(round, &mut rng);
         let k = 2 + (round % 5) as u32;
         let [slabs, random] = partitions(&points, &tets, k, &mut rng);
         let blocks: Vec<u32> = (0..tets.len())
@@ -357,18 +361,7 @@ fn ranks_check_as_the_merged_mesh() {
     let mut rng = Rng::new(4647);
     let (mut cases, mut invalid) = (0, 0);
     for round in 0..120u64 {
-        let t = match round % 3 {
-            0 => tetrakit::generate::kuhn(2 + (round as usize % 2)),
-            1 => tetrakit::generate::random_tetrahedralization(
-                12 + round as usize % 30,
-                30,
-                round,
-                None,
-            ),
-            _ => tetrakit::generate::random_tetrahedralization(20, 20, round, Some(3)),
-        };
-        let (mut points, mut tets) = (t.points, t.tets);
-        corrupt(&mut points, &mut tets, round % 9, &mut rng);
+        let (points, tets) = corrupted(round, &mut rng);
         let k = 2 + (round % 4) as u32;
         let [slabs, random] = partitions(&points, &tets, k, &mut rng);
         for (how, piece_of) in [slabs, random].iter().enumerate() {

@@ -21,8 +21,8 @@ pub use certify::{certify_boundary, certify_hull, certify_polyhedron, certify_sh
 pub(crate) use check::outcome;
 pub use check::{CheckOptions, CheckOutcome, check};
 pub(crate) use embed::{boundary_components, boundary_self_intersections, nested_problem};
-pub(crate) use partitioned::assemble_faces;
-pub use partitioned::{Part, PartFaces, check_pieces, parts};
+pub use partitioned::check_pieces;
+pub(crate) use partitioned::{Part, PartFaces, assemble_faces};
 pub use report::{Problem, ProblemKind, Report};
 pub use surface::{Polyhedron, SurfaceError};
 pub use verify::verify;
