@@ -426,3 +426,33 @@ fn ranks_check_as_the_merged_mesh() {
     );
     let _ = std::fs::remove_dir_all(&d);
 }
+
+/// Pieces that disagree in layout (one with global ids, one without) are bad input, in
+/// the reader and under ranks alike, naming both pieces.
+#[test]
+fn pieces_with_and_without_global_ids_are_refused() {
+    let d = dir("layout");
+    let t = tetrakit::generate::kuhn(2);
+    let path = d.join("m.pvtu");
+    let piece_of = tetrakit::generate::slabs(&t.points, &t.tets, 2);
+    write_pieces(&path, &t.points, &t.tets, &piece_of, None).unwrap();
+    let second = d.join("m_1.vtu");
+    let text = std::fs::read_to_string(&second).unwrap();
+    let (a, b) = (
+        text.find("<PointData>").unwrap(),
+        text.find("</PointData>").unwrap(),
+    );
+    std::fs::write(&second, format!("{}{}", &text[..a], &text[b + 12..])).unwrap();
+    let err = tetrakit::io::read_input(&path).unwrap_err().to_string();
+    assert!(
+        err.contains("m_0.vtu") && err.contains("m_1.vtu") && err.contains("disagree in layout"),
+        "{err}"
+    );
+    let (ranks, _) = tetrakit::distributed::check_in_ranks(&path, 2, CheckOptions::default());
+    let err = ranks.unwrap_err();
+    assert!(
+        err.contains("m_0.vtu") && err.contains("m_1.vtu") && err.contains("disagree in layout"),
+        "{err}"
+    );
+    let _ = std::fs::remove_dir_all(&d);
+}

@@ -138,6 +138,8 @@ pub(super) struct Merged {
     concat: u32,
     /// Name each point by its global id (Gmsh's node tags), not its place.
     by_id: bool,
+    /// Whether each piece had global ids (all must, or none).
+    with_ids: Vec<bool>,
 }
 
 impl Merged {
@@ -159,6 +161,7 @@ impl Merged {
             point_ids: HashMap::default(),
             concat: 0,
             by_id: false,
+            with_ids: Vec::new(),
         }
     }
 
@@ -177,6 +180,7 @@ impl Merged {
         self.first = self.input.points.len();
         self.local.clear();
         let ids = self.ids.take();
+        self.with_ids.push(ids.is_some());
         for (i, c) in coordinates.chunks_exact(3).enumerate() {
             let p = [c[0], c[1], c[2]];
             let id = ids.as_ref().and_then(|ids| ids.get(i).copied());
@@ -242,6 +246,17 @@ impl Merged {
     }
 
     pub(super) fn finish(mut self, path: &Path) -> Result<Input, InputError> {
+        let with = self.with_ids.iter().position(|&w| w);
+        let without = self.with_ids.iter().position(|&w| !w);
+        if let (Some(a), Some(b)) = (with, without) {
+            let file = |k: usize| self.input.pieces[k].file.display().to_string();
+            let why = format!(
+                "piece {a} ({}) has global point ids but piece {b} ({}) has none: the pieces disagree in layout",
+                file(a),
+                file(b)
+            );
+            return Err(InputError::new(path, 0, why));
+        }
         self.sorter.finish(&mut self.input);
         if self.input.pieces.len() == 1 {
             self.input.pieces.clear();
@@ -257,6 +272,7 @@ impl Merged {
 /// Reads the pieces of the `.vtu` at `path` into `merged`.
 pub(super) fn read_into(path: &Path, merged: &mut Merged) -> Result<(), InputError> {
     merged.file = path.to_path_buf();
+    merged.by_id = false;
     let bytes = read_bytes(path)?;
     let lines = LineIndex::new(&bytes);
     let (xml, appended) = split_appended(&bytes, path, &lines)?;
