@@ -87,7 +87,9 @@ pub(super) fn read_files(
 ) -> Result<Input, InputError> {
     let mut merged = Merged::new(&files[0]);
     for file in files {
-        let ext = super::write::ext(file);
+        let ext = (file.extension().and_then(|e| e.to_str()))
+            .unwrap_or("")
+            .to_ascii_lowercase();
         if ext == "vtu" {
             read_into(file, &mut merged)?;
             continue;
