@@ -277,7 +277,7 @@ fn tets_only_checks_the_tetrahedra_of_a_mixed_mesh() {
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert!(
-        err.contains("m.ele: --output takes a .vtk or .vtu"),
+        err.contains("m.ele: --output takes a .vtk, .vtu or .pvtu"),
         "{err}"
     );
 }
@@ -332,7 +332,7 @@ fn check_reorients_and_writes_problem_fields_for_a_viewer() {
     assert_eq!(o.status.code(), Some(2));
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(
-        err.contains("p.ele") && err.contains(".vtk or .vtu"),
+        err.contains("p.ele") && err.contains(".vtk, .vtu or .pvtu"),
         "{err}"
     );
 }

@@ -29,7 +29,7 @@ fn to_py<'py>(py: Python<'py>, out: Vec<Vec<u8>>) -> Messages<'py> {
 #[pymethods]
 impl RankCheck {
     #[new]
-    #[pyo3(signature = (index, rank, size, convex=false, manifold=false, reorient=false))]
+    #[pyo3(signature = (index, rank, size, convex=false, manifold=false, reorient=false, tets_only=false))]
     fn new(
         index: std::path::PathBuf,
         rank: usize,
@@ -37,6 +37,7 @@ impl RankCheck {
         convex: bool,
         manifold: bool,
         reorient: bool,
+        tets_only: bool,
     ) -> Self {
         let opts = CheckOptions {
             convex,
@@ -44,7 +45,7 @@ impl RankCheck {
             reorient,
         };
         RankCheck {
-            inner: distributed::RankCheck::new(&index, rank, size, opts),
+            inner: distributed::RankCheck::new(&index, rank, size, opts, tets_only),
         }
     }
 

@@ -49,6 +49,7 @@ pub struct RankCheck {
     rank: usize,
     size: usize,
     opts: CheckOptions,
+    tets_only: bool,
     index: PathBuf,
     files: Vec<PathBuf>,
     round: usize,
@@ -177,12 +178,20 @@ fn owner_of(key: &[u64; 3], size: usize) -> usize {
 }
 
 impl RankCheck {
-    /// Rank `rank` of `size` checking the `.pvtu` at `index`.
-    pub fn new(index: &Path, rank: usize, size: usize, opts: CheckOptions) -> Self {
+    /// Rank `rank` of `size` checking the `.pvtu` at `index`; with `tets_only`, pieces
+    /// with other cells are checked by their tetrahedra (else they are bad input).
+    pub fn new(
+        index: &Path,
+        rank: usize,
+        size: usize,
+        opts: CheckOptions,
+        tets_only: bool,
+    ) -> Self {
         RankCheck {
             rank,
             size: size.max(1),
             opts,
+            tets_only,
             index: index.to_path_buf(),
             ..Default::default()
         }
@@ -197,7 +206,11 @@ impl RankCheck {
             Ok(files) => self.files = files,
         }
         for p in (self.rank..self.files.len()).step_by(self.size) {
-            match io::read_piece(&self.files[p]) {
+            let read = io::ReadOptions {
+                mesh: true,
+                tets_only: self.tets_only,
+            };
+            match io::read_piece(&self.files[p], read) {
                 Err(e) => {
                     hello.failure.get_or_insert((p as u32, e.to_string()));
                 }
@@ -299,7 +312,7 @@ impl RankCheck {
         pieces.sort_by_key(|i| i.piece);
         if failures.is_empty() {
             let with = pieces.iter().find(|i| i.ids);
-            let without = pieces.iter().find(|i| !i.ids);
+            let without = pieces.iter().find(|i| !i.ids && i.points > 0);
             if let (Some(a), Some(b)) = (with, without) {
                 let why = format!(
                     "piece {} ({}) has global point ids but piece {} ({}) has none: the pieces disagree in layout",
@@ -319,7 +332,7 @@ impl RankCheck {
         let offsets = self.point_offsets();
         let mut occ: Vec<Occurrence> = hellos.into_iter().flat_map(|h| h.keys).collect();
         occ.sort_by_key(|o| (o.key, o.piece, o.index));
-        let ids = self.pieces.first().is_some_and(|i| i.ids);
+        let ids = self.pieces.iter().any(|i| i.ids);
         let mut out: Vec<Vec<Label>> = vec![Vec::new(); self.size];
         for group in occ.chunk_by(|a, b| a.key == b.key) {
             let c = group[0];
@@ -728,7 +741,7 @@ pub fn check_in_ranks(
     opts: CheckOptions,
 ) -> (Result<CheckOutcome, String>, Vec<usize>) {
     let mut ranks: Vec<RankCheck> = (0..size)
-        .map(|r| RankCheck::new(index, r, size, opts))
+        .map(|r| RankCheck::new(index, r, size, opts, false))
         .collect();
     let mut outs: Vec<Vec<Vec<u8>>> = ranks.iter_mut().map(RankCheck::start).collect();
     loop {

@@ -456,3 +456,39 @@ fn pieces_with_and_without_global_ids_are_refused() {
     );
     let _ = std::fs::remove_dir_all(&d);
 }
+
+/// An empty piece (a partition without cells, as ParaView writes one) takes part: the
+/// check is the other pieces', in `check` and under ranks, with global ids or without.
+#[test]
+fn an_empty_piece_is_a_piece() {
+    let d = dir("empty");
+    let t = tetrakit::generate::kuhn(2);
+    // Labels 0 and 2: piece 1 is empty.
+    let piece_of: Vec<u32> = (tetrakit::generate::slabs(&t.points, &t.tets, 2).iter())
+        .map(|&p| 2 * p)
+        .collect();
+    for ids in [false, true] {
+        let path = d.join(format!("e{ids}.pvtu"));
+        let all: Vec<i32> = (0..t.points.len() as i32).collect();
+        write_pieces(
+            &path,
+            &t.points,
+            &t.tets,
+            &piece_of,
+            ids.then_some(&all[..]),
+        )
+        .unwrap();
+        let want = cli_check(&path, CheckOptions::default());
+        assert!(want.is_valid());
+        for size in [1, 2, 3] {
+            let (got, _) =
+                tetrakit::distributed::check_in_ranks(&path, size, CheckOptions::default());
+            let got = got.unwrap();
+            assert_eq!(
+                (got.verdict, got.tetrahedra, got.vertices),
+                (want.verdict, want.tetrahedra, want.vertices)
+            );
+        }
+    }
+    let _ = std::fs::remove_dir_all(&d);
+}

@@ -1,6 +1,6 @@
 """A partitioned mesh checked by several processes under MPI.
 
-    mpirun -n K python3 -m tetrakit.mpi check MESH.pvtu [--json] [--convex] [--manifold] [--reorient]
+    mpirun -n K python3 -m tetrakit.mpi check MESH.pvtu [--json] [--convex] [--manifold] [--reorient] [--tets-only]
 
 Each rank reads only its pieces of the ``.pvtu`` (piece ``p`` on rank ``p mod K``) and
 checks them in Rust with the GIL released; the ranks exchange interface points by key,
@@ -47,6 +47,8 @@ def _parser() -> argparse.ArgumentParser:
     c.add_argument("--convex", action="store_true", help="certify the convex hull is tetrahedralized")
     c.add_argument("--manifold", action="store_true", help="non-manifold boundary edges are problems")
     c.add_argument("--reorient", action="store_true", help="turn negatively oriented tetrahedra")
+    c.add_argument("--tets-only", action="store_true",
+                   help="check the tetrahedra of pieces with other cells (else those are bad input)")
     c.add_argument("--stats", action="store_true",
                    help="each rank prints to stderr the bytes it sent, its peak memory and its seconds")
     return p
@@ -79,7 +81,8 @@ def run(comm, argv: Optional[List[str]] = None) -> int:
     local = int(os.environ.get("OMPI_COMM_WORLD_LOCAL_SIZE", "1"))
     os.environ.setdefault("RAYON_NUM_THREADS", str(max(1, (os.cpu_count() or 1) // local)))
     rc = _core.RankCheck(args.input, comm.rank, comm.size,
-                         convex=args.convex, manifold=args.manifold, reorient=args.reorient)
+                         convex=args.convex, manifold=args.manifold, reorient=args.reorient,
+                         tets_only=args.tets_only)
     out = rc.start()
     parsed = time.perf_counter() - start
     while out is not None:

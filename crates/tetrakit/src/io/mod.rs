@@ -295,15 +295,21 @@ pub fn read_files(files: &[PathBuf], opts: ReadOptions) -> Result<Input, InputEr
     match files {
         [] => Err(InputError::new(Path::new(""), 0, "no input file")),
         [one] => read_input_with(one, opts),
-        _ => vtu::read_files(files, opts),
+        _ => accepted(&files[0], vtu::read_files(files, opts)?, opts),
     }
 }
 
 /// Reads one piece of a partitioned mesh (a `.vtu`; its own `Piece`s merged as
-/// [`read_input`] merges them): the mesh, and each point's global id (`GlobalNodeIds`
-/// or `GlobalPointIds`) where every point has one.
-pub fn read_piece(path: &Path) -> Result<(Input, Option<Vec<i64>>), InputError> {
-    vtu::read_piece(path)
+/// [`read_input`] merges them) and accepts it as [`read_input_with`] does: the mesh,
+/// and each point's global id (`GlobalNodeIds` or `GlobalPointIds`) where every point
+/// has one.
+pub fn read_piece(path: &Path, opts: ReadOptions) -> Result<(Input, Option<Vec<i64>>), InputError> {
+    let (input, ids) = vtu::read_piece(path)?;
+    // A piece alone may hold no tetrahedron (an empty partition): its points are only
+    // required to be ones the predicates take.
+    check_coordinates(&input)?;
+    only_tets(path, &input, opts)?;
+    Ok((input, ids))
 }
 
 /// Reads `path`, choosing the format by extension: `.node` (with sibling `.edge`, `.ele`
@@ -342,13 +348,26 @@ pub fn read_input(path: &Path) -> Result<Input, InputError> {
 /// assert_eq!((m.tets.len(), m.other_cells.unwrap().count), (1, 1));
 /// ```
 pub fn read_input_with(path: &Path, opts: ReadOptions) -> Result<Input, InputError> {
-    let input = read_any(path)?;
+    accepted(path, read_any(path)?, opts)
+}
+
+/// `input` read from `path`, once its coordinates are ones the predicates take and
+/// (unless `tets_only`) it holds no other cells.
+fn accepted(path: &Path, input: Input, opts: ReadOptions) -> Result<Input, InputError> {
     validate(&input, opts)?;
-    if let (Some(o), false) = (&input.other_cells, opts.tets_only) {
-        let why = format!("{} (--tets-only reads the tetrahedra alone)", o.message);
-        return Err(InputError::new(path, o.line, why));
-    }
+    only_tets(path, &input, opts)?;
     Ok(input)
+}
+
+/// Other cells than tetrahedra are an error unless `tets_only`.
+fn only_tets(path: &Path, input: &Input, opts: ReadOptions) -> Result<(), InputError> {
+    match (&input.other_cells, opts.tets_only) {
+        (Some(o), false) => {
+            let why = format!("{} (--tets-only reads the tetrahedra alone)", o.message);
+            Err(InputError::new(path, o.line, why))
+        }
+        _ => Ok(()),
+    }
 }
 
 /// The checks every input passes, whatever read it, so that no reader can skip them:

@@ -113,6 +113,10 @@ pub(super) fn read_piece(path: &Path) -> Result<(Input, Option<Vec<i64>>), Input
     let ids: Option<Vec<i64>> = (0..merged.input.points.len() as u32)
         .map(|k| merged.point_ids.get(&k).copied())
         .collect();
+    if merged.input.points.is_empty() {
+        // An empty piece (a partition without cells) is a piece, of either layout.
+        return Ok((merged.input, None));
+    }
     Ok((merged.finish(path)?, ids))
 }
 
@@ -140,8 +144,8 @@ pub(super) struct Merged {
     concat: u32,
     /// Name each point by its global id (Gmsh's node tags), not its place.
     by_id: bool,
-    /// Whether each piece had global ids (all must, or none).
-    with_ids: Vec<bool>,
+    /// Whether each piece with points had global ids (all must, or none), by piece.
+    with_ids: Vec<(usize, bool)>,
 }
 
 impl Merged {
@@ -182,7 +186,9 @@ impl Merged {
         self.first = self.input.points.len();
         self.local.clear();
         let ids = self.ids.take();
-        self.with_ids.push(ids.is_some());
+        if !coordinates.is_empty() {
+            self.with_ids.push((self.input.pieces.len(), ids.is_some()));
+        }
         for (i, c) in coordinates.chunks_exact(3).enumerate() {
             let p = [c[0], c[1], c[2]];
             let id = ids.as_ref().and_then(|ids| ids.get(i).copied());
@@ -248,8 +254,8 @@ impl Merged {
     }
 
     pub(super) fn finish(mut self, path: &Path) -> Result<Input, InputError> {
-        let with = self.with_ids.iter().position(|&w| w);
-        let without = self.with_ids.iter().position(|&w| !w);
+        let with = self.with_ids.iter().find(|w| w.1).map(|w| w.0);
+        let without = self.with_ids.iter().find(|w| !w.1).map(|w| w.0);
         if let (Some(a), Some(b)) = (with, without) {
             let file = |k: usize| self.input.pieces[k].file.display().to_string();
             let why = format!(

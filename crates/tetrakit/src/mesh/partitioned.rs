@@ -94,7 +94,9 @@ impl Part {
     /// Conditions 1–3 of [`verify`](super::verify) for what the part decides.
     pub fn faces(&self) -> PartFaces {
         let (tet_problems, signs) = check_tets(&self.points, &self.tets);
-        let (boundary, pairing) = pair_faces(self.points.len(), &self.tets, &signs);
+        // Faces without a vertex of the part's are another part's to decide.
+        let owned = Some(&self.owned[..]);
+        let (boundary, pairing) = pair_faces(self.points.len(), &self.tets, &signs, owned);
         let face_problems = pairing
             .into_iter()
             .filter(|p| self.decides(&p.vertices))

@@ -81,7 +81,7 @@ pub(crate) fn verify_faces(points: &[Point3], tets: &[[u32; 4]]) -> (Report, Vec
     {
         return (report, Vec::new());
     }
-    let (boundary, pairing) = pair_faces(points.len(), tets, &signs);
+    let (boundary, pairing) = pair_faces(points.len(), tets, &signs, None);
     for p in pairing {
         report.push(p);
     }
@@ -244,8 +244,9 @@ pub(super) fn pair_faces(
     n: usize,
     tets: &[[u32; 4]],
     signs: &[i8],
+    wanted: Option<&[bool]>,
 ) -> (Vec<BoundaryFace>, Vec<Problem>) {
-    let (start, mut recs) = bucket_faces(tets, signs, n);
+    let (start, mut recs) = bucket_faces(tets, signs, n, wanted);
     let results: Vec<(Vec<BoundaryFace>, Vec<Problem>)> = split_at_offsets(&mut recs, &start)
         .into_par_iter()
         .enumerate()
@@ -262,8 +263,13 @@ pub(super) fn pair_faces(
 
 /// Every outward face `(a, b, c)` with `a < b, c` as the record `[b, c, tet << 1 | odd]`
 /// (`odd`: the sorted order reverses the orientation) in the bucket of `a` (rows
-/// `start[a]..start[a + 1]`).
-fn bucket_faces(tets: &[[u32; 4]], signs: &[i8], n: usize) -> (Vec<usize>, Vec<[u32; 3]>) {
+/// `start[a]..start[a + 1]`). With `wanted`, only the faces with a wanted vertex.
+fn bucket_faces(
+    tets: &[[u32; 4]],
+    signs: &[i8],
+    n: usize,
+    wanted: Option<&[bool]>,
+) -> (Vec<usize>, Vec<[u32; 3]>) {
     crate::rows::group(n, tets.len(), |ti| {
         let t = tets[ti];
         // Positively oriented; degenerate and malformed tetrahedra are skipped.
@@ -273,6 +279,9 @@ fn bucket_faces(tets: &[[u32; 4]], signs: &[i8], n: usize) -> (Vec<usize>, Vec<[
             _ => return [(usize::MAX, [0; 3]); 4],
         };
         outward_faces(t).map(|f| {
+            if wanted.is_some_and(|w| f.iter().all(|&v| !w[v as usize])) {
+                return (usize::MAX, [0; 3]);
+            }
             let (s, odd) = sort3(f);
             (s[0] as usize, [s[1], s[2], ((ti as u32) << 1) | odd as u32])
         })
