@@ -492,3 +492,22 @@ fn an_empty_piece_is_a_piece() {
     }
     let _ = std::fs::remove_dir_all(&d);
 }
+
+/// A coordinate the exact predicates cannot take (here 1e-300, below 2^-142) in one
+/// piece is bad input, in `check` and under ranks: never checked.
+#[test]
+fn a_piece_with_a_coordinate_out_of_range_is_refused() {
+    let d = dir("range");
+    let mut t = tetrakit::generate::kuhn(2);
+    let piece_of = tetrakit::generate::slabs(&t.points, &t.tets, 2);
+    let v = t.points.iter().position(|p| p[0] == 2.0).unwrap();
+    t.points[v][1] = 1e-300;
+    let path = d.join("m.pvtu");
+    write_pieces(&path, &t.points, &t.tets, &piece_of, None).unwrap();
+    let err = tetrakit::io::read_input(&path).unwrap_err().to_string();
+    assert!(err.contains("1e-300") && err.contains("m_1.vtu"), "{err}");
+    let (ranks, _) = tetrakit::distributed::check_in_ranks(&path, 2, CheckOptions::default());
+    let err = ranks.unwrap_err();
+    assert!(err.contains("1e-300") && err.contains("m_1.vtu"), "{err}");
+    let _ = std::fs::remove_dir_all(&d);
+}

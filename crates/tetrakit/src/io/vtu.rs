@@ -22,7 +22,7 @@ use super::vtu_data::{
     Compressor, Layout, Values, ascii_values, binary_values, block, block_from_base64, width,
 };
 use super::{Input, InputError, read_bytes};
-use crate::geom::point_key;
+use crate::geom::{coordinate_in_range, point_key};
 use quick_xml::events::{BytesStart, Event};
 use rustc_hash::FxHashMap as HashMap;
 use std::path::Path;
@@ -100,7 +100,7 @@ pub(super) fn read_files(
                 .map(|k| i64::from(piece.point_label(k)))
                 .collect()
         });
-        merged.add_input(file, piece, ids);
+        merged.add_input(file, piece, ids)?;
     }
     merged.finish(&files[0])
 }
@@ -174,7 +174,19 @@ impl Merged {
     /// Adds a piece's points, sharing those of earlier pieces: by global id where the
     /// piece has ids (an id of an earlier piece at other coordinates is a new point and
     /// an [`IdMismatch`](super::IdMismatch)), else by exact coordinates.
-    fn add_points(&mut self, coordinates: &[f64]) {
+    fn add_points(&mut self, coordinates: &[f64]) -> Result<(), InputError> {
+        if let Some(k) = coordinates.iter().position(|&x| !coordinate_in_range(x)) {
+            let piece = match self.input.pieces.len() {
+                0 => String::new(),
+                p => format!(" of piece {p}"),
+            };
+            let why = format!(
+                "point {}{piece} has coordinate {:e}, which is not finite or outside the exactly supported magnitude range [2^-142, 2^201]",
+                k / 3,
+                coordinates[k]
+            );
+            return Err(InputError::new(&self.file, 0, why));
+        }
         for k in self.first..self.input.points.len() {
             self.earlier
                 .entry(point_key(&self.input.points[k]))
@@ -231,16 +243,22 @@ impl Merged {
             first_tet,
             partition: None,
         });
+        Ok(())
     }
 
     /// Adds a piece read by another reader from `file` (its points' global ids, where
     /// it has them): Gmsh's `-part_split` files, named by their node and element tags.
-    pub(super) fn add_input(&mut self, file: &Path, piece: Input, ids: Option<Vec<i64>>) {
+    pub(super) fn add_input(
+        &mut self,
+        file: &Path,
+        piece: Input,
+        ids: Option<Vec<i64>>,
+    ) -> Result<(), InputError> {
         self.file = file.to_path_buf();
         self.by_id = ids.is_some();
         self.ids = ids;
         let coordinates: Vec<f64> = piece.points.iter().flatten().copied().collect();
-        self.add_points(&coordinates);
+        self.add_points(&coordinates)?;
         for (k, t) in piece.tets.iter().enumerate() {
             self.input.tets.push(t.map(|v| self.local[v as usize]));
             self.input.tet_labels.push(piece.tet_label(k));
@@ -251,6 +269,7 @@ impl Merged {
                 all.count += o.count;
             }
         }
+        Ok(())
     }
 
     pub(super) fn finish(mut self, path: &Path) -> Result<Input, InputError> {
@@ -670,18 +689,12 @@ fn add_points(
 ) -> Result<(), InputError> {
     let want = piece.points.saturating_mul(3);
     match points.map(|a| (a, d.values(a, want))) {
-        Some((_, Ok(Values::Float(c)))) => {
-            merged.add_points(&c);
-            Ok(())
-        }
+        Some((_, Ok(Values::Float(c)))) => merged.add_points(&c),
         Some((a, Ok(Values::Int(_)))) => {
             Err(InputError::new(d.path, a.line, "integer point coordinates"))
         }
         Some((_, Err(e))) => Err(e),
-        None if piece.points == 0 => {
-            merged.add_points(&[]);
-            Ok(())
-        }
+        None if piece.points == 0 => merged.add_points(&[]),
         None => {
             let why = format!("a Piece of {} points without Points", piece.points);
             Err(InputError::new(d.path, piece.line, why))
