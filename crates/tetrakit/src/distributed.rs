@@ -156,14 +156,16 @@ struct Embedded {
 }
 
 fn encode<T: Serialize>(x: &T) -> Vec<u8> {
-    postcard::to_stdvec(x).unwrap_or_default()
+    postcard::to_stdvec(x).expect("a message of this check encodes")
 }
 
-/// Our own ranks' messages: one that does not decode is a bug, read as nothing.
+/// Our own ranks' messages (empty: nothing was sent). One that does not decode is a
+/// bug, and a check that went on without it could miss a problem: it stops the process
+/// (under `mpirun`, the whole job).
 fn decode<T: DeserializeOwned + Default>(b: &[u8]) -> T {
     match b.is_empty() {
         true => T::default(),
-        false => postcard::from_bytes(b).unwrap_or_default(),
+        false => postcard::from_bytes(b).expect("a message of this check's ranks decodes"),
     }
 }
 
