@@ -391,7 +391,9 @@ impl RankCheck {
         for (from, b) in inbox.iter().enumerate() {
             let labels: Vec<Label> = decode(b);
             for l in labels {
-                if let Some(m) = self.mine.iter_mut().find(|m| m.piece == l.piece) {
+                // Piece p is read by rank p mod K: it is this rank's (p / K)-th.
+                let m = self.mine.get_mut(l.piece as usize / self.size);
+                if let Some(m) = m.filter(|m| m.piece == l.piece) {
                     let k = l.index as usize;
                     (m.labels[k], m.shared[k], m.owner[k]) = (l.label, l.shared, from as u32);
                 }
@@ -563,7 +565,7 @@ impl RankCheck {
         e.hits = vec![None; decision.reps.len()];
         if !decision.reps.is_empty() {
             for part in self.parts.iter().filter(|p| p.reports_tets) {
-                first_hits(&mut e.hits, part.containing(&decision.reps));
+                mesh::first_hits(&mut e.hits, part.containing(&decision.reps));
             }
         }
         self.send_to_rank0(&e)
@@ -580,7 +582,7 @@ impl RankCheck {
         for b in inbox {
             let e: Embedded = decode(b);
             overlaps.extend(e.overlaps);
-            first_hits(&mut hits, e.hits);
+            mesh::first_hits(&mut hits, e.hits);
         }
         overlaps.sort_by_key(|p| p.vertices[0]);
         for p in overlaps {
@@ -656,15 +658,6 @@ impl RankCheck {
                 message: format!("{other} cells that are not tetrahedra"),
             }),
             ..Default::default()
-        }
-    }
-}
-
-/// Keeps, per query, the hit with the smallest tetrahedron.
-fn first_hits(best: &mut [Option<(u32, [u32; 4])>], found: Vec<Option<(u32, [u32; 4])>>) {
-    for (b, hit) in best.iter_mut().zip(found) {
-        if hit.is_some_and(|h| b.is_none_or(|g| h.0 < g.0)) {
-            *b = hit;
         }
     }
 }

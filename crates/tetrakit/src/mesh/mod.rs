@@ -22,7 +22,7 @@ pub(crate) use check::outcome;
 pub use check::{CheckOptions, CheckOutcome, check};
 pub(crate) use embed::{boundary_components, boundary_self_intersections, nested_problem};
 pub use partitioned::check_pieces;
-pub(crate) use partitioned::{Part, PartFaces, assemble_faces};
+pub(crate) use partitioned::{Part, PartFaces, assemble_faces, first_hits};
 pub use report::{Problem, ProblemKind, Report};
 pub use surface::{Polyhedron, SurfaceError};
 pub use verify::verify;

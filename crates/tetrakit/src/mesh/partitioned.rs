@@ -412,15 +412,23 @@ fn embedding(
     let queries: Vec<(Point3, u32)> = reps.iter().map(|&(v, _)| (points[v as usize], v)).collect();
     let mut first: Vec<Option<(u32, [u32; 4])>> = vec![None; reps.len()];
     for part in parts.iter().filter(|p| p.reports_tets) {
-        for (f, hit) in first.iter_mut().zip(part.containing(&queries)) {
-            if hit.is_some_and(|h| f.is_none_or(|g| h.0 < g.0)) {
-                *f = hit;
-            }
-        }
+        first_hits(&mut first, part.containing(&queries));
     }
     for (&(v, own), hit) in reps.iter().zip(first) {
         if let Some((t, corners)) = hit {
             report.push(embed::nested_problem(v, own, t, &corners));
+        }
+    }
+}
+
+/// Keeps, per query of [`Part::containing`], the hit with the smallest tetrahedron.
+pub(crate) fn first_hits(
+    best: &mut [Option<(u32, [u32; 4])>],
+    found: Vec<Option<(u32, [u32; 4])>>,
+) {
+    for (b, hit) in best.iter_mut().zip(found) {
+        if hit.is_some_and(|h| b.is_none_or(|g| h.0 < g.0)) {
+            *b = hit;
         }
     }
 }
