@@ -30,6 +30,7 @@ pub mod detect;
 pub mod distributed;
 pub mod exact;
 pub mod flip;
+pub mod flipgraph;
 pub mod generate;
 pub mod geom;
 pub mod io;

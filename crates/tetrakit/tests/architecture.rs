@@ -22,6 +22,7 @@ fn allowed(top: &str) -> Vec<&'static str> {
         "polyhedra",
         "exact",
         "flip",
+        "flipgraph",
         "shell",
         "planar",
         "generate",

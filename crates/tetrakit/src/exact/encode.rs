@@ -2,11 +2,10 @@
 
 use crate::control::Control;
 use crate::geom::{
-    Hull3, Point3, orient2d_drop, orient3d, point_in_closed_tetrahedron, projection_axis,
-    segment_meets_tet_improperly, segment_punctures_triangle, segments_meet, triangle_meets_tet,
+    Hull3, Point3, orient3d, point_in_closed_tetrahedron, segment_meets_tet_improperly,
+    segment_punctures_triangle, segments_meet, triangle_meets_tet,
 };
 use crate::mesh::Polyhedron;
-use crate::rng::Rng;
 use std::collections::HashMap;
 
 /// The domain to tetrahedralize.
@@ -478,63 +477,11 @@ fn segment_meets_facet(p: &Point3, q: &Point3, s: [u32; 2], f: &[u32; 3], pts: &
         })
 }
 
-/// A point strictly inside some candidate and on no candidate triangle: in every
-/// tetrahedralization it is interior to exactly one tetrahedron. Returns the indices of
-/// the candidates containing it.
+/// A point strictly inside some candidate and on no candidate triangle
+/// ([`geom::anchor`](crate::geom::anchor)): the candidates containing it.
 pub(crate) fn anchor(pts: &[Point3], c: &Candidates) -> Option<Vec<u32>> {
-    let mut rng = Rng::new(0x5eed);
-    for attempt in 0..200 {
-        let t = c.tets.get(if attempt == 0 {
-            0
-        } else {
-            rng.below(c.tets.len())
-        })?;
-        let geo = t.map(|v| pts[v as usize]);
-        let w: [f64; 4] = if attempt == 0 {
-            [0.25; 4]
-        } else {
-            let r = [0, 1, 2, 3].map(|_| 0.5 + rng.unit());
-            let s: f64 = r.iter().sum();
-            r.map(|x| x / s)
-        };
-        let x: Point3 = [0, 1, 2].map(|i| (0..4).map(|k| w[k] * geo[k][i]).sum());
-        if !strictly_inside(&x, &geo) {
-            continue;
-        }
-        let on_triangle = c.triangles.keys().any(|f| {
-            let [a, b, cc] = f.map(|v| &pts[v as usize]);
-            orient3d(a, b, cc, &x) == 0 && in_closed_triangle(&x, a, b, cc)
-        });
-        if on_triangle {
-            continue;
-        }
-        let holders = c
-            .tets
-            .iter()
-            .enumerate()
-            .filter(|(_, t)| strictly_inside(&x, &t.map(|v| pts[v as usize])))
-            .map(|(i, _)| i as u32)
-            .collect();
-        return Some(holders);
-    }
-    None
-}
-
-fn strictly_inside(x: &Point3, t: &[Point3; 4]) -> bool {
-    let s = orient3d(&t[0], &t[1], &t[2], &t[3]);
-    [(1, 2, 3), (0, 3, 2), (0, 1, 3), (0, 2, 1)]
-        .iter()
-        .all(|&(a, b, c)| s * orient3d(&t[a], &t[b], &t[c], x) < 0)
-}
-
-fn in_closed_triangle(x: &Point3, a: &Point3, b: &Point3, c: &Point3) -> bool {
-    let Some(axis) = projection_axis(a, b, c) else {
-        return false;
-    };
-    let s = orient2d_drop(a, b, c, axis);
-    [(a, b), (b, c), (c, a)]
-        .iter()
-        .all(|(p, q)| s * orient2d_drop(p, q, x, axis) >= 0)
+    let triangles: Vec<[u32; 3]> = c.triangles.keys().copied().collect();
+    crate::geom::anchor(pts, &c.tets, &triangles)
 }
 
 #[cfg(test)]

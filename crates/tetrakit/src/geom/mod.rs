@@ -6,6 +6,7 @@
 //! arithmetic appears only as a filter whose error bound is proven, with an exact
 //! fallback, or in the bucket grid, which only proposes candidates to exact tests.
 
+mod anchor;
 mod expansion;
 mod grid;
 mod hull2;
@@ -15,6 +16,7 @@ mod predicates;
 mod proximity;
 mod radical;
 
+pub(crate) use anchor::anchor;
 pub use expansion::{Expansion, det3, edge_edge_side, orient3d_value, parallel, vector};
 pub(crate) use grid::Grid2;
 pub use hull2::Hull2;

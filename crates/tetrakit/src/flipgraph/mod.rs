@@ -1,0 +1,372 @@
+//! The flip graph of a point set's tetrahedralizations (thesis ch. 6, "Flip graph
+//! connectivity"): every tetrahedralization that uses every point, enumerated exactly,
+//! and the flips between them.
+//!
+//! The thesis closes with two open questions: is the flip graph of a point set in general
+//! position in `R³` connected, and is there a tetrahedralization with no flip at all? It
+//! cites de Loera et al.: in convex position (no three points collinear) every
+//! tetrahedralization of `n` points has at least `n − 4` flip neighbours. [`flip_graph`]
+//! answers both for one small point set, exactly:
+//!
+//! * The tetrahedralizations are **enumerated, not walked to**: a search over the empty
+//!   tetrahedra that closes open faces (`enumerate`), so a component that flips from the
+//!   first cannot reach is still found. Two candidates are compatible when they meet in a
+//!   common face; the test is exact and general (a circuit of at most five points between
+//!   them, `candidates::compatible`), so coplanar, cospherical and collinear points need
+//!   no special case. Each tetrahedralization is found once (module docs of `enumerate`).
+//! * The **flips** are those that keep every point: 2-3 and 3-2, and for four coplanar
+//!   points 2-2 on the hull and 4-4 inside (`graph`). Every flip from a tetrahedralization
+//!   found must land on one found; one that does not is reported as an error
+//!   ([`FlipError::FlipOutside`]), never counted: it would mean the enumeration missed one.
+//! * **Certified**: every tetrahedralization enumerated passes [`mesh::verify`] against
+//!   the hull (every point a vertex, every interior face shared by two tetrahedra on
+//!   opposite sides, the boundary the hull's).
+//!
+//! The answer to "is the flip graph connected?" is the verdict: YES, or NO with one
+//! tetrahedralization from each of two components; UNDECIDED when the `limit` or the time
+//! limit cut the enumeration short (the counts found so far are lower bounds, and nothing
+//! about the graph is claimed).
+//!
+//! ```
+//! use tetrakit::control::{Control, Verdict};
+//! use tetrakit::flipgraph::{FlipOptions, flip_graph};
+//! // The unit cube: 74 tetrahedralizations, one component (de Loera et al.).
+//! let cube: Vec<[f64; 3]> = (0..8).map(|i| [(i & 1) as f64, (i >> 1 & 1) as f64, (i >> 2) as f64]).collect();
+//! let g = flip_graph(&cube, &FlipOptions::default(), &Control::new()).unwrap();
+//! assert_eq!((g.tetrahedralizations, g.verdict), (74, Verdict::Yes));
+//! assert_eq!(g.graph.as_ref().unwrap().components, 1);
+//! ```
+
+mod candidates;
+mod enumerate;
+mod graph;
+
+pub use candidates::MAX_CANDIDATES;
+pub use enumerate::Cut;
+pub use graph::FlipKind;
+
+use crate::control::{Control, Verdict};
+use crate::geom::{Hull3, Point3, affine_dimension, point_key};
+use crate::mesh;
+use rayon::prelude::*;
+use serde::Serialize;
+use std::fmt;
+
+/// What [`flip_graph`] is asked.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct FlipOptions {
+    /// Stop after this many tetrahedralizations (the answer is then UNDECIDED).
+    pub limit: usize,
+    /// Compute the diameter of a connected graph of at most this many tetrahedralizations
+    /// (a breadth-first search from each).
+    pub diameter_up_to: usize,
+}
+
+impl Default for FlipOptions {
+    fn default() -> Self {
+        FlipOptions {
+            limit: 1_000_000,
+            diameter_up_to: 5000,
+        }
+    }
+}
+
+/// Why [`flip_graph`] could not run.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum FlipError {
+    /// Fewer than four points.
+    TooFewPoints(usize),
+    /// Two points at the same coordinates (no tetrahedralization uses both).
+    Duplicate {
+        /// The first point.
+        first: u32,
+        /// The later copy.
+        second: u32,
+    },
+    /// Every point on one plane.
+    Flat,
+    /// More empty tetrahedra than [`MAX_CANDIDATES`].
+    TooManyCandidates(usize),
+    /// No anchor point could be placed (not expected).
+    NoAnchor,
+    /// A flip from tetrahedralization `from` led to one the enumeration did not list (a
+    /// bug if it ever happens; reported rather than miscounted).
+    FlipOutside {
+        /// The tetrahedralization flipped.
+        from: usize,
+    },
+    /// A tetrahedralization enumerated failed the verifier (a bug if it ever happens).
+    Uncertified {
+        /// The tetrahedralization.
+        index: usize,
+        /// What the verifier found.
+        problem: String,
+    },
+    /// Stopped while building the graph (the enumeration itself stops with an answer).
+    Stopped,
+}
+
+impl fmt::Display for FlipError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            FlipError::TooFewPoints(n) => {
+                write!(f, "{n} points: a tetrahedralization needs at least 4")
+            }
+            FlipError::Duplicate { first, second } => {
+                write!(
+                    f,
+                    "points #{first} and #{second} coincide: no tetrahedralization uses both"
+                )
+            }
+            FlipError::Flat => write!(f, "the points are coplanar: there is no tetrahedralization"),
+            FlipError::TooManyCandidates(k) => write!(
+                f,
+                "{k} empty tetrahedra, more than the {MAX_CANDIDATES} the enumeration takes: use fewer points"
+            ),
+            FlipError::NoAnchor => write!(f, "could not place an anchor point in general position"),
+            FlipError::FlipOutside { from } => write!(
+                f,
+                "internal error: a flip from tetrahedralization {from} leads to one the enumeration did not find"
+            ),
+            FlipError::Uncertified { index, problem } => write!(
+                f,
+                "internal error: tetrahedralization {index} fails the verifier: {problem}"
+            ),
+            FlipError::Stopped => write!(f, "stopped while building the flip graph"),
+        }
+    }
+}
+
+impl std::error::Error for FlipError {}
+
+/// How many flips of each kind the graph has (each edge once).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct FlipCounts {
+    /// Every flip.
+    pub total: usize,
+    /// 2-3 (and 3-2) flips.
+    pub two_three: usize,
+    /// 2-2 flips on the hull.
+    pub two_two: usize,
+    /// 4-4 flips inside.
+    pub four_four: usize,
+}
+
+/// What the flip graph of a complete enumeration looks like.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct GraphFacts {
+    /// Its edges by kind.
+    pub flips: FlipCounts,
+    /// Connected components.
+    pub components: usize,
+    /// Their sizes, largest first.
+    pub component_sizes: Vec<usize>,
+    /// The fewest flip neighbours of a tetrahedralization.
+    pub min_flips: usize,
+    /// The most.
+    pub max_flips: usize,
+    /// The tetrahedralizations with no flip (a lone tetrahedralization is one).
+    pub isolated: Vec<Vec<[u32; 4]>>,
+    /// The longest shortest flip path, when connected and at most
+    /// [`FlipOptions::diameter_up_to`] tetrahedralizations.
+    pub diameter: Option<usize>,
+}
+
+/// Why the flip graph is not connected: one tetrahedralization from each of two
+/// components.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct Disconnected {
+    /// Always `"disconnected"`.
+    pub kind: &'static str,
+    /// A tetrahedralization in the first component.
+    pub first: Vec<[u32; 4]>,
+    /// One in another component.
+    pub second: Vec<[u32; 4]>,
+    /// The sizes of their components.
+    pub sizes: [usize; 2],
+}
+
+/// The flip graph of a point set's tetrahedralizations ([`flip_graph`]).
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct FlipGraph {
+    /// YES: connected; NO: not, with [`FlipGraph::witness`]; UNDECIDED: the enumeration
+    /// was cut ([`FlipGraph::cut`]).
+    pub verdict: Verdict,
+    /// Points.
+    pub points: usize,
+    /// Empty tetrahedra (the candidates).
+    pub candidates: usize,
+    /// Tetrahedralizations that use every point (found so far, when cut).
+    pub tetrahedralizations: usize,
+    /// Why the enumeration ended early, if it did.
+    pub cut: Option<Cut>,
+    /// Search states the enumeration visited.
+    pub states: u64,
+    /// The fewest tetrahedra in a tetrahedralization found.
+    pub min_tetrahedra: usize,
+    /// The most.
+    pub max_tetrahedra: usize,
+    /// Every tetrahedralization found passed [`mesh::verify`].
+    pub certified: bool,
+    /// The graph, when the enumeration is complete.
+    #[serde(skip_serializing_if = "Option::is_none", flatten)]
+    pub graph: Option<GraphFacts>,
+    /// Two tetrahedralizations no flips join (a NO).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub witness: Option<Disconnected>,
+    /// Every tetrahedralization found, positively oriented, in the order found.
+    #[serde(skip)]
+    pub all: Vec<Vec<[u32; 4]>>,
+    /// Each one's flip neighbours (index into `all`, kind), ascending; empty when cut.
+    #[serde(skip)]
+    pub neighbours: Vec<Vec<(u32, FlipKind)>>,
+}
+
+/// Every tetrahedralization of `points` that uses every point, and the graph of the flips
+/// between them (see the module docs).
+pub fn flip_graph(
+    points: &[Point3],
+    opts: &FlipOptions,
+    ctl: &Control,
+) -> Result<FlipGraph, FlipError> {
+    admissible(points)?;
+    ctl.stage("empty tetrahedra");
+    let c = candidates::candidates(points)?;
+    let triangles: Vec<[u32; 3]> = c.faces.iter().map(|f| f.v).collect();
+    let start: Vec<u16> = crate::geom::anchor(points, &c.tets, &triangles)
+        .ok_or(FlipError::NoAnchor)?
+        .into_iter()
+        .map(|t| t as u16)
+        .collect();
+    ctl.stage("tetrahedralizations");
+    let found = enumerate::enumerate(&c, &start, opts.limit.max(1), ctl);
+    let all: Vec<Vec<[u32; 4]>> = found
+        .all
+        .iter()
+        .map(|t| {
+            t.iter()
+                .map(|&x| oriented(points, c.tets[x as usize]))
+                .collect()
+        })
+        .collect();
+    certify(points, &all)?;
+    let sizes = all.iter().map(Vec::len);
+    let mut g = FlipGraph {
+        verdict: Verdict::Undecided,
+        points: points.len(),
+        candidates: c.tets.len(),
+        tetrahedralizations: all.len(),
+        cut: found.cut,
+        states: found.states,
+        min_tetrahedra: sizes.clone().min().unwrap_or(0),
+        max_tetrahedra: sizes.max().unwrap_or(0),
+        certified: true,
+        graph: None,
+        witness: None,
+        all,
+        neighbours: Vec::new(),
+    };
+    if found.cut.is_some() {
+        return Ok(g);
+    }
+    ctl.stage("flips");
+    g.neighbours = graph::adjacency(points, &c, &found.all, ctl)?;
+    let facts = facts(&g.neighbours, &g.all, opts, ctl)?;
+    g.verdict = Verdict::from(facts.components == 1);
+    if facts.components > 1 {
+        let (labels, sizes) = graph::components(&g.neighbours);
+        let other = labels.iter().position(|&l| l != 0).expect("two components");
+        g.witness = Some(Disconnected {
+            kind: "disconnected",
+            first: g.all[0].clone(),
+            second: g.all[other].clone(),
+            sizes: [sizes[0], sizes[labels[other] as usize]],
+        });
+    }
+    g.graph = Some(facts);
+    Ok(g)
+}
+
+/// At least four distinct points, not all coplanar.
+fn admissible(points: &[Point3]) -> Result<(), FlipError> {
+    if points.len() < 4 {
+        return Err(FlipError::TooFewPoints(points.len()));
+    }
+    let mut seen = std::collections::HashMap::new();
+    for (i, p) in points.iter().enumerate() {
+        if let Some(&first) = seen.get(&point_key(p)) {
+            return Err(FlipError::Duplicate {
+                first,
+                second: i as u32,
+            });
+        }
+        seen.insert(point_key(p), i as u32);
+    }
+    if affine_dimension(points) < 3 {
+        return Err(FlipError::Flat);
+    }
+    Ok(())
+}
+
+/// `t`'s corners in positive orientation.
+fn oriented(points: &[Point3], mut t: [u32; 4]) -> [u32; 4] {
+    let [a, b, c, d] = t.map(|v| &points[v as usize]);
+    if crate::geom::orient3d(a, b, c, d) < 0 {
+        t.swap(2, 3);
+    }
+    t
+}
+
+fn certify(points: &[Point3], all: &[Vec<[u32; 4]>]) -> Result<(), FlipError> {
+    let hull = Hull3::new(points);
+    all.par_iter().enumerate().try_for_each(|(index, t)| {
+        match mesh::verify(points, t, Some(&hull)).problems.first() {
+            None => Ok(()),
+            Some(p) => Err(FlipError::Uncertified {
+                index,
+                problem: p.to_string(),
+            }),
+        }
+    })
+}
+
+fn facts(
+    adj: &graph::Adjacency,
+    all: &[Vec<[u32; 4]>],
+    opts: &FlipOptions,
+    ctl: &Control,
+) -> Result<GraphFacts, FlipError> {
+    let mut flips = FlipCounts::default();
+    for (i, ns) in adj.iter().enumerate() {
+        for &(j, kind) in ns {
+            if (j as usize) > i {
+                flips.total += 1;
+                match kind {
+                    FlipKind::TwoThree => flips.two_three += 1,
+                    FlipKind::TwoTwo => flips.two_two += 1,
+                    FlipKind::FourFour => flips.four_four += 1,
+                }
+            }
+        }
+    }
+    let (_, mut component_sizes) = graph::components(adj);
+    component_sizes.sort_unstable_by(|a, b| b.cmp(a));
+    let components = component_sizes.len();
+    let diameter = if components == 1 && adj.len() <= opts.diameter_up_to {
+        Some(graph::diameter(adj, ctl)?)
+    } else {
+        None
+    };
+    Ok(GraphFacts {
+        flips,
+        components,
+        component_sizes,
+        min_flips: adj.iter().map(Vec::len).min().unwrap_or(0),
+        max_flips: adj.iter().map(Vec::len).max().unwrap_or(0),
+        isolated: (0..adj.len())
+            .filter(|&i| adj[i].is_empty())
+            .map(|i| all[i].clone())
+            .collect(),
+        diameter,
+    })
+}
