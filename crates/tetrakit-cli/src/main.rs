@@ -15,6 +15,7 @@ macro_rules! out {
 mod constrain;
 mod demo;
 mod exit;
+mod flips;
 mod planar;
 mod poly;
 mod progress;
@@ -76,6 +77,11 @@ enum Cmd {
     /// points (thesis ch. 4), certified: every tetrahedron, the boundary on both hulls,
     /// the exact volume.
     Shell(ShellCliArgs),
+    /// Every tetrahedralization of a small point set that uses every point, enumerated
+    /// exactly, and the graph of the flips between them (thesis ch. 6): is it connected,
+    /// is any tetrahedralization without a flip? Exit 0 connected, 1 not (with two
+    /// tetrahedralizations no flips join), 3 cut by --limit or --time-limit.
+    Flips(FlipsArgs),
     /// The constructions of thesis ch. 2 (reductions between the NP-complete problems).
     Reduce(ReduceArgs),
     /// Write a generated instance.
@@ -282,6 +288,24 @@ enum ReduceKind {
         #[arg(long, value_parser = seconds)]
         time_limit: Option<Duration>,
     },
+}
+
+#[derive(Args)]
+struct FlipsArgs {
+    /// The points (.xyz, .node, .obj, .off, .json, ...; faces and cells are not read).
+    input: PathBuf,
+    /// Stop after this many tetrahedralizations (exit 3: there are at least that many).
+    #[arg(long, default_value_t = 1_000_000)]
+    limit: usize,
+    /// Give up after this many seconds (exit 3, with the count so far).
+    #[arg(long, value_parser = seconds)]
+    time_limit: Option<Duration>,
+    /// Print one JSON object on stdout.
+    #[arg(long)]
+    json: bool,
+    /// Write the graph as JSON: the points, every tetrahedralization, every flip.
+    #[arg(long, short, value_name = "G.json")]
+    output: Option<PathBuf>,
 }
 
 #[derive(Args)]
@@ -540,6 +564,21 @@ enum GenKind {
     SchonhardtBp {
         #[command(flatten)]
         out: PolyOut,
+    },
+    /// Points in space for `flips`.
+    Points3d {
+        /// The distribution.
+        #[arg(long, value_enum, default_value_t = tetrakit::generate::Distribution3::Uniform)]
+        dist: tetrakit::generate::Distribution3,
+        /// Number of points.
+        #[arg(long)]
+        n: usize,
+        /// Seed.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// Output file: .xyz, .txt, .node or .json.
+        #[arg(long, short)]
+        output: PathBuf,
     },
     /// Planar points for `skeleton` and `mwt`.
     Points2d {
@@ -824,6 +863,13 @@ fn run(cmd: Cmd) -> CmdResult {
             output: a.output.as_deref(),
             check_random: a.check_random,
         }),
+        Cmd::Flips(a) => flips::flips(flips::FlipsArgs {
+            input: &a.input,
+            limit: a.limit,
+            time_limit: a.time_limit,
+            as_json: a.json,
+            output: a.output.as_deref(),
+        }),
         Cmd::Shell(a) => shell::shell(shell::ShellArgs {
             outer: &a.outer,
             inner: &a.inner,
@@ -935,6 +981,15 @@ fn run(cmd: Cmd) -> CmdResult {
                     output,
                 },
         }) => planar::generate_points(dist, n, seed, &output),
+        Cmd::Generate(GenerateArgs {
+            kind:
+                GenKind::Points3d {
+                    dist,
+                    n,
+                    seed,
+                    output,
+                },
+        }) => flips::generate_points(dist, n, seed, &output),
         Cmd::Generate(a) => match polyhedron_kind(a.kind) {
             Ok((kind, out)) => poly::generate(kind, out.seed, &out.output),
             Err(kind) => run::generate(kind),

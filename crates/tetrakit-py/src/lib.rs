@@ -11,6 +11,7 @@
 
 mod constrain;
 mod convert;
+mod flips;
 mod mesh;
 mod mpi;
 mod planar;
@@ -28,6 +29,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(poly::mintetra, m)?)?;
     m.add_function(wrap_pyfunction!(poly::tetrahedralize, m)?)?;
     m.add_function(wrap_pyfunction!(poly::shell, m)?)?;
+    m.add_function(wrap_pyfunction!(flips::flips, m)?)?;
     m.add_function(wrap_pyfunction!(planar::skeleton, m)?)?;
     m.add_function(wrap_pyfunction!(planar::mwt, m)?)?;
     m.add_function(wrap_pyfunction!(planar::keil, m)?)?;

@@ -349,3 +349,30 @@ def test_pvtu_global_ids_that_disagree(tmp_path):
     assert out["witness"]["vertices"] == [1, 4]
     m = tetrakit.read(tmp_path / "p.pvtu")
     assert m.id_mismatches == [[1, 1, 4, 1]] and len(m.points) == 6
+
+
+GRID12 = np.array([[i % 2, i // 2 % 2, i // 4] for i in range(12)], dtype=float)
+FLIPS = {"cube": (CUBE, {}, "yes"),
+         "lone": (CUBE[[0, 1, 2, 4]], {}, "yes"),
+         "limit": (GRID12, {"limit": 5}, "undecided"),
+         "stopped": (GRID12, {"time_limit": 0.0}, "undecided")}
+
+
+@pytest.mark.parametrize("case", sorted(FLIPS))
+def test_flips_json_follows_the_schema(tmp_path, case):
+    pts, opts, want = FLIPS[case]
+    s = schema("flips")
+    result = tetrakit.flips(pts, **opts)
+    py = {k: v for k, v in fields(result, s).items() if k not in ("all", "flip_kinds")}
+    jsonschema.validate(py, s)
+    assert result.verdict == want
+    assert len(result.all) == result.tetrahedralizations
+    assert len(result.flip_pairs) == len(result.flip_kinds)
+    if want == "yes":
+        assert len(result.flip_pairs) == result.flips["total"]
+    flags = [] if "limit" not in opts else ["--limit", "5"]
+    flags += [] if "time_limit" not in opts else ["--time-limit", "0"]
+    cli = cli_on(tmp_path, "flips", {"points": pts}, *flags, code=(0, 1, 3))
+    jsonschema.validate(cli, s)
+    same_fields(cli, result, s, {"seconds", "states", "all", "flip_kinds", "tetrahedralizations"
+                                 if case == "stopped" else "seconds"})

@@ -39,6 +39,7 @@ __all__ = [
     "mintetra",
     "tetrahedralize",
     "shell",
+    "flips",
     "skeleton",
     "mwt",
     "keil",
@@ -50,6 +51,7 @@ __all__ = [
     "MintetraResult",
     "TetrahedralizeResult",
     "ShellResult",
+    "FlipsResult",
     "SkeletonResult",
     "MwtResult",
     "KeilResult",
@@ -416,6 +418,54 @@ def shell(outer, inner, method: str = "cap", flips: bool = True, optimum: bool =
     text, pts, tets = _core.shell(_points(outer, "outer"), _points(inner, "inner"), method, flips,
                                   optimum, time_limit)
     return _make(ShellResult, text, points=pts, tets=tets)
+
+
+@dataclass
+class FlipsResult:
+    """The answer of :func:`flips` (``tetrakit flips --json``), with the graph itself:
+    ``all`` holds every tetrahedralization found (an array of tetrahedra each),
+    ``flip_pairs`` the flips as rows ``(i, j)``, ``i < j``, of places in ``all``, and
+    ``flip_kinds`` each flip's kind (``"2-3"``, ``"2-2"``, ``"4-4"``)."""
+
+    verdict: str
+    points: int
+    candidates: int
+    tetrahedralizations: int
+    connected: Optional[bool]
+    cut: Optional[str]
+    states: int
+    min_tetrahedra: int
+    max_tetrahedra: int
+    certified: bool
+    all: list = field(repr=False)
+    flip_pairs: np.ndarray = field(repr=False)
+    flip_kinds: list = field(repr=False)
+    flips: Optional[dict] = None
+    components: Optional[int] = None
+    component_sizes: Optional[list] = None
+    min_flips: Optional[int] = None
+    max_flips: Optional[int] = None
+    isolated: Optional[list] = None
+    diameter: Optional[int] = None
+    witness: Optional[dict] = None
+
+
+def flips(points, limit: int = 1_000_000, time_limit: Optional[float] = None) -> FlipsResult:
+    """Every tetrahedralization of ``points`` that uses every point, enumerated exactly and
+    each certified, and the graph of the flips between them (thesis ch. 6).
+
+    ``verdict`` is ``"yes"`` when the flip graph is connected, ``"no"`` with a witness (one
+    tetrahedralization from each of two components) when not, ``"undecided"`` when
+    ``limit`` tetrahedralizations or ``time_limit`` seconds cut the enumeration short.
+
+    >>> import numpy as np, tetrakit
+    >>> cube = np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)], dtype=float)
+    >>> g = tetrakit.flips(cube)
+    >>> (g.tetrahedralizations, g.connected, g.flips["total"], len(g.flip_pairs))
+    (74, True, 152, 152)
+    """
+    text, all_, pairs, kinds = _core.flips(_points(points), limit, time_limit)
+    return _make(FlipsResult, text, all=all_, flip_pairs=pairs, flip_kinds=kinds)
 
 
 @dataclass

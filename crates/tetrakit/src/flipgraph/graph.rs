@@ -12,7 +12,6 @@
 //! The 3-2 flip is the inverse of a 2-3 flip, so it is the same edge of the graph, found
 //! from the other end.
 
-use super::FlipError;
 use super::candidates::Candidates;
 use crate::control::Control;
 use crate::geom::{Point3, orient3d};
@@ -34,17 +33,24 @@ pub enum FlipKind {
     FourFour,
 }
 
+/// Why the graph was not built: stopped, or a flip from tetrahedralization `from` led
+/// outside the list.
+pub(super) enum Halt {
+    Stopped,
+    Outside { from: usize },
+}
+
 /// Per tetrahedralization, its flip neighbours (index, kind), ascending.
 pub(super) type Adjacency = Vec<Vec<(u32, FlipKind)>>;
 
 /// The flip neighbours of every tetrahedralization in `all` (complete: a flip leading
-/// outside `all` is [`FlipError::FlipOutside`]).
+/// outside `all` is [`Halt::Outside`]).
 pub(super) fn adjacency(
     pts: &[Point3],
     c: &Candidates,
     all: &[Box<[u16]>],
     ctl: &Control,
-) -> Result<Adjacency, FlipError> {
+) -> Result<Adjacency, Halt> {
     let index: HashMap<&[u16], u32> = all
         .iter()
         .enumerate()
@@ -54,18 +60,16 @@ pub(super) fn adjacency(
         .par_iter()
         .enumerate()
         .map(|(i, t)| {
-            ctl.check().map_err(|_| FlipError::Stopped)?;
+            ctl.check().map_err(|_| Halt::Stopped)?;
             flips(pts, c, t)
                 .into_iter()
                 .map(|(kind, next)| {
-                    let j = index
-                        .get(&next[..])
-                        .ok_or(FlipError::FlipOutside { from: i })?;
+                    let j = index.get(&next[..]).ok_or(Halt::Outside { from: i })?;
                     Ok((*j, kind))
                 })
                 .collect()
         })
-        .collect::<Result<_, FlipError>>()?;
+        .collect::<Result<_, Halt>>()?;
     // A 3-2 flip is seen from its 2-3 end only: every edge both ways.
     let mut adj: Adjacency = out.clone();
     for (i, ns) in out.iter().enumerate() {
@@ -196,11 +200,11 @@ pub(super) fn components(adj: &Adjacency) -> (Vec<u32>, Vec<usize>) {
 
 /// The longest shortest flip path of a connected graph (a breadth-first search from every
 /// tetrahedralization).
-pub(super) fn diameter(adj: &Adjacency, ctl: &Control) -> Result<usize, FlipError> {
+pub(super) fn diameter(adj: &Adjacency, ctl: &Control) -> Result<usize, Halt> {
     (0..adj.len())
         .into_par_iter()
         .map(|s| {
-            ctl.check().map_err(|_| FlipError::Stopped)?;
+            ctl.check().map_err(|_| Halt::Stopped)?;
             let mut dist = vec![u32::MAX; adj.len()];
             dist[s] = 0;
             let mut queue = VecDeque::from([s as u32]);

@@ -24,8 +24,8 @@
 //!
 //! The answer to "is the flip graph connected?" is the verdict: YES, or NO with one
 //! tetrahedralization from each of two components; UNDECIDED when the `limit` or the time
-//! limit cut the enumeration short (the counts found so far are lower bounds, and nothing
-//! about the graph is claimed).
+//! limit cut the work short (the count found is a lower bound, and nothing about the
+//! graph is claimed).
 //!
 //! ```
 //! use tetrakit::control::{Control, Verdict};
@@ -48,6 +48,7 @@ pub use graph::FlipKind;
 use crate::control::{Control, Verdict};
 use crate::geom::{Hull3, Point3, affine_dimension, point_key};
 use crate::mesh;
+use graph::Halt;
 use rayon::prelude::*;
 use serde::Serialize;
 use std::fmt;
@@ -102,8 +103,6 @@ pub enum FlipError {
         /// What the verifier found.
         problem: String,
     },
-    /// Stopped while building the graph (the enumeration itself stops with an answer).
-    Stopped,
 }
 
 impl fmt::Display for FlipError {
@@ -132,7 +131,6 @@ impl fmt::Display for FlipError {
                 f,
                 "internal error: tetrahedralization {index} fails the verifier: {problem}"
             ),
-            FlipError::Stopped => write!(f, "stopped while building the flip graph"),
         }
     }
 }
@@ -198,6 +196,8 @@ pub struct FlipGraph {
     pub candidates: usize,
     /// Tetrahedralizations that use every point (found so far, when cut).
     pub tetrahedralizations: usize,
+    /// Whether the flip graph is connected (`None` when the enumeration was cut).
+    pub connected: Option<bool>,
     /// Why the enumeration ended early, if it did.
     pub cut: Option<Cut>,
     /// Search states the enumeration visited.
@@ -220,6 +220,23 @@ pub struct FlipGraph {
     /// Each one's flip neighbours (index into `all`, kind), ascending; empty when cut.
     #[serde(skip)]
     pub neighbours: Vec<Vec<(u32, FlipKind)>>,
+}
+
+impl FlipGraph {
+    /// The same outcome with every vertex index plus `base` (a file's numbering);
+    /// tetrahedralizations keep their 0-based places in [`FlipGraph::all`].
+    pub fn shifted(mut self, base: u32) -> FlipGraph {
+        let shift = |t: &mut Vec<[u32; 4]>| t.iter_mut().for_each(|q| *q = q.map(|v| v + base));
+        self.all.iter_mut().for_each(shift);
+        if let Some(g) = &mut self.graph {
+            g.isolated.iter_mut().for_each(shift);
+        }
+        if let Some(w) = &mut self.witness {
+            shift(&mut w.first);
+            shift(&mut w.second);
+        }
+        self
+    }
 }
 
 /// Every tetrahedralization of `points` that uses every point, and the graph of the flips
@@ -256,6 +273,7 @@ pub fn flip_graph(
         points: points.len(),
         candidates: c.tets.len(),
         tetrahedralizations: all.len(),
+        connected: None,
         cut: found.cut,
         states: found.states,
         min_tetrahedra: sizes.clone().min().unwrap_or(0),
@@ -270,8 +288,18 @@ pub fn flip_graph(
         return Ok(g);
     }
     ctl.stage("flips");
-    g.neighbours = graph::adjacency(points, &c, &found.all, ctl)?;
-    let facts = facts(&g.neighbours, &g.all, opts, ctl)?;
+    let built = graph::adjacency(points, &c, &found.all, ctl)
+        .and_then(|adj| Ok((facts(&adj, &g.all, opts, ctl)?, adj)));
+    let (facts, adj) = match built {
+        Ok(done) => done,
+        Err(Halt::Stopped) => {
+            g.cut = Some(Cut::TimeLimit);
+            return Ok(g);
+        }
+        Err(Halt::Outside { from }) => return Err(FlipError::FlipOutside { from }),
+    };
+    g.neighbours = adj;
+    g.connected = Some(facts.components == 1);
     g.verdict = Verdict::from(facts.components == 1);
     if facts.components > 1 {
         let (labels, sizes) = graph::components(&g.neighbours);
@@ -335,7 +363,7 @@ fn facts(
     all: &[Vec<[u32; 4]>],
     opts: &FlipOptions,
     ctl: &Control,
-) -> Result<GraphFacts, FlipError> {
+) -> Result<GraphFacts, Halt> {
     let mut flips = FlipCounts::default();
     for (i, ns) in adj.iter().enumerate() {
         for &(j, kind) in ns {

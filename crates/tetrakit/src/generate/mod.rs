@@ -4,8 +4,10 @@
 //! seed.
 
 mod insert;
+mod points;
 
 pub use insert::tetrahedralize_points;
+pub use points::{Distribution3, points3d};
 
 use crate::geom::{Point3, orient3d, point_in_segment_interior, segments_meet};
 use crate::mesh::Tetrahedralization;

@@ -4,12 +4,13 @@
 //! search). A front end parses its input, calls the capability, and hands the outcome
 //! here with the few facts only it knows (timings, the file's other cells).
 //!
-//! Capabilities move here one by one (`check`, `detect`, `shell`, `mintetra`, `tetrahedralize`, `contains`, `constrained`, `reduce`, `skeleton`, `mwt` and `keil`); until then a command
+//! Capabilities move here one by one (`check`, `detect`, `flips`, `shell`, `mintetra`, `tetrahedralize`, `contains`, `constrained`, `reduce`, `skeleton`, `mwt` and `keil`); until then a command
 //! builds its JSON itself.
 
 mod check;
 mod constrain;
 mod detect;
+mod flips;
 mod planar;
 mod poly;
 mod reduce;
@@ -18,6 +19,7 @@ mod shell;
 pub use check::{MeshFacts, check_printed, check_text, mesh_facts, pieces_text, problem_pieces};
 pub use constrain::{constrain_json, constrain_text};
 pub use detect::{detect_json, detect_text};
+pub use flips::{flip_graph_json, flips_text};
 pub use planar::{
     check_random_json, check_random_text, keil_json, keil_text, mwt_json, mwt_text, skeleton_json,
     skeleton_text,

@@ -1,0 +1,138 @@
+//! `tetrakit flips`: exit codes, the JSON fields, the graph file, the file's numbering and
+//! one clear line for every bad input.
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+fn dir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("tetrakit-flips-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn run(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_tetrakit"))
+        .args(args)
+        .output()
+        .expect("binary runs")
+}
+
+fn json(o: &Output) -> serde_json::Value {
+    serde_json::from_slice(&o.stdout).expect("stdout is one JSON object")
+}
+
+const CUBE: &str = "0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n";
+
+#[test]
+fn the_cube_is_connected_and_its_graph_is_written() {
+    let d = dir("cube");
+    let (pts, graph) = (d.join("cube.xyz"), d.join("g.json"));
+    std::fs::write(&pts, CUBE).unwrap();
+    let o = run(&[
+        "flips",
+        pts.to_str().unwrap(),
+        "--json",
+        "-o",
+        graph.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0));
+    let v = json(&o);
+    assert_eq!(v["verdict"], "yes");
+    assert_eq!(v["connected"], true);
+    assert_eq!(
+        (v["tetrahedralizations"].as_u64(), v["components"].as_u64()),
+        (Some(74), Some(1))
+    );
+    assert_eq!(v["flips"]["total"], 152);
+    let g: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&graph).unwrap()).unwrap();
+    assert_eq!(g["tetrahedralizations"].as_array().unwrap().len(), 74);
+    assert_eq!(g["flips"].as_array().unwrap().len(), 152);
+    assert_eq!(g["points"].as_array().unwrap().len(), 8);
+    // The text says the same.
+    let o = run(&["flips", pts.to_str().unwrap()]);
+    let text = String::from_utf8(o.stdout).unwrap();
+    assert!(
+        text.starts_with("flip graph: YES, connected: 74 tetrahedralizations"),
+        "{text}"
+    );
+}
+
+/// A 1-based TetGen file: the tetrahedralizations name its numbers.
+#[test]
+fn tetrahedra_are_in_the_files_numbering() {
+    let d = dir("base");
+    let node = d.join("t.node");
+    // Four points: one tetrahedralization, with no flip.
+    std::fs::write(&node, "4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n").unwrap();
+    let o = run(&["flips", node.to_str().unwrap(), "--json"]);
+    assert_eq!(o.status.code(), Some(0));
+    let v = json(&o);
+    assert_eq!(v["tetrahedralizations"], 1);
+    let lone = &v["isolated"][0][0];
+    let mut corners: Vec<u64> = lone
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_u64().unwrap())
+        .collect();
+    corners.sort_unstable();
+    assert_eq!(corners, [1, 2, 3, 4]);
+}
+
+#[test]
+fn a_limit_or_a_time_limit_is_undecided() {
+    let d = dir("limit");
+    let pts = d.join("grid.xyz");
+    let grid: String = (0..12)
+        .map(|i| format!("{} {} {}\n", i % 2, i / 2 % 2, i / 4))
+        .collect();
+    std::fs::write(&pts, grid).unwrap();
+    let o = run(&["flips", pts.to_str().unwrap(), "--json", "--limit", "5"]);
+    assert_eq!(o.status.code(), Some(3));
+    let v = json(&o);
+    assert_eq!(
+        (v["verdict"].as_str(), v["cut"].as_str()),
+        (Some("undecided"), Some("limit"))
+    );
+    assert_eq!(v["tetrahedralizations"], 5);
+    assert!(v["connected"].is_null() && v.get("components").is_none());
+    let o = run(&["flips", pts.to_str().unwrap(), "--time-limit", "0"]);
+    assert_eq!(o.status.code(), Some(3));
+    let text = String::from_utf8(o.stdout).unwrap();
+    assert!(text.starts_with("flip graph: UNDECIDED"), "{text}");
+}
+
+/// Bad input: exit 2 and one line naming the file (and the line where there is one).
+#[test]
+fn bad_points_are_named() {
+    let d = dir("bad");
+    let cases: [(&str, &str, &str); 5] = [
+        (
+            "dup.xyz",
+            "0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 0 0\n",
+            "dup.xyz:5: points 1 and 4 coincide",
+        ),
+        (
+            "flat.xyz",
+            "0 0 0\n1 0 0\n0 1 0\n1 1 0\n",
+            "flat.xyz: the points are coplanar",
+        ),
+        ("few.xyz", "0 0 0\n1 0 0\n0 1 1\n", "few.xyz: 3 points"),
+        (
+            "planar.xyz",
+            "0 0\n1 0\n0 1\n1 1\n",
+            "planar.xyz: the points are planar",
+        ),
+        ("nan.xyz", "0 0 0\n1 0 0\n0 1 0\nnan 0 1\n", "nan.xyz:4"),
+    ];
+    for (name, text, expected) in cases {
+        let f = d.join(name);
+        std::fs::write(&f, text).unwrap();
+        let o = run(&["flips", f.to_str().unwrap()]);
+        let err = String::from_utf8(o.stderr).unwrap();
+        assert_eq!(o.status.code(), Some(2), "{name}: {err}");
+        assert_eq!(err.trim().lines().count(), 1, "{name}: {err}");
+        assert!(err.contains(expected), "{name}: {err}");
+    }
+}

@@ -1,0 +1,65 @@
+//! `flips` (thesis ch. 6): the flip graph of a point set's tetrahedralizations.
+
+use crate::convert::{self, Json, Rows, array, value_error};
+use numpy::{PyArray2, PyReadonlyArray2};
+use pyo3::exceptions::PyRuntimeError;
+use pyo3::prelude::*;
+use tetrakit::flipgraph::{FlipError, FlipKind, FlipOptions, flip_graph};
+use tetrakit::report;
+
+type FlipsOut<'py> = (
+    Json,
+    Vec<Bound<'py, PyArray2<i64>>>,
+    Bound<'py, PyArray2<i64>>,
+    Vec<&'static str>,
+);
+
+/// `flips(points, limit, time_limit)`: the outcome as JSON, every tetrahedralization
+/// found (one array of tetrahedra each), the flips as pairs of places in that list
+/// (`i < j`) and each flip's kind (`"2-3"`, `"2-2"`, `"4-4"`).
+#[pyfunction]
+#[pyo3(signature = (points, limit=1_000_000, time_limit=None))]
+pub fn flips<'py>(
+    py: Python<'py>,
+    points: PyReadonlyArray2<'py, f64>,
+    limit: usize,
+    time_limit: Option<f64>,
+) -> PyResult<FlipsOut<'py>> {
+    let ctl = convert::control(time_limit)?;
+    let (pts, dim) = convert::points(&points, "points")?;
+    if dim != 3 {
+        return Err(value_error(
+            "the points are planar: the flip graph of tetrahedralizations needs 3D points",
+        ));
+    }
+    let pts = convert::input(pts, dim, &Rows::default(), false)?.points;
+    let opts = FlipOptions {
+        limit: limit.max(1),
+        ..FlipOptions::default()
+    };
+    let g = convert::run(py, &ctl, || flip_graph(&pts, &opts, &ctl))?.map_err(|e| match e {
+        FlipError::FlipOutside { .. } | FlipError::Uncertified { .. } | FlipError::NoAnchor => {
+            PyRuntimeError::new_err(format!("{e} (a bug: please report it)"))
+        }
+        _ => value_error(e),
+    })?;
+    let all = g.all.iter().map(|t| array(py, t)).collect();
+    let mut pairs = Vec::new();
+    let mut kinds = Vec::new();
+    for (i, ns) in g.neighbours.iter().enumerate() {
+        for &(j, kind) in ns.iter().filter(|(j, _)| *j as usize > i) {
+            pairs.push([i as u32, j]);
+            kinds.push(match kind {
+                FlipKind::TwoThree => "2-3",
+                FlipKind::TwoTwo => "2-2",
+                FlipKind::FourFour => "4-4",
+            });
+        }
+    }
+    Ok((
+        report::json(&g, []).to_string(),
+        all,
+        array(py, &pairs),
+        kinds,
+    ))
+}
