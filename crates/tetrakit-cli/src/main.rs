@@ -560,6 +560,21 @@ enum GenKind {
         #[arg(long, short)]
         output: PathBuf,
     },
+    /// A convex polyhedron with its polygon facets triangulated at random (thesis ch. 6:
+    /// can it be tetrahedralized without Steiner points, the surface fixed?).
+    ConvexTriangulated {
+        /// The polytope: a prism over an N-gon, the cube, or the hull of N lattice points.
+        #[arg(long, value_enum, default_value_t = tetrakit::polyhedra::generate::ConvexShape::Prism)]
+        shape: tetrakit::polyhedra::generate::ConvexShape,
+        /// The prism's N-gon, or the number of lattice points.
+        #[arg(long, default_value_t = 3)]
+        n: usize,
+        /// Points added strictly inside random facets.
+        #[arg(long, default_value_t = 0)]
+        facet_points: usize,
+        #[command(flatten)]
+        out: PolyOut,
+    },
     /// Schönhardt's polyhedron with three BP-nets, convex (Figure 3.21).
     SchonhardtBp {
         #[command(flatten)]
@@ -1039,6 +1054,19 @@ fn polyhedron_kind(kind: GenKind) -> Result<(poly::PolyGen, PolyOut), GenKind> {
         GenKind::HLevel { levels, bp: a } => bp(a, levels, true),
         GenKind::Schonhardt { twist, out } => (poly::PolyGen::Schonhardt { twist }, out),
         GenKind::SchonhardtBp { out } => (poly::PolyGen::SchonhardtBp, out),
+        GenKind::ConvexTriangulated {
+            shape,
+            n,
+            facet_points,
+            out,
+        } => (
+            poly::PolyGen::ConvexTriangulated {
+                shape,
+                n,
+                facet_points,
+            },
+            out,
+        ),
         GenKind::SchonhardtTower { layers, twist, out } => {
             (poly::PolyGen::Tower { layers, twist }, out)
         }

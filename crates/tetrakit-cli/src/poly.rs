@@ -113,14 +113,33 @@ pub fn tetrahedralize(a: TetraArgs) -> CmdResult {
 
 /// The polyhedron generators.
 pub enum PolyGen {
-    Stacked { n: usize },
-    Bipyramid { m: usize },
+    Stacked {
+        n: usize,
+    },
+    Bipyramid {
+        m: usize,
+    },
     Bp(generate::BpParams),
-    Schonhardt { twist: Option<f64> },
+    Schonhardt {
+        twist: Option<f64>,
+    },
     SchonhardtBp,
-    Tower { layers: usize, twist: f64 },
-    Chazelle { grooves: usize },
-    Perturbed { n: usize, dent: f64 },
+    ConvexTriangulated {
+        shape: generate::ConvexShape,
+        n: usize,
+        facet_points: usize,
+    },
+    Tower {
+        layers: usize,
+        twist: f64,
+    },
+    Chazelle {
+        grooves: usize,
+    },
+    Perturbed {
+        n: usize,
+        dent: f64,
+    },
 }
 
 pub fn generate(kind: PolyGen, seed: u64, output: &Path) -> CmdResult {
@@ -171,6 +190,14 @@ pub fn generate(kind: PolyGen, seed: u64, output: &Path) -> CmdResult {
             (p, format!(", {reflex} reflex edge(s)"))
         }
         PolyGen::SchonhardtBp => (generate::schonhardt_bp(), String::new()),
+        PolyGen::ConvexTriangulated {
+            shape,
+            n,
+            facet_points,
+        } => {
+            let p = generate::convex_triangulated(shape, n, facet_points, seed)?;
+            (p, ", every facet triangulated".to_string())
+        }
         PolyGen::Tower { layers, twist } => hard_family(hard::schonhardt_tower(layers, twist))?,
         PolyGen::Chazelle { grooves } => hard_family(hard::chazelle(grooves))?,
         PolyGen::Perturbed { n, dent } => hard_family(hard::perturbed(n, dent, seed))?,

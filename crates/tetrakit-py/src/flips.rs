@@ -43,7 +43,9 @@ pub fn flips<'py>(
         }
         _ => value_error(e),
     })?;
-    let all = g.all.iter().map(|t| array(py, t)).collect();
+    let all = (0..g.tetrahedralizations)
+        .map(|i| array(py, &g.tetrahedralization(i)))
+        .collect();
     let mut pairs = Vec::new();
     let mut kinds = Vec::new();
     for (i, ns) in g.neighbours.iter().enumerate() {

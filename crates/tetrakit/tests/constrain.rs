@@ -10,8 +10,8 @@ use tetrakit::control::Control;
 use tetrakit::detect::Cells;
 use tetrakit::exact::{self, Domain, Edges, Proof};
 use tetrakit::geom::{
-    Point2, Point3, coplanar_triangles_overlap, orient2d, orient3d, point_in_closed_tetrahedron,
-    tetrahedra_overlap,
+    Hull3, Point2, Point3, coplanar_triangles_overlap, orient2d, orient3d,
+    point_in_closed_tetrahedron, tetrahedra_overlap,
 };
 use tetrakit::mesh::{certify_hull, edges_of, verify_triangulation};
 use tetrakit::polyhedra::generate::twisted_prism;
@@ -772,4 +772,94 @@ fn niches_with_an_empty_view_are_no() {
     }
     // With the centre, which sees both bases, every instance is tetrahedralizable.
     assert_eq!(yes_with_point, tried);
+}
+
+/// Thesis ch. 6, non-strictly convex polyhedra: the triangular prism with each rectangle
+/// split by a diagonal. Of the eight choices, the two whose diagonals run round the prism
+/// (each vertex the start of exactly one) have no tetrahedralization (proof checked by
+/// `rate`); the other six have one, certified.
+#[test]
+fn the_prism_with_diagonals_running_round_is_the_classic_no() {
+    use tetrakit::mesh::Polyhedron;
+    let (ring, h) = ([[0.0, 0.0], [4.0, 0.0], [0.0, 4.0]], 4.0);
+    let pts: Vec<Point3> = (ring.iter().map(|&[x, y]| [x, y, 0.0]))
+        .chain(ring.iter().map(|&[x, y]| [x, y, h]))
+        .collect();
+    let mut nos = 0;
+    for pattern in 0..8u32 {
+        let mut faces = vec![[0, 2, 1], [3, 4, 5]];
+        // Rectangle i: bottom i, i+1, top i+1, i; its diagonal from bottom i or from
+        // bottom i+1.
+        for i in 0..3u32 {
+            let (a, b) = (i, (i + 1) % 3);
+            let (ta, tb) = (a + 3, b + 3);
+            if pattern >> i & 1 == 0 {
+                faces.extend([[a, b, tb], [a, tb, ta]]);
+            } else {
+                faces.extend([[a, b, ta], [b, tb, ta]]);
+            }
+        }
+        let p = Polyhedron::new(pts.clone(), faces).unwrap();
+        let o = exact::tetrahedralize(
+            Domain::Polyhedron(&p),
+            exact::TetraOptions::default(),
+            &Control::new(),
+        )
+        .unwrap();
+        let cyclic = pattern == 0 || pattern == 7;
+        assert_eq!(
+            o.verdict == tetrakit::control::Verdict::No,
+            cyclic,
+            "pattern {pattern}"
+        );
+        if cyclic {
+            check_polyhedron_proof(&p, &format!("prism-{pattern}"));
+            nos += 1;
+        } else {
+            assert_eq!(o.tets.len(), 3);
+        }
+    }
+    assert_eq!(nos, 2);
+}
+
+/// `generate convex-triangulated`: a triangulated sphere on the hull's boundary points,
+/// each triangle in a facet of the hull; and the exact answer on it is YES certified or
+/// NO with a refutation `rate` accepts.
+#[test]
+fn convex_triangulated_polyhedra_are_decided_exactly() {
+    use tetrakit::polyhedra::generate::{ConvexShape, convex_triangulated};
+    let (mut yes, mut no) = (0, 0);
+    for seed in 0..40u64 {
+        for (shape, n, extra) in [
+            (ConvexShape::Prism, 3 + seed as usize % 4, seed as usize % 3),
+            (ConvexShape::Cube, 0, seed as usize % 5),
+            (ConvexShape::Lattice, 8 + seed as usize % 6, 0),
+        ] {
+            let p = convex_triangulated(shape, n, extra, seed).unwrap();
+            let hull = Hull3::new(&p.points);
+            assert_eq!(p.faces.len(), 2 * p.points.len() - 4, "{shape:?} {seed}");
+            for (i, f) in p.faces.iter().enumerate() {
+                let [a, b, c] = f.map(|v| v as usize);
+                assert!(
+                    hull.common_facet(a, b, c).is_some(),
+                    "{shape:?} {seed}: face {i}"
+                );
+            }
+            let o = exact::tetrahedralize(
+                Domain::Polyhedron(&p),
+                exact::TetraOptions::default(),
+                &Control::new(),
+            )
+            .unwrap();
+            if o.verdict == tetrakit::control::Verdict::No {
+                no += 1;
+                if no <= 10 {
+                    check_polyhedron_proof(&p, &format!("ct-{shape:?}-{seed}"));
+                }
+            } else {
+                yes += 1;
+            }
+        }
+    }
+    assert!(yes > 20 && no > 5, "{yes} YES, {no} NO");
 }

@@ -175,10 +175,8 @@ fn counts_equal_topcom() {
     for seed in 0..6 {
         for (name, pts) in families(seed) {
             let g = graph(&pts);
-            let distinct: HashSet<BTreeSet<[u32; 4]>> = g
-                .all
-                .iter()
-                .map(|t| t.iter().map(|q| sorted(*q)).collect())
+            let distinct: HashSet<BTreeSet<[u32; 4]>> = (0..g.tetrahedralizations)
+                .map(|i| set(&g.tetrahedralization(i)))
                 .collect();
             assert_eq!(distinct.len(), g.tetrahedralizations, "{name}: repeats");
             let Some((all, reached, flips)) = topcom(&pts) else {
@@ -237,6 +235,11 @@ fn lattice_sets_equal_topcom() {
 fn sorted(mut t: [u32; 4]) -> [u32; 4] {
     t.sort_unstable();
     t
+}
+
+/// A tetrahedralization as a set of tetrahedra, each with its corners ascending.
+fn set(t: &[[u32; 4]]) -> BTreeSet<[u32; 4]> {
+    t.iter().map(|q| sorted(*q)).collect()
 }
 
 /// The tetrahedralizations of small integer sets by brute force: the sets of empty
@@ -349,10 +352,8 @@ fn tetrahedralizations_are_exactly_the_brute_force_ones() {
                 continue;
             }
             let g = graph(&pts);
-            let mine: BTreeSet<BTreeSet<[u32; 4]>> = g
-                .all
-                .iter()
-                .map(|t| t.iter().map(|q| sorted(*q)).collect())
+            let mine: BTreeSet<BTreeSet<[u32; 4]>> = (0..g.tetrahedralizations)
+                .map(|i| set(&g.tetrahedralization(i)))
                 .collect();
             assert_eq!(mine, brute_force(&pts), "{name} (seed {seed}): {pts:?}");
             checked += 1;
@@ -414,13 +415,13 @@ fn flips_have_their_shape_and_go_both_ways() {
     for (name, pts) in families(3) {
         let g = graph(&pts);
         for (i, ns) in g.neighbours.iter().enumerate() {
-            let a: BTreeSet<[u32; 4]> = g.all[i].iter().map(|q| sorted(*q)).collect();
+            let a = set(&g.tetrahedralization(i));
             for &(j, kind) in ns {
                 assert!(
                     g.neighbours[j as usize].contains(&(i as u32, kind)),
                     "{name}"
                 );
-                let b: BTreeSet<[u32; 4]> = g.all[j as usize].iter().map(|q| sorted(*q)).collect();
+                let b = set(&g.tetrahedralization(j as usize));
                 let gone = a.difference(&b).count();
                 let new = b.difference(&a).count();
                 let corners: BTreeSet<u32> = a

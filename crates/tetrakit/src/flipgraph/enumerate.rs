@@ -26,10 +26,35 @@ pub enum Cut {
     TimeLimit,
 }
 
-/// The tetrahedralizations found (candidate ids, ascending), and whether the search
-/// ended early.
+/// Tetrahedralizations as candidate ids, ascending, one after another in one array.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub(super) struct Family {
+    members: Vec<u16>,
+    starts: Vec<u32>,
+}
+
+impl Family {
+    pub fn len(&self) -> usize {
+        self.starts.len()
+    }
+
+    pub fn get(&self, i: usize) -> &[u16] {
+        let end = self
+            .starts
+            .get(i + 1)
+            .map_or(self.members.len(), |&e| e as usize);
+        &self.members[self.starts[i] as usize..end]
+    }
+
+    fn push(&mut self, t: &[u16]) {
+        self.starts.push(self.members.len() as u32);
+        self.members.extend_from_slice(t);
+    }
+}
+
+/// The tetrahedralizations found, and whether the search ended early.
 pub(super) struct Found {
-    pub all: Vec<Box<[u16]>>,
+    pub all: Family,
     pub cut: Option<Cut>,
     /// Search states visited.
     pub states: u64,
@@ -43,7 +68,7 @@ struct Search<'a> {
     /// Per face: the side (0 or 1) a tetrahedron is asked for, or `NONE`.
     need: Vec<u8>,
     open: Vec<u32>,
-    found: Vec<Box<[u16]>>,
+    found: Family,
     limit: usize,
     states: u64,
     ctl: &'a Control,
@@ -61,7 +86,7 @@ pub(super) fn enumerate(c: &Candidates, start: &[u16], limit: usize, ctl: &Contr
         chosen: Vec::new(),
         need: vec![NONE; c.faces.len()],
         open: Vec::new(),
-        found: Vec::new(),
+        found: Family::default(),
         limit,
         states: 0,
         ctl,
@@ -95,7 +120,7 @@ impl Search<'_> {
         let Some(face) = face else {
             let mut t = self.chosen.clone();
             t.sort_unstable();
-            self.found.push(t.into_boxed_slice());
+            self.found.push(&t);
             if self.found.len() >= self.limit {
                 self.cut = Some(Cut::Limit);
             }

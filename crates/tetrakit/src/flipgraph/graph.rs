@@ -13,6 +13,7 @@
 //! from the other end.
 
 use super::candidates::Candidates;
+use super::enumerate::Family;
 use crate::control::Control;
 use crate::geom::{Point3, orient3d};
 use crate::partition::{find, singletons, union};
@@ -48,18 +49,14 @@ pub(super) type Adjacency = Vec<Vec<(u32, FlipKind)>>;
 pub(super) fn adjacency(
     pts: &[Point3],
     c: &Candidates,
-    all: &[Box<[u16]>],
+    all: &Family,
     ctl: &Control,
 ) -> Result<Adjacency, Halt> {
-    let index: HashMap<&[u16], u32> = all
-        .iter()
-        .enumerate()
-        .map(|(i, t)| (&t[..], i as u32))
-        .collect();
-    let out: Vec<Vec<(u32, FlipKind)>> = all
-        .par_iter()
-        .enumerate()
-        .map(|(i, t)| {
+    let index: HashMap<&[u16], u32> = (0..all.len()).map(|i| (all.get(i), i as u32)).collect();
+    let out: Vec<Vec<(u32, FlipKind)>> = (0..all.len())
+        .into_par_iter()
+        .map(|i| {
+            let t = all.get(i);
             ctl.check().map_err(|_| Halt::Stopped)?;
             flips(pts, c, t)
                 .into_iter()

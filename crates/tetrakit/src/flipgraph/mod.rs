@@ -214,20 +214,30 @@ pub struct FlipGraph {
     /// Two tetrahedralizations no flips join (a NO).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub witness: Option<Disconnected>,
-    /// Every tetrahedralization found, positively oriented, in the order found.
+    /// The empty tetrahedra, positively oriented.
     #[serde(skip)]
-    pub all: Vec<Vec<[u32; 4]>>,
-    /// Each one's flip neighbours (index into `all`, kind), ascending; empty when cut.
+    tets: Vec<[u32; 4]>,
+    /// Every tetrahedralization found, as indices into `tets`, in the order found.
+    #[serde(skip)]
+    found: enumerate::Family,
+    /// Each one's flip neighbours (its place, kind), ascending; empty when cut.
     #[serde(skip)]
     pub neighbours: Vec<Vec<(u32, FlipKind)>>,
 }
 
 impl FlipGraph {
+    /// The `i`-th tetrahedralization found (`i < tetrahedralizations`), positively
+    /// oriented.
+    pub fn tetrahedralization(&self, i: usize) -> Vec<[u32; 4]> {
+        let ids = self.found.get(i);
+        ids.iter().map(|&t| self.tets[t as usize]).collect()
+    }
+
     /// The same outcome with every vertex index plus `base` (a file's numbering);
-    /// tetrahedralizations keep their 0-based places in [`FlipGraph::all`].
+    /// tetrahedralizations keep their 0-based places.
     pub fn shifted(mut self, base: u32) -> FlipGraph {
         let shift = |t: &mut Vec<[u32; 4]>| t.iter_mut().for_each(|q| *q = q.map(|v| v + base));
-        self.all.iter_mut().for_each(shift);
+        shift(&mut self.tets);
         if let Some(g) = &mut self.graph {
             g.isolated.iter_mut().for_each(shift);
         }
@@ -257,22 +267,14 @@ pub fn flip_graph(
         .collect();
     ctl.stage("tetrahedralizations");
     let found = enumerate::enumerate(&c, &start, opts.limit.max(1), ctl);
-    let all: Vec<Vec<[u32; 4]>> = found
-        .all
-        .iter()
-        .map(|t| {
-            t.iter()
-                .map(|&x| oriented(points, c.tets[x as usize]))
-                .collect()
-        })
-        .collect();
-    certify(points, &all)?;
-    let sizes = all.iter().map(Vec::len);
+    let tets: Vec<[u32; 4]> = c.tets.iter().map(|&t| oriented(points, t)).collect();
+    certify(points, &tets, &found.all)?;
+    let sizes = (0..found.all.len()).map(|i| found.all.get(i).len());
     let mut g = FlipGraph {
         verdict: Verdict::Undecided,
         points: points.len(),
         candidates: c.tets.len(),
-        tetrahedralizations: all.len(),
+        tetrahedralizations: found.all.len(),
         connected: None,
         cut: found.cut,
         states: found.states,
@@ -281,15 +283,16 @@ pub fn flip_graph(
         certified: true,
         graph: None,
         witness: None,
-        all,
+        tets,
+        found: found.all,
         neighbours: Vec::new(),
     };
     if found.cut.is_some() {
         return Ok(g);
     }
     ctl.stage("flips");
-    let built = graph::adjacency(points, &c, &found.all, ctl)
-        .and_then(|adj| Ok((facts(&adj, &g.all, opts, ctl)?, adj)));
+    let built = graph::adjacency(points, &c, &g.found, ctl)
+        .and_then(|adj| Ok((facts(&adj, &g, opts, ctl)?, adj)));
     let (facts, adj) = match built {
         Ok(done) => done,
         Err(Halt::Stopped) => {
@@ -306,8 +309,8 @@ pub fn flip_graph(
         let other = labels.iter().position(|&l| l != 0).expect("two components");
         g.witness = Some(Disconnected {
             kind: "disconnected",
-            first: g.all[0].clone(),
-            second: g.all[other].clone(),
+            first: g.tetrahedralization(0),
+            second: g.tetrahedralization(other),
             sizes: [sizes[0], sizes[labels[other] as usize]],
         });
     }
@@ -345,10 +348,12 @@ fn oriented(points: &[Point3], mut t: [u32; 4]) -> [u32; 4] {
     t
 }
 
-fn certify(points: &[Point3], all: &[Vec<[u32; 4]>]) -> Result<(), FlipError> {
+/// Every tetrahedralization found through [`mesh::verify`] against the hull.
+fn certify(points: &[Point3], tets: &[[u32; 4]], all: &enumerate::Family) -> Result<(), FlipError> {
     let hull = Hull3::new(points);
-    all.par_iter().enumerate().try_for_each(|(index, t)| {
-        match mesh::verify(points, t, Some(&hull)).problems.first() {
+    (0..all.len()).into_par_iter().try_for_each(|index| {
+        let t: Vec<[u32; 4]> = all.get(index).iter().map(|&x| tets[x as usize]).collect();
+        match mesh::verify(points, &t, Some(&hull)).problems.first() {
             None => Ok(()),
             Some(p) => Err(FlipError::Uncertified {
                 index,
@@ -360,7 +365,7 @@ fn certify(points: &[Point3], all: &[Vec<[u32; 4]>]) -> Result<(), FlipError> {
 
 fn facts(
     adj: &graph::Adjacency,
-    all: &[Vec<[u32; 4]>],
+    g: &FlipGraph,
     opts: &FlipOptions,
     ctl: &Control,
 ) -> Result<GraphFacts, Halt> {
@@ -393,7 +398,7 @@ fn facts(
         max_flips: adj.iter().map(Vec::len).max().unwrap_or(0),
         isolated: (0..adj.len())
             .filter(|&i| adj[i].is_empty())
-            .map(|i| all[i].clone())
+            .map(|i| g.tetrahedralization(i))
             .collect(),
         diameter,
     })

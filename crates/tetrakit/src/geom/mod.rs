@@ -7,6 +7,7 @@
 //! fallback, or in the bucket grid, which only proposes candidates to exact tests.
 
 mod anchor;
+mod coplanar;
 mod expansion;
 mod grid;
 mod hull2;
@@ -17,6 +18,7 @@ mod proximity;
 mod radical;
 
 pub(crate) use anchor::anchor;
+pub use coplanar::triangulate_coplanar;
 pub use expansion::{Expansion, det3, edge_edge_side, orient3d_value, parallel, vector};
 pub(crate) use grid::Grid2;
 pub use hull2::Hull2;

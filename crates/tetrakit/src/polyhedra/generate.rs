@@ -1,6 +1,7 @@
 //! Generators of simple polyhedra for chapter 3: stacked polyhedra, bipyramids,
 //! (augmented) BP-polyhedra, two- and h-level BP-polyhedra, Schönhardt's polyhedron and
-//! the §3.5 counterexample (Figure 3.21).
+//! the §3.5 counterexample (Figure 3.21); and, for chapter 6, convex polyhedra with
+//! triangulated facets ([`convex_triangulated`]).
 //!
 //! Coordinates are `f64` and every result is checked exactly by [`Polyhedron::new`]: a
 //! construction step whose floating-point placement came out invalid is retried closer to
@@ -12,6 +13,7 @@
 //!   `s v1 … v(m-1) t` around `pq`'s midpoint, in the exterior wedge, every `v_j` joined
 //!   to `p` and `q`. Trimming it restores `pq`, which becomes the polar edge.
 
+pub use super::triangulated::{ConvexShape, convex_triangulated};
 use super::{Polyhedron, SurfaceGraph};
 use crate::geom::{Point3, orient3d};
 use crate::mesh::grid::TriangleGrid;

@@ -19,6 +19,7 @@ mod graph;
 pub mod hard;
 mod mintetra;
 mod outcome;
+mod triangulated;
 
 pub use crate::mesh::{Polyhedron, SurfaceError, certify_polyhedron};
 pub use bpnet::{BpNet, are_disjoint, bp_nets, is_proper, proper_nets_disjoint, strip_stacked};

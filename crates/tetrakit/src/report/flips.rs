@@ -99,9 +99,12 @@ pub fn flip_graph_json(g: &FlipGraph, points: &[Point3]) -> Value {
                 .map(move |&(j, k)| json!([i, j, name(k)]))
         })
         .collect();
+    let all: Vec<Vec<[u32; 4]>> = (0..g.tetrahedralizations)
+        .map(|i| g.tetrahedralization(i))
+        .collect();
     json!({
         "points": points,
-        "tetrahedralizations": g.all,
+        "tetrahedralizations": all,
         "flips": flips,
     })
 }

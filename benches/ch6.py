@@ -1,0 +1,141 @@
+#!/usr/bin/env python3
+"""Reproduces the chapter 6 part of BENCHMARKS.md.
+
+  python3 benches/ch6.py flips         the flip graph against TOPCOM, side by side, and the
+                                       search for isolated tetrahedralizations: for each
+                                       family, n = 6, 7, ... until a set takes over 60 s
+  python3 benches/ch6.py triangulated  convex polyhedra with triangulated facets: how
+                                       often NO happens, by family and size; the smallest
+                                       NOs; which witnesses the NOs have
+
+Needs `cargo build --release` and, for `flips`, TOPCOM (Debian `topcom`). Environment:
+SEEDS (sets per family and size, default 5 for flips and 200 for triangulated), LIMIT
+(seconds per set, default 60), FAMILIES (space separated).
+"""
+
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from fractions import Fraction
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+TK = ROOT / "target" / "release" / "tetrakit"
+WORK = Path(tempfile.mkdtemp(prefix="tetrakit-ch6-"))
+
+
+def tk(*args, code=(0, 1, 3)):
+    out = subprocess.run([str(TK), *map(str, args)], capture_output=True, text=True)
+    if out.returncode not in code:
+        raise SystemExit(f"tetrakit {' '.join(map(str, args))}: exit {out.returncode}: {out.stderr}")
+    return out
+
+
+def topcom(points, prog, limit):
+    """TOPCOM's count on the same points (exact rationals), and its seconds; None past
+    the limit."""
+    rows = ",".join("[" + ",".join(str(Fraction(x)) for x in p) + ",1]" for p in points)
+    start = time.perf_counter()
+    try:
+        out = subprocess.run([prog], input=f"[{rows}]\n", capture_output=True, text=True,
+                             timeout=limit)
+    except subprocess.TimeoutExpired:
+        return None, limit
+    return int(out.stdout.strip().splitlines()[-1]), time.perf_counter() - start
+
+
+def read_points(path):
+    return [[float(x) for x in line.split()] for line in path.read_text().split("\n") if line.strip()]
+
+
+def flips():
+    seeds = int(os.environ.get("SEEDS", 5))
+    limit = float(os.environ.get("LIMIT", 60))
+    families = os.environ.get("FAMILIES", "uniform perturbed-grid cospherical lattice convex").split()
+    print(f"# flips: {seeds} sets per family and size, {limit:.0f} s per set")
+    print("| family | n | tetrahedralizations (median) | components | min flips | isolated "
+          "| tetrakit s | TOPCOM all s | TOPCOM/tetrakit | TOPCOM flips s |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    for fam in families:
+        n = 6
+        while True:
+            counts, comps, mins, iso, ours, theirs, walks = [], set(), [], 0, [], [], []
+            over = False
+            for seed in range(1, seeds + 1):
+                f = WORK / f"{fam}-{n}-{seed}.xyz"
+                tk("generate", "points3d", "--dist", fam, "--n", n, "--seed", seed, "-o", f, code=(0,))
+                start = time.perf_counter()
+                out = tk("flips", f, "--json", "--time-limit", limit, code=(0, 1, 2, 3))
+                took = time.perf_counter() - start
+                if out.returncode == 2:  # a flat set (cospherical, small n)
+                    continue
+                g = json.loads(out.stdout)
+                if g["verdict"] == "undecided":
+                    over = True
+                    break
+                ours.append(took)
+                counts.append(g["tetrahedralizations"])
+                comps.add(g["components"])
+                mins.append(g["min_flips"])
+                iso += len(g["isolated"])
+                pts = read_points(f)
+                total, t_all = topcom(pts, "topcom-points2nallfinetriangs", 4 * limit)
+                reached, t_walk = topcom(pts, "topcom-points2nfinetriangs", 4 * limit)
+                if total is not None and total != g["tetrahedralizations"]:
+                    print(f"MISMATCH {f}: TOPCOM {total}, tetrakit {g['tetrahedralizations']}")
+                if reached is not None and reached != g["tetrahedralizations"]:
+                    print(f"DISCONNECTED? {f}: TOPCOM's flips reach {reached} of {total}")
+                theirs.append(t_all)
+                walks.append(t_walk)
+            if over or not ours:
+                print(f"| {fam} | {n} | over {limit:.0f} s | | | | | | | |")
+                break
+            med = statistics.median
+            print(f"| {fam} | {n} | {int(med(counts))} | {sorted(comps)} | {min(mins)} | {iso} "
+                  f"| {med(ours):.3f} | {med(theirs):.3f} | {med(theirs) / med(ours):.1f} "
+                  f"| {med(walks):.3f} |", flush=True)
+            n += 1
+
+
+def triangulated():
+    seeds = int(os.environ.get("SEEDS", 200))
+    cases = [("prism", n, k) for n in (3, 4, 5, 6, 8, 12) for k in (0, 2)]
+    cases += [("cube", 0, k) for k in (0, 2, 4, 8, 16)]
+    cases += [("lattice", n, 0) for n in (8, 12, 20, 40)]
+    print(f"# triangulated: {seeds} polyhedra per row")
+    print("| shape | n | facet points | vertices (median) | NO | witnesses of the NOs | median s |")
+    print("|---|---|---|---|---|---|---|")
+    smallest = {}
+    for shape, n, k in cases:
+        nos, kinds, sizes, secs = 0, {}, [], []
+        for seed in range(1, seeds + 1):
+            f = WORK / f"{shape}-{n}-{k}-{seed}.off"
+            gen = tk("generate", "convex-triangulated", "--shape", shape, "--n", max(n, 3),
+                     "--facet-points", k, "--seed", seed, "-o", f, code=(0, 2))
+            if gen.returncode == 2:
+                continue
+            start = time.perf_counter()
+            o = json.loads(tk("tetrahedralize", f, "--json", "--time-limit", 60).stdout)
+            secs.append(time.perf_counter() - start)
+            sizes.append(o["vertices"])
+            if o["verdict"] == "no":
+                nos += 1
+                kind = o["witness"]["kind"]
+                kinds[kind] = kinds.get(kind, 0) + 1
+                best = smallest.get(kind)
+                if best is None or o["vertices"] < best[0]:
+                    smallest[kind] = (o["vertices"], f"{shape} n={n} facet-points={k} seed={seed}")
+        if sizes:
+            w = ", ".join(f"{k}: {v}" for k, v in sorted(kinds.items())) or "-"
+            print(f"| {shape} | {n if shape != 'cube' else '-'} | {k} | {int(statistics.median(sizes))} "
+                  f"| {nos} / {len(sizes)} | {w} | {statistics.median(secs):.3f} |", flush=True)
+    for kind, (v, where) in sorted(smallest.items()):
+        print(f"smallest NO with a {kind} witness: {v} vertices ({where})")
+
+
+if __name__ == "__main__":
+    {"flips": flips, "triangulated": triangulated}[sys.argv[1] if len(sys.argv) > 1 else "flips"]()
