@@ -578,4 +578,16 @@ fn flip_graph_section() {
             Err(e) => out!("  {name}: {e}"),
         }
     }
+    let sphere = tetrakit::generate::points3d(tetrakit::generate::Distribution3::Convex, 60, 2);
+    let start = Instant::now();
+    let opts = tetrakit::dualpath::PathOptions::default();
+    match tetrakit::dualpath::hamiltonian(&sphere, &opts, &Control::new()) {
+        Ok(h) => out!(
+            "  60 points on a sphere (`tetrahedralize --hamiltonian`): {} tetrahedra in a Hamiltonian dual path, certified ({} for an ordinary cone) [{:.0} ms]",
+            h.tetrahedra,
+            h.ordinary_tetrahedra.unwrap_or(0),
+            start.elapsed().as_secs_f64() * 1e3
+        ),
+        Err(e) => out!("  60 points on a sphere: {e}"),
+    }
 }

@@ -172,6 +172,12 @@ struct TetrahedralizeArgs {
     /// With --minimal, also decide whether the minimum one is unique.
     #[arg(long)]
     unique: bool,
+    /// For a convex polytope's points: a tetrahedralization whose tetrahedra can be
+    /// ordered so that each shares a triangle with the next (a Hamiltonian path of the
+    /// dual graph, thesis ch. 6); --output writes them in that order. Exit 3 when none is
+    /// found.
+    #[arg(long, conflicts_with_all = ["minimal", "unique", "proof"])]
+    hamiltonian: bool,
     /// Give up after this many seconds (exit 3 with the best bounds).
     #[arg(long, value_parser = seconds)]
     time_limit: Option<Duration>,
@@ -179,7 +185,7 @@ struct TetrahedralizeArgs {
     #[arg(long)]
     json: bool,
     /// Write the tetrahedra: .ele (with .node), .vtk, .vtu or .json.
-    #[arg(long)]
+    #[arg(long, short)]
     output: Option<PathBuf>,
     /// On NO, write the SAT formula to P.cnf and a DRAT refutation of it to P.drat.
     #[arg(long, value_name = "P.drat")]
@@ -844,6 +850,9 @@ fn run(cmd: Cmd) -> CmdResult {
         ),
         Cmd::Check(a) => run::check(&a),
         Cmd::Mintetra(a) => poly::mintetra(&a.input, a.json, a.output.as_deref(), a.confirm),
+        Cmd::Tetrahedralize(a) if a.hamiltonian => {
+            poly::hamiltonian(&a.input, a.time_limit, a.json, a.output.as_deref())
+        }
         Cmd::Tetrahedralize(a) => poly::tetrahedralize(poly::TetraArgs {
             input: &a.input,
             minimal: a.minimal,

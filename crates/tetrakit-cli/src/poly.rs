@@ -111,6 +111,54 @@ pub fn tetrahedralize(a: TetraArgs) -> CmdResult {
     Ok(o.verdict)
 }
 
+/// `tetrahedralize --hamiltonian`: a convex polytope's points, tetrahedralized with a
+/// Hamiltonian dual path.
+pub fn hamiltonian(
+    path: &Path,
+    time_limit: Option<Duration>,
+    as_json: bool,
+    output: Option<&Path>,
+) -> CmdResult {
+    use tetrakit::dualpath::{PathError, PathOptions};
+    let start = Instant::now();
+    let input = io::read_input(path)?;
+    if !input.faces.is_empty() || input.dim != 3 {
+        return Err(CliError::at(
+            path,
+            "--hamiltonian takes a convex polytope's points in space (the surface is their hull; faces are not read)",
+        ));
+    }
+    let run = Run::new(time_limit, 0, 1);
+    let o = tetrakit::dualpath::hamiltonian(&input.points, &PathOptions::default(), &run.ctl)
+        .map_err(|e| match e {
+            PathError::Uncertified(_) => CliError::internal(e),
+            PathError::Inside { index } => {
+                let line = input.point_lines.get(index as usize).copied().unwrap_or(0);
+                let what = tetrakit::numbering::renumber_text(&e.to_string(), input.index_base);
+                match line {
+                    0 => CliError::at(path, what),
+                    l => CliError::new(format!("{}:{l}: {what}", input.point_file.display())),
+                }
+            }
+            _ => CliError::at(
+                path,
+                tetrakit::numbering::renumber_text(&e.to_string(), input.index_base),
+            ),
+        })?;
+    drop(run);
+    if let (Some(out), Verdict::Yes) = (output, o.verdict) {
+        io::write_mesh(out, &input.points, &o.tets, input.index_base).written(out)?;
+    }
+    let o = o.shifted(input.index_base);
+    let seconds = start.elapsed().as_secs_f64();
+    if as_json {
+        out!("{}", report::json(&o, [("seconds", seconds.into())]));
+    } else {
+        out!("{}", report::hamiltonian_text(&o, seconds).trim_end());
+    }
+    Ok(o.verdict)
+}
+
 /// The polyhedron generators.
 pub enum PolyGen {
     Stacked {

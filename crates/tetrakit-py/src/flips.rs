@@ -1,4 +1,5 @@
-//! `flips` (thesis ch. 6): the flip graph of a point set's tetrahedralizations.
+//! Chapter 6: `flips` (the flip graph of a point set's tetrahedralizations) and
+//! `hamiltonian` (a tetrahedralization with a Hamiltonian dual path).
 
 use crate::convert::{self, Json, Rows, array, value_error};
 use numpy::{PyArray2, PyReadonlyArray2};
@@ -64,4 +65,36 @@ pub fn flips<'py>(
         array(py, &pairs),
         kinds,
     ))
+}
+
+/// `hamiltonian(points, time_limit)`: a tetrahedralization of a convex polytope's points
+/// with its tetrahedra in a Hamiltonian dual path (JSON, and the tetrahedra in path
+/// order).
+#[pyfunction]
+#[pyo3(signature = (points, time_limit=None))]
+pub fn hamiltonian<'py>(
+    py: Python<'py>,
+    points: PyReadonlyArray2<'py, f64>,
+    time_limit: Option<f64>,
+) -> PyResult<(Json, Bound<'py, PyArray2<i64>>)> {
+    use tetrakit::dualpath::{PathError, PathOptions};
+    let ctl = convert::control(time_limit)?;
+    let (pts, dim) = convert::points(&points, "points")?;
+    if dim != 3 {
+        return Err(value_error(
+            "the points are planar: a polytope needs 3D points",
+        ));
+    }
+    let pts = convert::input(pts, dim, &Rows::default(), false)?.points;
+    let mut o = convert::run(py, &ctl, || {
+        tetrakit::dualpath::hamiltonian(&pts, &PathOptions::default(), &ctl)
+    })?
+    .map_err(|e| match e {
+        PathError::Uncertified(_) => {
+            PyRuntimeError::new_err(format!("{e} (a bug: please report it)"))
+        }
+        _ => value_error(e),
+    })?;
+    let tets = std::mem::take(&mut o.tets);
+    Ok((report::json(&o, []).to_string(), array(py, &tets)))
 }

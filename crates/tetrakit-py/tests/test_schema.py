@@ -376,3 +376,16 @@ def test_flips_json_follows_the_schema(tmp_path, case):
     jsonschema.validate(cli, s)
     same_fields(cli, result, s, {"seconds", "states", "all", "flip_kinds", "tetrahedralizations"
                                  if case == "stopped" else "seconds"})
+
+
+@pytest.mark.parametrize("case", ["grid", "cube with facet points"])
+def test_hamiltonian_json_follows_the_schema(tmp_path, case):
+    s = schema("hamiltonian")
+    pts = GRID12 if case == "grid" else np.vstack([CUBE * 2, [[1, 1, 0], [1, 1, 2]]])
+    result = tetrakit.hamiltonian(pts)
+    jsonschema.validate({**fields(result, s), "tets": result.tets.tolist()}, s)
+    assert result.verdict == "yes"
+    cli = cli_on(tmp_path, "tetrahedralize", {"points": pts}, "--hamiltonian", code=(0, 3))
+    jsonschema.validate(cli, s)
+    same_fields(cli, result, s, {"seconds", "tets"})
+    assert cli["tets"] == result.tets.tolist()

@@ -28,6 +28,7 @@ pub mod constrain;
 pub mod control;
 pub mod detect;
 pub mod distributed;
+pub mod dualpath;
 pub mod exact;
 pub mod flip;
 pub mod flipgraph;

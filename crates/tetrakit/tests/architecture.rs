@@ -23,6 +23,7 @@ fn allowed(top: &str) -> Vec<&'static str> {
         "exact",
         "flip",
         "flipgraph",
+        "dualpath",
         "shell",
         "planar",
         "generate",

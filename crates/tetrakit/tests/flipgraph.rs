@@ -6,7 +6,9 @@ use std::io::Write;
 use std::process::{Command, Stdio};
 use tetrakit::control::{Control, Verdict};
 use tetrakit::flipgraph::{FlipError, FlipGraph, FlipKind, FlipOptions, flip_graph};
-use tetrakit::geom::{Hull3, Point3, orient3d, point_in_closed_tetrahedron, tetrahedra_overlap};
+use tetrakit::geom::{
+    Hull3, Point3, SetDefect, orient3d, point_in_closed_tetrahedron, tetrahedra_overlap,
+};
 use tetrakit::rng::Rng;
 
 fn graph(pts: &[Point3]) -> FlipGraph {
@@ -217,7 +219,7 @@ fn lattice_sets_equal_topcom() {
         }
         let g = match flip_graph(&pts, &FlipOptions::default(), &Control::new()) {
             Ok(g) => g,
-            Err(FlipError::Flat | FlipError::TooFewPoints(_)) => continue,
+            Err(FlipError::Set(_)) => continue,
             Err(e) => panic!("{pts:?}: {e}"),
         };
         let Some((all, reached, flips)) = topcom(&pts) else {
@@ -469,10 +471,13 @@ fn degenerate_inputs_are_refused() {
         [0.0, 1.0, 0.0],
         [1.0, 1.0, 0.0],
     ];
-    assert_eq!(flip_graph(&flat, &o, &ctl), Err(FlipError::Flat));
+    assert_eq!(
+        flip_graph(&flat, &o, &ctl),
+        Err(FlipError::Set(SetDefect::Flat))
+    );
     assert_eq!(
         flip_graph(&flat[..3], &o, &ctl),
-        Err(FlipError::TooFewPoints(3))
+        Err(FlipError::Set(SetDefect::TooFew(3)))
     );
     let dup = [
         [0.0, 0.0, 0.0],
@@ -483,9 +488,9 @@ fn degenerate_inputs_are_refused() {
     ];
     assert_eq!(
         flip_graph(&dup, &o, &ctl),
-        Err(FlipError::Duplicate {
+        Err(FlipError::Set(SetDefect::Duplicate {
             first: 1,
             second: 4
-        })
+        }))
     );
 }

@@ -40,6 +40,7 @@ __all__ = [
     "tetrahedralize",
     "shell",
     "flips",
+    "hamiltonian",
     "skeleton",
     "mwt",
     "keil",
@@ -52,6 +53,7 @@ __all__ = [
     "TetrahedralizeResult",
     "ShellResult",
     "FlipsResult",
+    "HamiltonianResult",
     "SkeletonResult",
     "MwtResult",
     "KeilResult",
@@ -466,6 +468,42 @@ def flips(points, limit: int = 1_000_000, time_limit: Optional[float] = None) ->
     """
     text, all_, pairs, kinds = _core.flips(_points(points), limit, time_limit)
     return _make(FlipsResult, text, all=all_, flip_pairs=pairs, flip_kinds=kinds)
+
+
+@dataclass
+class HamiltonianResult:
+    """The answer of :func:`hamiltonian` (``tetrakit tetrahedralize --hamiltonian --json``):
+    ``tets`` in path order, each sharing a triangle with the next."""
+
+    verdict: str
+    vertices: int
+    tetrahedra: int
+    ordinary_tetrahedra: Optional[int]
+    apex: Optional[int]
+    apexes: int
+    apexes_tried: int
+    steps: int
+    certified: bool
+    tets: np.ndarray = field(repr=False)
+
+
+def hamiltonian(points, time_limit: Optional[float] = None) -> HamiltonianResult:
+    """A tetrahedralization of the convex polytope whose boundary points are ``points``
+    (every point a vertex), its tetrahedra ordered so that each shares a triangle with the
+    next: a Hamiltonian path of the dual graph (thesis ch. 6), certified.
+
+    ``verdict`` is ``"yes"``, or ``"undecided"`` when the cone method found no path
+    within its search budget or ``time_limit`` (never ``"no"``: whether every convex
+    polytope has one is open).
+
+    >>> import numpy as np, tetrakit
+    >>> cube = np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)], dtype=float)
+    >>> h = tetrakit.hamiltonian(cube)
+    >>> (h.verdict, len(h.tets), all(len(set(a) & set(b)) == 3 for a, b in zip(h.tets, h.tets[1:])))
+    ('yes', 6, True)
+    """
+    text, tets = _core.hamiltonian(_points(points), time_limit)
+    return _make(HamiltonianResult, text, tets=tets)
 
 
 @dataclass

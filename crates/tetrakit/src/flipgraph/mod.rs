@@ -46,7 +46,7 @@ pub use enumerate::Cut;
 pub use graph::FlipKind;
 
 use crate::control::{Control, Verdict};
-use crate::geom::{Hull3, Point3, affine_dimension, point_key};
+use crate::geom::{Hull3, Point3, SetDefect, solid_set};
 use crate::mesh;
 use graph::Halt;
 use rayon::prelude::*;
@@ -75,17 +75,8 @@ impl Default for FlipOptions {
 /// Why [`flip_graph`] could not run.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum FlipError {
-    /// Fewer than four points.
-    TooFewPoints(usize),
-    /// Two points at the same coordinates (no tetrahedralization uses both).
-    Duplicate {
-        /// The first point.
-        first: u32,
-        /// The later copy.
-        second: u32,
-    },
-    /// Every point on one plane.
-    Flat,
+    /// Too few points, two equal, or all coplanar.
+    Set(SetDefect),
     /// More empty tetrahedra than [`MAX_CANDIDATES`].
     TooManyCandidates(usize),
     /// No anchor point could be placed (not expected).
@@ -108,16 +99,7 @@ pub enum FlipError {
 impl fmt::Display for FlipError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            FlipError::TooFewPoints(n) => {
-                write!(f, "{n} points: a tetrahedralization needs at least 4")
-            }
-            FlipError::Duplicate { first, second } => {
-                write!(
-                    f,
-                    "points #{first} and #{second} coincide: no tetrahedralization uses both"
-                )
-            }
-            FlipError::Flat => write!(f, "the points are coplanar: there is no tetrahedralization"),
+            FlipError::Set(e) => e.fmt(f),
             FlipError::TooManyCandidates(k) => write!(
                 f,
                 "{k} empty tetrahedra, more than the {MAX_CANDIDATES} the enumeration takes: use fewer points"
@@ -256,7 +238,7 @@ pub fn flip_graph(
     opts: &FlipOptions,
     ctl: &Control,
 ) -> Result<FlipGraph, FlipError> {
-    admissible(points)?;
+    solid_set(points).map_err(FlipError::Set)?;
     ctl.stage("empty tetrahedra");
     let c = candidates::candidates(points)?;
     let triangles: Vec<[u32; 3]> = c.faces.iter().map(|f| f.v).collect();
@@ -316,27 +298,6 @@ pub fn flip_graph(
     }
     g.graph = Some(facts);
     Ok(g)
-}
-
-/// At least four distinct points, not all coplanar.
-fn admissible(points: &[Point3]) -> Result<(), FlipError> {
-    if points.len() < 4 {
-        return Err(FlipError::TooFewPoints(points.len()));
-    }
-    let mut seen = std::collections::HashMap::new();
-    for (i, p) in points.iter().enumerate() {
-        if let Some(&first) = seen.get(&point_key(p)) {
-            return Err(FlipError::Duplicate {
-                first,
-                second: i as u32,
-            });
-        }
-        seen.insert(point_key(p), i as u32);
-    }
-    if affine_dimension(points) < 3 {
-        return Err(FlipError::Flat);
-    }
-    Ok(())
 }
 
 /// `t`'s corners in positive orientation.

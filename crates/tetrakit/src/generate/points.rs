@@ -22,6 +22,13 @@ pub enum Distribution3 {
     Cospherical,
     /// Random points near the unit sphere, each a vertex of their hull.
     Convex,
+    /// Two aligned rings of integer points on a cylinder of radius 2^20 (a prism: two
+    /// polygon facets and rectangles), `n` odd: one more on the top ring.
+    Cylinder,
+    /// The vertices of the hull of the lattice points in a spherical shell
+    /// `r² ≤ x² + y² + z² < (r + 1)²` (`n` of them at random, `r` the smallest with
+    /// enough): a convex polytope with many coplanar facets, every point a vertex.
+    LatticeHull,
 }
 
 /// `n` distinct points of `dist` (at least 4, so that a tetrahedralization can exist).
@@ -58,6 +65,42 @@ pub fn points3d(dist: Distribution3, n: usize, seed: u64) -> Vec<Point3> {
             rng.shuffle(&mut sphere);
             sphere.truncate(n);
             sphere
+        }
+        Distribution3::Cylinder => {
+            let (bottom, top) = (n / 2, n - n / 2);
+            let turn = rng.unit();
+            let ring = |k: usize, z: f64| {
+                (0..k).map(move |i| {
+                    let a = std::f64::consts::TAU * (i as f64 + turn) / k as f64;
+                    [
+                        (a.cos() * 1048576.0).round(),
+                        (a.sin() * 1048576.0).round(),
+                        z,
+                    ]
+                })
+            };
+            ring(bottom, 0.0).chain(ring(top, 1048576.0)).collect()
+        }
+        Distribution3::LatticeHull => {
+            let mut r = 2i64;
+            loop {
+                let shell: Vec<Point3> = (r * r..(r + 1) * (r + 1))
+                    .flat_map(super::cospherical_points)
+                    .collect();
+                let hull = Hull3::new(&shell);
+                let mut corners: Vec<Point3> = (0..shell.len())
+                    .filter(|&i| hull.facets_of(i).len() >= 3)
+                    .map(|i| shell[i])
+                    .collect();
+                if corners.len() >= n {
+                    rng.shuffle(&mut corners);
+                    corners.truncate(n);
+                    if crate::geom::affine_dimension(&corners) == 3 {
+                        return corners;
+                    }
+                }
+                r += 1;
+            }
         }
         Distribution3::Convex => {
             let mut pts = Vec::with_capacity(n);

@@ -51,3 +51,62 @@ pub use radical::{DoubleDouble, Interval, compare_root_sums};
 pub fn point_key(p: &Point3) -> [u64; 3] {
     p.map(|x| (x + 0.0).to_bits())
 }
+
+/// Why a point set has no tetrahedralization that uses every point.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SetDefect {
+    /// Fewer than four points.
+    TooFew(usize),
+    /// Two points at the same coordinates (no tetrahedralization uses both).
+    Duplicate {
+        /// The first point.
+        first: u32,
+        /// The later copy.
+        second: u32,
+    },
+    /// Every point on one plane.
+    Flat,
+}
+
+impl std::fmt::Display for SetDefect {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            SetDefect::TooFew(n) => write!(f, "{n} points: a tetrahedralization needs at least 4"),
+            SetDefect::Duplicate { first, second } => {
+                write!(
+                    f,
+                    "points #{first} and #{second} coincide: no tetrahedralization uses both"
+                )
+            }
+            SetDefect::Flat => write!(f, "the points are coplanar: there is no tetrahedralization"),
+        }
+    }
+}
+
+/// At least four distinct points, not all on one plane: the sets a tetrahedralization
+/// can use every point of.
+///
+/// ```
+/// use tetrakit::geom::{SetDefect, solid_set};
+/// let flat = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 1.0, 0.0]];
+/// assert_eq!(solid_set(&flat), Err(SetDefect::Flat));
+/// ```
+pub fn solid_set(points: &[Point3]) -> Result<(), SetDefect> {
+    if points.len() < 4 {
+        return Err(SetDefect::TooFew(points.len()));
+    }
+    let mut seen = std::collections::HashMap::new();
+    for (i, p) in points.iter().enumerate() {
+        if let Some(&first) = seen.get(&point_key(p)) {
+            return Err(SetDefect::Duplicate {
+                first,
+                second: i as u32,
+            });
+        }
+        seen.insert(point_key(p), i as u32);
+    }
+    if affine_dimension(points) < 3 {
+        return Err(SetDefect::Flat);
+    }
+    Ok(())
+}

@@ -261,6 +261,25 @@ pub(crate) fn boundary_faces(tets: &[[u32; 4]]) -> Vec<[u32; 3]> {
     boundary
 }
 
+/// Checks that each tetrahedron shares a triangle (three corners) with the next: with
+/// `tets` a tetrahedralization, that their order is a Hamiltonian path of its dual graph.
+/// The error is the first `i` whose tetrahedra `i` and `i + 1` do not.
+///
+/// ```
+/// use tetrakit::mesh::verify_dual_path;
+/// assert_eq!(verify_dual_path(&[[0, 1, 2, 3], [1, 2, 3, 4], [2, 3, 4, 5]]), Ok(()));
+/// assert_eq!(verify_dual_path(&[[0, 1, 2, 3], [1, 2, 3, 4], [0, 1, 5, 6]]), Err(1));
+/// ```
+pub fn verify_dual_path(tets: &[[u32; 4]]) -> Result<(), usize> {
+    match tets
+        .windows(2)
+        .position(|w| w[1].iter().filter(|v| w[0].contains(v)).count() != 3)
+    {
+        Some(i) => Err(i),
+        None => Ok(()),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

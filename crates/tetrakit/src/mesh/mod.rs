@@ -17,7 +17,9 @@ mod verify_planar;
 
 pub use crate::control::Verdict;
 pub(crate) use certify::boundary_faces;
-pub use certify::{certify_boundary, certify_hull, certify_polyhedron, certify_shell};
+pub use certify::{
+    certify_boundary, certify_hull, certify_polyhedron, certify_shell, verify_dual_path,
+};
 pub(crate) use check::outcome;
 pub use check::{CheckOptions, CheckOutcome, check};
 pub(crate) use embed::{boundary_components, boundary_self_intersections, nested_problem};

@@ -24,7 +24,7 @@ pub use planar::{
     check_random_json, check_random_text, keil_json, keil_text, mwt_json, mwt_text, skeleton_json,
     skeleton_text,
 };
-pub use poly::{ProofFiles, mintetra_text, tetrahedralize_text};
+pub use poly::{ProofFiles, hamiltonian_text, mintetra_text, tetrahedralize_text};
 pub use reduce::{hull_gap_text, quasi_prism_text, reduction_text};
 pub use shell::shell_text;
 

@@ -2,6 +2,7 @@
 //! a DRAT refutation, shared by every command that writes one.
 
 use crate::control::Verdict;
+use crate::dualpath::HamiltonianOutcome;
 use crate::exact::{TetraOutcome, WitnessKind};
 use crate::polyhedra::{Minimality, MintetraOutcome};
 use serde::Serialize;
@@ -186,5 +187,44 @@ pub fn tetrahedralize_text(o: &TetraOutcome, seconds: f64) -> String {
         "  {} candidate tetrahedra, {} SAT calls, {seconds:.3} s",
         o.candidates, o.sat_calls
     );
+    s
+}
+
+/// The lines a person reads for `tetrahedralize --hamiltonian`, found in `seconds`.
+///
+/// ```
+/// use tetrakit::control::Control;
+/// use tetrakit::dualpath::{PathOptions, hamiltonian};
+/// let cube: Vec<[f64; 3]> = (0..8).map(|i| [(i & 1) as f64, (i >> 1 & 1) as f64, (i >> 2) as f64]).collect();
+/// let o = hamiltonian(&cube, &PathOptions::default(), &Control::new()).unwrap();
+/// let text = tetrakit::report::hamiltonian_text(&o, 0.0);
+/// assert!(text.starts_with("YES: 6 tetrahedra in a Hamiltonian dual path"));
+/// ```
+pub fn hamiltonian_text(o: &HamiltonianOutcome, seconds: f64) -> String {
+    let mut s = String::new();
+    let ordinary = o
+        .ordinary_tetrahedra
+        .map_or("no apex is eligible".to_string(), |k| {
+            format!("an ordinary cone has {k}")
+        });
+    let _ = match (o.verdict, o.apex) {
+        (Verdict::Yes, Some(v)) => writeln!(
+            s,
+            "YES: {} tetrahedra in a Hamiltonian dual path (each shares a triangle with the next), a cone from vertex {v}; {ordinary}",
+            o.tetrahedra
+        ),
+        _ => writeln!(
+            s,
+            "UNDECIDED: no Hamiltonian dual path found by the cone method ({} of {} eligible apexes tried, {} search steps); {ordinary}",
+            o.apexes_tried, o.apexes, o.steps
+        ),
+    };
+    if o.certified {
+        let _ = writeln!(
+            s,
+            "  certified: the hull tetrahedralized, every point a vertex; the order checked"
+        );
+    }
+    let _ = writeln!(s, "  {} vertices, {seconds:.3} s", o.vertices);
     s
 }

@@ -1,5 +1,5 @@
-//! `tetrakit flips`: exit codes, the JSON fields, the graph file, the file's numbering and
-//! one clear line for every bad input.
+//! The chapter 6 commands (`flips`, `tetrahedralize --hamiltonian`): exit codes, the JSON
+//! fields, the files written, the file's numbering and one clear line for every bad input.
 
 use std::path::PathBuf;
 use std::process::{Command, Output};
@@ -135,4 +135,51 @@ fn bad_points_are_named() {
         assert_eq!(err.trim().lines().count(), 1, "{name}: {err}");
         assert!(err.contains(expected), "{name}: {err}");
     }
+}
+
+/// `tetrahedralize --hamiltonian`: the tetrahedra written in path order, each sharing a
+/// triangle with the next; a point inside the hull is named at its line.
+#[test]
+fn a_hamiltonian_path_is_written_in_order() {
+    let d = dir("hamiltonian");
+    let (pts, out) = (d.join("cube.xyz"), d.join("path.json"));
+    std::fs::write(&pts, CUBE).unwrap();
+    let o = run(&[
+        "tetrahedralize",
+        pts.to_str().unwrap(),
+        "--hamiltonian",
+        "--json",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0));
+    let v = json(&o);
+    assert_eq!(
+        (v["verdict"].as_str(), v["tetrahedra"].as_u64()),
+        (Some("yes"), Some(6))
+    );
+    let written: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
+    let tets: Vec<Vec<u64>> = serde_json::from_value(written["tets"].clone()).unwrap();
+    assert_eq!(tets.len(), 6);
+    for w in tets.windows(2) {
+        assert_eq!(w[1].iter().filter(|x| w[0].contains(x)).count(), 3);
+    }
+    assert_eq!(serde_json::to_value(&tets).unwrap(), v["tets"]);
+    let inside = d.join("inside.xyz");
+    std::fs::write(&inside, format!("{CUBE}0.5 0.5 0.5\n")).unwrap();
+    let o = run(&["tetrahedralize", inside.to_str().unwrap(), "--hamiltonian"]);
+    let err = String::from_utf8(o.stderr).unwrap();
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("inside.xyz:9: point #8 lies inside the hull"),
+        "{err}"
+    );
+    let o = run(&[
+        "tetrahedralize",
+        pts.to_str().unwrap(),
+        "--hamiltonian",
+        "--minimal",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
 }

@@ -1,0 +1,92 @@
+//! Hamiltonian dual paths (thesis ch. 6): on random spheres, cylinders and lattice
+//! polytopes the cone method finds one, checked here independently; what it cannot take
+//! is said.
+
+use std::collections::HashSet;
+use tetrakit::control::{Control, Verdict};
+use tetrakit::dualpath::{PathError, PathOptions, hamiltonian};
+use tetrakit::generate::{Distribution3, points3d};
+use tetrakit::geom::{Hull3, Point3};
+
+/// The order checked without the library's own check: every pair in a row shares three
+/// corners, every tetrahedron appears once, and the verifier accepts the set.
+fn check(pts: &[Point3], tets: &[[u32; 4]]) {
+    for w in tets.windows(2) {
+        let shared = w[1].iter().filter(|v| w[0].contains(v)).count();
+        assert_eq!(shared, 3, "{:?} then {:?}", w[0], w[1]);
+    }
+    let distinct: HashSet<[u32; 4]> = tets
+        .iter()
+        .map(|t| {
+            let mut s = *t;
+            s.sort_unstable();
+            s
+        })
+        .collect();
+    assert_eq!(distinct.len(), tets.len());
+    let report = tetrakit::mesh::verify(pts, tets, Some(&Hull3::new(pts)));
+    assert!(report.problems.is_empty(), "{:?}", report.problems.first());
+}
+
+#[test]
+fn every_family_gets_a_path() {
+    let mut found = 0;
+    for dist in [
+        Distribution3::Convex,
+        Distribution3::Cylinder,
+        Distribution3::LatticeHull,
+    ] {
+        for seed in 0..40u64 {
+            let n = 6 + (seed as usize * 7) % 55;
+            let pts = points3d(dist, n, seed);
+            let o = hamiltonian(&pts, &PathOptions::default(), &Control::new()).unwrap();
+            assert_eq!(o.verdict, Verdict::Yes, "{dist:?} n = {n} seed {seed}");
+            assert!(o.certified && o.tetrahedra == o.tets.len());
+            assert!(o.tetrahedra >= o.ordinary_tetrahedra.unwrap());
+            check(&pts, &o.tets);
+            found += 1;
+        }
+    }
+    assert_eq!(found, 120);
+}
+
+/// Two points inside every facet leave no apex eligible: UNDECIDED, with nothing
+/// claimed; so is a budget of nothing; a point inside the hull is refused.
+#[test]
+fn what_the_method_cannot_take() {
+    let mut cube: Vec<Point3> = (0..8)
+        .map(|i| {
+            [
+                (i & 1) as f64 * 2.0,
+                (i >> 1 & 1) as f64 * 2.0,
+                (i >> 2) as f64 * 2.0,
+            ]
+        })
+        .collect();
+    let ctl = Control::new();
+    let opts = PathOptions::default();
+    let none = PathOptions { budget: 0 };
+    let o = hamiltonian(&cube, &none, &ctl).unwrap();
+    assert_eq!((o.verdict, o.apexes_tried), (Verdict::Undecided, 8));
+    for k in 0..3 {
+        for side in [0.0, 2.0] {
+            for y in [0.5, 1.5] {
+                let mut p = [1.0, y, 1.0];
+                p.rotate_right(k);
+                p[k] = side;
+                cube.push(p);
+            }
+        }
+    }
+    let o = hamiltonian(&cube, &opts, &ctl).unwrap();
+    assert_eq!(
+        (o.verdict, o.apexes, o.ordinary_tetrahedra),
+        (Verdict::Undecided, 0, None)
+    );
+    assert!(o.tets.is_empty() && !o.certified);
+    cube.push([1.0, 1.0, 1.0]);
+    assert_eq!(
+        hamiltonian(&cube, &opts, &ctl),
+        Err(PathError::Inside { index: 20 })
+    );
+}
