@@ -1,5 +1,5 @@
 //! Tetrahedralizations of a convex polytope whose dual graph has a Hamiltonian path
-//! (thesis ch. 6, "Hamiltonian tetrahedralizations", the question of Arkin et al. [5]):
+//! (thesis ch. 6, "Hamiltonian tetrahedralizations", the question of Arkin et al., the thesis's reference 5):
 //! the tetrahedra in an order where each shares a triangle with the next, as streaming
 //! and rendering pipelines want them.
 //!
