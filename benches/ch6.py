@@ -4,12 +4,18 @@
   python3 benches/ch6.py flips         the flip graph against TOPCOM, side by side, and the
                                        search for isolated tetrahedralizations: for each
                                        family, n = 6, 7, ... until a set takes over 60 s
+  python3 benches/ch6.py hamiltonian   `tetrahedralize --hamiltonian` on random convex
+                                       polytopes of 5 to 100 vertices (spheres, cylinders,
+                                       lattice hulls with many coplanar facets): every one
+                                       where no path is found, and the cost over an
+                                       ordinary cone
   python3 benches/ch6.py triangulated  convex polyhedra with triangulated facets: how
                                        often NO happens, by family and size; the smallest
                                        NOs; which witnesses the NOs have
 
 Needs `cargo build --release` and, for `flips`, TOPCOM (Debian `topcom`). Environment:
-SEEDS (sets per family and size, default 5 for flips and 200 for triangulated), LIMIT
+SEEDS (sets per family and size, default 5 for flips and 200 for triangulated; polytopes
+per family for hamiltonian, default 3334), LIMIT
 (seconds per set, default 60), FAMILIES (space separated).
 """
 
@@ -102,6 +108,48 @@ def flips():
             n += 1
 
 
+def one_path(job):
+    fam, n, seed = job
+    f = WORK / f"h-{fam}-{n}-{seed}.xyz"
+    tk("generate", "points3d", "--dist", fam, "--n", n, "--seed", seed, "-o", f, code=(0,))
+    start = time.perf_counter()
+    o = json.loads(tk("tetrahedralize", f, "--hamiltonian", "--json", "--time-limit", 60).stdout)
+    return fam, n, seed, o, time.perf_counter() - start
+
+
+def hamiltonian():
+    from concurrent.futures import ThreadPoolExecutor
+    seeds = int(os.environ.get("SEEDS", 3334))
+    families = os.environ.get("FAMILIES", "convex cylinder lattice-hull").split()
+    jobs = [(fam, 5 + (seed * 37) % 96 if fam != "cylinder" else 6 + (seed * 37) % 95, seed)
+            for fam in families for seed in range(1, seeds + 1)]
+    print(f"# hamiltonian: {len(jobs)} polytopes, 5 to 100 vertices")
+    rows = {}
+    with ThreadPoolExecutor(max_workers=os.cpu_count() or 2) as pool:
+        for fam, n, seed, o, took in pool.map(one_path, jobs):
+            r = rows.setdefault(fam, {"n": 0, "yes": 0, "extra": [], "ratio": [], "secs": [],
+                                      "apexes": [], "failed": []})
+            r["n"] += 1
+            r["secs"].append(took)
+            if o["verdict"] == "yes":
+                r["yes"] += 1
+                r["extra"].append(o["tetrahedra"] - o["ordinary_tetrahedra"])
+                r["ratio"].append(o["tetrahedra"] / o["ordinary_tetrahedra"])
+                r["apexes"].append(o["apexes_tried"])
+            else:
+                r["failed"].append(f"{fam} n={n} seed={seed} ({o['apexes']} eligible apexes)")
+    print("| family | polytopes | path found | extra tetrahedra over an ordinary cone (median, max) "
+          "| ratio (mean) | apexes tried (median, max) | median s | max s |")
+    print("|---|---|---|---|---|---|---|---|")
+    for fam, r in rows.items():
+        med = statistics.median
+        print(f"| {fam} | {r['n']} | {r['yes']} | {med(r['extra'])}, {max(r['extra'])} "
+              f"| {statistics.mean(r['ratio']):.4f} | {med(r['apexes'])}, {max(r['apexes'])} "
+              f"| {med(r['secs']):.3f} | {max(r['secs']):.3f} |")
+        for f in r["failed"]:
+            print(f"NO PATH FOUND: {f}")
+
+
 def triangulated():
     seeds = int(os.environ.get("SEEDS", 200))
     cases = [("prism", n, k) for n in (3, 4, 5, 6, 8, 12) for k in (0, 2)]
@@ -139,4 +187,4 @@ def triangulated():
 
 
 if __name__ == "__main__":
-    {"flips": flips, "triangulated": triangulated}[sys.argv[1] if len(sys.argv) > 1 else "flips"]()
+    {"flips": flips, "hamiltonian": hamiltonian, "triangulated": triangulated}[sys.argv[1] if len(sys.argv) > 1 else "flips"]()

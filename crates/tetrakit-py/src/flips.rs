@@ -15,6 +15,17 @@ type FlipsOut<'py> = (
     Vec<&'static str>,
 );
 
+/// Points in space, checked as the readers check a file's.
+fn points_in_space(points: &PyReadonlyArray2<'_, f64>) -> PyResult<Vec<tetrakit::geom::Point3>> {
+    let (pts, dim) = convert::points(points, "points")?;
+    if dim != 3 {
+        return Err(value_error(
+            "the points are planar: this needs points in space",
+        ));
+    }
+    Ok(convert::input(pts, dim, &Rows::default(), false)?.points)
+}
+
 /// `flips(points, limit, time_limit)`: the outcome as JSON, every tetrahedralization
 /// found (one array of tetrahedra each), the flips as pairs of places in that list
 /// (`i < j`) and each flip's kind (`"2-3"`, `"2-2"`, `"4-4"`).
@@ -27,13 +38,7 @@ pub fn flips<'py>(
     time_limit: Option<f64>,
 ) -> PyResult<FlipsOut<'py>> {
     let ctl = convert::control(time_limit)?;
-    let (pts, dim) = convert::points(&points, "points")?;
-    if dim != 3 {
-        return Err(value_error(
-            "the points are planar: the flip graph of tetrahedralizations needs 3D points",
-        ));
-    }
-    let pts = convert::input(pts, dim, &Rows::default(), false)?.points;
+    let pts = points_in_space(&points)?;
     let opts = FlipOptions {
         limit: limit.max(1),
         ..FlipOptions::default()
@@ -79,13 +84,7 @@ pub fn hamiltonian<'py>(
 ) -> PyResult<(Json, Bound<'py, PyArray2<i64>>)> {
     use tetrakit::dualpath::{PathError, PathOptions};
     let ctl = convert::control(time_limit)?;
-    let (pts, dim) = convert::points(&points, "points")?;
-    if dim != 3 {
-        return Err(value_error(
-            "the points are planar: a polytope needs 3D points",
-        ));
-    }
-    let pts = convert::input(pts, dim, &Rows::default(), false)?.points;
+    let pts = points_in_space(&points)?;
     let mut o = convert::run(py, &ctl, || {
         tetrakit::dualpath::hamiltonian(&pts, &PathOptions::default(), &ctl)
     })?

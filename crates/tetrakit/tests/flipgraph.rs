@@ -494,3 +494,75 @@ fn degenerate_inputs_are_refused() {
         }))
     );
 }
+
+/// Two independent parts agree: the cube with each square split by a diagonal (64
+/// choices) can be tetrahedralized by the exact solver exactly when one of the cube's 74
+/// enumerated tetrahedralizations has those diagonals on its surface.
+#[test]
+fn the_cubes_triangulated_surfaces_agree_with_its_tetrahedralizations() {
+    use tetrakit::exact::{Domain, TetraOptions, tetrahedralize};
+    use tetrakit::mesh::Polyhedron;
+    let cube: Vec<Point3> = (0..8)
+        .map(|i| [(i & 1) as f64, (i >> 1 & 1) as f64, (i >> 2) as f64])
+        .collect();
+    let g = graph(&cube);
+    // The surface triangles of each tetrahedralization (corners ascending).
+    let surfaces: HashSet<BTreeSet<[u32; 3]>> = (0..g.tetrahedralizations)
+        .map(|i| {
+            let mut count = std::collections::HashMap::<[u32; 3], u32>::new();
+            for t in g.tetrahedralization(i) {
+                for k in 0..4 {
+                    let mut f = [t[(k + 1) % 4], t[(k + 2) % 4], t[(k + 3) % 4]];
+                    f.sort_unstable();
+                    *count.entry(f).or_default() += 1;
+                }
+            }
+            count
+                .into_iter()
+                .filter(|&(_, c)| c == 1)
+                .map(|(f, _)| f)
+                .collect()
+        })
+        .collect();
+    // The squares by their corners in cyclic order (bit i of a corner is coordinate i).
+    let squares = [
+        [0, 1, 3, 2],
+        [4, 5, 7, 6],
+        [0, 1, 5, 4],
+        [2, 3, 7, 6],
+        [0, 2, 6, 4],
+        [1, 3, 7, 5],
+    ];
+    let mut yes = 0;
+    for pattern in 0..64u32 {
+        let faces: Vec<[u32; 3]> = (0..6)
+            .flat_map(|k| {
+                let [a, b, c, d] = squares[k];
+                if pattern >> k & 1 == 0 {
+                    [[a, b, c], [a, c, d]]
+                } else {
+                    [[a, b, d], [b, c, d]]
+                }
+            })
+            .collect();
+        let surface: BTreeSet<[u32; 3]> = faces
+            .iter()
+            .map(|f| {
+                let mut s = *f;
+                s.sort_unstable();
+                s
+            })
+            .collect();
+        let p = Polyhedron::new(cube.clone(), faces).unwrap();
+        let o = tetrahedralize(
+            Domain::Polyhedron(&p),
+            TetraOptions::default(),
+            &Control::new(),
+        )
+        .unwrap();
+        let extends = surfaces.contains(&surface);
+        assert_eq!(o.verdict == Verdict::Yes, extends, "pattern {pattern}");
+        yes += usize::from(extends);
+    }
+    assert!(yes > 0 && yes < 64, "{yes}");
+}

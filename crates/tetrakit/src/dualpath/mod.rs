@@ -229,6 +229,8 @@ fn dual(tris: &[[u32; 3]]) -> Vec<Vec<u32>> {
             adj[b as usize].push(a);
         }
     }
+    // In a fixed order, so that the search (and the answer) is the same on every run.
+    adj.iter_mut().for_each(|a| a.sort_unstable());
     adj
 }
 

@@ -188,7 +188,7 @@ pub(super) fn compatible(pts: &[Point3], s: &[u32; 4], t: &[u32; 4]) -> bool {
 fn separated(pts: &[Point3], s: &[u32; 4], t: &[u32; 4]) -> bool {
     let p = |v: u32| &pts[v as usize];
     (0..4).any(|k| {
-        let f: Vec<u32> = (0..4).filter(|&i| i != k).map(|i| s[i]).collect();
+        let f = [s[(k + 1) % 4], s[(k + 2) % 4], s[(k + 3) % 4]];
         let apex = orient3d(p(f[0]), p(f[1]), p(f[2]), p(s[k]));
         t.iter()
             .all(|&w| f.contains(&w) || apex * orient3d(p(f[0]), p(f[1]), p(f[2]), p(w)) < 0)
