@@ -46,15 +46,20 @@ pub fn convex_triangulated(
 ) -> Result<Polyhedron, GenerateError> {
     if facet_points > 10_000 {
         return Err(GenerateError::range(
-            "facet points",
+            "facet_points",
             facet_points,
             "at most 10000",
         ));
     }
     let mut rng = Rng::new(seed);
     let mut points = polytope(shape, n, &mut rng)?;
-    for _ in 0..facet_points {
-        add_facet_point(&mut points, &mut rng);
+    for k in 0..facet_points {
+        if !add_facet_point(&mut points, &mut rng) {
+            return Err(GenerateError::Unbuildable(format!(
+                "no room for facet point {} of {facet_points} after 100 tries: ask for fewer",
+                k + 1
+            )));
+        }
     }
     let hull = Hull3::new(&points);
     let on_hull: Vec<u32> = (0..points.len() as u32)
@@ -134,10 +139,10 @@ fn polytope(shape: ConvexShape, n: usize, rng: &mut Rng) -> Result<Vec<Point3>, 
     })
 }
 
-/// A point strictly inside a random facet: `a + s(b − a) + t(c − a)` for three corners
-/// of it and dyadic `s, t > 0` with `s + t < 1`, exact on integer corners; kept only
-/// when it lies on that facet alone and on no other point.
-fn add_facet_point(points: &mut Vec<Point3>, rng: &mut Rng) {
+/// A point strictly inside a random facet: `a + s(b − a) + t(c − a)` for three points
+/// on it and dyadic `s, t > 0` with `s + t < 1`, exact on integer corners; kept only
+/// when it lies on that facet alone and on no other point. False after 100 tries.
+fn add_facet_point(points: &mut Vec<Point3>, rng: &mut Rng) -> bool {
     let hull = Hull3::new(points);
     for _ in 0..100 {
         let f = rng.below(hull.facet_count()) as u32;
@@ -157,10 +162,11 @@ fn add_facet_point(points: &mut Vec<Point3>, rng: &mut Rng) {
         points.push(p);
         let h = Hull3::new(points);
         if h.facets_of(points.len() - 1) == [f] && h.facet_count() == hull.facet_count() {
-            return;
+            return true;
         }
         points.pop();
     }
+    false
 }
 
 /// Triangle `t` turned to face away from the polytope (`plane`'s points have every point
