@@ -183,3 +183,73 @@ fn a_hamiltonian_path_is_written_in_order() {
     ]);
     assert_eq!(o.status.code(), Some(2));
 }
+
+/// The chapter 6 generators and `--hamiltonian` refuse what they cannot take: exit 2 and
+/// one line naming the flag or the file.
+#[test]
+fn chapter_6_bad_inputs_are_named() {
+    let d = dir("gen");
+    let off = d.join("x.off");
+    let xyz = d.join("x.xyz");
+    let planar = d.join("planar.xyz");
+    std::fs::write(&planar, "0 0\n1 0\n0 1\n1 1\n").unwrap();
+    let (off, xyz, planar) = (
+        off.to_str().unwrap(),
+        xyz.to_str().unwrap(),
+        planar.to_str().unwrap(),
+    );
+    let cases: [(&[&str], &str); 5] = [
+        (
+            &["generate", "points3d", "--n", "2", "-o", xyz],
+            "--n must be between 4",
+        ),
+        (
+            &[
+                "generate",
+                "convex-triangulated",
+                "--facet-points",
+                "20000",
+                "-o",
+                off,
+            ],
+            "--facet-points 20000",
+        ),
+        (
+            &[
+                "generate",
+                "convex-triangulated",
+                "--shape",
+                "prism",
+                "--n",
+                "2",
+                "-o",
+                off,
+            ],
+            "--n 2",
+        ),
+        (
+            &[
+                "generate",
+                "convex-triangulated",
+                "--shape",
+                "lattice",
+                "--n",
+                "3",
+                "-o",
+                off,
+            ],
+            "--n 3",
+        ),
+        (
+            &["tetrahedralize", planar, "--hamiltonian"],
+            "planar.xyz: --hamiltonian takes",
+        ),
+    ];
+    for (args, expected) in cases {
+        let o = run(args);
+        let err = String::from_utf8(o.stderr).unwrap();
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert_eq!(err.trim().lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains(expected), "{args:?}: {err}");
+    }
+}
