@@ -1183,6 +1183,38 @@ fn shell_between_nested_spheres() {
     );
 }
 
+/// A box on a facet of a box where the removal leaves outer vertices no cap takes: the
+/// shell is placed instead (`finished_by: "placing"`, said in the text), a certified YES
+/// that `check` accepts, never an error.
+#[test]
+fn shell_finished_by_placing() {
+    let d = dir("placing");
+    let (o, i, out) = (d.join("o.xyz"), d.join("i.xyz"), d.join("s.ele"));
+    let cube = |pts: &[[u8; 3]]| -> String {
+        pts.iter()
+            .map(|p| format!("{} {} {}\n", p[0], p[1], p[2]))
+            .collect()
+    };
+    let outer: Vec<[u8; 3]> = (0..8u8)
+        .map(|i| [i & 1, (i >> 1) & 1, i >> 2].map(|b| 4 * b))
+        .collect();
+    let inner: Vec<[u8; 3]> = (0..8u8)
+        .map(|i| [i & 1, 2 + 2 * ((i >> 1) & 1), 1 + (i >> 2)])
+        .collect();
+    std::fs::write(&o, cube(&outer)).unwrap();
+    std::fs::write(&i, cube(&inner)).unwrap();
+    let r = run(&["shell", s(&o), s(&i), "--json", "-o", s(&out)]);
+    let v = json(&r);
+    assert_eq!(
+        (v["verdict"].as_str(), v["finished_by"].as_str()),
+        (Some("yes"), Some("placing")),
+        "{v}"
+    );
+    assert_eq!(run(&["check", s(&out)]).status.code(), Some(0));
+    let text = String::from_utf8_lossy(&run(&["shell", s(&o), s(&i)]).stdout).to_string();
+    assert!(text.starts_with("YES") && text.contains("placed"), "{text}");
+}
+
 /// `shell` and `generate nested` on bad input: exit 2 with one line naming the file (and
 /// the line where there is one); `--time-limit 0` is exit 3 with verdict "undecided".
 #[test]

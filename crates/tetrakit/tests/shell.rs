@@ -8,7 +8,7 @@ use tetrakit::geom::{Expansion, Hull3, Point3, orient3d_value};
 use tetrakit::mesh::certify_shell;
 use tetrakit::shell::generate::{Contact, NestedParams, Shape, bern_disk, contact, nested};
 use tetrakit::shell::{
-    Method, Shell, ShellError, ShellMesh, ShellOptions, improve, optimum, tetrahedralize,
+    Finish, Method, Shell, ShellError, ShellMesh, ShellOptions, improve, optimum, tetrahedralize,
 };
 
 /// Both methods, each certified and within 9n − 6; the cap removal's mesh is returned.
@@ -236,7 +236,7 @@ fn bad_shells_are_refused_with_a_reason() {
 
 /// Coaxial prisms: facets of the current hull inside `P` through several vertices, where
 /// a tip that is not an ear of every such facet's triangulation is refused; pairs, and
-/// then the exact solver on one piece, finish them.
+/// then the placing, finish them.
 #[test]
 fn coaxial_prisms() {
     let mut cases: Vec<(Vec<Point3>, Vec<Point3>)> = Vec::new();
@@ -256,10 +256,8 @@ fn coaxial_prisms() {
     }
 }
 
-/// Known gap: a cube sharing two facet planes with the outer cube (and, for bigcaps, a
-/// corner) can leave every piece refused, the exact fallback included (its piece is not a
-/// polyhedron where the bottom lies on an outer facet). The answer is then an internal
-/// error, never an uncertified mesh.
+/// A cube sharing two facet planes with the outer cube (and, for bigcaps, a corner): the
+/// removal can leave every piece refused; the placing finishes it.
 #[test]
 fn shared_facet_planes_are_solved() {
     let big = cube([0.0; 3], 4.0);
@@ -673,8 +671,7 @@ fn boxes_touching_a_box_anywhere() {
 /// `Q` filling a corner of `P` (sharing the corner and three facet planes): the shared
 /// corner is in no tetrahedron, since the region is empty around it. The exact solver
 /// once called such a shell infeasible (it asked every vertex to be used); in this order
-/// the greedy bigcaps reach a dead end in every order of the tips, and the exact solver
-/// on the whole shell, the last resort, finishes it.
+/// the greedy bigcaps reach a dead end, and the placing finishes it.
 #[test]
 fn a_corner_filled_by_the_inner_box() {
     let outer = [
@@ -853,4 +850,139 @@ fn shell_reports_the_exact_minimum() {
     let big = Shell::new(&outer, &inner).unwrap();
     let refused = tetrakit::shell::shell(&big, opts, &Control::new());
     assert!(matches!(refused, Err(ShellError::TooLargeForOptimum { n }) if n == big.n()));
+}
+
+/// Integer points on the sphere `x² + y² + z² = r2`: cospherical, many coplanar facets.
+fn lattice_sphere(r2: i64) -> Vec<Point3> {
+    let r = (r2 as f64).sqrt() as i64 + 1;
+    let mut pts = Vec::new();
+    for x in -r..=r {
+        for y in -r..=r {
+            for z in -r..=r {
+                if x * x + y * y + z * z == r2 {
+                    pts.push([x as f64, y as f64, z as f64]);
+                }
+            }
+        }
+    }
+    pts
+}
+
+/// The degenerate shells of this file in one list: boxes anywhere in a box (999),
+/// lattice spheres with `Q = P/2` and `Q = P/3` (parallel facets, cospherical points),
+/// grids with a grid inside or on a facet, coaxial prisms, the contact families and
+/// random nested shapes.
+fn degenerate_shells() -> Vec<(Vec<Point3>, Vec<Point3>)> {
+    let mut cases = Vec::new();
+    let big = cube([0.0; 3], 4.0);
+    let spans: Vec<[f64; 2]> = (0..4)
+        .flat_map(|lo| (lo + 1..=4).map(move |hi| [lo as f64, hi as f64]))
+        .collect();
+    for &[x0, x1] in &spans {
+        for &[y0, y1] in &spans {
+            for &[z0, z1] in &spans {
+                let inner: Vec<Point3> = (0..8)
+                    .map(|i| {
+                        let pick =
+                            |k: usize, [a, b]: [f64; 2]| if (i >> k) & 1 == 1 { b } else { a };
+                        [pick(0, [x0, x1]), pick(1, [y0, y1]), pick(2, [z0, z1])]
+                    })
+                    .collect();
+                if !inner.iter().all(|p| big.contains(p)) {
+                    cases.push((big.clone(), inner));
+                }
+            }
+        }
+    }
+    for r2 in [3, 9, 11, 17, 25, 27, 50] {
+        let outer = lattice_sphere(r2);
+        for k in [2.0, 3.0] {
+            cases.push((
+                outer.clone(),
+                outer.iter().map(|p| p.map(|x| x / k)).collect(),
+            ));
+        }
+    }
+    for shape in [Shape::Sphere, Shape::Cube, Shape::Random, Shape::Cylinder] {
+        for inner in [Shape::Sphere, Shape::Cube, Shape::Random, Shape::Cylinder] {
+            for seed in 0..6 {
+                let p = NestedParams {
+                    outer: shape,
+                    inner,
+                    n_outer: 8 + 5 * seed as usize,
+                    n_inner: 8 + 3 * seed as usize,
+                    gap: 0.1 + 0.15 * seed as f64,
+                    seed,
+                };
+                let (o, i, _) = nested(&p).unwrap();
+                cases.push((o, i));
+            }
+        }
+    }
+    for kind in [
+        Contact::Vertex,
+        Contact::Edge,
+        Contact::Facet,
+        Contact::FacetPoint,
+    ] {
+        for seed in 0..10u64 {
+            cases.push(contact(kind, 5 + 3 * seed as usize, 4 + seed as usize, seed).unwrap());
+        }
+    }
+    cases
+}
+
+/// `geom::placing`, the construction the shell's guarantee rests on: `Q`'s boundary,
+/// then `P`'s other vertices in any order (as given, reversed, and two random orders),
+/// each coned to what it sees; certified (and filling the shell, by exact volume) on
+/// every degenerate shell above, none refused.
+#[test]
+fn placing_tiles_every_shell_in_any_order() {
+    let mut rng = tetrakit::rng::Rng::new(45);
+    let cases = degenerate_shells();
+    assert!(cases.len() > 1100);
+    for (outer, inner) in cases {
+        let shell = Shell::new(&outer, &inner).expect("a shell");
+        let removable: Vec<u32> = shell
+            .outer
+            .iter()
+            .copied()
+            .filter(|v| !shell.inner.contains(v))
+            .collect();
+        let mut orders = vec![removable.clone(), removable.iter().rev().copied().collect()];
+        for _ in 0..2 {
+            let mut o = removable.clone();
+            for i in (1..o.len()).rev() {
+                o.swap(i, rng.below(i + 1));
+            }
+            orders.push(o);
+        }
+        for order in orders {
+            let tets = tetrakit::geom::placing(&shell.points, &shell.inner, &order).unwrap();
+            let cert = certify_shell(&shell.points, &tets, &shell.inner);
+            assert_eq!(cert, Ok(()), "{outer:?} {inner:?} {order:?}");
+            assert!(fills_the_shell(&shell, &tets));
+        }
+    }
+}
+
+/// Every degenerate shell above, both methods: certified, filling the shell, within
+/// 9n − 6, whether the removal took every outer vertex or left some to the placing
+/// (`Finish::Placing`, the removal's order reversed). Some of each happen, so both
+/// endings are exercised.
+#[test]
+fn every_degenerate_shell_is_tetrahedralized() {
+    let mut endings = [0usize; 2];
+    for (outer, inner) in degenerate_shells() {
+        let shell = Shell::new(&outer, &inner).unwrap();
+        for m in [Method::Cap, Method::Bigcap] {
+            let mesh = tetrahedralize(&shell, m, &Control::new()).unwrap();
+            let cert = certify_shell(&shell.points, &mesh.tets, &shell.inner);
+            assert_eq!(cert, Ok(()), "{m:?} {outer:?} {inner:?}");
+            assert!(fills_the_shell(&shell, &mesh.tets));
+            assert!(mesh.tets.len() <= 9 * shell.n() - 6);
+            endings[usize::from(mesh.finished_by == Finish::Placing)] += 1;
+        }
+    }
+    assert!(endings[0] > 2000 && endings[1] > 10, "{endings:?}");
 }

@@ -395,6 +395,7 @@ class ShellResult:
     tetrahedra_before_flips: Optional[int] = None
     interior_edges: Optional[int] = None
     pieces: Optional[int] = None
+    finished_by: Optional[str] = None
     flips: Optional[dict] = None
 
 

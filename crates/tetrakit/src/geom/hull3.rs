@@ -65,11 +65,8 @@ impl Hull3 {
                 ..Default::default()
             };
         };
-        let mut b = Builder {
-            pts: points,
-            tris: Vec::new(),
-        };
-        b.start(seed);
+        let mut b = Builder::new(points);
+        b.start(seed, 0..points.len() as u32);
         b.run();
         let (triangles, neighbours) = b.alive();
         let mut h = Hull3 {
@@ -370,6 +367,59 @@ pub fn affine_dimension(points: &[Point3]) -> usize {
     }
 }
 
+/// The placing (beneath–beyond) triangulation of the region between two nested hulls:
+/// the boundary of `CH(first)` as the triangles of a first hull, then each point of
+/// `then`, in order, coned to the triangles of the current hull it strictly sees. The
+/// tetrahedra, positively oriented, tile `CH(first ∪ then) − int CH(first)` with no point
+/// added; `None` when `first` is flat.
+///
+/// Why it never fails, in any order and on any degenerate input: the triangles a point
+/// `p` outside a convex polytope `H` strictly sees form a disk (visibility is per facet
+/// plane, and the visible planes are connected), the cones over them tile
+/// `CH(H ∪ {p}) − H`, and the new triangles from `p` to the disk's horizon close the
+/// surface again; where `p` lies in the plane of a facet it does not see, the triangles
+/// at that facet's horizon edges extend the facet and make no tetrahedron. A point of
+/// `then` that is not strictly outside the current hull when its turn comes is skipped
+/// (it is no vertex). The count depends on the order: placing in the reverse of a cap
+/// removal's order makes the removal's tetrahedra.
+///
+/// ```
+/// use tetrakit::geom::placing;
+/// let mut pts: Vec<[f64; 3]> = (0..8)
+///     .map(|i| [(i & 1) as f64 * 4.0, ((i >> 1) & 1) as f64 * 4.0, (i >> 2) as f64 * 4.0])
+///     .collect();
+/// pts.extend([[1.0, 1.0, 1.0], [3.0, 1.0, 1.0], [1.0, 3.0, 1.0], [1.0, 1.0, 3.0]]);
+/// let tets = placing(&pts, &[8, 9, 10, 11], &[0, 1, 2, 3, 4, 5, 6, 7]).unwrap();
+/// // Six volume: the cube's 384 less the inner tetrahedron's 8.
+/// let six: f64 = tets.iter().map(|t| tetrakit::geom::orient3d_value(
+///     &pts[t[0] as usize], &pts[t[1] as usize], &pts[t[2] as usize], &pts[t[3] as usize]).estimate()).sum();
+/// assert_eq!(six, 376.0);
+/// ```
+pub fn placing(points: &[Point3], first: &[u32], then: &[u32]) -> Option<Vec<[u32; 4]>> {
+    let first_points: Vec<Point3> = first.iter().map(|&i| points[i as usize]).collect();
+    let (seed, _) = initial_simplex(&first_points)?;
+    let seed = seed.map(|k| first[k as usize]);
+    let mut b = Builder::new(points);
+    let mut eligible = vec![false; points.len()];
+    for &q in first {
+        eligible[q as usize] = true;
+    }
+    let mut candidates: Vec<u32> = first.iter().chain(then).copied().collect();
+    candidates.sort_unstable();
+    candidates.dedup();
+    b.eligible = Some(eligible);
+    b.start(seed, candidates.into_iter());
+    b.run();
+    b.tets = Some(Vec::new());
+    for &q in then {
+        let t = b.owner[q as usize];
+        if t != NONE {
+            b.insert(t as usize, q);
+        }
+    }
+    b.tets
+}
+
 /// Four affinely independent points, or `None` when the set is flat.
 fn initial_simplex(pts: &[Point3]) -> Option<([u32; 4], usize)> {
     let lo = (0..pts.len()).min_by(|&i, &j| lex_cmp(&pts[i], &pts[j]))?;
@@ -385,9 +435,15 @@ fn initial_simplex(pts: &[Point3]) -> Option<([u32; 4], usize)> {
 struct Builder<'a> {
     pts: &'a [Point3],
     tris: Vec<Tri>,
+    /// The triangle whose conflict list holds each point ([`NONE`]: none).
+    owner: Vec<u32>,
+    /// The points [`Builder::run`] may insert (all when `None`).
+    eligible: Option<Vec<bool>>,
+    /// The tetrahedra each insertion makes with the triangles it sees, when recording.
+    tets: Option<Vec<[u32; 4]>>,
 }
 
-impl Builder<'_> {
+impl<'a> Builder<'a> {
     fn p(&self, i: u32) -> &Point3 {
         &self.pts[i as usize]
     }
@@ -397,7 +453,25 @@ impl Builder<'_> {
         orient3d(self.p(v[0]), self.p(v[1]), self.p(v[2]), self.p(q)) > 0
     }
 
-    fn start(&mut self, s: [u32; 4]) {
+    fn new(pts: &'a [Point3]) -> Builder<'a> {
+        Builder {
+            pts,
+            tris: Vec::new(),
+            owner: vec![NONE; pts.len()],
+            eligible: None,
+            tets: None,
+        }
+    }
+
+    /// Files `q` in the conflict list of triangle `t`.
+    fn file(&mut self, t: usize, q: u32) {
+        self.tris[t].conflicts.push(q);
+        self.owner[q as usize] = t as u32;
+    }
+
+    /// Starts from the simplex `s`; the points of `candidates` outside it go in the
+    /// conflict lists.
+    fn start(&mut self, s: [u32; 4], candidates: impl Iterator<Item = u32>) {
         let [a, mut b, mut c, d] = s;
         if orient3d(self.p(a), self.p(b), self.p(c), self.p(d)) < 0 {
             std::mem::swap(&mut b, &mut c);
@@ -422,12 +496,12 @@ impl Builder<'_> {
                 self.tris[t].nb[i] = edges[&[y, x]].0 as u32;
             }
         }
-        for q in 0..self.pts.len() as u32 {
+        for q in candidates {
             if s.contains(&q) {
                 continue;
             }
             if let Some(t) = (0..4).find(|&t| self.sees(t, q)) {
-                self.tris[t].conflicts.push(q);
+                self.file(t, q);
             }
         }
     }
@@ -452,10 +526,10 @@ impl Builder<'_> {
     fn run(&mut self) {
         let mut work: Vec<usize> = (0..4).collect();
         while let Some(t) = work.pop() {
-            if !self.tris[t].alive || self.tris[t].conflicts.is_empty() {
+            if !self.tris[t].alive {
                 continue;
             }
-            let p = self.furthest(t);
+            let Some(p) = self.furthest(t) else { continue };
             let new = self.insert(t, p);
             work.extend(
                 new.into_iter()
@@ -464,17 +538,22 @@ impl Builder<'_> {
         }
     }
 
-    fn furthest(&self, t: usize) -> u32 {
+    /// The eligible conflict point of `t` furthest from its plane (by estimate: any
+    /// conflict point is a correct choice).
+    fn furthest(&self, t: usize) -> Option<u32> {
         let v = self.tris[t].v;
         let plane = Plane::new(self.p(v[0]), self.p(v[1]), self.p(v[2]));
-        let c = &self.tris[t].conflicts;
-        *c.iter()
+        let eligible = |q: &&u32| self.eligible.as_ref().is_none_or(|e| e[**q as usize]);
+        self.tris[t]
+            .conflicts
+            .iter()
+            .filter(eligible)
             .max_by(|&&a, &&b| {
                 plane
                     .estimate(self.p(a))
                     .total_cmp(&plane.estimate(self.p(b)))
             })
-            .unwrap()
+            .copied()
     }
 
     /// Adds `p` (strictly beyond triangle `t0`); returns the new triangles.
@@ -505,7 +584,12 @@ impl Builder<'_> {
         for &t in &visible {
             self.tris[t].alive = false;
             orphans.append(&mut self.tris[t].conflicts);
+            if let Some(tets) = &mut self.tets {
+                let [a, b, c] = self.tris[t].v;
+                tets.push([a, b, c, p]);
+            }
         }
+        self.owner[p as usize] = NONE;
         let mut by_start = HashMap::with_capacity_and_hasher(horizon.len(), Default::default());
         let mut new = Vec::with_capacity(horizon.len());
         for &(a, b, n, j) in &horizon {
@@ -530,8 +614,9 @@ impl Builder<'_> {
             if q == p {
                 continue;
             }
+            self.owner[q as usize] = NONE;
             if let Some(&u) = new.iter().find(|&&u| self.sees(u, q)) {
-                self.tris[u].conflicts.push(q);
+                self.file(u, q);
             }
         }
         new

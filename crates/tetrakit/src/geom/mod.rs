@@ -22,7 +22,7 @@ pub use coplanar::triangulate_coplanar;
 pub use expansion::{Expansion, det3, edge_edge_side, orient3d_value, parallel, vector};
 pub(crate) use grid::Grid2;
 pub use hull2::Hull2;
-pub use hull3::{Hull3, affine_dimension};
+pub use hull3::{Hull3, affine_dimension, placing};
 pub use intersect::{
     SegmentMeet, cones_overlap, coplanar_triangles_overlap, point_in_closed_tetrahedron,
     point_in_segment_interior, segment_meets_open_tetrahedron, segment_meets_open_triangle,

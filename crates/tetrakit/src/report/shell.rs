@@ -59,6 +59,12 @@ pub fn shell_text(o: &ShellOutcome, seconds: f64) -> String {
         }
         None => {}
     }
+    if o.finished_by == Some(crate::shell::Finish::Placing) {
+        let _ = writeln!(
+            s,
+            "  the removal left outer vertices no piece could take: the shell was placed instead (Q, then the outer vertices in the reverse of the removal's order)"
+        );
+    }
     if o.within_bound == Some(false) {
         let _ = writeln!(
             s,

@@ -87,13 +87,6 @@ impl Bins {
         self.cells[c].retain(|&i| i != v);
     }
 
-    /// The hidden vertices, sorted.
-    pub(super) fn all(&self) -> Vec<u32> {
-        let mut v: Vec<u32> = self.cells.iter().flatten().copied().collect();
-        v.sort_unstable();
-        v
-    }
-
     /// How many inner vertices are still hidden.
     pub(super) fn count(&self) -> usize {
         self.cells.iter().map(Vec::len).sum()

@@ -80,9 +80,13 @@ pub struct ShellOutcome {
     /// Edges not on the boundary surfaces (a YES).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub interior_edges: Option<usize>,
-    /// Pieces removed (a YES).
+    /// Pieces removed, or vertices placed (a YES).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub pieces: Option<usize>,
+    /// How the method's mesh was made (a YES): `removal`, or `placing` where the removal
+    /// left vertices no piece could take ([`super::tetrahedralize`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub finished_by: Option<super::Finish>,
     /// The flips kept (a YES with flips; `null` without).
     #[serde(skip_serializing_if = "undecided")]
     pub flips: Option<Option<FlipCounts>>,
@@ -135,6 +139,7 @@ pub fn shell(s: &Shell, opts: ShellOptions, ctl: &Control) -> Result<ShellOutcom
         tetrahedra_before_flips: None,
         interior_edges: None,
         pieces: None,
+        finished_by: None,
         flips: None,
         tets: Vec::new(),
     };
@@ -178,6 +183,7 @@ pub fn shell(s: &Shell, opts: ShellOptions, ctl: &Control) -> Result<ShellOutcom
     o.tetrahedra_before_flips = Some(done.before);
     o.interior_edges = Some(mesh.interior_edges());
     o.pieces = Some(mesh.pieces);
+    o.finished_by = Some(mesh.finished_by);
     o.flips = Some(opts.flips.then_some(FlipCounts {
         three_two: done.three_two,
         delaunay: done.delaunay,

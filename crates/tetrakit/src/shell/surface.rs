@@ -54,17 +54,6 @@ pub(super) struct Cut {
     pub(super) bottom: Vec<[u32; 3]>,
 }
 
-impl Cut {
-    /// The piece with these tetrahedra (tiling the region between, e.g. from a solver).
-    pub(super) fn with_tets(self, tets: Vec<[u32; 4]>) -> Piece {
-        Piece {
-            region: self.region,
-            bottom: self.bottom,
-            tets,
-        }
-    }
-}
-
 /// A removal planned: the surface triangles it takes, the bottom it leaves, and its
 /// tetrahedra.
 pub(super) struct Piece {
@@ -95,8 +84,11 @@ fn one_cycle(edges: &[(u32, u32)]) -> bool {
     next.len() == edges.len() && v == start && steps == edges.len()
 }
 
-/// Why a removal was not made (the surface is unchanged).
+/// Why a removal was not made (the surface is unchanged). The reason is read in a
+/// debugger and in test failures only: a refused removal is not an error (the tip is
+/// tried again, and what stays refused is placed).
 #[derive(Debug)]
+#[allow(dead_code)]
 pub(super) struct Refused(pub(super) &'static str);
 
 impl<'a> Surface<'a> {
@@ -167,38 +159,6 @@ impl<'a> Surface<'a> {
                 self.edge.remove(&e);
             }
         }
-    }
-
-    /// The coordinates of vertex `v`.
-    /// The live triangles, facing out.
-    pub(super) fn triangles(&self) -> Vec<[u32; 3]> {
-        self.tris
-            .iter()
-            .zip(&self.alive)
-            .filter_map(|(t, a)| a.then_some(*t))
-            .collect()
-    }
-
-    /// The surface is gone: every triangle removed, every inner vertex reached (after
-    /// the rest of the region was tetrahedralized at once).
-    pub(super) fn clear(&mut self) {
-        for id in 0..self.tris.len() as u32 {
-            if self.alive[id as usize] {
-                self.kill(id);
-            }
-        }
-        for v in self.hidden.all() {
-            self.hidden.expose(self.pts, v);
-        }
-    }
-
-    pub(super) fn point(&self, v: u32) -> Point3 {
-        self.pts[v as usize]
-    }
-
-    /// The surface triangles a cut takes (facing out of the current hull).
-    pub(super) fn region_triangles(&self, cut: &Cut) -> Vec<[u32; 3]> {
-        cut.region.iter().map(|&t| self.tris[t as usize]).collect()
     }
 
     /// True when triangle `t` lies in a facet of `P` (nothing is behind it).
