@@ -6,11 +6,16 @@
 # a hole inside the inner sphere; `-pQ`, and `-pYQ` which keeps the surfaces unsplit),
 # in the same run, alternating. Reports tetrahedra per vertex, Steiner points, seconds
 # (medians) and peak memory; tetrakit's time includes reading and its certificate.
-# Usage: bash benches/shell.sh      (env: SIZES, BERN, RUNS)   Needs root for apt-get.
+# Then the families of benches/shell_families.py (FAMILIES, NAME:N each): thin twisted
+# and coaxial prisms, bent arcs, lattice spheres with Q = P/2, circles on a cube's facets,
+# a dome on a dome's floor. Bigcaps get BIGCAP_TIMEOUT seconds per run ("-" past it).
+# Usage: bash benches/shell.sh      (env: SIZES, BERN, FAMILIES, RUNS)   Needs root for apt-get.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 SIZES=${SIZES:-"1000 10000 100000"}
 BERN=${BERN:-"1000:250 4000:1000 10000:2500"}
+FAMILIES=${FAMILIES:-"twisted:10000 coaxial:10000 arcs:10000 lattice:10000 circles:1000 dome:10000"}
+BIGCAP_TIMEOUT=${BIGCAP_TIMEOUT:-60}
 RUNS=${RUNS:-3}
 WORK=${WORK:-/tmp/tetrakit-bench-shell}
 mkdir -p "$WORK"
@@ -24,18 +29,23 @@ field() { python3 -c 'import json,sys;print(json.load(open(sys.argv[1]))[sys.arg
 elapsed() { awk '{print $1}' "$1"; }
 peak() { awk '{print int($2/1024)}' "$1"; }
 
-# One row: the shell OUTER INNER against TetGen on the same surfaces.
+# One row: the shell OUTER INNER against TetGen on the same surfaces (HOLE: a point
+# inside the inner polytope, "0 0 0" when not given).
 row() {
-  local label=$1 o=$2 i=$3 key=$4
+  local label=$1 o=$2 i=$3 key=$4 hole=${5:-"0 0 0"}
   "$TK" shell "$o" "$i" --json -o "$WORK/s$key.ele" >"$WORK/s.json"
-  python3 benches/shell_poly.py "$WORK/s$key.ele" "$WORK/p$key.poly" 0 0 0
+  # shellcheck disable=SC2086
+  python3 benches/shell_poly.py "$WORK/s$key.ele" "$WORK/p$key.poly" $hole
   tk=(); tb=(); tg=(); ty=()
   for _ in $(seq "$RUNS"); do
     /usr/bin/time -f "%e %M" -o "$WORK/t1" "$TK" shell "$o" "$i" --json >"$WORK/s.json"
     tk+=("$(elapsed "$WORK/t1")"); tkm=$(peak "$WORK/t1")
-    /usr/bin/time -f "%e %M" -o "$WORK/t4" "$TK" shell "$o" "$i" --method bigcap --json >"$WORK/b.json"
-    tb+=("$(elapsed "$WORK/t4")")
-    /usr/bin/time -f "%e %M" -o "$WORK/t2" tetgen -pQ "$WORK/p$key.poly" >/dev/null
+    if /usr/bin/time -f "%e %M" -o "$WORK/t4" timeout "$BIGCAP_TIMEOUT" "$TK" shell "$o" "$i" --method bigcap --json >"$WORK/b.json"; then
+      tb+=("$(elapsed "$WORK/t4")")
+    else
+      tb+=("-"); echo '{"tetrahedra": "nan"}' >"$WORK/b.json"
+    fi
+    /usr/bin/time -f "%e %M" -o "$WORK/t2" tetgen -pQ "$WORK/p$key.poly" >/dev/null || true
     tg+=("$(elapsed "$WORK/t2")"); tgm=$(peak "$WORK/t2")
     /usr/bin/time -f "%e %M" -o "$WORK/t3" tetgen -pYQ "$WORK/p$key.poly" >/dev/null || true
     ty+=("$(elapsed "$WORK/t3")")
@@ -43,8 +53,9 @@ row() {
   t=$(field "$WORK/s.json" tetrahedra); t0=$(field "$WORK/s.json" tetrahedra_before_flips)
   nn=$(field "$WORK/s.json" n); bt=$(field "$WORK/b.json" tetrahedra)
   tb_s=$(printf '%s\n' "${tb[@]}" | median)
+  [ "$tb_s" = "-" ] && tb_s=nan
   tk_s=$(printf '%s\n' "${tk[@]}" | median); tg_s=$(printf '%s\n' "${tg[@]}" | median); ty_s=$(printf '%s\n' "${ty[@]}" | median)
-  tetgen -pQ "$WORK/p$key.poly" >/dev/null
+  tetgen -pQ "$WORK/p$key.poly" >/dev/null || true
   g_t=$(head -1 "$WORK/p$key.1.ele" | awk '{print $1}'); g_n=$(head -1 "$WORK/p$key.1.node" | awk '{print $1}')
   tetgen -pYQ "$WORK/p$key.poly" >/dev/null || true
   y_t=$(head -1 "$WORK/p$key.1.ele" | awk '{print $1}'); y_n=$(head -1 "$WORK/p$key.1.node" | awk '{print $1}')
@@ -67,4 +78,11 @@ for d in $BERN; do
   o="$WORK/bo$ridge.xyz"; i="$WORK/bi$ridge.xyz"
   "$TK" generate bern-disk --ridge "$ridge" --ring "$ring" --outer-output "$o" --inner-output "$i" >/dev/null
   row "Bern disk $ridge/$ring" "$o" "$i" "b$ridge"
+done
+for f in $FAMILIES; do
+  name=${f%:*}; n=${f#*:}
+  o="$WORK/fo$name$n.xyz"; i="$WORK/fi$name$n.xyz"
+  python3 benches/shell_families.py "$name" "$n" "$o" "$i"
+  hole="0 0 0"; [ "$name" = dome ] && hole="0 0 0.25"
+  row "$name" "$o" "$i" "f$name$n" "$hole"
 done

@@ -12,7 +12,7 @@
 //! flipped, and an edge that cannot be recovered refuses the removal (the error is
 //! the reason, which the surface reports).
 
-use crate::geom::{Point3, orient2d_drop, orient3d, projection_axis};
+use crate::geom::{Point3, bounding_box, orient2d_drop, orient3d, projection_axis};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
 /// Q's edges, by vertex: `edges[v]` are the vertices joined to `v` by an edge of `Q`.
@@ -51,97 +51,166 @@ impl QEdges {
         if self.0.is_empty() {
             return Ok(());
         }
-        let corners: HashSet<u32> = tris.iter().flatten().copied().collect();
-        let mut wanted: Vec<(u32, u32)> = corners
-            .iter()
+        let mut mesh = Mesh::new(pts, tris);
+        let mut wanted: Vec<(u32, u32)> = mesh
+            .incident
+            .keys()
             .filter_map(|v| self.0.get(v).map(|ws| (v, ws)))
             .flat_map(|(&v, ws)| ws.iter().map(move |&w| (v, w)))
-            .filter(|&(v, w)| v < w && corners.contains(&w))
+            .filter(|&(v, w)| v < w && mesh.incident.contains_key(&w))
             .collect();
-        if wanted.is_empty() {
-            return Ok(());
-        }
         wanted.sort_unstable();
-        let mut have = edges(tris);
-        let p = |v: u32| &pts[v as usize];
         for (a, b) in wanted {
-            if have.contains(&(a, b)) {
-                continue;
-            }
-            // Only an edge in the plane of a triangle at `a` can be in a facet with `a`.
-            let flat = tris.iter().any(|t| {
-                t.contains(&a) && {
-                    let [x, y, z] = t.map(p);
-                    orient3d(x, y, z, p(b)) == 0
-                }
-            });
-            if flat && recover_edge(pts, tris, [a, b], walls)? {
-                have = edges(tris);
+            if !mesh.has_edge(a, b) {
+                recover_edge(pts, &mut mesh, [a, b], walls)?;
             }
         }
         Ok(())
     }
 }
 
-/// The edges of `tris`, each as `(low, high)`.
-fn edges(tris: &[[u32; 3]]) -> HashSet<(u32, u32)> {
-    tris.iter()
-        .flat_map(|t| (0..3).map(move |k| (t[k].min(t[(k + 1) % 3]), t[k].max(t[(k + 1) % 3]))))
-        .collect()
+/// A triangulated surface piece with its directed edges and the triangles at each vertex,
+/// kept up to date through flips.
+struct Mesh<'t> {
+    tris: &'t mut [[u32; 3]],
+    edge: HashMap<(u32, u32), usize>,
+    incident: HashMap<u32, Vec<usize>>,
+    /// The triangles of each facet (a maximal connected set of coplanar triangles), and
+    /// each triangle's facet: a flip keeps its two triangles in their facet.
+    facets: Vec<Vec<usize>>,
+    facet_of: Vec<usize>,
+}
+
+impl<'t> Mesh<'t> {
+    fn new(pts: &[Point3], tris: &'t mut [[u32; 3]]) -> Mesh<'t> {
+        let mut edge = HashMap::default();
+        let mut incident: HashMap<u32, Vec<usize>> = HashMap::default();
+        for (i, t) in tris.iter().enumerate() {
+            for k in 0..3 {
+                edge.insert((t[k], t[(k + 1) % 3]), i);
+                incident.entry(t[k]).or_default().push(i);
+            }
+        }
+        let p = |v: u32| &pts[v as usize];
+        let mut parent = crate::partition::singletons(tris.len());
+        for (&(a, b), &i) in &edge {
+            if let Some(&j) = edge.get(&(b, a))
+                && i < j
+            {
+                let [x, y, z] = tris[i].map(p);
+                if orient3d(x, y, z, p(apex(tris[j], b, a))) == 0 {
+                    crate::partition::union(&mut parent, i as u32, j as u32);
+                }
+            }
+        }
+        let mut id: HashMap<u32, usize> = HashMap::default();
+        let mut facets: Vec<Vec<usize>> = Vec::new();
+        let facet_of = (0..tris.len())
+            .map(|i| {
+                let root = crate::partition::find(&mut parent, i as u32);
+                let f = *id.entry(root).or_insert_with(|| {
+                    facets.push(Vec::new());
+                    facets.len() - 1
+                });
+                facets[f].push(i);
+                f
+            })
+            .collect();
+        Mesh {
+            tris,
+            edge,
+            incident,
+            facets,
+            facet_of,
+        }
+    }
+
+    fn has_edge(&self, a: u32, b: u32) -> bool {
+        self.edge.contains_key(&(a, b)) || self.edge.contains_key(&(b, a))
+    }
+
+    /// Replaces triangles `i` and `j` by `ti` and `tj` (the same four corners).
+    fn replace(&mut self, [i, j]: [usize; 2], [ti, tj]: [[u32; 3]; 2]) {
+        for (idx, new) in [(i, ti), (j, tj)] {
+            let old = self.tris[idx];
+            for k in 0..3 {
+                self.edge.remove(&(old[k], old[(k + 1) % 3]));
+                if let Some(list) = self.incident.get_mut(&old[k]) {
+                    list.retain(|&x| x != idx);
+                }
+            }
+            self.tris[idx] = new;
+        }
+        for idx in [i, j] {
+            let t = self.tris[idx];
+            for k in 0..3 {
+                self.edge.insert((t[k], t[(k + 1) % 3]), idx);
+                self.incident.entry(t[k]).or_default().push(idx);
+            }
+        }
+    }
+
+    /// The facet holding `a` whose plane holds `b` (sorted triangle indices), if any.
+    fn patch(&self, pts: &[Point3], a: u32, b: u32) -> Option<&[usize]> {
+        let p = |v: u32| &pts[v as usize];
+        self.incident[&a]
+            .iter()
+            .find(|&&i| {
+                let [x, y, z] = self.tris[i].map(p);
+                orient3d(x, y, z, p(b)) == 0
+            })
+            .map(|&i| self.facets[self.facet_of[i]].as_slice())
+    }
 }
 
 /// The most flips one edge may take (far beyond what a facet's triangulation needs).
 const FLIP_LIMIT: usize = 100_000;
 
-/// Recovers the edge `ab` in the facet of `tris` that holds both ends, if there is one;
-/// true when it flipped.
+/// Recovers the edge `ab` in the facet of the mesh that holds both ends, if there is one.
 fn recover_edge(
     pts: &[Point3],
-    tris: &mut [[u32; 3]],
+    mesh: &mut Mesh,
     [a, b]: [u32; 2],
     walls: &HashSet<(u32, u32)>,
-) -> Result<bool, &'static str> {
+) -> Result<(), &'static str> {
     let p = |v: u32| &pts[v as usize];
-    let has_edge = |tris: &[[u32; 3]]| {
-        tris.iter()
-            .any(|t| (0..3).any(|k| t[k] == a && (t[(k + 1) % 3] == b || t[(k + 2) % 3] == b)))
+    let Some(patch) = mesh.patch(pts, a, b).map(<[usize]>::to_vec) else {
+        return Ok(()); // no facet at `a` in a plane with `b`
     };
-    if has_edge(tris) {
-        return Ok(false);
+    if !patch.iter().any(|&i| mesh.tris[i].contains(&b)) {
+        return Ok(()); // not in one facet: the segment is not on the surface
     }
-    let patch: Vec<usize> = (0..tris.len())
-        .filter(|&i| {
-            let [x, y, z] = tris[i].map(p);
-            orient3d(x, y, z, p(a)) == 0 && orient3d(x, y, z, p(b)) == 0
-        })
-        .collect();
-    let touches = |v: u32| patch.iter().any(|&i| tris[i].contains(&v));
-    if !touches(a) || !touches(b) {
-        return Ok(false); // not in one facet: the segment is not on the surface
-    }
-    let [x, y, z] = tris[patch[0]].map(p);
+    let [x, y, z] = mesh.tris[patch[0]].map(p);
     let axis = projection_axis(x, y, z).ok_or("a degenerate facet triangle")?;
     let side = |u: u32, v: u32, w: u32| orient2d_drop(p(u), p(v), p(w), axis);
     let crosses =
         |c: u32, d: u32| side(a, b, c) * side(a, b, d) < 0 && side(c, d, a) * side(c, d, b) < 0;
+    // An edge crossing `ab` has a triangle whose box meets the box of `ab` (exact
+    // comparisons): the others are skipped before any orientation test.
+    let (lo, hi) = bounding_box(&[*p(a), *p(b)]);
+    let meets = |t: &[u32; 3]| {
+        (0..3).all(|d| {
+            let c = t.map(|v| p(v)[d]);
+            c[0].max(c[1]).max(c[2]) >= lo[d] && c[0].min(c[1]).min(c[2]) <= hi[d]
+        })
+    };
     for _ in 0..FLIP_LIMIT {
-        let edge: HashMap<(u32, u32), usize> = patch
+        let mut crossing: Vec<(u32, u32, usize, usize)> = patch
             .iter()
+            .filter(|&&i| meets(&mesh.tris[i]))
             .flat_map(|&i| {
-                let t = tris[i];
-                (0..3).map(move |k| ((t[k], t[(k + 1) % 3]), i))
+                let t = mesh.tris[i];
+                (0..3).map(move |k| (t[k], t[(k + 1) % 3], i))
             })
-            .collect();
-        let mut crossing: Vec<(u32, u32, usize, usize)> = edge
-            .iter()
-            .filter(|&(&(c, d), _)| c < d && !walls.contains(&(c, d)) && !walls.contains(&(d, c)))
-            .filter_map(|(&(c, d), &i)| edge.get(&(d, c)).map(|&j| (c, d, i, j)))
+            .filter(|&(c, d, _)| c < d && !walls.contains(&(c, d)) && !walls.contains(&(d, c)))
+            .filter_map(|(c, d, i)| mesh.edge.get(&(d, c)).map(|&j| (c, d, i, j)))
+            .filter(|&(_, _, _, j)| patch.binary_search(&j).is_ok())
             .filter(|&(c, d, _, _)| crosses(c, d))
             .collect();
         crossing.sort_unstable(); // the same flips, whatever the hash order
         let (mut first, mut best) = (None, None);
         for (c, d, i, j) in crossing {
-            let (x, y) = (apex(tris[i], c, d), apex(tris[j], d, c));
+            let (x, y) = (apex(mesh.tris[i], c, d), apex(mesh.tris[j], d, c));
             // Strictly convex: c and d strictly on either side of the new diagonal xy.
             if side(x, y, c) * side(x, y, d) >= 0 {
                 continue;
@@ -157,10 +226,9 @@ fn recover_edge(
         };
         // [c, d, x] and [d, c, y] become [c, y, x] and [y, d, x] (counter-clockwise
         // quadrilateral c, y, d, x).
-        tris[i] = [c, y, x];
-        tris[j] = [y, d, x];
-        if has_edge(tris) {
-            return Ok(true);
+        mesh.replace([i, j], [[c, y, x], [y, d, x]]);
+        if mesh.has_edge(a, b) {
+            return Ok(());
         }
     }
     Err("an edge of Q in a facet took too many flips")

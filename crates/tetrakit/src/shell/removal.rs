@@ -13,6 +13,10 @@ use std::collections::BinaryHeap;
 /// The most vertices one bigcap removes (each added vertex costs a local hull).
 const BIGCAP_LIMIT: usize = 32;
 
+/// The most sets one bigcap tries (a refused one costs a local hull too: where a tip has
+/// thousands of neighbours, trying them all made bigcaps quadratic per tip).
+const BIGCAP_TRIES: usize = BIGCAP_LIMIT + 4;
+
 /// The removal in progress: the surface, the outer vertices still on it, and the
 /// tetrahedra so far.
 struct Removal<'s, 'a> {
@@ -54,16 +58,16 @@ impl Removal<'_, '_> {
     }
 
     /// Removes a bigcap at `v`: the largest set grown greedily from `{v}` (neighbours of
-    /// the set in increasing number, at most [`BIGCAP_LIMIT`]) whose piece is still
-    /// star-shaped from `v` and passes every check of [`Surface::plan`]; false when even
-    /// the cap at `v` is refused.
+    /// the set in increasing number, at most [`BIGCAP_LIMIT`] vertices and
+    /// [`BIGCAP_TRIES`] sets tried) whose piece is still star-shaped from `v` and passes
+    /// every check of [`Surface::plan`]; false when even the cap at `v` is refused.
     fn bigcap(&mut self, v: u32) -> bool {
         let mut set = vec![v];
         let Ok(mut best) = self.surface.plan(v, &set) else {
             return false;
         };
         let mut tried: HashSet<u32> = set.iter().copied().collect();
-        loop {
+        while tried.len() < BIGCAP_TRIES {
             let mut next: Vec<u32> = set
                 .iter()
                 .flat_map(|&u| self.surface.neighbours(u))
@@ -76,7 +80,7 @@ impl Removal<'_, '_> {
             }
             for u in next {
                 tried.insert(u);
-                if set.len() >= BIGCAP_LIMIT {
+                if set.len() >= BIGCAP_LIMIT || tried.len() > BIGCAP_TRIES {
                     break;
                 }
                 set.push(u);

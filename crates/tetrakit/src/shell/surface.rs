@@ -482,7 +482,13 @@ enum Place {
 /// three edge sides in a projection that keeps the triangle non-degenerate).
 fn locate(pts: &[Point3], t: &[u32; 3], x: &Point3) -> Option<Place> {
     let p = |k: usize| &pts[t[k] as usize];
-    if orient3d(p(0), p(1), p(2), x) != 0 {
+    // A point of the closed triangle lies in its box (exact comparisons): most
+    // triangles are rejected before the exact plane test, which is slow on coplanar input.
+    let outside_box = (0..3).any(|d| {
+        let c = [p(0)[d], p(1)[d], p(2)[d]];
+        x[d] < c[0].min(c[1]).min(c[2]) || x[d] > c[0].max(c[1]).max(c[2])
+    });
+    if outside_box || orient3d(p(0), p(1), p(2), x) != 0 {
         return None;
     }
     let axis = projection_axis(p(0), p(1), p(2))?;
