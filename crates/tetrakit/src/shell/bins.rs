@@ -1,57 +1,44 @@
-//! The inner vertices not yet on the current surface, bucketed in a uniform 3D grid so
-//! that a removal finds the ones under a cap by its bounding box. The grid only
-//! proposes: cells are computed in floating point (monotone in each coordinate, clamped,
-//! so a point inside a box is in a cell of the box's range), and the box test on the
-//! points it returns is exact.
+//! The inner vertices not yet on the current surface, each filed under the surface
+//! triangle its ray from a fixed point `c` strictly inside `Q` crosses.
+//!
+//! Why a removal need only look under the triangles it takes: every surface is the
+//! boundary of a convex `P̄ ⊇ Q`, so the ray from `c` through a hidden vertex `q` crosses
+//! it exactly once, at a point `x` of the closed triangle `q` is filed under, with `q`
+//! strictly between `c` and `x`. A removal keeps every triangle outside its region, so
+//! if `q`'s triangle is not in the region, `x` stays on the new surface and `q`, before
+//! it on the ray, stays strictly inside: only the vertices under the region can reach
+//! the new surface. The others under the region are filed again under the bottom, which
+//! covers the same rays (both are disks on the ring, on surfaces star-shaped from `c`).
+//! Work is proportional to what is filed under the removed triangles, not to a box that a
+//! long surface edge makes as wide as the shell (the thin twisted prisms of
+//! BENCHMARKS.md).
 
-use crate::geom::{Point3, bounding_box};
+use crate::geom::Point3;
 
-/// Hidden inner vertices by grid cell.
-pub(super) struct Bins {
-    lo: Point3,
-    inv: [f64; 3],
-    side: usize,
-    cells: Vec<Vec<u32>>,
+/// Hidden inner vertices by the surface triangle above them.
+pub(super) struct Hidden {
+    /// The centre of the rays: a point strictly inside `Q`.
+    pub(super) centre: Point3,
     hidden: Vec<bool>,
+    /// By surface triangle id: the vertices filed under it (some exposed since: they
+    /// are dropped when read).
+    under: Vec<Vec<u32>>,
+    count: usize,
 }
 
-impl Bins {
-    /// Bins for the points `ids` of `points` (all hidden at first).
-    pub(super) fn new(points: &[Point3], ids: &[u32]) -> Bins {
-        let sub: Vec<Point3> = ids.iter().map(|&i| points[i as usize]).collect();
-        let (lo, hi) = bounding_box(&sub);
-        let side = ((ids.len() as f64).cbrt().ceil() as usize).clamp(1, 128);
-        let inv = [0, 1, 2].map(|k| {
-            let w = hi[k] - lo[k];
-            let r = side as f64 / w;
-            if w > 0.0 && r.is_finite() { r } else { 0.0 }
-        });
-        let mut bins = Bins {
-            lo,
-            inv,
-            side,
-            cells: vec![Vec::new(); side * side * side],
-            hidden: vec![false; points.len()],
-        };
-        for &i in ids {
-            let c = bins.cell(&points[i as usize]);
-            let c = bins.index(c);
-            bins.cells[c].push(i);
-            bins.hidden[i as usize] = true;
+impl Hidden {
+    /// No vertex filed yet; `hidden` are marked hidden.
+    pub(super) fn new(points: usize, hidden: &[u32], centre: Point3) -> Hidden {
+        let mut h = vec![false; points];
+        for &v in hidden {
+            h[v as usize] = true;
         }
-        bins
-    }
-
-    fn cell(&self, p: &Point3) -> [usize; 3] {
-        [0, 1, 2].map(|k| {
-            let x = (p[k] - self.lo[k]) * self.inv[k];
-            // NaN and negatives clamp to 0; the cast saturates.
-            (x.max(0.0) as usize).min(self.side - 1)
-        })
-    }
-
-    fn index(&self, c: [usize; 3]) -> usize {
-        (c[0] * self.side + c[1]) * self.side + c[2]
+        Hidden {
+            centre,
+            hidden: h,
+            under: Vec::new(),
+            count: hidden.len(),
+        }
     }
 
     /// True while `v` is a hidden inner vertex.
@@ -59,36 +46,48 @@ impl Bins {
         self.hidden.get(v as usize).copied().unwrap_or(false)
     }
 
-    /// The hidden vertices inside the closed box `[lo, hi]`.
-    pub(super) fn in_box(&self, points: &[Point3], lo: &Point3, hi: &Point3) -> Vec<u32> {
-        let (a, b) = (self.cell(lo), self.cell(hi));
-        let mut out = Vec::new();
-        for x in a[0]..=b[0] {
-            for y in a[1]..=b[1] {
-                for z in a[2]..=b[2] {
-                    let cell = &self.cells[self.index([x, y, z])];
-                    out.extend(cell.iter().copied().filter(|&i| {
-                        let p = &points[i as usize];
-                        (0..3).all(|k| lo[k] <= p[k] && p[k] <= hi[k])
-                    }));
-                }
-            }
+    /// `v` is on the surface now.
+    pub(super) fn expose(&mut self, v: u32) {
+        if self.is_hidden(v) {
+            self.hidden[v as usize] = false;
+            self.count -= 1;
         }
-        out
     }
 
-    /// `v` is on the surface now.
-    pub(super) fn expose(&mut self, points: &[Point3], v: u32) {
-        if !self.is_hidden(v) {
-            return;
+    /// Files `v` under triangle `t`.
+    pub(super) fn file(&mut self, v: u32, t: u32) {
+        let t = t as usize;
+        if self.under.len() <= t {
+            self.under.resize_with(t + 1, Vec::new);
         }
-        self.hidden[v as usize] = false;
-        let c = self.index(self.cell(&points[v as usize]));
-        self.cells[c].retain(|&i| i != v);
+        self.under[t].push(v);
+    }
+
+    /// The hidden vertices filed under the triangles `region`.
+    pub(super) fn under(&self, region: &[u32]) -> Vec<u32> {
+        region
+            .iter()
+            .filter_map(|&t| self.under.get(t as usize))
+            .flatten()
+            .copied()
+            .filter(|&v| self.is_hidden(v))
+            .collect()
+    }
+
+    /// Takes the hidden vertices filed under the triangles `region` (removed).
+    pub(super) fn take(&mut self, region: &[u32]) -> Vec<u32> {
+        let mut out = Vec::new();
+        for &t in region {
+            if let Some(list) = self.under.get_mut(t as usize) {
+                out.append(list);
+            }
+        }
+        out.retain(|&v| self.is_hidden(v));
+        out
     }
 
     /// How many inner vertices are still hidden.
     pub(super) fn count(&self) -> usize {
-        self.cells.iter().map(Vec::len).sum()
+        self.count
     }
 }

@@ -395,8 +395,7 @@ pub fn tetrahedralize(
     let surface = Surface::new(
         &shell.points,
         &shell.hull,
-        &hidden,
-        &shell.touching,
+        (&shell.inner, &hidden, &shell.touching),
         &q_edges,
     );
     let order = match surface {

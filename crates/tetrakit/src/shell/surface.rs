@@ -5,7 +5,8 @@
 //! **Removing a vertex `v`** (a cap, §4.1). Let `L` be the link of `v` (its neighbours,
 //! a cycle) and `H' = CH(V(P̄) − v ∪ V(Q))` the new hull. The cap `P̄ − H'` lies in
 //! `CH(v ∪ L)`, so the only points that can appear on its bottom are `L` and the hidden
-//! inner vertices `C` in that region (found by bounding box, a superset). Let
+//! inner vertices `C` in that region (a superset: those filed under the star's
+//! triangles, see [`Hidden`](super::bins)). Let
 //! `K = CH(L ∪ C) ⊆ H'`. Every facet of `H'` that `v` sees is a face of `K` (its
 //! vertices are in `L ∪ C`), and conversely a facet of `K` that `v` sees strictly lies on
 //! `∂H'` (a point of `K` that `v` sees is not in the interior of `H'`, else the segment
@@ -25,7 +26,7 @@
 //! and is reported, and the caller tries another tip. The final mesh is certified anyway
 //! ([`crate::mesh::certify_shell`]).
 
-use super::bins::Bins;
+use super::bins::Hidden;
 use super::recover::QEdges;
 use crate::geom::{Hull3, Point3, bounding_box, orient2d_drop, orient3d, projection_axis};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
@@ -40,7 +41,7 @@ pub(super) struct Surface<'a> {
     /// Triangles by vertex (dead ones are dropped lazily).
     incident: Vec<Vec<u32>>,
     /// Inner vertices not yet on the surface.
-    pub(super) hidden: Bins,
+    pub(super) hidden: Hidden,
     /// `P` itself, to tell the surface's facets on `∂P` from those inside it.
     outer_hull: &'a Hull3,
     /// Q's edges, recovered wherever a facet of the surface holds them.
@@ -96,14 +97,16 @@ impl<'a> Surface<'a> {
     /// it), with the inner vertices `hidden` below it.
     ///
     /// `on_outer` are the inner vertices that lie on `∂P` (on a facet or an edge of the
-    /// outer hull): they are vertices of the surface from the start.
+    /// outer hull): they are vertices of the surface from the start. `inner` are all the
+    /// vertices of `Q`; refused when no floating-point point lies strictly inside `Q` (a
+    /// sliver thinner than the coordinates resolve), which the rays of [`Hidden`] need.
     pub(super) fn new(
         pts: &'a [Point3],
         outer_hull: &'a Hull3,
-        hidden: &[u32],
-        on_outer: &[u32],
+        (inner, hidden, on_outer): (&[u32], &[u32], &[u32]),
         q_edges: &'a QEdges,
     ) -> Result<Surface<'a>, Refused> {
+        let centre = inside(pts, inner).ok_or(Refused("no float point strictly inside Q"))?;
         let mut tris = outer_hull.triangles.clone();
         let corners: HashSet<u32> = tris.iter().flatten().copied().collect();
         let flat: Vec<u32> = on_outer
@@ -127,17 +130,63 @@ impl<'a> Surface<'a> {
             alive: Vec::new(),
             edge: HashMap::default(),
             incident: vec![Vec::new(); pts.len()],
-            hidden: Bins::new(pts, hidden),
+            hidden: Hidden::new(pts.len(), hidden, centre),
             outer_hull,
             q_edges,
         };
         for &v in on_outer {
-            s.hidden.expose(pts, v);
+            s.hidden.expose(v);
         }
         for t in tris {
             s.add(t);
         }
+        // Nearby vertices one after the other, so that each walk starts close.
+        let mut order: Vec<u32> = hidden
+            .iter()
+            .copied()
+            .filter(|&v| s.hidden.is_hidden(v))
+            .collect();
+        let coords: Vec<Point3> = order.iter().map(|&v| pts[v as usize]).collect();
+        let (lo, hi) = bounding_box(&coords);
+        let key = |v: &u32| cell_key(&pts[*v as usize], &lo, &hi);
+        order.sort_by_key(key);
+        let mut at = 0;
+        for v in order {
+            at = s.locate(v, at);
+            s.hidden.file(v, at);
+        }
         Ok(s)
+    }
+
+    /// The live triangle whose closed cone from the centre holds `v` (the surface
+    /// triangle the ray from the centre through `v` crosses), by a walk from `start`
+    /// across the edges `v` lies beyond (in a random order, so that it cannot cycle
+    /// forever), then by a scan of every triangle.
+    fn locate(&self, v: u32, start: u32) -> u32 {
+        let (c, x) = (&self.hidden.centre, &self.pts[v as usize]);
+        let p = |u: u32| &self.pts[u as usize];
+        let beyond = |t: [u32; 3], k: usize| orient3d(c, p(t[k]), p(t[(k + 1) % 3]), x) < 0;
+        let mut seed = (v as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
+        let mut t = start;
+        for _ in 0..4 * self.tris.len() + 64 {
+            if !self.alive[t as usize] {
+                break;
+            }
+            let tri = self.tris[t as usize];
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            let first = (seed % 3) as usize;
+            let across = (0..3).map(|j| (first + j) % 3).find(|&k| beyond(tri, k));
+            match across.and_then(|k| self.edge.get(&(tri[(k + 1) % 3], tri[k]))) {
+                Some(&n) => t = n,
+                None if across.is_none() => return t,
+                None => break,
+            }
+        }
+        (0..self.tris.len() as u32)
+            .find(|&t| self.alive[t as usize] && (0..3).all(|k| !beyond(self.tris[t as usize], k)))
+            .unwrap_or(start)
     }
 
     fn add(&mut self, t: [u32; 3]) {
@@ -247,7 +296,7 @@ impl<'a> Surface<'a> {
                 "the removed set surrounds a vertex it does not remove",
             ));
         }
-        let bottom = self.bottom(tip, set, &ring, &boundary)?;
+        let bottom = self.bottom(tip, &region, &ring, &boundary)?;
         Ok(Cut { region, bottom })
     }
 
@@ -308,35 +357,41 @@ impl<'a> Surface<'a> {
             bottom,
             tets,
         } = piece;
+        let moved = self.hidden.take(&region);
         for t in region {
             self.kill(t);
         }
+        let first = self.tris.len() as u32;
         for t in bottom {
             for v in t {
-                self.hidden.expose(self.pts, v);
+                self.hidden.expose(v);
             }
             self.add(t);
+        }
+        // Each walk starts where the last ended: the moved vertices were filed in a
+        // spatial order, and stay in it.
+        let mut at = first.min(self.tris.len() as u32 - 1);
+        for v in moved {
+            if self.hidden.is_hidden(v) {
+                at = self.locate(v, at);
+                self.hidden.file(v, at);
+            }
         }
         tets
     }
 
     /// The new surface inside the region bounded by `boundary` (directed as in the
-    /// removed triangles): the disk of `∂CH(ring ∪ hidden below)` on the tip's side.
+    /// removed triangles `region`): the disk of `∂CH(ring ∪ hidden below)` on the tip's
+    /// side.
     fn bottom(
         &self,
         tip: u32,
-        set: &[u32],
+        region: &[u32],
         ring: &[u32],
         boundary: &[(u32, u32)],
     ) -> Result<Vec<[u32; 3]>, Refused> {
-        let around: Vec<Point3> = ring
-            .iter()
-            .chain(set)
-            .map(|&v| self.pts[v as usize])
-            .collect();
-        let (lo, hi) = bounding_box(&around);
         let mut local: Vec<u32> = ring.to_vec();
-        local.extend(self.hidden.in_box(self.pts, &lo, &hi));
+        local.extend(self.hidden.under(region));
         let coords: Vec<Point3> = local.iter().map(|&v| self.pts[v as usize]).collect();
         let hull = Hull3::new(&coords);
         let (tris, on_hull): (Vec<[u32; 3]>, Vec<u32>) = if hull.dimension == 3 {
@@ -502,4 +557,25 @@ fn locate(pts: &[Point3], t: &[u32; 3], x: &Point3) -> Option<Place> {
         1 => sides.iter().position(|&s| s == 0).map(Place::Edge),
         _ => None, // a corner: already a vertex
     }
+}
+
+/// A point strictly inside the polytope with vertices `inner` (their float centroid,
+/// checked exactly against every facet), if that point is.
+fn inside(pts: &[Point3], inner: &[u32]) -> Option<Point3> {
+    let q: Vec<Point3> = inner.iter().map(|&v| pts[v as usize]).collect();
+    let n = q.len() as f64;
+    let c: Point3 = std::array::from_fn(|k| q.iter().map(|p| p[k]).sum::<f64>() / n);
+    let hull = Hull3::new(&q);
+    let strictly = hull.dimension == 3
+        && hull.triangles.iter().all(|t| {
+            let [a, b, d] = t.map(|k| &q[k as usize]);
+            orient3d(a, b, d, &c) < 0
+        });
+    strictly.then_some(c)
+}
+
+/// A coarse spatial key (64 cells a side over the box `[lo, hi]`): sorting by it puts
+/// nearby points one after the other.
+fn cell_key(p: &Point3, lo: &Point3, hi: &Point3) -> [i64; 3] {
+    std::array::from_fn(|k| (64.0 * (p[k] - lo[k]) / (hi[k] - lo[k]).max(f64::MIN_POSITIVE)) as i64)
 }
