@@ -395,7 +395,7 @@ pub fn tetrahedralize(
     let surface = Surface::new(
         &shell.points,
         &shell.hull,
-        (&shell.inner, &hidden, &shell.touching),
+        (&hidden, &shell.touching),
         &q_edges,
     );
     let order = match surface {

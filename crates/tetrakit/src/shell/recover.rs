@@ -15,15 +15,29 @@
 use crate::geom::{Point3, bounding_box, orient2d_drop, orient3d, projection_axis};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
-/// Q's edges, by vertex: `edges[v]` are the vertices joined to `v` by an edge of `Q`.
+/// Q's edges, by vertex (`edges[v]` are the vertices joined to `v` by an edge of `Q`),
+/// and a point strictly inside `Q` (for the rays of [`super::bins::Hidden`]).
 #[derive(Debug, Default)]
-pub(super) struct QEdges(HashMap<u32, Vec<u32>>);
+pub(super) struct QEdges {
+    edges: HashMap<u32, Vec<u32>>,
+    /// The float centroid of Q's vertices when it is strictly inside `Q` (checked
+    /// exactly against every facet; not so only for a sliver thinner than the
+    /// coordinates resolve).
+    pub(super) centre: Option<Point3>,
+}
 
 impl QEdges {
     /// The edges of the polytope `Q` whose vertices are `inner` (indices into `pts`).
     pub(super) fn new(pts: &[Point3], inner: &[u32]) -> QEdges {
         let coords: Vec<Point3> = inner.iter().map(|&v| pts[v as usize]).collect();
         let hull = crate::geom::Hull3::new(&coords);
+        let n = coords.len() as f64;
+        let c: Point3 = std::array::from_fn(|k| coords.iter().map(|p| p[k]).sum::<f64>() / n);
+        let strictly = hull.dimension == 3
+            && hull.triangles.iter().all(|t| {
+                let [a, b, d] = t.map(|k| &coords[k as usize]);
+                orient3d(a, b, d, &c) < 0
+            });
         // Every point is a corner of Q, so its edges are the triangle edges between two
         // facets.
         let mut by_vertex: HashMap<u32, Vec<u32>> = HashMap::default();
@@ -37,7 +51,10 @@ impl QEdges {
                 by_vertex.entry(b).or_default().push(a);
             }
         }
-        QEdges(by_vertex)
+        QEdges {
+            edges: by_vertex,
+            centre: strictly.then_some(c),
+        }
     }
 
     /// Recovers in `tris` every edge of `Q` whose ends are both corners of `tris` and lie
@@ -48,14 +65,14 @@ impl QEdges {
         tris: &mut [[u32; 3]],
         walls: &HashSet<(u32, u32)>,
     ) -> Result<(), &'static str> {
-        if self.0.is_empty() {
+        if self.edges.is_empty() {
             return Ok(());
         }
         let mut mesh = Mesh::new(pts, tris);
         let mut wanted: Vec<(u32, u32)> = mesh
             .incident
             .keys()
-            .filter_map(|v| self.0.get(v).map(|ws| (v, ws)))
+            .filter_map(|v| self.edges.get(v).map(|ws| (v, ws)))
             .flat_map(|(&v, ws)| ws.iter().map(move |&w| (v, w)))
             .filter(|&(v, w)| v < w && mesh.incident.contains_key(&w))
             .collect();

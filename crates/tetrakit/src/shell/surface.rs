@@ -6,7 +6,7 @@
 //! a cycle) and `H' = CH(V(P̄) − v ∪ V(Q))` the new hull. The cap `P̄ − H'` lies in
 //! `CH(v ∪ L)`, so the only points that can appear on its bottom are `L` and the hidden
 //! inner vertices `C` in that region (a superset: those filed under the star's
-//! triangles, see [`Hidden`](super::bins)). Let
+//! triangles, see [`Hidden`](super::bins), inside the bounding box of `v ∪ L`). Let
 //! `K = CH(L ∪ C) ⊆ H'`. Every facet of `H'` that `v` sees is a face of `K` (its
 //! vertices are in `L ∪ C`), and conversely a facet of `K` that `v` sees strictly lies on
 //! `∂H'` (a point of `K` that `v` sees is not in the interior of `H'`, else the segment
@@ -97,16 +97,18 @@ impl<'a> Surface<'a> {
     /// it), with the inner vertices `hidden` below it.
     ///
     /// `on_outer` are the inner vertices that lie on `∂P` (on a facet or an edge of the
-    /// outer hull): they are vertices of the surface from the start. `inner` are all the
-    /// vertices of `Q`; refused when no floating-point point lies strictly inside `Q` (a
-    /// sliver thinner than the coordinates resolve), which the rays of [`Hidden`] need.
+    /// outer hull): they are vertices of the surface from the start. Refused when no
+    /// floating-point point lies strictly inside `Q` (a sliver thinner than the
+    /// coordinates resolve), which the rays of [`Hidden`] need.
     pub(super) fn new(
         pts: &'a [Point3],
         outer_hull: &'a Hull3,
-        (inner, hidden, on_outer): (&[u32], &[u32], &[u32]),
+        (hidden, on_outer): (&[u32], &[u32]),
         q_edges: &'a QEdges,
     ) -> Result<Surface<'a>, Refused> {
-        let centre = inside(pts, inner).ok_or(Refused("no float point strictly inside Q"))?;
+        let centre = q_edges
+            .centre
+            .ok_or(Refused("no float point strictly inside Q"))?;
         let mut tris = outer_hull.triangles.clone();
         let corners: HashSet<u32> = tris.iter().flatten().copied().collect();
         let flat: Vec<u32> = on_outer
@@ -146,10 +148,7 @@ impl<'a> Surface<'a> {
             .copied()
             .filter(|&v| s.hidden.is_hidden(v))
             .collect();
-        let coords: Vec<Point3> = order.iter().map(|&v| pts[v as usize]).collect();
-        let (lo, hi) = bounding_box(&coords);
-        let key = |v: &u32| cell_key(&pts[*v as usize], &lo, &hi);
-        order.sort_by_key(key);
+        order.sort_by_cached_key(|&v| direction_key(&pts[v as usize], &centre));
         let mut at = 0;
         for v in order {
             at = s.locate(v, at);
@@ -296,7 +295,7 @@ impl<'a> Surface<'a> {
                 "the removed set surrounds a vertex it does not remove",
             ));
         }
-        let bottom = self.bottom(tip, &region, &ring, &boundary)?;
+        let bottom = self.bottom(tip, (set, &region), &ring, &boundary)?;
         Ok(Cut { region, bottom })
     }
 
@@ -381,17 +380,27 @@ impl<'a> Surface<'a> {
     }
 
     /// The new surface inside the region bounded by `boundary` (directed as in the
-    /// removed triangles `region`): the disk of `∂CH(ring ∪ hidden below)` on the tip's
-    /// side.
+    /// triangles `region` that removing `set` takes): the disk of
+    /// `∂CH(ring ∪ hidden below)` on the tip's side.
     fn bottom(
         &self,
         tip: u32,
-        region: &[u32],
+        (set, region): (&[u32], &[u32]),
         ring: &[u32],
         boundary: &[(u32, u32)],
     ) -> Result<Vec<[u32; 3]>, Refused> {
+        let around: Vec<Point3> = ring
+            .iter()
+            .chain(set)
+            .map(|&v| self.pts[v as usize])
+            .collect();
+        let (lo, hi) = bounding_box(&around);
+        let in_box = |v: &u32| {
+            let x = &self.pts[*v as usize];
+            (0..3).all(|k| lo[k] <= x[k] && x[k] <= hi[k])
+        };
         let mut local: Vec<u32> = ring.to_vec();
-        local.extend(self.hidden.under(region));
+        local.extend(self.hidden.under(region).into_iter().filter(in_box));
         let coords: Vec<Point3> = local.iter().map(|&v| self.pts[v as usize]).collect();
         let hull = Hull3::new(&coords);
         let (tris, on_hull): (Vec<[u32; 3]>, Vec<u32>) = if hull.dimension == 3 {
@@ -559,23 +568,16 @@ fn locate(pts: &[Point3], t: &[u32; 3], x: &Point3) -> Option<Place> {
     }
 }
 
-/// A point strictly inside the polytope with vertices `inner` (their float centroid,
-/// checked exactly against every facet), if that point is.
-fn inside(pts: &[Point3], inner: &[u32]) -> Option<Point3> {
-    let q: Vec<Point3> = inner.iter().map(|&v| pts[v as usize]).collect();
-    let n = q.len() as f64;
-    let c: Point3 = std::array::from_fn(|k| q.iter().map(|p| p[k]).sum::<f64>() / n);
-    let hull = Hull3::new(&q);
-    let strictly = hull.dimension == 3
-        && hull.triangles.iter().all(|t| {
-            let [a, b, d] = t.map(|k| &q[k as usize]);
-            orient3d(a, b, d, &c) < 0
-        });
-    strictly.then_some(c)
-}
-
-/// A coarse spatial key (64 cells a side over the box `[lo, hi]`): sorting by it puts
-/// nearby points one after the other.
-fn cell_key(p: &Point3, lo: &Point3, hi: &Point3) -> [i64; 3] {
-    std::array::from_fn(|k| (64.0 * (p[k] - lo[k]) / (hi[k] - lo[k]).max(f64::MIN_POSITIVE)) as i64)
+/// A key along a Z-order curve of the direction of `p` from `c` (10 bits a coordinate of
+/// the direction scaled to the unit cube): sorting by it puts points whose rays cross
+/// nearby surface triangles one after the other.
+fn direction_key(p: &Point3, c: &Point3) -> u64 {
+    let d: Point3 = std::array::from_fn(|k| p[k] - c[k]);
+    let m = d.iter().fold(f64::MIN_POSITIVE, |m, x| m.max(x.abs()));
+    let q = d.map(|x| ((x / m + 1.0) * 511.5) as u64 & 1023);
+    (0..10).fold(0, |key, bit| {
+        key | (((q[0] >> bit) & 1) << (3 * bit))
+            | (((q[1] >> bit) & 1) << (3 * bit + 1))
+            | (((q[2] >> bit) & 1) << (3 * bit + 2))
+    })
 }
