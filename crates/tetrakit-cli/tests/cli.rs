@@ -1199,7 +1199,7 @@ fn shell_finished_by_placing() {
         .map(|i| [i & 1, (i >> 1) & 1, i >> 2].map(|b| 4 * b))
         .collect();
     let inner: Vec<[u8; 3]> = (0..8u8)
-        .map(|i| [i & 1, 2 + 2 * ((i >> 1) & 1), 1 + (i >> 2)])
+        .map(|i| [2 * (i & 1), 1 + 2 * ((i >> 1) & 1), 2 + (i >> 2)])
         .collect();
     std::fs::write(&o, cube(&outer)).unwrap();
     std::fs::write(&i, cube(&inner)).unwrap();

@@ -83,8 +83,8 @@
 //! assert!(mesh.tets.len() <= 9 * 16 - 6);
 //! ```
 
-mod bins;
 pub mod generate;
+mod hidden;
 mod improve;
 pub mod lemma41;
 mod optimum;

@@ -16,7 +16,7 @@ use crate::geom::{Point3, bounding_box, orient2d_drop, orient3d, projection_axis
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
 /// Q's edges, by vertex (`edges[v]` are the vertices joined to `v` by an edge of `Q`),
-/// and a point strictly inside `Q` (for the rays of [`super::bins::Hidden`]).
+/// and a point strictly inside `Q` (for the rays of [`super::hidden::Hidden`]).
 #[derive(Debug, Default)]
 pub(super) struct QEdges {
     edges: HashMap<u32, Vec<u32>>,

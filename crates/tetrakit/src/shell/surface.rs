@@ -6,7 +6,7 @@
 //! a cycle) and `H' = CH(V(P̄) − v ∪ V(Q))` the new hull. The cap `P̄ − H'` lies in
 //! `CH(v ∪ L)`, so the only points that can appear on its bottom are `L` and the hidden
 //! inner vertices `C` in that region (a superset: those filed under the star's
-//! triangles, see [`Hidden`](super::bins), inside the bounding box of `v ∪ L`). Let
+//! triangles, see [`Hidden`](super::hidden), inside the bounding box of `v ∪ L`). Let
 //! `K = CH(L ∪ C) ⊆ H'`. Every facet of `H'` that `v` sees is a face of `K` (its
 //! vertices are in `L ∪ C`), and conversely a facet of `K` that `v` sees strictly lies on
 //! `∂H'` (a point of `K` that `v` sees is not in the interior of `H'`, else the segment
@@ -26,7 +26,7 @@
 //! and is reported, and the caller tries another tip. The final mesh is certified anyway
 //! ([`crate::mesh::certify_shell`]).
 
-use super::bins::Hidden;
+use super::hidden::Hidden;
 use super::recover::QEdges;
 use crate::geom::{Hull3, Point3, bounding_box, orient2d_drop, orient3d, projection_axis};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
