@@ -627,35 +627,20 @@ mod property {
 fn boxes_touching_a_box_anywhere() {
     let big = cube([0.0; 3], 4.0);
     let mut failed = Vec::new();
-    let spans: Vec<[f64; 2]> = (0..4)
-        .flat_map(|lo| (lo + 1..=4).map(move |hi| [lo as f64, hi as f64]))
-        .collect();
-    for &[x0, x1] in &spans {
-        for &[y0, y1] in &spans {
-            for &[z0, z1] in &spans {
-                let mut inner: Vec<Point3> = [x0, x1]
-                    .iter()
-                    .flat_map(|&x| [y0, y1].map(|y| [x, y]))
-                    .flat_map(|[x, y]| [z0, z1].map(|z| [x, y, z]))
-                    .collect();
-                if inner.iter().all(|p| big.contains(p)) {
-                    continue; // Q = P
-                }
-                for reversed in [false, true] {
-                    if reversed {
-                        inner.reverse();
+    for mut inner in boxes_in_the_cube() {
+        for reversed in [false, true] {
+            if reversed {
+                inner.reverse();
+            }
+            let shell = Shell::new(&big, &inner).unwrap();
+            for m in [Method::Cap, Method::Bigcap] {
+                match tetrahedralize(&shell, m, &Control::new()) {
+                    Ok(mesh) => {
+                        let cert = certify_shell(&shell.points, &mesh.tets, &shell.inner);
+                        assert_eq!(cert, Ok(()), "{m:?} {inner:?}");
+                        assert!(mesh.tets.len() <= 9 * shell.n() - 6);
                     }
-                    let shell = Shell::new(&big, &inner).unwrap();
-                    for m in [Method::Cap, Method::Bigcap] {
-                        match tetrahedralize(&shell, m, &Control::new()) {
-                            Ok(mesh) => {
-                                let cert = certify_shell(&shell.points, &mesh.tets, &shell.inner);
-                                assert_eq!(cert, Ok(()), "{m:?} {inner:?}");
-                                assert!(mesh.tets.len() <= 9 * shell.n() - 6);
-                            }
-                            Err(e) => failed.push(format!("{m:?} {inner:?}: {e}")),
-                        }
-                    }
+                    Err(e) => failed.push(format!("{m:?} {inner:?}: {e}")),
                 }
             }
         }
@@ -852,20 +837,28 @@ fn shell_reports_the_exact_minimum() {
     assert!(matches!(refused, Err(ShellError::TooLargeForOptimum { n }) if n == big.n()));
 }
 
-/// Integer points on the sphere `x² + y² + z² = r2`: cospherical, many coplanar facets.
-fn lattice_sphere(r2: i64) -> Vec<Point3> {
-    let r = (r2 as f64).sqrt() as i64 + 1;
-    let mut pts = Vec::new();
-    for x in -r..=r {
-        for y in -r..=r {
-            for z in -r..=r {
-                if x * x + y * y + z * z == r2 {
-                    pts.push([x as f64, y as f64, z as f64]);
+/// Every box with integer corners in `[0, 4]³` other than the cube itself (999), each
+/// as its 8 corners.
+fn boxes_in_the_cube() -> Vec<Vec<Point3>> {
+    let big = cube([0.0; 3], 4.0);
+    let spans: Vec<[f64; 2]> = (0..4)
+        .flat_map(|lo| (lo + 1..=4).map(move |hi| [lo as f64, hi as f64]))
+        .collect();
+    let pick = |k: usize, i: usize, [a, b]: [f64; 2]| if (i >> k) & 1 == 1 { b } else { a };
+    let mut boxes = Vec::new();
+    for &x in &spans {
+        for &y in &spans {
+            for &z in &spans {
+                let corners: Vec<Point3> = (0..8)
+                    .map(|i| [pick(0, i, x), pick(1, i, y), pick(2, i, z)])
+                    .collect();
+                if !corners.iter().all(|p| big.contains(p)) {
+                    boxes.push(corners);
                 }
             }
         }
     }
-    pts
+    boxes
 }
 
 /// The degenerate shells of this file in one list: boxes anywhere in a box (999),
@@ -873,29 +866,13 @@ fn lattice_sphere(r2: i64) -> Vec<Point3> {
 /// grids with a grid inside or on a facet, coaxial prisms, the contact families and
 /// random nested shapes.
 fn degenerate_shells() -> Vec<(Vec<Point3>, Vec<Point3>)> {
-    let mut cases = Vec::new();
     let big = cube([0.0; 3], 4.0);
-    let spans: Vec<[f64; 2]> = (0..4)
-        .flat_map(|lo| (lo + 1..=4).map(move |hi| [lo as f64, hi as f64]))
+    let mut cases: Vec<_> = boxes_in_the_cube()
+        .into_iter()
+        .map(|inner| (big.clone(), inner))
         .collect();
-    for &[x0, x1] in &spans {
-        for &[y0, y1] in &spans {
-            for &[z0, z1] in &spans {
-                let inner: Vec<Point3> = (0..8)
-                    .map(|i| {
-                        let pick =
-                            |k: usize, [a, b]: [f64; 2]| if (i >> k) & 1 == 1 { b } else { a };
-                        [pick(0, [x0, x1]), pick(1, [y0, y1]), pick(2, [z0, z1])]
-                    })
-                    .collect();
-                if !inner.iter().all(|p| big.contains(p)) {
-                    cases.push((big.clone(), inner));
-                }
-            }
-        }
-    }
     for r2 in [3, 9, 11, 17, 25, 27, 50] {
-        let outer = lattice_sphere(r2);
+        let outer = tetrakit::generate::cospherical_points(r2);
         for k in [2.0, 3.0] {
             cases.push((
                 outer.clone(),

@@ -23,6 +23,9 @@ pub(super) struct Hidden {
     /// By surface triangle id: the vertices filed under it (some exposed since: they
     /// are dropped when read).
     under: Vec<Vec<u32>>,
+    /// Vertices no walk or scan placed under a triangle (none, by the argument above;
+    /// kept so that the candidates stay a superset even then): candidates everywhere.
+    loose: Vec<u32>,
     count: usize,
 }
 
@@ -37,6 +40,7 @@ impl Hidden {
             centre,
             hidden: h,
             under: Vec::new(),
+            loose: Vec::new(),
             count: hidden.len(),
         }
     }
@@ -54,8 +58,12 @@ impl Hidden {
         }
     }
 
-    /// Files `v` under triangle `t`.
-    pub(super) fn file(&mut self, v: u32, t: u32) {
+    /// Files `v` under triangle `t` (`None`: under every triangle).
+    pub(super) fn file(&mut self, v: u32, t: Option<u32>) {
+        let Some(t) = t else {
+            self.loose.push(v);
+            return;
+        };
         let t = t as usize;
         if self.under.len() <= t {
             self.under.resize_with(t + 1, Vec::new);
@@ -63,12 +71,13 @@ impl Hidden {
         self.under[t].push(v);
     }
 
-    /// The hidden vertices filed under the triangles `region`.
+    /// The hidden vertices filed under the triangles `region` (and the loose ones).
     pub(super) fn under(&self, region: &[u32]) -> Vec<u32> {
         region
             .iter()
             .filter_map(|&t| self.under.get(t as usize))
             .flatten()
+            .chain(&self.loose)
             .copied()
             .filter(|&v| self.is_hidden(v))
             .collect()

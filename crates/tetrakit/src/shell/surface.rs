@@ -151,8 +151,9 @@ impl<'a> Surface<'a> {
         order.sort_by_cached_key(|&v| direction_key(&pts[v as usize], &centre));
         let mut at = 0;
         for v in order {
-            at = s.locate(v, at);
-            s.hidden.file(v, at);
+            let t = s.locate(v, at);
+            at = t.unwrap_or(at);
+            s.hidden.file(v, t);
         }
         Ok(s)
     }
@@ -160,8 +161,9 @@ impl<'a> Surface<'a> {
     /// The live triangle whose closed cone from the centre holds `v` (the surface
     /// triangle the ray from the centre through `v` crosses), by a walk from `start`
     /// across the edges `v` lies beyond (in a random order, so that it cannot cycle
-    /// forever), then by a scan of every triangle.
-    fn locate(&self, v: u32, start: u32) -> u32 {
+    /// forever), then by a scan of every triangle; `None` if none does (never, for a
+    /// vertex strictly inside the current hull).
+    fn locate(&self, v: u32, start: u32) -> Option<u32> {
         let (c, x) = (&self.hidden.centre, &self.pts[v as usize]);
         let p = |u: u32| &self.pts[u as usize];
         let beyond = |t: [u32; 3], k: usize| orient3d(c, p(t[k]), p(t[(k + 1) % 3]), x) < 0;
@@ -179,13 +181,12 @@ impl<'a> Surface<'a> {
             let across = (0..3).map(|j| (first + j) % 3).find(|&k| beyond(tri, k));
             match across.and_then(|k| self.edge.get(&(tri[(k + 1) % 3], tri[k]))) {
                 Some(&n) => t = n,
-                None if across.is_none() => return t,
+                None if across.is_none() => return Some(t),
                 None => break,
             }
         }
         (0..self.tris.len() as u32)
             .find(|&t| self.alive[t as usize] && (0..3).all(|k| !beyond(self.tris[t as usize], k)))
-            .unwrap_or(start)
     }
 
     fn add(&mut self, t: [u32; 3]) {
@@ -372,8 +373,9 @@ impl<'a> Surface<'a> {
         let mut at = first.min(self.tris.len() as u32 - 1);
         for v in moved {
             if self.hidden.is_hidden(v) {
-                at = self.locate(v, at);
-                self.hidden.file(v, at);
+                let t = self.locate(v, at);
+                at = t.unwrap_or(at);
+                self.hidden.file(v, t);
             }
         }
         tets
