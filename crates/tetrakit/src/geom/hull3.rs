@@ -381,7 +381,8 @@ pub fn affine_dimension(points: &[Point3]) -> usize {
 /// at that facet's horizon edges extend the facet and make no tetrahedron. A point of
 /// `then` that is not strictly outside the current hull when its turn comes is skipped
 /// (it is no vertex). The count depends on the order: placing in the reverse of a cap
-/// removal's order makes the removal's tetrahedra.
+/// removal's order fills the removal's caps again, each the same region (triangulated
+/// alike up to the choice of diagonals in coplanar facets).
 ///
 /// ```
 /// use tetrakit::geom::placing;

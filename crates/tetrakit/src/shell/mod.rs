@@ -45,8 +45,9 @@
 //! the removed ones in the reverse of their removal, each coned to the triangles of the
 //! current hull it strictly sees. Placing refuses nothing, in any order and on any input
 //! (its docs give the argument), so no valid shell fails, at any size; and placing in the
-//! reverse of a removal's order remakes that removal's caps, so the count stays the
-//! removal's (on the degenerate shells of the tests, 0.01 % more before the flips). The
+//! reverse of a removal's order fills that removal's caps again (a bigcap becomes one cap
+//! per vertex), so the count stays near the removal's (on the degenerate shells of the
+//! tests, 0.01 % more for caps before the flips, 0.01 % fewer for bigcaps). The
 //! outcome says which ended it ([`Finish`]). The exact solver is used for `--optimum`
 //! only.
 //!
@@ -369,8 +370,9 @@ impl ShellMesh {
 /// tetrahedralized again from scratch by [`placing`](crate::geom::placing): `Q`'s
 /// boundary, then the vertices left, then the removed ones in the reverse of their
 /// removal, each coned to what it sees. Placing never refuses a vertex, in any order, so
-/// no valid shell fails; and placing in the reverse of a removal's order remakes that
-/// removal's caps, so the count stays near the removal's.
+/// no valid shell fails; and placing in the reverse of a removal's order fills that
+/// removal's caps again (a bigcap becomes one cap per vertex), so the count stays near
+/// the removal's.
 pub fn tetrahedralize(
     shell: &Shell,
     method: Method,
