@@ -53,7 +53,21 @@ struct Tri {
     v: [u32; 3],
     nb: [u32; 3],
     alive: bool,
+    /// The last insertion that looked at this triangle ([`Builder::insert`]).
+    seen: u32,
     conflicts: Vec<u32>,
+}
+
+impl Tri {
+    fn new(v: [u32; 3], nb: [u32; 3]) -> Tri {
+        Tri {
+            v,
+            nb,
+            alive: true,
+            seen: 0,
+            conflicts: Vec::new(),
+        }
+    }
 }
 
 impl Hull3 {
@@ -442,6 +456,19 @@ struct Builder<'a> {
     eligible: Option<Vec<bool>>,
     /// The tetrahedra each insertion makes with the triangles it sees, when recording.
     tets: Option<Vec<[u32; 4]>>,
+    /// Insertions so far: the stamp of the triangles the current one has looked at.
+    round: u32,
+    /// Scratch space of [`Builder::insert`], kept between insertions.
+    scratch: Scratch,
+}
+
+#[derive(Default)]
+struct Scratch {
+    visible: Vec<usize>,
+    /// `(a, b, outer triangle, its edge index)` for each horizon edge `ab`.
+    horizon: Vec<(u32, u32, usize, usize)>,
+    orphans: Vec<u32>,
+    by_start: HashMap<u32, usize>,
 }
 
 impl<'a> Builder<'a> {
@@ -461,6 +488,8 @@ impl<'a> Builder<'a> {
             owner: vec![NONE; pts.len()],
             eligible: None,
             tets: None,
+            round: 0,
+            scratch: Scratch::default(),
         }
     }
 
@@ -478,12 +507,7 @@ impl<'a> Builder<'a> {
             std::mem::swap(&mut b, &mut c);
         }
         for v in [[b, c, d], [a, d, c], [a, b, d], [a, c, b]] {
-            self.tris.push(Tri {
-                v,
-                nb: [NONE; 3],
-                alive: true,
-                conflicts: Vec::new(),
-            });
+            self.tris.push(Tri::new(v, [NONE; 3]));
         }
         let mut edges = HashMap::default();
         for t in 0..4 {
@@ -524,9 +548,13 @@ impl<'a> Builder<'a> {
         (triangles, neighbours)
     }
 
+    /// Inserts every eligible conflict point. The triangles are taken first in, first
+    /// out: taking the newest first builds one side of a prism before the other, and
+    /// every vertex of the second side then takes over a fan of the first (quadratic:
+    /// 39 million triangles made for a 50,000-vertex twisted prism, 190,000 this way).
     fn run(&mut self) {
-        let mut work: Vec<usize> = (0..4).collect();
-        while let Some(t) = work.pop() {
+        let mut work: std::collections::VecDeque<usize> = (0..4).collect();
+        while let Some(t) = work.pop_front() {
             if !self.tris[t].alive {
                 continue;
             }
@@ -559,66 +587,75 @@ impl<'a> Builder<'a> {
 
     /// Adds `p` (strictly beyond triangle `t0`); returns the new triangles.
     fn insert(&mut self, t0: usize, p: u32) -> Vec<usize> {
-        let mut visible = vec![t0];
-        let mut seen: HashSet<usize> = std::iter::once(t0).collect();
-        let mut horizon = Vec::new(); // (a, b, outer triangle, its edge index)
-        let mut k = 0;
-        while k < visible.len() {
-            let t = visible[k];
-            k += 1;
-            for i in 0..3 {
-                let n = self.tris[t].nb[i] as usize;
-                if seen.contains(&n) {
-                    continue;
-                }
-                if self.sees(n, p) {
-                    seen.insert(n);
-                    visible.push(n);
-                } else {
-                    let [a, b] = edge_of(&self.tris[t].v, i);
-                    let j = (0..3).find(|&j| self.tris[n].nb[j] as usize == t).unwrap();
-                    horizon.push((a, b, n, j));
-                }
-            }
-        }
-        let mut orphans = Vec::new();
-        for &t in &visible {
-            self.tris[t].alive = false;
-            orphans.append(&mut self.tris[t].conflicts);
+        self.round += 1;
+        let mut s = std::mem::take(&mut self.scratch);
+        self.horizon(t0, p, &mut s);
+        for &t in &s.visible {
+            let tri = &mut self.tris[t];
+            tri.alive = false;
+            s.orphans.append(&mut tri.conflicts);
             if let Some(tets) = &mut self.tets {
-                let [a, b, c] = self.tris[t].v;
+                let [a, b, c] = tri.v;
                 tets.push([a, b, c, p]);
             }
         }
         self.owner[p as usize] = NONE;
-        let mut by_start = HashMap::with_capacity_and_hasher(horizon.len(), Default::default());
-        let mut new = Vec::with_capacity(horizon.len());
-        for &(a, b, n, j) in &horizon {
-            let id = self.tris.len();
-            self.tris.push(Tri {
-                v: [a, b, p],
-                nb: [n as u32, NONE, NONE],
-                alive: true,
-                conflicts: vec![],
-            });
-            self.tris[n].nb[j] = id as u32;
-            by_start.insert(a, id);
-            new.push(id);
-        }
-        for &id in &new {
-            let b = self.tris[id].v[1];
-            let next = by_start[&b];
-            self.tris[id].nb[1] = next as u32;
-            self.tris[next].nb[2] = id as u32;
-        }
-        for q in orphans {
-            if q == p {
-                continue;
-            }
+        let new = self.cone(p, &mut s);
+        for &q in s.orphans.iter().filter(|&&q| q != p) {
             self.owner[q as usize] = NONE;
             if let Some(&u) = new.iter().find(|&&u| self.sees(u, q)) {
                 self.file(u, q);
             }
+        }
+        s.orphans.clear();
+        self.scratch = s;
+        new
+    }
+
+    /// The triangles `p` sees, from `t0` on, in `s.visible`, and the edges between them
+    /// and the others in `s.horizon`.
+    fn horizon(&mut self, t0: usize, p: u32, s: &mut Scratch) {
+        s.visible.clear();
+        s.horizon.clear();
+        s.visible.push(t0);
+        self.tris[t0].seen = self.round;
+        let mut k = 0;
+        while k < s.visible.len() {
+            let t = s.visible[k];
+            k += 1;
+            for i in 0..3 {
+                let n = self.tris[t].nb[i] as usize;
+                if self.tris[n].seen == self.round {
+                    continue;
+                }
+                if self.sees(n, p) {
+                    self.tris[n].seen = self.round;
+                    s.visible.push(n);
+                } else {
+                    let [a, b] = edge_of(&self.tris[t].v, i);
+                    let j = (0..3).find(|&j| self.tris[n].nb[j] as usize == t).unwrap();
+                    s.horizon.push((a, b, n, j));
+                }
+            }
+        }
+    }
+
+    /// Cones `p` to the horizon edges: the new triangles, linked to their neighbours.
+    fn cone(&mut self, p: u32, s: &mut Scratch) -> Vec<usize> {
+        s.by_start.clear();
+        let mut new = Vec::with_capacity(s.horizon.len());
+        for &(a, b, n, j) in &s.horizon {
+            let id = self.tris.len();
+            self.tris.push(Tri::new([a, b, p], [n as u32, NONE, NONE]));
+            self.tris[n].nb[j] = id as u32;
+            s.by_start.insert(a, id);
+            new.push(id);
+        }
+        for &id in &new {
+            let b = self.tris[id].v[1];
+            let next = s.by_start[&b];
+            self.tris[id].nb[1] = next as u32;
+            self.tris[next].nb[2] = id as u32;
         }
         new
     }
