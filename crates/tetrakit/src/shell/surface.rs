@@ -6,7 +6,9 @@
 //! a cycle) and `H' = CH(V(P̄) − v ∪ V(Q))` the new hull. The cap `P̄ − H'` lies in
 //! `CH(v ∪ L)`, so the only points that can appear on its bottom are `L` and the hidden
 //! inner vertices `C` in that region (a superset: those filed under the star's
-//! triangles, see [`Hidden`](super::hidden), inside the bounding box of `v ∪ L`). Let
+//! triangles, see [`Hidden`](super::hidden), inside the closed `CH(v ∪ L)`, tested
+//! exactly after its bounding box; on the bent arcs of BENCHMARKS.md this halves the
+//! points `K` is built on). Let
 //! `K = CH(L ∪ C) ⊆ H'`. Every facet of `H'` that `v` sees is a face of `K` (its
 //! vertices are in `L ∪ C`), and conversely a facet of `K` that `v` sees strictly lies on
 //! `∂H'` (a point of `K` that `v` sees is not in the interior of `H'`, else the segment
@@ -19,7 +21,8 @@
 //!
 //! **Removing several at once** (a bigcap, §4.2): the same with `v`'s star replaced by
 //! the union of the stars of a connected vertex set `U` whose removal leaves a disk
-//! visible from `v`; see [`Surface::plan`].
+//! visible from `v`; see [`Surface::plan`]. Its candidates `C` are only cut to the
+//! bounding box of `U ∪ L`.
 //!
 //! Every step is checked (the bottom is a disk bounded by the link, every bottom triangle
 //! seen from the tip or coplanar with it): a removal that fails a check changes nothing
@@ -28,7 +31,7 @@
 
 use super::hidden::Hidden;
 use super::recover::QEdges;
-use crate::geom::{Hull3, Point3, bounding_box, orient2d_drop, orient3d, projection_axis};
+use crate::geom::{Hull3, Plane, Point3, bounding_box, orient2d_drop, orient3d, projection_axis};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
 /// The triangulated surface of the current hull.
@@ -401,8 +404,15 @@ impl<'a> Surface<'a> {
             let x = &self.pts[*v as usize];
             (0..3).all(|k| lo[k] <= x[k] && x[k] <= hi[k])
         };
+        let mut candidates: Vec<u32> = self.hidden.under(region);
+        candidates.retain(in_box);
+        // The exact test costs a small hull: worth it when the box leaves many.
+        if candidates.len() > 16 {
+            let cap = cap_planes(&around, set.len());
+            candidates.retain(|&v| cap.iter().all(|h| h.side(&self.pts[v as usize]) <= 0));
+        }
         let mut local: Vec<u32> = ring.to_vec();
-        local.extend(self.hidden.under(region).into_iter().filter(in_box));
+        local.extend(candidates);
         let coords: Vec<Point3> = local.iter().map(|&v| self.pts[v as usize]).collect();
         let hull = Hull3::new(&coords);
         let (tris, on_hull): (Vec<[u32; 3]>, Vec<u32>) = if hull.dimension == 3 {
@@ -542,6 +552,24 @@ enum Place {
     Inside,
     /// Inside edge `k` (from corner `k` to corner `k + 1`).
     Edge(usize),
+}
+
+/// The facet planes of `CH(v ∪ L)` when one vertex `v` is removed (`around` = `L`, then
+/// `v`), oriented out: the cap lies in that hull (module docs). None (no constraint) for
+/// larger sets or a flat hull.
+fn cap_planes(around: &[Point3], removed: usize) -> Vec<Plane> {
+    if removed != 1 {
+        return Vec::new();
+    }
+    let hull = Hull3::new(around);
+    if hull.dimension < 3 {
+        return Vec::new();
+    }
+    let p = |k: u32| &around[k as usize];
+    hull.facet_planes
+        .iter()
+        .map(|f| Plane::new(p(f[0]), p(f[1]), p(f[2])))
+        .collect()
 }
 
 /// Where `x` lies on the closed triangle `t`, if it does (exact: coplanar, then the
