@@ -1331,6 +1331,23 @@ fn shell_flips_on_a_bern_disk() {
     );
     assert!(before > bound && t <= bound, "{v}");
     assert!(v["flips"]["delaunay"].is_object(), "{v}");
+    // The weights of §4.4 sum to the removal's interior edges (Lemma 4.9), and Theorem
+    // 4.2's claim fails on this removal: the text says so too.
+    let w = &v["weights"];
+    assert_eq!(
+        w["edges"]
+            .as_u64()
+            .map(|e| e + v["n"].as_u64().unwrap() - 6),
+        before,
+        "{v}"
+    );
+    assert!(
+        w["max"].as_u64() > Some(8) && w["at_most_8"] == false,
+        "{v}"
+    );
+    let out = run(&["shell", s(&o), s(&i)]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("ABOVE Theorem 4.2's 8"), "{text}");
     let raw = json(&run(&["shell", s(&o), s(&i), "--json", "--no-flips"]));
     assert_eq!(
         (raw["tetrahedra"].as_u64(), raw["flips"].is_null()),

@@ -31,11 +31,22 @@ fn solve_by(outer: &[Point3], inner: &[Point3], methods: &[Method]) -> (Shell, S
         assert_eq!(cert, Ok(()), "{m:?}");
         assert!(fills_the_shell(&shell, &mesh.tets), "{m:?}");
         assert!(mesh.tets.len() <= 9 * shell.n() - 6, "{m:?}");
+        assert!(ledger_is_exact(&mesh), "{m:?}");
         improved(&shell, mesh.clone());
         mesh
     };
     let meshes: Vec<ShellMesh> = methods.iter().map(|&m| run(m)).collect();
     (shell, meshes.into_iter().last().expect("a method"))
+}
+
+/// The weights of §4.4 charge every interior edge of a removal's mesh exactly once (true
+/// too for a placed mesh, which has no ledger).
+fn ledger_is_exact(mesh: &ShellMesh) -> bool {
+    match (&mesh.ledger, mesh.finished_by) {
+        (Some(l), Finish::Removal) => l.edges() == mesh.interior_edges(),
+        (None, Finish::Placing) => true,
+        _ => false,
+    }
 }
 
 /// The improvement pass on `mesh`: certified, never more tetrahedra; returns the count.
@@ -322,6 +333,13 @@ fn bern_disks_within_the_bound_after_flips() {
             mesh.tets.len() > 9 * shell.n() - 6,
             "{m:?}: the removals alone"
         );
+        // Lemma 4.9 with the ledger's sum: above 9n − 6, so some weight is above 8, and
+        // the ledger names it.
+        let ledger = mesh.ledger.as_ref().expect("finished by removal");
+        assert_eq!(mesh.tets.len(), ledger.edges() + shell.n() - 6);
+        let (heaviest, v) = ledger.heaviest();
+        assert!(heaviest > 8 && ledger.weights[v as usize] == heaviest);
+        assert_eq!(ledger.histogram().iter().sum::<usize>(), shell.n());
         let t = improved(&shell, mesh);
         assert!(t <= 3 * shell.n(), "{m:?}: {t} after flips");
     }
@@ -958,6 +976,7 @@ fn every_degenerate_shell_is_tetrahedralized() {
             assert_eq!(cert, Ok(()), "{m:?} {outer:?} {inner:?}");
             assert!(fills_the_shell(&shell, &mesh.tets));
             assert!(mesh.tets.len() <= 9 * shell.n() - 6);
+            assert!(ledger_is_exact(&mesh), "{m:?} {outer:?} {inner:?}");
             endings[usize::from(mesh.finished_by == Finish::Placing)] += 1;
         }
     }

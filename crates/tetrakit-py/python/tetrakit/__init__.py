@@ -397,6 +397,7 @@ class ShellResult:
     pieces: Optional[int] = None
     finished_by: Optional[str] = None
     flips: Optional[dict] = None
+    weights: Optional[dict] = None
 
 
 def shell(outer, inner, method: str = "cap", flips: bool = True, optimum: bool = False,

@@ -85,6 +85,17 @@ pub fn shell_text(o: &ShellOutcome, seconds: f64) -> String {
             "  the removals made {before}; flips inside the shell took it to {flipped}{how}"
         );
     }
+    if let Some(w) = &o.weights {
+        let claim = match w.at_most_8 {
+            true => "within",
+            false => "ABOVE",
+        };
+        let _ = writeln!(
+            s,
+            "  the removal's {} interior edges weighted as in §4.4: largest weight {} (vertex {} {}), {claim} Theorem 4.2's 8",
+            w.edges, w.max, w.heaviest.polytope, w.heaviest.index
+        );
+    }
     if o.outer_ignored + o.inner_ignored > 0 {
         let _ = writeln!(
             s,

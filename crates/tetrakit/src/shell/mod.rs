@@ -87,6 +87,7 @@
 pub mod generate;
 mod hidden;
 mod improve;
+mod ledger;
 pub mod lemma41;
 mod optimum;
 mod outcome;
@@ -97,9 +98,10 @@ mod surface;
 use crate::control::{Control, Stopped};
 use crate::geom::{Hull3, Point3, point_key};
 pub use improve::{DELAUNAY_ABOVE, Improvement, improve};
+pub use ledger::Ledger;
 pub use optimum::optimum;
 pub use outcome::{
-    AssumptionWitness, FileVertex, FlipCounts, Optimum, ShellOptions, ShellOutcome, shell,
+    AssumptionWitness, FileVertex, FlipCounts, Optimum, ShellOptions, ShellOutcome, Weights, shell,
 };
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use serde::Serialize;
@@ -335,6 +337,8 @@ pub struct ShellMesh {
     pub pieces: usize,
     /// How the mesh was made.
     pub finished_by: Finish,
+    /// The weights of §4.4 on the removal's edges ([`Ledger`]); `None` when placed.
+    pub ledger: Option<Ledger>,
 }
 
 /// How [`tetrahedralize`] made its mesh.
@@ -352,14 +356,7 @@ impl ShellMesh {
     /// The edges of the tetrahedra that are not on the boundary surfaces (`e_i` of
     /// Lemma 4.9: `t = e_i + n − 6` when `P` and `Q` are simplicial and do not touch).
     pub fn interior_edges(&self) -> usize {
-        let mut on_boundary: Vec<(u32, u32)> = crate::mesh::boundary_faces(&self.tets)
-            .iter()
-            .flat_map(|f| [(f[0], f[1]), (f[1], f[2]), (f[0], f[2])])
-            .map(|(a, b)| (a.min(b), a.max(b)))
-            .collect();
-        on_boundary.sort_unstable();
-        on_boundary.dedup();
-        crate::mesh::edges_of(&self.tets).len() - on_boundary.len()
+        ledger::interior_edges(&self.tets).len()
     }
 }
 
@@ -404,9 +401,14 @@ pub fn tetrahedralize(
         Ok(mut surface) => {
             let r = removal::run(&mut surface, &removable, method, ctl)?;
             if r.left.is_empty() && surface.hidden.count() == 0 {
+                let mut on_p = vec![false; shell.points.len()];
+                for &v in shell.outer.iter().chain(&shell.touching) {
+                    on_p[v as usize] = true;
+                }
                 return Ok(ShellMesh {
+                    ledger: Some(ledger::ledger(&r.tets, &r.records, on_p)),
+                    pieces: r.records.len(),
                     tets: r.tets,
-                    pieces: r.pieces,
                     finished_by: Finish::Removal,
                 });
             }
@@ -424,5 +426,6 @@ pub fn tetrahedralize(
         tets,
         pieces: order.len(),
         finished_by: Finish::Placing,
+        ledger: None,
     })
 }

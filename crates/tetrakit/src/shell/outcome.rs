@@ -90,6 +90,9 @@ pub struct ShellOutcome {
     /// The flips kept (a YES with flips; `null` without).
     #[serde(skip_serializing_if = "undecided")]
     pub flips: Option<Option<FlipCounts>>,
+    /// The weights of §4.4 on the removal's edges (a YES finished by removal).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub weights: Option<Weights>,
     /// The certified tetrahedra on [`Shell::points`] (empty when undecided).
     #[serde(skip)]
     pub tets: Vec<[u32; 4]>,
@@ -141,6 +144,7 @@ pub fn shell(s: &Shell, opts: ShellOptions, ctl: &Control) -> Result<ShellOutcom
         pieces: None,
         finished_by: None,
         flips: None,
+        weights: None,
         tets: Vec::new(),
     };
     if opts.method == Method::Thesis {
@@ -184,6 +188,7 @@ pub fn shell(s: &Shell, opts: ShellOptions, ctl: &Control) -> Result<ShellOutcom
     o.interior_edges = Some(mesh.interior_edges());
     o.pieces = Some(mesh.pieces);
     o.finished_by = Some(mesh.finished_by);
+    o.weights = mesh.ledger.as_ref().map(|l| Weights::new(s, l));
     o.flips = Some(opts.flips.then_some(FlipCounts {
         three_two: done.three_two,
         delaunay: done.delaunay,
@@ -237,6 +242,35 @@ fn mesh(
         },
     };
     Ok((mesh, done))
+}
+
+/// Theorem 4.2's weights (§4.4) on the interior edges the removal added, each charged to
+/// one vertex as Lemmas 4.10–4.12 charge it ([`super::Ledger`]).
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct Weights {
+    /// The interior edges the removal added: the sum of the weights.
+    pub edges: usize,
+    /// The largest weight.
+    pub max: usize,
+    /// `histogram[w]`: how many vertices have weight `w`.
+    pub histogram: Vec<usize>,
+    /// A vertex of the largest weight.
+    pub heaviest: FileVertex,
+    /// Theorem 4.2's claim on this run: every weight at most 8.
+    pub at_most_8: bool,
+}
+
+impl Weights {
+    fn new(s: &Shell, l: &super::Ledger) -> Weights {
+        let (max, v) = l.heaviest();
+        Weights {
+            edges: l.edges(),
+            max,
+            histogram: l.histogram(),
+            heaviest: s.file_vertex(v),
+            at_most_8: max <= 8,
+        }
+    }
 }
 
 /// A vertex of a shell named in its input file: `polytope` is `outer` or `inner`, `index`

@@ -4,6 +4,7 @@
 //! that finishes the shell, see [`super::tetrahedralize`]).
 
 use super::Method;
+use super::ledger::Record;
 use super::surface::{self, Surface};
 use crate::control::{Control, Stopped};
 use rustc_hash::FxHashSet as HashSet;
@@ -24,7 +25,7 @@ struct Removal<'s, 'a> {
     left: HashSet<u32>,
     heap: BinaryHeap<Reverse<(usize, u32)>>,
     tets: Vec<[u32; 4]>,
-    pieces: usize,
+    records: Vec<Record>,
     /// The removed vertices, in the order of removal (a piece's tip first).
     order: Vec<u32>,
 }
@@ -32,7 +33,8 @@ struct Removal<'s, 'a> {
 /// What a removal did: its tetrahedra, and the vertices it could not remove.
 pub(super) struct Removed {
     pub tets: Vec<[u32; 4]>,
-    pub pieces: usize,
+    /// Its pieces, in order (for the ledger of §4.4).
+    pub records: Vec<Record>,
     /// The removed vertices, in the order of removal.
     pub order: Vec<u32>,
     /// The vertices no piece removed (every cap, pair and bigcap at them refused).
@@ -50,7 +52,7 @@ impl Removal<'_, '_> {
     fn piece(&mut self, tip: u32, set: &[u32]) -> bool {
         match self.surface.plan(tip, set) {
             Ok(p) => {
-                self.take(p, set);
+                self.take(tip, p, set);
                 true
             }
             Err(_) => false,
@@ -95,20 +97,27 @@ impl Removal<'_, '_> {
                 break;
             }
         }
-        self.take(best, &set);
+        self.take(v, best, &set);
         true
     }
 
     /// Applies a planned piece removing `set`, and requeues the neighbours.
-    fn take(&mut self, piece: surface::Piece, set: &[u32]) {
+    fn take(&mut self, tip: u32, piece: surface::Piece, set: &[u32]) {
         let mut around: Vec<u32> = set
             .iter()
             .flat_map(|&u| self.surface.neighbours(u))
             .collect();
         around.sort_unstable();
         around.dedup();
+        let start = self.tets.len();
+        let bottom = piece.bottom().to_vec();
         self.tets.extend(self.surface.apply(piece));
-        self.pieces += 1;
+        self.records.push(Record {
+            tip,
+            removed: set.len(),
+            bottom,
+            tets: start..self.tets.len(),
+        });
         for v in set {
             self.left.remove(v);
         }
@@ -155,7 +164,7 @@ pub(super) fn run(
         left: removable.iter().copied().collect(),
         heap,
         tets: Vec::new(),
-        pieces: 0,
+        records: Vec::new(),
         order: Vec::with_capacity(removable.len()),
     };
     let total = removable.len();
@@ -192,7 +201,7 @@ pub(super) fn run(
     left.sort_unstable();
     Ok(Removed {
         tets: r.tets,
-        pieces: r.pieces,
+        records: r.records,
         order: r.order,
         left,
     })

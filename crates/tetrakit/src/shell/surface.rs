@@ -67,6 +67,13 @@ pub(super) struct Piece {
     pub(super) tets: Vec<[u32; 4]>,
 }
 
+impl Piece {
+    /// The triangles it leaves on the surface.
+    pub(super) fn bottom(&self) -> &[[u32; 3]] {
+        &self.bottom
+    }
+}
+
 /// True when the directed edges form one cycle (each vertex starts one edge, and the walk
 /// from any edge comes back after all of them).
 fn one_cycle(edges: &[(u32, u32)]) -> bool {
