@@ -9,6 +9,8 @@
 # Then the families of benches/shell_families.py (FAMILIES, NAME:N each): thin twisted
 # and coaxial prisms, bent arcs, lattice spheres with Q = P/2, circles on a cube's facets,
 # a dome on a dome's floor. Bigcaps get BIGCAP_TIMEOUT seconds per run ("-" past it).
+# The last column is the largest weight of §4.4's ledger on the cap removal (JSON
+# `weights.max`; Theorem 4.2 claims at most 8 for BIGCAP-REMOVE).
 # Usage: bash benches/shell.sh      (env: SIZES, BERN, FAMILIES, RUNS)   Needs root for apt-get.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -52,6 +54,7 @@ row() {
   done
   t=$(field "$WORK/s.json" tetrahedra); t0=$(field "$WORK/s.json" tetrahedra_before_flips)
   nn=$(field "$WORK/s.json" n); bt=$(field "$WORK/b.json" tetrahedra)
+  wm=$(python3 -c 'import json,sys;w=json.load(open(sys.argv[1])).get("weights");print(w["max"] if w else "-")' "$WORK/s.json")
   tb_s=$(printf '%s\n' "${tb[@]}" | median)
   [ "$tb_s" = "-" ] && tb_s=nan
   tk_s=$(printf '%s\n' "${tk[@]}" | median); tg_s=$(printf '%s\n' "${tg[@]}" | median); ty_s=$(printf '%s\n' "${ty[@]}" | median)
@@ -60,13 +63,13 @@ row() {
   tetgen -pYQ "$WORK/p$key.poly" >/dev/null || true
   y_t=$(head -1 "$WORK/p$key.1.ele" | awk '{print $1}'); y_n=$(head -1 "$WORK/p$key.1.node" | awk '{print $1}')
   awk -v l="$label" -v n="$nn" -v t0="$t0" -v t="$t" -v a="$tk_s" -v am="$tkm" -v bt="$bt" -v bs="$tb_s" -v gt="$g_t" -v gn="$g_n" -v b="$tg_s" -v bm="$tgm" \
-      -v yt="$y_t" -v yn="$y_n" -v c="$ty_s" 'BEGIN {
-    printf "| %s | %d | %.2f | %.2f | %.2f | %d | %.2f | %.2f | %.2f | %d | %.2f | %d | %.2f | %d | %.2f | %.2f |\n",
-      l, n, t0 / n, t / n, a, am, bt / n, bs, gt / n, gn - n, b, bm, yt / n, yn - n, c, a / b }'
+      -v yt="$y_t" -v yn="$y_n" -v c="$ty_s" -v wm="$wm" 'BEGIN {
+    printf "| %s | %d | %.2f | %.2f | %.2f | %d | %.2f | %.2f | %.2f | %d | %.2f | %d | %.2f | %d | %.2f | %.2f | %s |\n",
+      l, n, t0 / n, t / n, a, am, bt / n, bs, gt / n, gn - n, b, bm, yt / n, yn - n, c, a / b, wm }'
 }
 
-echo "| shells | n | cap t/n removals | cap t/n flipped | cap s | cap MB | bigcap t/n flipped | bigcap s | TetGen -pQ t/n | Steiner | s | MB | TetGen -pYQ t/n | Steiner | s | ratio s (cap / -pQ) |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+echo "| shells | n | cap t/n removals | cap t/n flipped | cap s | cap MB | bigcap t/n flipped | bigcap s | TetGen -pQ t/n | Steiner | s | MB | TetGen -pYQ t/n | Steiner | s | ratio s (cap / -pQ) | cap largest weight (§4.4) |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 for n in $SIZES; do
   o="$WORK/o$n.xyz"; i="$WORK/i$n.xyz"
   "$TK" generate nested --n-outer $((n / 2)) --n-inner $((n / 2)) --gap 0.2 --seed 1 \

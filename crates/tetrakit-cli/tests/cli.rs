@@ -1196,10 +1196,10 @@ fn shell_finished_by_placing() {
             .collect()
     };
     let outer: Vec<[u8; 3]> = (0..8u8)
-        .map(|i| [i & 1, (i >> 1) & 1, i >> 2].map(|b| 4 * b))
+        .map(|i| [i >> 2, (i >> 1) & 1, i & 1].map(|b| 4 * b))
         .collect();
     let inner: Vec<[u8; 3]> = (0..8u8)
-        .map(|i| [2 * (i & 1), 1 + 2 * ((i >> 1) & 1), 2 + (i >> 2)])
+        .map(|i| [2 * (i >> 2), 1 + ((i >> 1) & 1), 1 + (i & 1)])
         .collect();
     std::fs::write(&o, cube(&outer)).unwrap();
     std::fs::write(&i, cube(&inner)).unwrap();

@@ -12,8 +12,11 @@
 //! flipped, and an edge that cannot be recovered refuses the removal (the error is
 //! the reason, which the surface reports).
 
-use crate::geom::{Point3, bounding_box, orient2d_drop, orient3d, projection_axis};
+use crate::geom::{
+    Hull3, Point3, bounding_box, drop_axis, orient2d_drop, orient3d, projection_axis,
+};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
+use spade::{ConstrainedDelaunayTriangulation, Triangulation};
 
 /// Q's edges, by vertex (`edges[v]` are the vertices joined to `v` by an edge of `Q`),
 /// and a point strictly inside `Q` (for the rays of [`super::hidden::Hidden`]).
@@ -83,6 +86,84 @@ impl QEdges {
             }
         }
         Ok(())
+    }
+}
+
+impl QEdges {
+    /// The surface of `P` (the hull `hull` of `pts`) with the inner vertices `on_outer`
+    /// that lie on it as vertices: the hull's triangles, except on each facet that holds
+    /// one of those vertices, which is triangulated again with Q's edges in it as
+    /// constraints (`spade`'s constrained Delaunay triangulation, exact, in the facet's
+    /// projection along an axis it is not parallel to). Linear in the facet's size where
+    /// inserting the vertices one by one and flipping Q's edges in was quadratic (Q's
+    /// vertices on circles on a cube's facets). `None` when `spade` refuses a coordinate
+    /// or a constraint (never for valid input: Q's edges in a facet of `P` are edges of
+    /// one convex face of `Q`, so they do not cross and no vertex lies inside one).
+    pub(super) fn facet_triangles(
+        &self,
+        pts: &[Point3],
+        hull: &Hull3,
+        on_outer: &[u32],
+    ) -> Option<Vec<[u32; 3]>> {
+        let mut members: HashMap<u32, Vec<u32>> = HashMap::default();
+        for &v in on_outer {
+            for &f in hull.facets_of(v as usize) {
+                members.entry(f).or_default().push(v);
+            }
+        }
+        let mut out = Vec::with_capacity(hull.triangles.len() + 2 * on_outer.len());
+        for (t, f) in hull.triangles.iter().zip(&hull.triangle_facet) {
+            match members.get_mut(f) {
+                Some(m) => m.extend_from_slice(t),
+                None => out.push(*t),
+            }
+        }
+        for (f, mut m) in members {
+            m.sort_unstable();
+            m.dedup();
+            out.extend(self.triangulate_facet(pts, hull.facet_planes[f as usize], &m)?);
+        }
+        Some(out)
+    }
+
+    /// The constrained Delaunay triangulation of the facet with vertices `m` whose
+    /// outward triangle is `plane`, with Q's edges between its vertices, oriented out.
+    fn triangulate_facet(
+        &self,
+        pts: &[Point3],
+        plane: [u32; 3],
+        m: &[u32],
+    ) -> Option<Vec<[u32; 3]>> {
+        let p = |v: u32| &pts[v as usize];
+        let [a, b, c] = plane.map(p);
+        let axis = projection_axis(a, b, c)?;
+        let outward = orient2d_drop(a, b, c, axis);
+        let mut cdt: ConstrainedDelaunayTriangulation<spade::Point2<f64>> = Default::default();
+        let mut handle = HashMap::default();
+        let mut vertex = HashMap::default();
+        for &v in m {
+            let [x, y] = drop_axis(p(v), axis);
+            let h = cdt.insert(spade::Point2::new(x, y)).ok()?;
+            handle.insert(v, h);
+            vertex.insert(h, v);
+        }
+        for &v in m {
+            for w in self.edges.get(&v).into_iter().flatten() {
+                if let (true, Some(&hw)) = (v < *w, handle.get(w))
+                    && cdt.try_add_constraint(handle[&v], hw).is_empty()
+                {
+                    return None;
+                }
+            }
+        }
+        let tris = cdt.inner_faces().map(|face| {
+            let [x, y, z] = face.vertices().map(|h| vertex[&h.fix()]);
+            match orient2d_drop(p(x), p(y), p(z), axis) == outward {
+                true => [x, y, z],
+                false => [x, z, y],
+            }
+        });
+        Some(tris.collect())
     }
 }
 

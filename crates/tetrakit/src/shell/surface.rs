@@ -119,19 +119,10 @@ impl<'a> Surface<'a> {
         let centre = q_edges
             .centre
             .ok_or(Refused("no float point strictly inside Q"))?;
-        let mut tris = outer_hull.triangles.clone();
-        let corners: HashSet<u32> = tris.iter().flatten().copied().collect();
-        let flat: Vec<u32> = on_outer
-            .iter()
-            .copied()
-            .filter(|v| !corners.contains(v))
-            .collect();
-        if refine(pts, &mut tris, &flat)? != flat.len() {
-            return Err(Refused(
-                "an inner vertex on the outer hull is on none of its triangles",
-            ));
-        }
-        if !flat.is_empty() || outer_hull.facet_count() < outer_hull.triangles.len() {
+        let mut tris = q_edges
+            .facet_triangles(pts, outer_hull, on_outer)
+            .ok_or(Refused("a facet of P with inner vertices on it"))?;
+        if outer_hull.facet_count() < outer_hull.triangles.len() {
             q_edges
                 .recover(pts, &mut tris, &HashSet::default())
                 .map_err(Refused)?;
