@@ -353,6 +353,14 @@ fn bern_disks_within_the_bound_after_flips() {
         };
         let o = tetrakit::shell::shell(&shell, opts, &Control::new()).unwrap();
         let t = o.tetrahedra.unwrap();
+        // The interior edges reported from the ledger's sum and the flips, recounted.
+        let recount = ShellMesh {
+            tets: o.tets.clone(),
+            pieces: 0,
+            finished_by: Finish::Removal,
+            ledger: None,
+        };
+        assert_eq!(o.interior_edges, Some(recount.interior_edges()));
         assert_eq!(o.within_bound, Some(flips), "{t} against {}", o.bound);
         assert_eq!(o.within_bound, Some(t <= o.bound));
     }

@@ -405,8 +405,15 @@ pub fn tetrahedralize(
                 for &v in shell.outer.iter().chain(&shell.touching) {
                     on_p[v as usize] = true;
                 }
+                let ledger = ledger::ledger(ledger::Removal {
+                    tets: &r.tets,
+                    records: &r.records,
+                    outer: &shell.hull,
+                    last: &surface.triangles(),
+                    on_surface: on_p,
+                });
                 return Ok(ShellMesh {
-                    ledger: Some(ledger::ledger(&r.tets, &r.records, on_p)),
+                    ledger: Some(ledger),
                     pieces: r.records.len(),
                     tets: r.tets,
                     finished_by: Finish::Removal,

@@ -171,11 +171,18 @@ pub fn shell(s: &Shell, opts: ShellOptions, ctl: &Control) -> Result<ShellOutcom
         Err(ShellError::Stopped) => return Ok(o),
         Err(e) => return Err(e),
     };
+    // Each flip changes the tetrahedra and the interior edges by the same ±1 (Lemma
+    // 4.9), so the ledger's sum gives the flipped mesh's interior edges.
+    let mut interior = mesh
+        .ledger
+        .as_ref()
+        .and_then(|l| (l.edges() + mesh.tets.len()).checked_sub(done.before));
     if opts.optimum {
         let (report, best) = exact_minimum(s, mesh.tets.len(), ctl)?;
         o.optimum = Some(report);
         if let Some(best) = best {
             mesh.tets = best;
+            interior = None;
         }
     }
     crate::mesh::certify_shell(&s.points, &mesh.tets, &s.inner)
@@ -185,7 +192,7 @@ pub fn shell(s: &Shell, opts: ShellOptions, ctl: &Control) -> Result<ShellOutcom
     o.within_bound = Some(mesh.tets.len() <= o.bound);
     o.tetrahedra = Some(mesh.tets.len());
     o.tetrahedra_before_flips = Some(done.before);
-    o.interior_edges = Some(mesh.interior_edges());
+    o.interior_edges = Some(interior.unwrap_or_else(|| mesh.interior_edges()));
     o.pieces = Some(mesh.pieces);
     o.finished_by = Some(mesh.finished_by);
     o.weights = mesh.ledger.as_ref().map(|l| Weights::new(s, l));

@@ -218,6 +218,13 @@ impl<'a> Surface<'a> {
             .is_some()
     }
 
+    /// The live triangles.
+    pub(super) fn triangles(&self) -> Vec<[u32; 3]> {
+        (self.tris.iter().zip(&self.alive))
+            .filter_map(|(t, &a)| a.then_some(*t))
+            .collect()
+    }
+
     /// The live triangles at `v`.
     pub(super) fn star(&mut self, v: u32) -> Vec<u32> {
         let alive = &self.alive;
