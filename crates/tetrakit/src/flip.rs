@@ -34,7 +34,6 @@
 
 use crate::control::{Control, Stopped};
 use crate::geom::{Point3, insphere, orient3d};
-use rustc_hash::FxHashMap as HashMap;
 use std::collections::VecDeque;
 
 const NONE: u32 = u32::MAX;
@@ -66,31 +65,30 @@ pub fn delaunay(
     ctl: &Control,
 ) -> Result<Flips, Stopped> {
     let mut m = Mesh::new(points, tets);
-    let mut keys: Vec<[u32; 3]> = m.face.keys().copied().collect();
-    keys.sort_unstable();
-    let mut queue: VecDeque<[u32; 3]> = keys.into();
+    let mut queue: VecDeque<(u32, usize)> = m.interior_faces().into();
     let mut flips = Flips::default();
     let mut steps = Steps::new(ctl);
-    while let Some(key) = queue.pop_front() {
+    while let Some((t1, k)) = queue.pop_front() {
         steps.tick()?;
-        let Some([t1, t2]) = m.pair(&key) else {
+        let Some(t2) = m.across(t1, k) else {
             continue;
         };
-        let (d, e) = (m.apex(t1, &key), m.apex(t2, &key));
         let t = m.tets[t1 as usize];
+        let key = face(&t, k);
+        let (d, e) = (t[k], m.apex(t2, &key));
         let p = |v: u32| &points[v as usize];
         if insphere(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e)) <= 0 {
             continue;
         }
-        if let Some(outer) = m.two_three(t1, t2, key, d, e) {
+        if let Some(new) = m.two_three(t1, t2, key, d, e) {
             flips.two_three += 1;
-            queue.extend(outer);
+            queue.extend(m.outer_faces(&new));
             continue;
         }
         for (a, b) in [(key[0], key[1]), (key[1], key[2]), (key[0], key[2])] {
-            if let Some(outer) = m.three_two(a, b, t1) {
+            if let Some(new) = m.three_two(a, b, t1) {
                 flips.three_two += 1;
-                queue.extend(outer);
+                queue.extend(m.outer_faces(&new));
                 break;
             }
         }
@@ -111,11 +109,10 @@ pub fn reduce(
     let mut steps = Steps::new(ctl);
     while let Some(([a, b], t)) = queue.pop_front() {
         steps.tick()?;
-        if m.three_two(a, b, t).is_some() {
+        if let Some(new) = m.three_two(a, b, t) {
             done += 1;
             // The edges of the two new tetrahedra may have reached degree 3.
-            let new = m.tets.len() as u32;
-            for id in [new - 2, new - 1] {
+            for id in new {
                 queue.extend(m.tet_edges(id));
             }
         }
@@ -144,12 +141,13 @@ impl<'c> Steps<'c> {
     }
 }
 
-/// Tetrahedra with their faces: each sorted face to the (at most two) tetrahedra on it.
+/// Tetrahedra with their neighbours: `nb[t][k]` is the tetrahedron across the face of
+/// `t` opposite its vertex `k` ([`NONE`] on the boundary).
 struct Mesh<'a> {
     pts: &'a [Point3],
     tets: Vec<[u32; 4]>,
     alive: Vec<bool>,
-    face: HashMap<[u32; 3], [u32; 2]>,
+    nb: Vec<[u32; 4]>,
 }
 
 fn sorted<const N: usize>(mut v: [u32; N]) -> [u32; N] {
@@ -157,28 +155,17 @@ fn sorted<const N: usize>(mut v: [u32; N]) -> [u32; N] {
     v
 }
 
-/// The six faces of the bipyramid over the triangle `t` with apexes `p` and `q`, sorted.
-fn bipyramid_faces(t: [u32; 3], p: u32, q: u32) -> Vec<[u32; 3]> {
-    let [a, b, c] = t;
-    [(a, b), (b, c), (c, a)]
-        .iter()
-        .flat_map(|&(x, y)| [sorted([x, y, p]), sorted([x, y, q])])
-        .collect()
-}
-
-/// The four faces of `t`, sorted.
-fn faces(t: &[u32; 4]) -> [[u32; 3]; 4] {
-    [0, 1, 2, 3].map(|k| {
-        let mut f = [0; 3];
-        let mut i = 0;
-        for (j, &v) in t.iter().enumerate() {
-            if j != k {
-                f[i] = v;
-                i += 1;
-            }
+/// The face of `t` opposite its vertex `k`, sorted.
+fn face(t: &[u32; 4], k: usize) -> [u32; 3] {
+    let mut f = [0; 3];
+    let mut i = 0;
+    for (j, &v) in t.iter().enumerate() {
+        if j != k {
+            f[i] = v;
+            i += 1;
         }
-        sorted(f)
-    })
+    }
+    sorted(f)
 }
 
 impl<'a> Mesh<'a> {
@@ -186,11 +173,19 @@ impl<'a> Mesh<'a> {
         let mut m = Mesh {
             pts,
             tets: Vec::with_capacity(tets.len()),
-            alive: Vec::with_capacity(tets.len()),
-            face: HashMap::with_capacity_and_hasher(2 * tets.len(), Default::default()),
+            alive: vec![true; tets.len()],
+            nb: vec![[NONE; 4]; tets.len()],
         };
-        for &t in tets {
-            m.add(t);
+        m.tets = tets.iter().map(|&t| m.oriented(t)).collect();
+        let mut faces: Vec<([u32; 3], u32, u8)> = (m.tets.iter().enumerate())
+            .flat_map(|(t, tet)| (0..4).map(move |k| (face(tet, k), t as u32, k as u8)))
+            .collect();
+        faces.sort_unstable();
+        for w in faces.windows(2) {
+            if w[0].0 == w[1].0 {
+                m.nb[w[0].1 as usize][w[0].2 as usize] = w[1].1;
+                m.nb[w[1].1 as usize][w[1].2 as usize] = w[0].1;
+            }
         }
         m
     }
@@ -208,38 +203,90 @@ impl<'a> Mesh<'a> {
         orient3d(p(a), p(b), p(c), p(d))
     }
 
-    /// Adds `t`, reordered to be positively oriented.
-    fn add(&mut self, mut t: [u32; 4]) {
+    /// `t` reordered to be positively oriented.
+    fn oriented(&self, mut t: [u32; 4]) -> [u32; 4] {
         if self.orient(t[0], t[1], t[2], t[3]) < 0 {
             t.swap(0, 1);
         }
-        let id = self.tets.len() as u32;
-        self.tets.push(t);
-        self.alive.push(true);
-        for f in faces(&t) {
-            let slot = self.face.entry(f).or_insert([NONE; 2]);
-            let k = if slot[0] == NONE { 0 } else { 1 };
-            slot[k] = id;
-        }
+        t
     }
 
-    fn remove(&mut self, id: u32) {
-        self.alive[id as usize] = false;
-        for f in faces(&self.tets[id as usize]) {
-            if let Some(slot) = self.face.get_mut(&f) {
-                slot.iter_mut()
-                    .filter(|s| **s == id)
-                    .for_each(|s| *s = NONE);
-                if slot == &[NONE; 2] {
-                    self.face.remove(&f);
-                }
+    /// Every interior face once, as (tetrahedron, opposite corner), in order.
+    fn interior_faces(&self) -> Vec<(u32, usize)> {
+        (0..self.tets.len() as u32)
+            .flat_map(|t| (0..4).map(move |k| (t, k)))
+            .filter(|&(t, k)| {
+                let n = self.nb[t as usize][k];
+                n != NONE && t < n
+            })
+            .collect()
+    }
+
+    /// The tetrahedron across the face of the live `t` opposite its corner `k`.
+    fn across(&self, t: u32, k: usize) -> Option<u32> {
+        let n = self.nb[t as usize][k];
+        (self.alive[t as usize] && n != NONE).then_some(n)
+    }
+
+    /// The faces of the new tetrahedra `new` that are not between two of them.
+    fn outer_faces(&self, new: &[u32]) -> Vec<(u32, usize)> {
+        new.iter()
+            .flat_map(|&t| (0..4).map(move |k| (t, k)))
+            .filter(|&(t, k)| !new.contains(&self.nb[t as usize][k]))
+            .collect()
+    }
+
+    /// Replaces the live tetrahedra `old` by `new` (the same region, so every face of a
+    /// new one is a face of another new one or of an old one), linking the neighbours;
+    /// returns the new ids.
+    fn replace(&mut self, old: &[u32], new: &[[u32; 4]]) -> Vec<u32> {
+        let ids: Vec<u32> = (0..new.len() as u32)
+            .map(|i| self.tets.len() as u32 + i)
+            .collect();
+        for &t in new {
+            let t = self.oriented(t);
+            self.tets.push(t);
+            self.alive.push(true);
+            self.nb.push([NONE; 4]);
+        }
+        for (i, &id) in ids.iter().enumerate() {
+            for k in 0..4 {
+                let f = face(&self.tets[id as usize], k);
+                let inner = ids.iter().enumerate().find_map(|(j, &other)| {
+                    (j != i)
+                        .then(|| (0..4).find(|&m| face(&self.tets[other as usize], m) == f))
+                        .flatten()
+                        .map(|_| other)
+                });
+                let n = match inner {
+                    Some(other) => other,
+                    None => self.outer_across(old, &f, id),
+                };
+                self.nb[id as usize][k] = n;
             }
         }
+        for &t in old {
+            self.alive[t as usize] = false;
+        }
+        ids
     }
 
-    /// The two tetrahedra on an interior face.
-    fn pair(&self, key: &[u32; 3]) -> Option<[u32; 2]> {
-        self.face.get(key).copied().filter(|s| !s.contains(&NONE))
+    /// The tetrahedron outside the old ones across their face `f` (or [`NONE`]), now
+    /// linked to `id` instead.
+    fn outer_across(&mut self, old: &[u32], f: &[u32; 3], id: u32) -> u32 {
+        for &t in old {
+            let Some(k) = (0..4).find(|&k| face(&self.tets[t as usize], k) == *f) else {
+                continue;
+            };
+            let n = self.nb[t as usize][k];
+            if n != NONE
+                && let Some(slot) = self.nb[n as usize].iter_mut().find(|s| **s == t)
+            {
+                *slot = id;
+            }
+            return n;
+        }
+        NONE
     }
 
     /// The vertex of tetrahedron `t` not on `key`.
@@ -249,25 +296,14 @@ impl<'a> Mesh<'a> {
     }
 
     /// The 2-3 flip of the face `key = abc` between `t1 = abcd` and `t2 = abce`, if `de`
-    /// crosses its interior; returns the six faces around the new tetrahedra.
-    fn two_three(
-        &mut self,
-        t1: u32,
-        t2: u32,
-        key: [u32; 3],
-        d: u32,
-        e: u32,
-    ) -> Option<Vec<[u32; 3]>> {
+    /// crosses its interior; returns the three new tetrahedra.
+    fn two_three(&mut self, t1: u32, t2: u32, key: [u32; 3], d: u32, e: u32) -> Option<Vec<u32>> {
         let [a, b, c] = key;
         if !self.line_through(d, e, key) {
             return None;
         }
-        self.remove(t1);
-        self.remove(t2);
-        for (x, y) in [(a, b), (b, c), (c, a)] {
-            self.add([x, y, d, e]);
-        }
-        Some(bipyramid_faces(key, d, e))
+        let new = [(a, b), (b, c), (c, a)].map(|(x, y)| [x, y, d, e]);
+        Some(self.replace(&[t1, t2], &new))
     }
 
     /// True when the line `pq` passes through the interior of the triangle `t`.
@@ -282,24 +318,19 @@ impl<'a> Mesh<'a> {
     }
 
     /// The 3-2 flip removing the edge `ab`, if it has degree 3, is interior, and crosses
-    /// the interior of the triangle `cde` of its other vertices; returns the six faces
-    /// around the two new tetrahedra.
-    fn three_two(&mut self, a: u32, b: u32, t0: u32) -> Option<Vec<[u32; 3]>> {
+    /// the interior of the triangle `cde` of its other vertices; returns the two new
+    /// tetrahedra.
+    fn three_two(&mut self, a: u32, b: u32, t0: u32) -> Option<Vec<u32>> {
         if !self.alive[t0 as usize] {
             return None;
         }
-        let ([t1, t2, t3], [c, d, e]) = self.ring(a, b, t0)?;
+        let (ts, [c, d, e]) = self.ring(a, b, t0)?;
         if self.orient(c, d, e, a) * self.orient(c, d, e, b) >= 0
             || !self.line_through(a, b, [c, d, e])
         {
             return None;
         }
-        for t in [t1, t2, t3] {
-            self.remove(t);
-        }
-        self.add([c, d, e, a]);
-        self.add([c, d, e, b]);
-        Some(bipyramid_faces([c, d, e], a, b))
+        Some(self.replace(&ts, &[[c, d, e, a], [c, d, e, b]]))
     }
 
     /// For an interior edge `ab` of degree 3 on the tetrahedron `t0`: its three
@@ -315,10 +346,14 @@ impl<'a> Mesh<'a> {
         let (Some(c), Some(mut v)) = others(t0) else {
             return None; // t0 is not on ab
         };
-        let (mut ts, mut link, mut cur) = ([t0; 3], [c, v, 0], t0);
+        let (mut ts, mut link, mut cur, mut behind) = ([t0; 3], [c, v, 0], t0, c);
         for k in 1..=3 {
-            let [s0, s1] = self.pair(&sorted([a, b, v]))?;
-            let next = if s0 == cur { s1 } else { s0 };
+            // Across the face `abv` of `cur`: the one opposite its fourth vertex.
+            let opposite = self.tets[cur as usize].iter().position(|&x| x == behind)?;
+            let next = self.nb[cur as usize][opposite];
+            if next == NONE {
+                return None;
+            }
             if next == t0 {
                 return (k == 3).then_some((ts, link));
             }
@@ -328,6 +363,7 @@ impl<'a> Mesh<'a> {
             let (Some(x), Some(y)) = others(next) else {
                 return None;
             };
+            behind = v;
             v = if x == v { y } else { x };
             ts[k] = next;
             if k == 1 {
