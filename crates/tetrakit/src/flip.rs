@@ -240,29 +240,29 @@ impl<'a> Mesh<'a> {
     /// new one is a face of another new one or of an old one), linking the neighbours;
     /// returns the new ids.
     fn replace(&mut self, old: &[u32], new: &[[u32; 4]]) -> Vec<u32> {
-        let ids: Vec<u32> = (0..new.len() as u32)
-            .map(|i| self.tets.len() as u32 + i)
-            .collect();
+        let first = self.tets.len() as u32;
+        let ids: Vec<u32> = (first..first + new.len() as u32).collect();
         for &t in new {
             let t = self.oriented(t);
             self.tets.push(t);
             self.alive.push(true);
             self.nb.push([NONE; 4]);
         }
-        for (i, &id) in ids.iter().enumerate() {
-            for k in 0..4 {
-                let f = face(&self.tets[id as usize], k);
-                let inner = ids.iter().enumerate().find_map(|(j, &other)| {
-                    (j != i)
-                        .then(|| (0..4).find(|&m| face(&self.tets[other as usize], m) == f))
-                        .flatten()
-                        .map(|_| other)
-                });
-                let n = match inner {
-                    Some(other) => other,
-                    None => self.outer_across(old, &f, id),
+        let faces = |ts: &[u32], tets: &[[u32; 4]]| -> Vec<[[u32; 3]; 4]> {
+            ts.iter()
+                .map(|&t| [0, 1, 2, 3].map(|k| face(&tets[t as usize], k)))
+                .collect()
+        };
+        let (new_faces, old_faces) = (faces(&ids, &self.tets), faces(old, &self.tets));
+        for (i, fs) in new_faces.iter().enumerate() {
+            for (k, f) in fs.iter().enumerate() {
+                let twin = (new_faces.iter().enumerate())
+                    .find(|&(j, g)| j != i && g.contains(f))
+                    .map(|(j, _)| ids[j]);
+                self.nb[ids[i] as usize][k] = match twin {
+                    Some(t) => t,
+                    None => self.outer_across(old, &old_faces, f, ids[i]),
                 };
-                self.nb[id as usize][k] = n;
             }
         }
         for &t in old {
@@ -271,11 +271,17 @@ impl<'a> Mesh<'a> {
         ids
     }
 
-    /// The tetrahedron outside the old ones across their face `f` (or [`NONE`]), now
-    /// linked to `id` instead.
-    fn outer_across(&mut self, old: &[u32], f: &[u32; 3], id: u32) -> u32 {
-        for &t in old {
-            let Some(k) = (0..4).find(|&k| face(&self.tets[t as usize], k) == *f) else {
+    /// The tetrahedron outside the old ones (with their faces `old_faces`) across their
+    /// face `f` (or [`NONE`]), now linked to `id` instead.
+    fn outer_across(
+        &mut self,
+        old: &[u32],
+        old_faces: &[[[u32; 3]; 4]],
+        f: &[u32; 3],
+        id: u32,
+    ) -> u32 {
+        for (&t, fs) in old.iter().zip(old_faces) {
+            let Some(k) = fs.iter().position(|g| g == f) else {
                 continue;
             };
             let n = self.nb[t as usize][k];
