@@ -23,7 +23,7 @@
 //! ledger says so with the heaviest vertex (Bern disks, where minimum-degree caps are
 //! `Θ(n log n)`, are the known case).
 
-use crate::geom::Hull3;
+use crate::geom::{Hull3, Point3, orient3d};
 use crate::mesh::{boundary_faces, edges_of};
 use rustc_hash::FxHashSet as HashSet;
 use std::ops::Range;
@@ -80,6 +80,8 @@ pub(super) struct Removal<'r> {
     pub records: &'r [Record],
     /// `P`, to tell its edges.
     pub outer: &'r Hull3,
+    /// The shell's points.
+    pub points: &'r [Point3],
     /// The surface it ended with: `∂Q`.
     pub last: &'r [[u32; 3]],
     /// The vertices on `∂P` at the start.
@@ -94,9 +96,20 @@ pub(super) fn ledger(r: Removal) -> Ledger {
         .flat_map(|t| [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])])
         .map(|(a, b)| (a.min(b), a.max(b)))
         .collect();
+    // `ab` is on ∂P when one end lies in the plane of a facet at the other: tested from
+    // the end with fewer facets (a tip on a long arc has thousands).
     let on_p = |a: u32, b: u32| {
-        let fb = r.outer.facets_of(b as usize);
-        r.outer.facets_of(a as usize).iter().any(|f| fb.contains(f))
+        let (fa, fb) = (r.outer.facets_of(a as usize), r.outer.facets_of(b as usize));
+        let (other, facets) = if fa.len() <= fb.len() {
+            (b, fa)
+        } else {
+            (a, fb)
+        };
+        let p = |v: u32| &r.points[v as usize];
+        facets.iter().any(|&f| {
+            let [x, y, z] = r.outer.facet_planes[f as usize];
+            orient3d(p(x), p(y), p(z), p(other)) == 0
+        })
     };
     let mut charged: HashSet<(u32, u32)> = HashSet::default();
     let mut take = |a: u32, b: u32| {

@@ -18,6 +18,11 @@ const BIGCAP_LIMIT: usize = 32;
 /// thousands of neighbours, trying them all made bigcaps quadratic per tip).
 const BIGCAP_TRIES: usize = BIGCAP_LIMIT + 4;
 
+/// The most pairs one round of [`Removal::pair`] tries (each costs a local hull; where
+/// the last tips of a prism's cap are refused, trying every pair took two thirds of the
+/// time and found none).
+const PAIR_TRIES: usize = 32;
+
 /// The removal in progress: the surface, the outer vertices still on it, and the
 /// tetrahedra so far.
 struct Removal<'s, 'a> {
@@ -132,12 +137,20 @@ impl Removal<'_, '_> {
 
     /// When every cap is refused (coplanar facets of the current hull inside `P`, where a
     /// tip is not an ear of every such facet's triangulation): a tip with one removable
-    /// neighbour, removed together.
+    /// neighbour, removed together; at most [`PAIR_TRIES`] pairs.
     fn pair(&mut self, refused: &[u32]) -> bool {
+        let mut tries = 0;
         for &v in refused {
             for u in self.surface.neighbours(v) {
-                if self.left.contains(&u) && self.piece(v, &[v, u]) {
+                if !self.left.contains(&u) {
+                    continue;
+                }
+                if self.piece(v, &[v, u]) {
                     return true;
+                }
+                tries += 1;
+                if tries >= PAIR_TRIES {
+                    return false;
                 }
             }
         }
