@@ -17,14 +17,14 @@
 //! Only edges on neither `∂P` (two ends on one facet of `P`) nor `∂Q` (an edge of the
 //! surface the removal ends with) are charged, each once, so the weights sum to the
 //! mesh's interior edges exactly (the diagonals the thesis also counts, on polygon
-//! facets, are boundary edges here; tested on every shell of `tests/shell.rs`). What the ledger measures is
-//! the removal that ran ([`Method::Cap`](super::Method::Cap) or the greedy bigcaps), not
-//! BIGCAP-REMOVE's steps 2–6, which are not built: so where the theorem's claim fails the
-//! ledger says so with the heaviest vertex (Bern disks, where minimum-degree caps are
-//! `Θ(n log n)`, are the known case).
+//! facets, are boundary edges here; tested on every shell of `tests/shell.rs`).
+//!
+//! What the ledger measures is the removal that ran ([`Method::Cap`](super::Method::Cap)
+//! or the greedy bigcaps), not BIGCAP-REMOVE's steps 2–6, which are not built: so where
+//! the theorem's claim fails the ledger says so with the heaviest vertex (Bern disks,
+//! where minimum-degree caps are `Θ(n log n)`, and twisted prisms at n = 10^5).
 
 use crate::geom::{Hull3, Point3, orient3d};
-use crate::mesh::{boundary_faces, edges_of};
 use rustc_hash::FxHashSet as HashSet;
 use std::ops::Range;
 
@@ -127,34 +127,16 @@ pub(super) fn ledger(r: Removal) -> Ledger {
                 }
             }
         }
-        let mut k = 0;
+        let mut k = 0; // the bottom's new edges
         for t in &r.bottom {
             k += (0..3).filter(|&i| take(t[i], t[(i + 1) % 3])).count();
         }
         let mut corners: Vec<u32> = r.bottom.iter().flatten().copied().collect();
         corners.sort_unstable();
         corners.dedup();
-        let (mut ring, inner): (Vec<u32>, Vec<u32>) =
+        let (ring, inner): (Vec<u32>, Vec<u32>) =
             corners.iter().partition(|&&v| on_surface[v as usize]);
-        if r.removed == 1 && inner.is_empty() && ring.len() <= 5 {
-            w[x as usize] += k;
-        } else {
-            for q in inner {
-                let c = k.min(3);
-                w[q as usize] += c;
-                k -= c;
-            }
-            ring.sort_by_key(|&v| (w[v as usize], v));
-            let keep = ring.len().saturating_sub(3);
-            for &v in &ring[..keep] {
-                let c = k.min(1);
-                w[v as usize] += c;
-                k -= c;
-            }
-            // Lemma 4.8 says nothing is left; if something were, the tip takes it and
-            // the sum stays exact.
-            w[x as usize] += k;
-        }
+        charge_bottom(&mut w, k, r, ring, inner);
         for v in corners {
             on_surface[v as usize] = true;
         }
@@ -162,16 +144,28 @@ pub(super) fn ledger(r: Removal) -> Ledger {
     Ledger { weights: w }
 }
 
-/// The edges of `tets` on no boundary face, as `(min, max)`.
-pub(super) fn interior_edges(tets: &[[u32; 4]]) -> HashSet<(u32, u32)> {
-    let boundary: HashSet<(u32, u32)> = boundary_faces(tets)
-        .iter()
-        .flat_map(|f| [(f[0], f[1]), (f[1], f[2]), (f[0], f[2])])
-        .map(|(a, b)| (a.min(b), a.max(b)))
-        .collect();
-    edges_of(tets)
-        .into_iter()
-        .map(|(a, b)| (a.min(b), a.max(b)))
-        .filter(|e| !boundary.contains(e))
-        .collect()
+/// Charges the `k` new edges of the bottom of piece `r`, whose boundary is `ring` and
+/// whose vertices of `Q` inside are `inner`: to the tip for a small cap (Lemma 4.10),
+/// else up to 3 to each inner vertex and 1 to each boundary vertex but the three
+/// heaviest (Lemmas 4.8 and 4.11).
+fn charge_bottom(w: &mut [usize], mut k: usize, r: &Record, mut ring: Vec<u32>, inner: Vec<u32>) {
+    if r.removed == 1 && inner.is_empty() && ring.len() <= 5 {
+        w[r.tip as usize] += k;
+        return;
+    }
+    for q in inner {
+        let c = k.min(3);
+        w[q as usize] += c;
+        k -= c;
+    }
+    ring.sort_by_key(|&v| (w[v as usize], v));
+    let keep = ring.len().saturating_sub(3);
+    for &v in &ring[..keep] {
+        let c = k.min(1);
+        w[v as usize] += c;
+        k -= c;
+    }
+    // Lemma 4.8 says nothing is left; if something were, the tip takes it and the sum
+    // stays exact.
+    w[r.tip as usize] += k;
 }

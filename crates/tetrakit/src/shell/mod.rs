@@ -53,22 +53,21 @@
 //! the reverse of their removal with the vertices left before them or after them (both
 //! are placed; the fewer tetrahedra are kept: on coaxial prisms, n = 10^4, the 28 left
 //! make 2.9 tetrahedra per vertex placed last, 4.8 placed first), each coned to the
-//! triangles of the current hull it strictly sees. Placing refuses nothing, in any order and on any input
-//! (its docs give the argument), so no valid shell fails, at any size; and placing in the
-//! reverse of a removal's order fills that removal's caps again (a bigcap becomes one cap
-//! per vertex), so the count stays near the removal's (on the degenerate shells of the
-//! tests, 0.01 % more for caps before the flips, 0.01 % fewer for bigcaps). The
+//! triangles of the current hull it strictly sees. Placing refuses nothing, in any order
+//! and on any input (its docs give the argument), so no valid shell fails, at any size;
+//! and placing in the reverse of a removal's order fills that removal's caps again (a
+//! bigcap becomes one cap per vertex), so the count stays near the removal's. The
 //! outcome says which ended it ([`Finish`]). The exact solver is used for `--optimum`
 //! only.
 //!
 //! **Contact.** Where `Q` touches `P̄` in a facet (Q's facet inside a facet of `P`, or in
 //! the plane of a removal's flat bottom), the surface's triangulation of that facet gets
 //! Q's edges (a facet of `P` holding vertices of `Q` is triangulated with them as
-//! constraints; a flat bottom gets them by exact 2-2 flips, [`recover`](self)), so that Q's facet is a union of
-//! surface triangles and no piece is built on a triangle reaching into `Q`. On 999 boxes
-//! with integer corners in `[0, 4]³` (every contact with a box: floor, corner, edge,
-//! shared facets), each in two orders, both methods: 1,750 of the 3,996 runs failed
-//! before, none now (test `boxes_touching_a_box_anywhere`).
+//! constraints; a flat bottom gets them by exact 2-2 flips, [`recover`](self)), so that
+//! Q's facet is a union of surface triangles and no piece is built on a triangle
+//! reaching into `Q`. On 999 boxes with integer corners in `[0, 4]³` (every contact with
+//! a box: floor, corner, edge, shared facets), each in two orders, both methods: 1,750 of
+//! the 3,996 runs failed before, none now (test `boxes_touching_a_box_anywhere`).
 //!
 //! **Input.** `P` and `Q` are the exact convex hulls of two point sets ([`Shell::new`]).
 //! Their vertices are the extreme points; other points (inside a hull, or on it but not
@@ -367,7 +366,16 @@ impl ShellMesh {
     /// The edges of the tetrahedra that are not on the boundary surfaces (`e_i` of
     /// Lemma 4.9: `t = e_i + n − 6` when `P` and `Q` are simplicial and do not touch).
     pub fn interior_edges(&self) -> usize {
-        ledger::interior_edges(&self.tets).len()
+        let boundary: HashSet<(u32, u32)> = crate::mesh::boundary_faces(&self.tets)
+            .iter()
+            .flat_map(|f| [(f[0], f[1]), (f[1], f[2]), (f[0], f[2])])
+            .map(|(a, b)| (a.min(b), a.max(b)))
+            .collect();
+        let edges = crate::mesh::edges_of(&self.tets);
+        edges
+            .into_iter()
+            .filter(|&(a, b)| !boundary.contains(&(a.min(b), a.max(b))))
+            .count()
     }
 }
 
@@ -377,10 +385,10 @@ impl ShellMesh {
 /// Where the removal leaves vertices no piece removes (see the module docs), the shell is
 /// tetrahedralized again from scratch by [`placing`](crate::geom::placing): `Q`'s
 /// boundary, then the removed vertices in the reverse of their removal, the vertices left
-/// before or after them (the fewer tetrahedra kept), each coned to what it sees. Placing never refuses a vertex, in any order, so
-/// no valid shell fails; and placing in the reverse of a removal's order fills that
-/// removal's caps again (a bigcap becomes one cap per vertex), so the count stays near
-/// the removal's.
+/// before or after them (the fewer tetrahedra kept), each coned to what it sees. Placing
+/// never refuses a vertex, in any order, so no valid shell fails; and placing in the
+/// reverse of a removal's order fills that removal's caps again (a bigcap becomes one cap
+/// per vertex), so the count stays near the removal's.
 pub fn tetrahedralize(
     shell: &Shell,
     method: Method,
@@ -408,36 +416,18 @@ pub fn tetrahedralize(
         (&hidden, &shell.touching),
         &q_edges,
     );
-    // The orders to place in: the vertices left first (as if removed last), and last.
     let order: Vec<Vec<u32>> = match surface {
         Ok(mut surface) => {
             let r = removal::run(&mut surface, &removable, method, ctl)?;
             if r.left.is_empty() && surface.hidden.count() == 0 {
-                let mut on_p = vec![false; shell.points.len()];
-                for &v in shell.outer.iter().chain(&shell.touching) {
-                    on_p[v as usize] = true;
-                }
-                let ledger = ledger::ledger(ledger::Removal {
-                    tets: &r.tets,
-                    records: &r.records,
-                    outer: &shell.hull,
-                    points: &shell.points,
-                    last: &surface.triangles(),
-                    on_surface: on_p,
-                });
                 return Ok(ShellMesh {
-                    ledger: Some(ledger),
+                    ledger: Some(ledger_of(shell, &r, &surface)),
                     pieces: r.records.len(),
                     tets: r.tets,
                     finished_by: Finish::Removal,
                 });
             }
-            let back: Vec<u32> = r.order.into_iter().rev().collect();
-            let first: Vec<u32> = r.left.iter().chain(&back).copied().collect();
-            match r.left.is_empty() {
-                true => vec![first],
-                false => vec![first, back.into_iter().chain(r.left).collect()],
-            }
+            placing_orders(r.left, r.order)
         }
         Err(_) => vec![removable],
     };
@@ -455,4 +445,31 @@ pub fn tetrahedralize(
         finished_by: Finish::Placing,
         ledger: None,
     })
+}
+
+/// The weights of §4.4 on a removal that took every outer vertex (`surface` is `∂Q`).
+fn ledger_of(shell: &Shell, r: &removal::Removed, surface: &Surface) -> Ledger {
+    let mut on_p = vec![false; shell.points.len()];
+    for &v in shell.outer.iter().chain(&shell.touching) {
+        on_p[v as usize] = true;
+    }
+    ledger::ledger(ledger::Removal {
+        tets: &r.tets,
+        records: &r.records,
+        outer: &shell.hull,
+        points: &shell.points,
+        last: &surface.triangles(),
+        on_surface: on_p,
+    })
+}
+
+/// The orders to place in after a removal that left `left` and removed `order`: the
+/// removed vertices in reverse, with the left ones first (as if removed last) or last.
+fn placing_orders(left: Vec<u32>, order: Vec<u32>) -> Vec<Vec<u32>> {
+    let back: Vec<u32> = order.into_iter().rev().collect();
+    let first: Vec<u32> = left.iter().chain(&back).copied().collect();
+    match left.is_empty() {
+        true => vec![first],
+        false => vec![first, back.into_iter().chain(left).collect()],
+    }
 }

@@ -87,9 +87,7 @@ impl QEdges {
         }
         Ok(())
     }
-}
 
-impl QEdges {
     /// The surface of `P` (the hull `hull` of `pts`) with the inner vertices `on_outer`
     /// that lie on it as vertices: the hull's triangles, except on each facet that holds
     /// one of those vertices, which is triangulated again with Q's edges in it as
@@ -147,6 +145,9 @@ impl QEdges {
             handle.insert(v, h);
             vertex.insert(h, v);
         }
+        if vertex.len() != m.len() {
+            return None; // two vertices on one projected point: not a facet's corners
+        }
         for &v in m {
             for w in self.edges.get(&v).into_iter().flatten() {
                 if let (true, Some(&hw)) = (v < *w, handle.get(w))
@@ -157,13 +158,14 @@ impl QEdges {
             }
         }
         let tris = cdt.inner_faces().map(|face| {
-            let [x, y, z] = face.vertices().map(|h| vertex[&h.fix()]);
-            match orient2d_drop(p(x), p(y), p(z), axis) == outward {
+            let [x, y, z] = face.vertices().map(|h| vertex.get(&h.fix()).copied());
+            let (x, y, z) = (x?, y?, z?);
+            Some(match orient2d_drop(p(x), p(y), p(z), axis) == outward {
                 true => [x, y, z],
                 false => [x, z, y],
-            }
+            })
         });
-        Some(tris.collect())
+        tris.collect()
     }
 }
 
