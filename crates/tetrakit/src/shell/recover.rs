@@ -3,8 +3,10 @@
 //! triangulation of that facet must have Q's edges, so that Q's facet is a union of its
 //! triangles and no tetrahedron is ever built on a triangle reaching into `Q`.
 //!
-//! Each missing edge `ab` is recovered by 2-2 flips inside the planar facet that holds
-//! both ends (Sloan's edge insertion, exact): an edge of the facet's triangulation that
+//! On `P` itself, at the start, each facet holding vertices or edges of `Q` is
+//! triangulated with Q's edges as constraints ([`QEdges::facet_triangles`]). In a flat
+//! bottom a removal leaves, each missing edge `ab` is recovered by 2-2 flips inside the
+//! planar facet that holds both ends (Sloan's edge insertion, exact): an edge of the facet's triangulation that
 //! `ab` crosses is flipped when its quadrilateral is strictly convex, preferring flips
 //! whose new diagonal no longer crosses `ab`. One crossing edge is always flippable, and
 //! no vertex lies inside `ab` (a vertex of `P` or `Q` inside an edge of `Q` would not be
@@ -89,9 +91,9 @@ impl QEdges {
     }
 
     /// The surface of `P` (the hull `hull` of `pts`) with the inner vertices `on_outer`
-    /// that lie on it as vertices: the hull's triangles, except on each facet that holds
-    /// one of those vertices, which is triangulated again with Q's edges in it as
-    /// constraints (`spade`'s constrained Delaunay triangulation, exact, in the facet's
+    /// that lie on it as vertices and every edge of `Q` that lies on it: the hull's
+    /// triangles, except on each facet that holds one of those vertices or edges, which
+    /// is triangulated again with Q's edges in it as constraints (`spade`'s constrained Delaunay triangulation, exact, in the facet's
     /// projection along an axis it is not parallel to). Linear in the facet's size where
     /// inserting the vertices one by one and flipping Q's edges in was quadratic (Q's
     /// vertices on circles on a cube's facets). `None` when `spade` refuses a coordinate
@@ -107,6 +109,15 @@ impl QEdges {
         for &v in on_outer {
             for &f in hull.facets_of(v as usize) {
                 members.entry(f).or_default().push(v);
+            }
+        }
+        // An edge of Q between two vertices of P (a facet shared with P).
+        for (&v, ws) in &self.edges {
+            for &w in ws.iter().filter(|&&w| v < w) {
+                let fw = hull.facets_of(w as usize);
+                for &f in hull.facets_of(v as usize).iter().filter(|f| fw.contains(f)) {
+                    members.entry(f).or_default().extend([v, w]);
+                }
             }
         }
         let mut out = Vec::with_capacity(hull.triangles.len() + 2 * on_outer.len());

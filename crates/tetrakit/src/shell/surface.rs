@@ -119,14 +119,9 @@ impl<'a> Surface<'a> {
         let centre = q_edges
             .centre
             .ok_or(Refused("no float point strictly inside Q"))?;
-        let mut tris = q_edges
+        let tris = q_edges
             .facet_triangles(pts, outer_hull, on_outer)
-            .ok_or(Refused("a facet of P with inner vertices on it"))?;
-        if outer_hull.facet_count() < outer_hull.triangles.len() {
-            q_edges
-                .recover(pts, &mut tris, &HashSet::default())
-                .map_err(Refused)?;
-        }
+            .ok_or(Refused("a facet of P with inner vertices or edges on it"))?;
         let mut s = Surface {
             pts,
             tris: Vec::new(),
