@@ -519,7 +519,7 @@ fn planar_section() {
         match planar::keil(b.parse().expect("a ratio"), n, &ctl) {
             Ok(k) => {
                 let svg = std::env::temp_dir().join(format!("tetrakit-keil-{b}.svg"));
-                let picture = match std::fs::write(&svg, tetrakit::io::keil_svg(&k)) {
+                let picture = match std::fs::write(&svg, tetrakit::report::keil_svg(&k)) {
                     Ok(()) => format!("picture: {}", svg.display()),
                     Err(e) => format!("no picture ({e})"),
                 };

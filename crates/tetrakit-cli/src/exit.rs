@@ -66,7 +66,7 @@ impl From<tetrakit::params::GenerateError> for CliError {
                 };
                 CliError(format!("{flag} {value}: expected {expected}"))
             }
-            GenerateError::Unbuildable(why) => CliError(why),
+            GenerateError::Unbuildable(why) => CliError::new(why),
         }
     }
 }

@@ -165,7 +165,7 @@ pub fn keil(a: KeilArgs) -> CmdResult {
     let k = planar::keil(beta, a.n, &run.ctl).map_err(CliError::new)?;
     drop(run);
     if let Some(path) = a.svg {
-        std::fs::write(path, io::keil_svg(&k)).written(path)?;
+        std::fs::write(path, tetrakit::report::keil_svg(&k)).written(path)?;
     }
     if let Some(path) = a.output {
         io::write_points2d(path, &k.sites).written(path)?;

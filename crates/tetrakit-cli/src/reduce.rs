@@ -86,7 +86,7 @@ pub fn hull_gap(
     let run = Run::new(time_limit, poly.points.len(), 2000);
     run.stage("flipping reflex edges");
     let o = tetrakit::reduce::solve_hull_gap(&poly, &run.ctl).map_err(|e| match e {
-        HullGapError::Uncertified(why) => CliError::internal(why),
+        HullGapError::Uncertified(_) | HullGapError::Internal(_) => CliError::new(e),
         e => refusal(input, e, base),
     })?;
     drop(run);
@@ -140,7 +140,7 @@ pub fn quasi_prism(
     let run = Run::new(time_limit, q.points.len(), 40);
     run.stage("staircases, then the exact solver");
     let o = q.solve(&run.ctl).map_err(|e| match e {
-        QuasiPrismError::Uncertified(why) => CliError::internal(why),
+        QuasiPrismError::Uncertified(_) | QuasiPrismError::MissingEdge(_) => CliError::new(e),
         e => refusal(input, e, base),
     })?;
     drop(run);

@@ -53,8 +53,10 @@ fn blame(e: ShellError, outer: &Input, inner: &Input) -> CliError {
             }
         }
         ShellError::TooLargeForOptimum { .. } => CliError::new(format!("--optimum: {e}")),
-        ShellError::Internal(why) => CliError::internal(why),
-        ShellError::Stopped => CliError::internal(e),
+        ShellError::Exact(_) => CliError::new(format!("--optimum: {e}")),
+        // A bug: the library's sentence says so.
+        ShellError::Internal(_) | ShellError::Uncertified(_) => CliError::new(e),
+        ShellError::Stopped(_) => CliError::internal(e),
     }
 }
 

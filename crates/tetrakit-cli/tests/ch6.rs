@@ -1,25 +1,8 @@
 //! The chapter 6 commands (`flips`, `tetrahedralize --hamiltonian`): exit codes, the JSON
 //! fields, the files written, the file's numbering and one clear line for every bad input.
 
-use std::path::PathBuf;
-use std::process::{Command, Output};
-
-fn dir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("tetrakit-flips-{}-{name}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_tetrakit"))
-        .args(args)
-        .output()
-        .expect("binary runs")
-}
-
-fn json(o: &Output) -> serde_json::Value {
-    serde_json::from_slice(&o.stdout).expect("stdout is one JSON object")
-}
+mod common;
+use common::*;
 
 const CUBE: &str = "0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n";
 

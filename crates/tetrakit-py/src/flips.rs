@@ -89,8 +89,8 @@ pub fn hamiltonian<'py>(
         tetrakit::dualpath::hamiltonian(&pts, &PathOptions::default(), &ctl)
     })?
     .map_err(|e| match e {
-        PathError::Uncertified(_) => {
-            PyRuntimeError::new_err(format!("{e} (a bug: please report it)"))
+        PathError::Uncertified(_) | PathError::Internal(_) => {
+            PyRuntimeError::new_err(e.to_string())
         }
         _ => value_error(e),
     })?;

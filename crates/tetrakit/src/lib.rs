@@ -24,6 +24,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod bug;
 pub mod constrain;
 pub mod control;
 pub mod detect;
@@ -46,3 +47,4 @@ pub mod report;
 pub mod rng;
 mod rows;
 pub mod shell;
+pub mod witness;

@@ -26,7 +26,7 @@ pub enum GenerateError {
     },
     /// The parameters are in range, but the shape they ask for cannot be built (a
     /// sentence saying why).
-    Unbuildable(String),
+    Unbuildable(&'static str),
 }
 
 impl GenerateError {

@@ -12,7 +12,19 @@ type Module = Vec<String>;
 /// What each top-level module may use (besides itself): the layers below it, and the
 /// few algorithm-to-algorithm edges ARCHITECTURE.md names.
 fn allowed(top: &str) -> Vec<&'static str> {
-    const BASE: &[&str] = &["control", "numbering", "params", "partition", "rows", "rng"];
+    const BASE: &[&str] = &[
+        "bug",
+        "control",
+        "numbering",
+        "params",
+        "partition",
+        "rows",
+        "rng",
+        "witness",
+    ];
+    if top == "witness" {
+        return vec!["numbering"]; // a witness's sentence names vertices as `#12`
+    }
     if BASE.contains(&top) {
         return Vec::new();
     }
@@ -39,14 +51,13 @@ fn allowed(top: &str) -> Vec<&'static str> {
     if top == "report" {
         return [BASE, below, ALGORITHMS].concat();
     }
-    // `io` writes planar results; the shell hands pieces no cone tiles to the exact
-    // solver and improves its meshes by flips; `constrain` asks `detect` first and the
+    // The shell asks the exact solver for `--optimum`'s minimum and improves its meshes
+    // by flips; `constrain` asks `detect` first and the
     // exact solver after, and builds its niche instances on `polyhedra`'s twisted prism;
     // `reduce` triangulates its generated quasi-prisms with `planar`'s Delaunay and hands a
     // quasi-prism without staircases to the exact solver; `mintetra`
     // confirms its minimality with the exact solver.
     let extra: &[&str] = match top {
-        "io" => &["planar"],
         "distributed" => &["io"],
         "constrain" => &["detect", "exact", "polyhedra"],
         "shell" => &["exact", "flip"],

@@ -286,7 +286,7 @@ fn a_stopped_control_stops() {
     for m in [Method::Cap, Method::Bigcap] {
         assert_eq!(
             tetrahedralize(&shell, m, &ctl).unwrap_err(),
-            ShellError::Stopped
+            ShellError::Stopped(tetrakit::control::Stopped)
         );
     }
 }

@@ -52,7 +52,7 @@ pub fn niche(
         .iter()
         .find(|n| n.base.iter().all(|&v| v < 3))
         .ok_or(GenerateError::Unbuildable(
-            "the twisted prism has no niche at its bottom".into(),
+            "the twisted prism has no niche at its bottom",
         ))?;
     let mut pts = s.points.clone();
     let mut rng = Rng::new(seed);
@@ -76,9 +76,9 @@ pub fn niche(
             .iter()
             .any(|m| !m.sees_base(&pts, centre))
         {
-            return Err(GenerateError::Unbuildable(format!(
-                "at a twist of {twist}° the centre does not see both niches' bases"
-            )));
+            return Err(GenerateError::Unbuildable(
+                "at this twist the centre does not see both niches' bases",
+            ));
         }
     }
     Ok(NicheInstance {

@@ -117,7 +117,15 @@ impl std::fmt::Display for ConstrainError {
     }
 }
 
-impl std::error::Error for ConstrainError {}
+impl std::error::Error for ConstrainError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            ConstrainError::Segments(e) => Some(e),
+            ConstrainError::Exact(e) => Some(e),
+            ConstrainError::Duplicate(_) => None,
+        }
+    }
+}
 
 impl From<ExactError> for ConstrainError {
     fn from(e: ExactError) -> Self {
@@ -159,7 +167,7 @@ pub fn contains(
             ));
         }
         Ok(_) => {}
-        Err(detect::DetectError::Stopped) => {
+        Err(detect::DetectError::Stopped(_)) => {
             return Ok(decided(Answer::Undecided, Route::Detect, false, false));
         }
         Err(detect::DetectError::Segments(e)) => return Err(ConstrainError::Segments(e)),

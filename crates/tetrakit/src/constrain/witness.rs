@@ -54,58 +54,18 @@ impl std::fmt::Display for WitnessKind {
 }
 
 /// A checkable reason for a NO (0-based point indices).
-#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
-pub struct Witness {
-    /// What kind of reason.
-    pub kind: WitnessKind,
-    /// The vertices it names.
-    pub vertices: Vec<u32>,
-    /// The segments it names.
-    pub segments: Vec<[u32; 2]>,
-    /// A sentence for a person.
-    pub detail: String,
-}
+pub type Witness = crate::witness::Witness<WitnessKind>;
 
 impl Witness {
-    fn new(kind: WitnessKind, vertices: Vec<u32>, segments: Vec<[u32; 2]>, detail: String) -> Self {
-        Witness {
-            kind,
-            vertices,
-            segments,
-            detail,
-        }
-    }
-
     pub(super) fn unsatisfiable(candidates: usize) -> Self {
         Witness::new(
             WitnessKind::Unsatisfiable,
             vec![],
             vec![],
             format!(
-                "no set of the {candidates} candidate tetrahedra covers the hull face to face (the SAT formula is unsatisfiable; --proof writes it with a DRAT refutation)"
+                "no set of the {candidates} candidate tetrahedra covers the hull face to face (the SAT formula is unsatisfiable; `prove` writes it with a DRAT refutation)"
             ),
         )
-    }
-
-    /// The witness in an input's numbering from `base` (its lists and its sentence).
-    ///
-    /// ```
-    /// use tetrakit::constrain::{Answer, Options, constrained};
-    /// use tetrakit::control::Control;
-    /// let p = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0], [0.5, 0.5, 1.0]];
-    /// let no = constrained(&p, &[[1, 3], [0, 2]], &Options::default(), &Control::new()).unwrap();
-    /// let Answer::No(w) = no.answer else { panic!() };
-    /// let w = w.shifted(1);
-    /// assert_eq!(w.segments, [[2, 4], [1, 3]]);
-    /// assert!(w.detail.starts_with("constraints (#2, #4) and (#1, #3)"));
-    /// ```
-    pub fn shifted(&self, base: u32) -> Witness {
-        Witness {
-            kind: self.kind,
-            vertices: self.vertices.iter().map(|v| v + base).collect(),
-            segments: self.segments.iter().map(|s| s.map(|v| v + base)).collect(),
-            detail: crate::numbering::renumber_text(&self.detail, base),
-        }
     }
 }
 

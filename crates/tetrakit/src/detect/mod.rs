@@ -117,19 +117,26 @@ pub enum DetectError {
     /// numbering).
     Segments(SegmentError),
     /// The control was stopped first.
-    Stopped,
+    Stopped(Stopped),
 }
 
 impl std::fmt::Display for DetectError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             DetectError::Segments(e) => e.fmt(f),
-            DetectError::Stopped => Stopped.fmt(f),
+            DetectError::Stopped(s) => s.fmt(f),
         }
     }
 }
 
-impl std::error::Error for DetectError {}
+impl std::error::Error for DetectError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            DetectError::Segments(e) => Some(e),
+            DetectError::Stopped(s) => Some(s),
+        }
+    }
+}
 
 impl From<SegmentError> for DetectError {
     fn from(e: SegmentError) -> Self {
@@ -138,8 +145,8 @@ impl From<SegmentError> for DetectError {
 }
 
 impl From<Stopped> for DetectError {
-    fn from(_: Stopped) -> Self {
-        DetectError::Stopped
+    fn from(s: Stopped) -> Self {
+        DetectError::Stopped(s)
     }
 }
 
@@ -700,7 +707,7 @@ mod tests {
                         .is_yes()
                 );
                 let err = detect(&t.points, &e, &opts, &stopped).unwrap_err();
-                assert_eq!(err, DetectError::Stopped);
+                assert_eq!(err, DetectError::Stopped(Stopped));
             }
         }
     }

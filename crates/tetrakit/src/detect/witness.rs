@@ -1,6 +1,5 @@
 //! Certificates of a NO answer.
 
-use crate::numbering::map_text;
 use serde::Serialize;
 use std::fmt;
 
@@ -50,34 +49,9 @@ impl fmt::Display for WitnessKind {
 
 /// A checkable reason for a NO: the named vertices and segments and what is wrong.
 /// Indices are 0-based point indices.
-#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
-pub struct Witness {
-    /// What kind of reason.
-    pub kind: WitnessKind,
-    /// The vertices it names.
-    pub vertices: Vec<u32>,
-    /// The segments it names.
-    pub segments: Vec<[u32; 2]>,
-    /// A sentence for a person.
-    pub detail: String,
-}
+pub type Witness = crate::witness::Witness<WitnessKind>;
 
 impl Witness {
-    /// A witness of `kind`.
-    pub fn new(
-        kind: WitnessKind,
-        vertices: Vec<u32>,
-        segments: Vec<[u32; 2]>,
-        detail: String,
-    ) -> Self {
-        Witness {
-            kind,
-            vertices,
-            segments,
-            detail,
-        }
-    }
-
     /// Segments `va` and `vb` overlap because `a` and `b` lie on one ray from `v`.
     pub(crate) fn overlap_on_ray(v: u32, a: u32, b: u32) -> Self {
         Witness::new(
@@ -88,26 +62,6 @@ impl Witness {
                 "segments (#{v}, #{a}) and (#{v}, #{b}) overlap: #{a} and #{b} lie on one ray from #{v}"
             ),
         )
-    }
-
-    /// Shifts every vertex number by `base` (0 or 1), in the fields and in the text, where
-    /// vertex numbers are written `#12`, so the witness names vertices as the input file did.
-    ///
-    /// ```
-    /// use tetrakit::detect::{Witness, WitnessKind};
-    /// let w = Witness::new(WitnessKind::VertexOnSegment, vec![4], vec![[1, 2]], "vertex #4 lies inside segment (#1, #2)".into());
-    /// assert_eq!(w.renumbered(1).detail, "vertex #5 lies inside segment (#2, #3)");
-    /// ```
-    pub fn renumbered(self, base: u32) -> Self {
-        self.mapped(|v| v + base)
-    }
-
-    /// Renames every vertex `v` to `f(v)`, in the fields and in the text.
-    pub fn mapped(mut self, f: impl Fn(u32) -> u32) -> Self {
-        self.vertices.iter_mut().for_each(|v| *v = f(*v));
-        self.segments.iter_mut().flatten().for_each(|v| *v = f(*v));
-        self.detail = map_text(&self.detail, f);
-        self
     }
 
     /// Rank used to pick the most telling witness among several: crossings first.

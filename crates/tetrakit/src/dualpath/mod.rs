@@ -32,6 +32,7 @@
 
 mod search;
 
+use crate::bug::Bug;
 use crate::control::{Control, Verdict};
 use crate::geom::{Hull3, Point3, SetDefect, orient3d, solid_set, triangulate_coplanar};
 use crate::mesh;
@@ -62,8 +63,11 @@ pub enum PathError {
         /// The point.
         index: u32,
     },
-    /// The tetrahedra or their order failed the verifier (a bug if it ever happens).
-    Uncertified(String),
+    /// The tetrahedra failed the verifier (a bug if it ever happens): its problem.
+    Uncertified(mesh::Problem),
+    /// Two consecutive tetrahedra of the path share no triangle (a bug if it ever
+    /// happens; `at` names the first).
+    Internal(Bug),
 }
 
 impl fmt::Display for PathError {
@@ -74,12 +78,25 @@ impl fmt::Display for PathError {
                 f,
                 "point #{index} lies inside the hull: a convex polytope's points are on its boundary"
             ),
-            PathError::Uncertified(why) => write!(f, "internal error: {why}"),
+            PathError::Uncertified(p) => write!(
+                f,
+                "internal error, please report the input: the cone fails its certificate: {p}"
+            ),
+            PathError::Internal(bug) => bug.fmt(f),
         }
     }
 }
 
-impl std::error::Error for PathError {}
+impl std::error::Error for PathError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            PathError::Set(e) => Some(e),
+            PathError::Uncertified(p) => Some(p),
+            PathError::Internal(bug) => Some(bug),
+            PathError::Inside { .. } => None,
+        }
+    }
+}
 
 /// A tetrahedralization with a Hamiltonian dual path ([`hamiltonian`]).
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
@@ -163,10 +180,10 @@ pub fn hamiltonian(
             .iter()
             .map(|&i| cone(points, v, tris[i as usize]))
             .collect();
-        mesh::certify_hull(points, &tets)
-            .map_err(|p| PathError::Uncertified(format!("the cone from #{v} fails: {p}")))?;
+        mesh::certify_hull(points, &tets).map_err(PathError::Uncertified)?;
         mesh::verify_dual_path(&tets).map_err(|i| {
-            PathError::Uncertified(format!("tetrahedra {i} and {} share no triangle", i + 1))
+            let check = "consecutive tetrahedra of the path share a triangle";
+            PathError::Internal(Bug::at(check, [i as u32, i as u32 + 1]))
         })?;
         o.verdict = Verdict::Yes;
         o.tetrahedra = tets.len();

@@ -23,8 +23,8 @@ impl Outcome {
 }
 
 /// The first reason `tets` is not a tetrahedralization of `domain` obeying `edges`.
-pub(super) fn certify(domain: Domain, edges: Edges, tets: &[[u32; 4]]) -> Result<(), String> {
-    domain.certify(tets).map_err(|p| p.to_string())?;
+pub(super) fn certify(domain: Domain, edges: Edges, tets: &[[u32; 4]]) -> Result<(), Uncertified> {
+    domain.certify(tets).map_err(Uncertified::Problem)?;
     if edges.allowed.is_none() && edges.required.is_empty() {
         return Ok(());
     }
@@ -35,12 +35,46 @@ pub(super) fn certify(domain: Domain, edges: Edges, tets: &[[u32; 4]]) -> Result
         .collect();
     if let Some(allowed) = edges.allowed {
         let allowed: HashSet<[u32; 2]> = allowed.iter().map(|&s| key(s)).collect();
-        if let Some([a, b]) = used.iter().find(|e| !allowed.contains(*e)) {
-            return Err(format!("edge (#{a}, #{b}) is not an allowed segment"));
+        if let Some(&e) = used.iter().find(|e| !allowed.contains(*e)) {
+            return Err(Uncertified::NotAllowed(e));
         }
     }
     match edges.required.iter().find(|&&s| !used.contains(&key(s))) {
-        Some([a, b]) => Err(format!("required segment (#{a}, #{b}) is not an edge")),
+        Some(&e) => Err(Uncertified::RequiredMissing(e)),
         None => Ok(()),
+    }
+}
+
+/// Why the solver's tetrahedra failed their certificate (a bug if it ever happens).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Uncertified {
+    /// They do not tetrahedralize the domain: the verifier's problem.
+    Problem(crate::mesh::Problem),
+    /// An edge is not an allowed segment.
+    NotAllowed([u32; 2]),
+    /// A required segment is not an edge.
+    RequiredMissing([u32; 2]),
+}
+
+impl std::fmt::Display for Uncertified {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Uncertified::Problem(p) => p.fmt(f),
+            Uncertified::NotAllowed([a, b]) => {
+                write!(f, "edge (#{a}, #{b}) is not an allowed segment")
+            }
+            Uncertified::RequiredMissing([a, b]) => {
+                write!(f, "required segment (#{a}, #{b}) is not an edge")
+            }
+        }
+    }
+}
+
+impl std::error::Error for Uncertified {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            Uncertified::Problem(p) => Some(p),
+            _ => None,
+        }
     }
 }

@@ -68,6 +68,7 @@ mod outcome;
 mod proof;
 mod separate;
 
+pub use certify::Uncertified;
 pub use encode::{Domain, Edges, MAX_CANDIDATES};
 
 pub use outcome::{TetraOptions, TetraOutcome, Witness, WitnessKind, tetrahedralize};
@@ -216,11 +217,12 @@ pub enum ExactError {
     TooManyCandidates(usize),
     /// No anchor point could be placed (not expected; reported rather than guessed).
     NoAnchor,
-    /// Writing a formula or proof failed.
-    Io(String),
+    /// Writing a formula or proof failed (the writer's error kind; the caller knows the
+    /// file).
+    Io(std::io::ErrorKind),
     /// The solver's tetrahedra failed the independent certificate (a bug: please report
     /// the input).
-    Uncertified(String),
+    Uncertified(Uncertified),
 }
 
 impl std::fmt::Display for ExactError {
@@ -241,13 +243,20 @@ impl std::fmt::Display for ExactError {
             ExactError::Io(e) => write!(f, "writing the formula or proof: {e}"),
             ExactError::Uncertified(e) => write!(
                 f,
-                "internal error: the solver's tetrahedra fail the certificate: {e}"
+                "internal error, please report the input: the solver's tetrahedra fail the certificate: {e}"
             ),
         }
     }
 }
 
-impl std::error::Error for ExactError {}
+impl std::error::Error for ExactError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            ExactError::Uncertified(e) => Some(e),
+            _ => None,
+        }
+    }
+}
 
 impl Domain<'_> {
     /// Certifies that `tets` tetrahedralize this domain: the convex hull with every point

@@ -51,26 +51,21 @@ impl std::fmt::Display for WitnessKind {
 }
 
 /// Why no tetrahedralization without Steiner points exists: a short obstacle found from
-/// the candidates alone, or the unsatisfiable formula.
-#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
-pub struct Witness {
-    /// What kind of reason.
-    pub kind: WitnessKind,
-    /// The vertices it names (a vertex, a segment's ends, a facet's corners).
-    pub vertices: Vec<u32>,
-    /// A sentence for a person.
-    pub detail: String,
-}
+/// the candidates alone, or the unsatisfiable formula. Its vertices are a vertex, a
+/// segment's ends or a facet's corners; its segments the unusable segment.
+pub type Witness = crate::witness::Witness<WitnessKind>;
 
 impl Witness {
     /// The witness of a NO with these `stats`.
     pub fn of(stats: &Stats) -> Witness {
-        let (kind, vertices) = match &stats.obstacle {
-            None => (WitnessKind::Unsatisfiable, Vec::new()),
-            Some(Obstacle::NoCandidate) => (WitnessKind::NoCandidate, Vec::new()),
-            Some(Obstacle::UncoveredVertex(v)) => (WitnessKind::UncoveredVertex, vec![*v]),
-            Some(Obstacle::UnusableSegment(s)) => (WitnessKind::UnusableSegment, s.to_vec()),
-            Some(Obstacle::UncoveredFacet(f)) => (WitnessKind::UncoveredFacet, f.to_vec()),
+        let (kind, vertices, segments) = match &stats.obstacle {
+            None => (WitnessKind::Unsatisfiable, Vec::new(), Vec::new()),
+            Some(Obstacle::NoCandidate) => (WitnessKind::NoCandidate, Vec::new(), Vec::new()),
+            Some(Obstacle::UncoveredVertex(v)) => (WitnessKind::UncoveredVertex, vec![*v], vec![]),
+            Some(Obstacle::UnusableSegment(s)) => {
+                (WitnessKind::UnusableSegment, s.to_vec(), vec![*s])
+            }
+            Some(Obstacle::UncoveredFacet(f)) => (WitnessKind::UncoveredFacet, f.to_vec(), vec![]),
         };
         let detail = match &stats.obstacle {
             Some(o) => o.to_string(),
@@ -79,20 +74,7 @@ impl Witness {
                 stats.candidates
             ),
         };
-        Witness {
-            kind,
-            vertices,
-            detail,
-        }
-    }
-
-    /// The witness in an input's numbering from `base` (its list and its sentence).
-    pub fn shifted(&self, base: u32) -> Witness {
-        Witness {
-            kind: self.kind,
-            vertices: self.vertices.iter().map(|v| v + base).collect(),
-            detail: crate::numbering::renumber_text(&self.detail, base),
-        }
+        Witness::new(kind, vertices, segments, detail)
     }
 }
 

@@ -56,8 +56,7 @@ pub fn prove_infeasible(
     };
     let (cnf, variables) = without_empty_clauses(f.cnf, f.vars.n_used(), f.cand.tets.is_empty());
     let clauses = cnf.len();
-    write_dimacs(formula, &f.cand.tets, &cnf, variables)
-        .map_err(|e| ExactError::Io(e.to_string()))?;
+    write_dimacs(formula, &f.cand.tets, &cnf, variables).map_err(|e| ExactError::Io(e.kind()))?;
     let mut solver = varisat::Solver::new();
     solver.write_proof(
         StopWriter {
@@ -83,12 +82,18 @@ pub fn prove_infeasible(
     match answer {
         Ok(true) => Ok(Proof::Satisfiable),
         Ok(false) => {
-            solver
-                .close_proof()
-                .map_err(|e| ExactError::Io(e.to_string()))?;
+            solver.close_proof().map_err(solver_error)?;
             Ok(Proof::Refuted { variables, clauses })
         }
-        Err(e) => Err(ExactError::Io(e.to_string())),
+        Err(e) => Err(solver_error(e)),
+    }
+}
+
+/// A solver error while writing the proof: the proof writer's error kind.
+fn solver_error(e: varisat::solver::SolverError) -> ExactError {
+    match e {
+        varisat::solver::SolverError::ProofIoError { cause } => ExactError::Io(cause.kind()),
+        _ => ExactError::Io(std::io::ErrorKind::Other),
     }
 }
 

@@ -92,7 +92,7 @@ pub enum FlipError {
         /// The tetrahedralization.
         index: usize,
         /// What the verifier found.
-        problem: String,
+        problem: mesh::Problem,
     },
 }
 
@@ -117,7 +117,15 @@ impl fmt::Display for FlipError {
     }
 }
 
-impl std::error::Error for FlipError {}
+impl std::error::Error for FlipError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            FlipError::Set(e) => Some(e),
+            FlipError::Uncertified { problem, .. } => Some(problem),
+            _ => None,
+        }
+    }
+}
 
 /// How many flips of each kind the graph has (each edge once).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
@@ -318,7 +326,7 @@ fn certify(points: &[Point3], tets: &[[u32; 4]], all: &enumerate::Family) -> Res
             None => Ok(()),
             Some(p) => Err(FlipError::Uncertified {
                 index,
-                problem: p.to_string(),
+                problem: p.clone(),
             }),
         }
     })

@@ -83,6 +83,8 @@ impl std::fmt::Display for SetDefect {
     }
 }
 
+impl std::error::Error for SetDefect {}
+
 /// At least four distinct points, not all on one plane: the sets a tetrahedralization
 /// can use every point of.
 ///

@@ -29,7 +29,7 @@ mod vtu;
 mod vtu_data;
 mod write;
 
-pub use planar::{keil_svg, write_planar_edges, write_planar_triangulation, write_points2d};
+pub use planar::{write_planar_edges, write_planar_triangulation, write_points2d};
 pub use svg::{Figure, Svg};
 pub use write::{
     Fields, write_edges, write_instance, write_mesh, write_mesh_with_fields, write_pieces,

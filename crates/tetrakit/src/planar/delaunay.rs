@@ -113,8 +113,8 @@ fn triangulate(points: &[Point2]) -> Result<DelaunayTriangulation<Site>, PlanarE
             index: i as u32,
         })
         .collect();
-    let dt = DelaunayTriangulation::<Site>::bulk_load(sites).map_err(|e| {
-        PlanarError::internal(format!("spade's Delaunay triangulation failed: {e:?}"))
+    let dt = DelaunayTriangulation::<Site>::bulk_load(sites).map_err(|_| {
+        PlanarError::internal("spade triangulates sites in the supported range", [])
     })?;
     if dt.num_vertices() != points.len() {
         return Err(match super::coincident_sites(points) {
@@ -122,7 +122,7 @@ fn triangulate(points: &[Point2]) -> Result<DelaunayTriangulation<Site>, PlanarE
                 sites,
                 point: points[sites[0] as usize],
             },
-            None => PlanarError::internal("spade merged distinct sites"),
+            None => PlanarError::internal("spade keeps distinct sites apart", []),
         });
     }
     Ok(dt)
@@ -141,9 +141,10 @@ fn locally_delaunay(points: &[Point2], p: u32, q: u32, l: Option<u32>, r: Option
 }
 
 fn not_delaunay(p: u32, q: u32) -> PlanarError {
-    PlanarError::internal(format!(
-        "the Delaunay triangulation fails the empty-circle test at edge {p}-{q}"
-    ))
+    PlanarError::internal(
+        "the Delaunay triangulation passes the empty-circle test at every edge",
+        [p, q],
+    )
 }
 
 /// A Delaunay edge `pq` with the apices of its triangles (left of `p → q`, right), each

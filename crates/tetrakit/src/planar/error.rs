@@ -1,5 +1,6 @@
 //! Why a planar computation gave no answer.
 
+use crate::bug::Bug;
 use crate::control::Stopped;
 use crate::geom::{Point2, Ratio};
 use std::fmt;
@@ -103,21 +104,21 @@ pub enum PlanarError {
         limit: usize,
     },
     /// The control was stopped first.
-    Stopped,
-    /// An internal consistency check failed: a bug (the text says which check).
-    Internal(String),
+    Stopped(Stopped),
+    /// An internal consistency check failed: a bug.
+    Internal(Bug),
 }
 
 impl PlanarError {
-    /// An internal inconsistency (a bug) described by `what`.
-    pub(crate) fn internal(what: impl Into<String>) -> Self {
-        PlanarError::Internal(what.into())
+    /// An internal inconsistency (a bug): `check` failed at the sites `at`.
+    pub(crate) fn internal(check: &'static str, at: impl IntoIterator<Item = u32>) -> Self {
+        PlanarError::Internal(Bug::at(check, at))
     }
 }
 
 impl From<Stopped> for PlanarError {
-    fn from(_: Stopped) -> Self {
-        PlanarError::Stopped
+    fn from(s: Stopped) -> Self {
+        PlanarError::Stopped(s)
     }
 }
 
@@ -194,16 +195,24 @@ impl fmt::Display for PlanarError {
                 lemma_bound,
             } => write!(
                 f,
-                "n = {n} is above the limit of {limit} sites per arc (Lemma 5.8 asks n > {lemma_bound:.1}); give a smaller --n"
+                "n = {n} is above the limit of {limit} sites per arc (Lemma 5.8 asks n > {lemma_bound:.1}); ask for fewer sites"
             ),
             KeilConstrainedTooLarge { sites, limit } => write!(
                 f,
-                "{sites} sites and xy is in the MWT: the best triangulation without xy is computed over all segments, limited to {limit} sites; use a smaller --n"
+                "{sites} sites and xy is in the MWT: the best triangulation without xy is computed over all segments, limited to {limit} sites; ask for fewer sites"
             ),
-            Stopped => crate::control::Stopped.fmt(f),
-            Internal(what) => write!(f, "internal error, please report: {what}"),
+            Stopped(s) => s.fmt(f),
+            Internal(bug) => bug.fmt(f),
         }
     }
 }
 
-impl std::error::Error for PlanarError {}
+impl std::error::Error for PlanarError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            PlanarError::Stopped(s) => Some(s),
+            PlanarError::Internal(bug) => Some(bug),
+            _ => None,
+        }
+    }
+}

@@ -169,14 +169,14 @@ pub fn perturbed(n: usize, dent: f64, seed: u64) -> Result<Polyhedron, GenerateE
             return Ok(p);
         }
     }
-    Err(GenerateError::Unbuildable(format!(
-        "no simple polyhedron in 100 draws of {n} points with dent {dent}"
-    )))
+    Err(GenerateError::Unbuildable(
+        "no simple polyhedron in 100 draws of these points with this dent",
+    ))
 }
 
 /// The surface built is not a simple polyhedron.
-fn not_simple(e: crate::mesh::SurfaceError) -> GenerateError {
-    GenerateError::Unbuildable(format!("not a simple polyhedron: {}", e.describe(0)))
+fn not_simple(_: crate::mesh::SurfaceError) -> GenerateError {
+    GenerateError::Unbuildable("the surface built is not a simple polyhedron")
 }
 
 fn on_sphere(rng: &mut Rng) -> Point3 {
@@ -240,7 +240,7 @@ fn ear_clip(
         });
         let Some(i) = ear else {
             return Err(GenerateError::Unbuildable(
-                "a side polygon has no ear (not simple)".into(),
+                "a side polygon has no ear (not simple)",
             ));
         };
         out.push([poly[(i + k - 1) % k], poly[i], poly[(i + 1) % k]]);

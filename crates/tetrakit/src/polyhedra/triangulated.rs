@@ -53,12 +53,11 @@ pub fn convex_triangulated(
     }
     let mut rng = Rng::new(seed);
     let mut points = polytope(shape, n, &mut rng)?;
-    for k in 0..facet_points {
+    for _ in 0..facet_points {
         if !add_facet_point(&mut points, &mut rng) {
-            return Err(GenerateError::Unbuildable(format!(
-                "no room for facet point {} of {facet_points} after 100 tries: ask for fewer",
-                k + 1
-            )));
+            return Err(GenerateError::Unbuildable(
+                "no room for another facet point after 100 tries: ask for fewer",
+            ));
         }
     }
     let hull = Hull3::new(&points);
@@ -84,8 +83,9 @@ pub fn convex_triangulated(
         })
         .collect();
     let faces = faces.iter().map(|t| t.map(|v| new[v as usize])).collect();
-    Polyhedron::new(kept, faces)
-        .map_err(|e| GenerateError::Unbuildable(format!("not a simple polyhedron: {e:?}")))
+    Polyhedron::new(kept, faces).map_err(|_| {
+        GenerateError::Unbuildable("the polytope's surface is not a simple polyhedron")
+    })
 }
 
 fn polytope(shape: ConvexShape, n: usize, rng: &mut Rng) -> Result<Vec<Point3>, GenerateError> {
@@ -131,7 +131,7 @@ fn polytope(shape: ConvexShape, n: usize, rng: &mut Rng) -> Result<Vec<Point3>, 
             }
             if crate::geom::affine_dimension(&pts) < 3 {
                 return Err(GenerateError::Unbuildable(
-                    "the lattice points are coplanar: try another seed".into(),
+                    "the lattice points are coplanar: try another seed",
                 ));
             }
             pts

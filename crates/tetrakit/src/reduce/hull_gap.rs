@@ -9,9 +9,10 @@
 //! improperly), tries the next reflex edge when a check fails, and refuses only when
 //! none passes. Ends when no edge is reflex: the polyhedron is then its hull.
 
-use crate::control::Control;
+use crate::bug::Bug;
+use crate::control::{Control, Stopped};
 use crate::geom::{Hull3, orient3d, point_in_closed_tetrahedron, triangle_meets_tet};
-use crate::mesh::{Polyhedron, certify_boundary};
+use crate::mesh::{Polyhedron, Problem, certify_boundary};
 use std::collections::HashMap;
 
 /// Why [`hull_gap`] refused.
@@ -23,9 +24,11 @@ pub enum HullGapError {
     /// lemma's proof, or a degenerate input it does not cover: coplanar faces).
     Stuck([u32; 2]),
     /// The run-control stopped the flips.
-    Stopped,
-    /// The tetrahedra failed the certificate (a bug).
-    Uncertified(String),
+    Stopped(Stopped),
+    /// The tetrahedra failed the certificate (a bug): the verifier's problem.
+    Uncertified(Problem),
+    /// A face left after the flips is not on the hull (a bug).
+    Internal(Bug),
 }
 
 impl std::fmt::Display for HullGapError {
@@ -40,13 +43,26 @@ impl std::fmt::Display for HullGapError {
             HullGapError::Stuck([a, b]) => {
                 write!(f, "no reflex edge can be flipped (first: (#{a}, #{b}))")
             }
-            HullGapError::Stopped => write!(f, "stopped before the gap was filled"),
-            HullGapError::Uncertified(e) => write!(f, "internal error: {e}"),
+            HullGapError::Stopped(_) => write!(f, "stopped before the gap was filled"),
+            HullGapError::Uncertified(p) => write!(
+                f,
+                "internal error, please report the input: the tetrahedra fail their certificate: {p}"
+            ),
+            HullGapError::Internal(bug) => bug.fmt(f),
         }
     }
 }
 
-impl std::error::Error for HullGapError {}
+impl std::error::Error for HullGapError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            HullGapError::Stopped(s) => Some(s),
+            HullGapError::Uncertified(p) => Some(p),
+            HullGapError::Internal(bug) => Some(bug),
+            _ => None,
+        }
+    }
+}
 
 /// The tetrahedra filling `CH(Q) − Q` (positively oriented), certified: a valid mesh
 /// whose boundary is exactly the hull's triangles that are not faces of `Q` and `Q`'s
@@ -73,7 +89,7 @@ pub fn hull_gap(q: &Polyhedron, ctl: &Control) -> Result<Vec<[u32; 4]>, HullGapE
     let mut tets = Vec::new();
     loop {
         if ctl.is_stopped() {
-            return Err(HullGapError::Stopped);
+            return Err(HullGapError::Stopped(Stopped));
         }
         let reflex = reflex_edges(pts, &faces);
         let Some(first) = reflex.first() else {
@@ -94,9 +110,8 @@ pub fn hull_gap(q: &Polyhedron, ctl: &Control) -> Result<Vec<[u32; 4]>, HullGapE
         hull.common_facet(f[0] as usize, f[1] as usize, f[2] as usize)
             .is_none()
     }) {
-        return Err(HullGapError::Uncertified(format!(
-            "face {f:?} is not on the hull after the flips"
-        )));
+        let check = "every face left after the flips is on the hull";
+        return Err(HullGapError::Internal(Bug::at(check, *f)));
     }
     // The gap's boundary: the hull's triangles that are not faces of Q, and Q's faces
     // that are not on the hull, reversed.
@@ -113,8 +128,7 @@ pub fn hull_gap(q: &Polyhedron, ctl: &Control) -> Result<Vec<[u32; 4]>, HullGapE
             .filter(|f| !kept.contains(&key(f)))
             .map(|&[a, b, c]| [a, c, b]),
     );
-    certify_boundary(pts, &tets, &boundary)
-        .map_err(|e| HullGapError::Uncertified(e.to_string()))?;
+    certify_boundary(pts, &tets, &boundary).map_err(HullGapError::Uncertified)?;
     Ok(tets)
 }
 

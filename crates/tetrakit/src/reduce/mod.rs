@@ -49,7 +49,7 @@ pub use outcome::{
     HullGapOutcome, QuasiPrismOutcome, QuasiPrismRoute, ReductionFacts, StuckWitness,
     solve_hull_gap,
 };
-pub use quasi_prism::{QuasiPrism, QuasiPrismError, Staircase};
+pub use quasi_prism::{NotQuasiPrism, QuasiPrism, QuasiPrismError, Staircase};
 pub use sphere::{SphereReduction, sphere_reduction};
 
 use crate::geom::{Hull3, Point2, Point3, orient2d, orient3d};

@@ -92,7 +92,7 @@ pub fn solve_hull_gap(q: &Polyhedron, ctl: &Control) -> Result<HullGapOutcome, H
                 detail: e.to_string(),
             });
         }
-        Err(HullGapError::Stopped) => o.verdict = Verdict::Undecided,
+        Err(HullGapError::Stopped(_)) => o.verdict = Verdict::Undecided,
         Err(e) => return Err(e),
     }
     Ok(o)
@@ -197,7 +197,7 @@ impl QuasiPrism {
                 o.route = Some(QuasiPrismRoute::Exact);
                 self.by_exact(ctl, &mut o)?;
             }
-            Err(QuasiPrismError::Stopped) => o.verdict = Verdict::Undecided,
+            Err(QuasiPrismError::Stopped(_)) => o.verdict = Verdict::Undecided,
             Err(e) => return Err(e),
         }
         if !o.tets.is_empty() {

@@ -39,9 +39,9 @@
 //! Every result is certified: the tetrahedra tile the surface exactly
 //! ([`certify_polyhedron`]) and every edge of the quasi-prism is one of theirs.
 
-use crate::control::Control;
+use crate::control::{Control, Stopped};
 use crate::geom::{Hull3, Point3, collinear3, orient3d};
-use crate::mesh::{Polyhedron, SurfaceError, certify_polyhedron, edges_of};
+use crate::mesh::{Polyhedron, Problem, SurfaceError, certify_polyhedron, edges_of};
 use rustsat::instances::{BasicVarManager, ManageVars};
 use rustsat::solvers::{Solve, SolverResult};
 use rustsat::types::{Clause, Lit, TernaryVal};
@@ -62,7 +62,7 @@ pub struct QuasiPrism {
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum QuasiPrismError {
     /// The input is not a quasi-prism (sizes, indices, `S₁` not a disk).
-    Input(String),
+    Input(NotQuasiPrism),
     /// A boundary side is not planar and neither diagonal is a hull edge.
     NoConvexDiagonal([u32; 2]),
     /// Not regular: two sides of the prism over `triangle` meet beyond their vertical
@@ -80,10 +80,13 @@ pub enum QuasiPrismError {
     /// No orientation of the sides' diagonals leaves every prism without a cycle.
     NoStaircase,
     /// The run-control stopped the work.
-    Stopped,
+    Stopped(Stopped),
     /// The tetrahedra failed the certificate (a bug, or a regular quasi-prism on which
-    /// Lemma 2.7 fails).
-    Uncertified(String),
+    /// Lemma 2.7 fails): the verifier's problem.
+    Uncertified(Problem),
+    /// The tetrahedra miss this edge of [`QuasiPrism::edges`] (a bug, or a regular
+    /// quasi-prism on which Lemma 2.7 fails).
+    MissingEdge([u32; 2]),
     /// The exact solver could not take the boundary (too large).
     Exact(crate::exact::ExactError),
 }
@@ -92,6 +95,10 @@ impl std::fmt::Display for QuasiPrismError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             QuasiPrismError::Input(s) => write!(f, "not a quasi-prism: {s}"),
+            QuasiPrismError::MissingEdge([a, b]) => write!(
+                f,
+                "internal error, please report the input: edge (#{a}, #{b}) of the quasi-prism is not an edge of the tetrahedra"
+            ),
             QuasiPrismError::NoConvexDiagonal([a, b]) => write!(
                 f,
                 "the boundary side over edge (#{a}, #{b}) is not planar and neither of its diagonals is a convex hull edge"
@@ -111,14 +118,87 @@ impl std::fmt::Display for QuasiPrismError {
                 f,
                 "no choice of the sides' diagonals leaves every prism without a cycle (the convex diagonals force one)"
             ),
-            QuasiPrismError::Stopped => write!(f, "stopped before a staircase was found"),
-            QuasiPrismError::Uncertified(e) => write!(f, "internal error: {e}"),
+            QuasiPrismError::Stopped(_) => write!(f, "stopped before a staircase was found"),
+            QuasiPrismError::Uncertified(p) => write!(
+                f,
+                "internal error, please report the input: the tetrahedra fail their certificate: {p}"
+            ),
             QuasiPrismError::Exact(e) => write!(f, "no staircase, and the exact solver: {e}"),
         }
     }
 }
 
-impl std::error::Error for QuasiPrismError {}
+impl std::error::Error for QuasiPrismError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            QuasiPrismError::Input(e) => Some(e),
+            QuasiPrismError::Surface(e) => Some(e),
+            QuasiPrismError::Stopped(s) => Some(s),
+            QuasiPrismError::Uncertified(p) => Some(p),
+            QuasiPrismError::Exact(e) => Some(e),
+            _ => None,
+        }
+    }
+}
+
+/// Why the input of [`QuasiPrism::new`] is not a quasi-prism. Vertices are named `#v`
+/// (0-based), triangles by their position.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum NotQuasiPrism {
+    /// Not as many lower vertices as upper ones (`ψ` must be a bijection).
+    Sizes {
+        /// Upper vertices.
+        upper: usize,
+        /// Lower vertices.
+        lower: usize,
+    },
+    /// No triangles.
+    NoTriangles,
+    /// A triangle names a vertex that is not an upper vertex.
+    NotUpper {
+        /// The triangle.
+        triangle: usize,
+        /// The vertex.
+        vertex: u32,
+    },
+    /// A triangle repeats a vertex.
+    RepeatedVertex(usize),
+    /// A triangle is given twice (this is its second position).
+    RepeatedTriangle(usize),
+    /// An upper vertex is on no triangle.
+    Unused(u32),
+    /// An edge is on more than two triangles.
+    NonManifoldEdge([u32; 2]),
+    /// `S₁` cannot be oriented.
+    NotOrientable,
+    /// The triangles of `S₁` do not form a disk.
+    NotDisk,
+}
+
+impl std::fmt::Display for NotQuasiPrism {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            NotQuasiPrism::Sizes { upper, lower } => write!(
+                f,
+                "{upper} upper vertices but {lower} lower ones: ψ must be a bijection"
+            ),
+            NotQuasiPrism::NoTriangles => f.write_str("no triangles"),
+            NotQuasiPrism::NotUpper { triangle, vertex } => {
+                write!(f, "triangle {triangle} uses #{vertex}, not an upper vertex")
+            }
+            NotQuasiPrism::RepeatedVertex(k) => write!(f, "triangle {k} repeats a vertex"),
+            NotQuasiPrism::RepeatedTriangle(k) => write!(f, "triangle {k} is given twice"),
+            NotQuasiPrism::Unused(v) => write!(f, "vertex #{v} is on no triangle"),
+            NotQuasiPrism::NonManifoldEdge([a, b]) => {
+                write!(f, "edge (#{a}, #{b}) is on more than two triangles")
+            }
+            NotQuasiPrism::NotOrientable => f.write_str("S₁ is not orientable"),
+            NotQuasiPrism::NotDisk => f.write_str("the triangles of S₁ do not form a disk"),
+        }
+    }
+}
+
+impl std::error::Error for NotQuasiPrism {}
 
 /// A tetrahedralization of a quasi-prism by staircases.
 #[derive(Clone, Debug)]
@@ -153,54 +233,50 @@ impl QuasiPrism {
         lower: Vec<Point3>,
         triangles: Vec<[u32; 3]>,
     ) -> Result<QuasiPrism, QuasiPrismError> {
-        let bad = |s: String| Err(QuasiPrismError::Input(s));
+        let bad = |e: NotQuasiPrism| Err(QuasiPrismError::Input(e));
         let n = upper.len();
         if lower.len() != n {
-            return bad(format!(
-                "{n} upper vertices but {} lower ones: ψ must be a bijection",
-                lower.len()
-            ));
+            let (upper, lower) = (n, lower.len());
+            return bad(NotQuasiPrism::Sizes { upper, lower });
         }
         if triangles.is_empty() {
-            return bad("no triangles".into());
+            return bad(NotQuasiPrism::NoTriangles);
         }
         let mut seen = HashSet::new();
         let mut used = vec![false; n];
         for (k, t) in triangles.iter().enumerate() {
-            if let Some(&v) = t.iter().find(|&&v| v as usize >= n) {
-                return bad(format!(
-                    "triangle {k} uses #{v}, not an upper vertex (0..{n})"
-                ));
+            if let Some(&vertex) = t.iter().find(|&&v| v as usize >= n) {
+                return bad(NotQuasiPrism::NotUpper {
+                    triangle: k,
+                    vertex,
+                });
             }
             if t[0] == t[1] || t[1] == t[2] || t[0] == t[2] {
-                return bad(format!("triangle {k} repeats a vertex"));
+                return bad(NotQuasiPrism::RepeatedVertex(k));
             }
             let mut s = *t;
             s.sort_unstable();
             if !seen.insert(s) {
-                return bad(format!("triangle {k} is given twice"));
+                return bad(NotQuasiPrism::RepeatedTriangle(k));
             }
             t.iter().for_each(|&v| used[v as usize] = true);
         }
         if let Some(v) = used.iter().position(|&u| !u) {
-            return bad(format!("vertex #{v} is on no triangle"));
+            return bad(NotQuasiPrism::Unused(v as u32));
         }
         let counts = edge_counts(&triangles);
         if let Some((e, _)) = counts.iter().find(|&(_, &c)| c > 2) {
-            return bad(format!(
-                "edge (#{}, #{}) is on more than two triangles",
-                e[0], e[1]
-            ));
+            return bad(NotQuasiPrism::NonManifoldEdge(*e));
         }
         let q = QuasiPrism {
             points: [upper, lower].concat(),
             triangles: orient_consistently(triangles)
-                .ok_or_else(|| QuasiPrismError::Input("S₁ is not orientable".into()))?,
+                .ok_or(QuasiPrismError::Input(NotQuasiPrism::NotOrientable))?,
         };
         let chi = n as i64 - counts.len() as i64 + q.triangles.len() as i64;
         let boundary = q.boundary_edges();
         if chi != 1 || cycles(&boundary) != 1 {
-            return bad("the triangles of S₁ do not form a disk".into());
+            return bad(NotQuasiPrism::NotDisk);
         }
         Ok(q)
     }
@@ -263,7 +339,7 @@ impl QuasiPrism {
             None => (self.by_sat(&fixed, ctl)?, false),
         };
         if ctl.is_stopped() {
-            return Err(QuasiPrismError::Stopped);
+            return Err(QuasiPrismError::Stopped(Stopped));
         }
         let surface = Polyhedron::new(self.points.clone(), self.surface(&orientation))
             .map_err(QuasiPrismError::Surface)?;
@@ -329,17 +405,14 @@ impl QuasiPrism {
     /// Certifies that `tets` tetrahedralize `surface` (this quasi-prism's boundary) and
     /// have every edge of [`QuasiPrism::edges`].
     pub fn certify(&self, surface: &Polyhedron, tets: &[[u32; 4]]) -> Result<(), QuasiPrismError> {
-        certify_polyhedron(surface, tets)
-            .map_err(|p| QuasiPrismError::Uncertified(p.detail.clone()))?;
+        certify_polyhedron(surface, tets).map_err(QuasiPrismError::Uncertified)?;
         let have: HashSet<(u32, u32)> = edges_of(tets).into_iter().collect();
         match self
             .edges()
             .into_iter()
             .find(|&[a, b]| !have.contains(&(a, b)))
         {
-            Some([a, b]) => Err(QuasiPrismError::Uncertified(format!(
-                "edge (#{a}, #{b}) of the quasi-prism is not an edge of the tetrahedra"
-            ))),
+            Some(e) => Err(QuasiPrismError::MissingEdge(e)),
             None => Ok(()),
         }
     }
@@ -434,7 +507,7 @@ impl QuasiPrism {
         match solver.solve().expect("batsat") {
             SolverResult::Sat => {}
             SolverResult::Unsat => return Err(QuasiPrismError::NoStaircase),
-            SolverResult::Interrupted => return Err(QuasiPrismError::Stopped),
+            SolverResult::Interrupted => return Err(QuasiPrismError::Stopped(Stopped)),
         }
         let value = |e: &[u32; 2]| solver.lit_val(lits[e]).expect("sat") == TernaryVal::True;
         Ok(edges.iter().map(|e| (*e, value(e))).collect())

@@ -137,7 +137,7 @@ pub fn nested(p: &NestedParams) -> Result<(Vec<Point3>, Vec<Point3>, f64), Gener
         }
     }
     Err(GenerateError::Unbuildable(
-        "the inner shape does not fit inside the outer hull".into(),
+        "the inner shape does not fit inside the outer hull",
     ))
 }
 
@@ -247,9 +247,7 @@ pub fn contact(
     };
     let hull = crate::geom::Hull3::new(&outer);
     if hull.dimension < 3 {
-        return Err(GenerateError::Unbuildable(
-            "the outer points are flat".into(),
-        ));
+        return Err(GenerateError::Unbuildable("the outer points are flat"));
     }
     let corners: Vec<usize> = (0..outer.len()).filter(|&v| hull.on_boundary(v)).collect();
     let k = corners.len() as f64;

@@ -105,6 +105,7 @@ mod recover;
 mod removal;
 mod surface;
 
+use crate::bug::Bug;
 use crate::control::{Control, Stopped};
 use crate::geom::{Hull3, Point3, point_key};
 pub use improve::{DELAUNAY_ABOVE, Improvement, improve};
@@ -170,9 +171,13 @@ pub enum ShellError {
         n: usize,
     },
     /// The control stopped the run.
-    Stopped,
-    /// A removal the construction guarantees was refused by its exact checks (a bug).
-    Internal(String),
+    Stopped(Stopped),
+    /// `optimum`'s exact solver could not run.
+    Exact(crate::exact::ExactError),
+    /// The mesh failed its certificate (a bug): the verifier's problem.
+    Uncertified(crate::mesh::Problem),
+    /// A check the construction guarantees failed (a bug).
+    Internal(Bug),
 }
 
 impl fmt::Display for ShellError {
@@ -196,17 +201,32 @@ impl fmt::Display for ShellError {
                 "the exact minimum takes shells of at most {} vertices; this one has {n}",
                 crate::exact::MAX_VERTICES
             ),
-            ShellError::Stopped => write!(f, "stopped"),
-            ShellError::Internal(why) => write!(f, "internal error: {why}"),
+            ShellError::Stopped(s) => s.fmt(f),
+            ShellError::Exact(e) => e.fmt(f),
+            ShellError::Uncertified(p) => write!(
+                f,
+                "internal error, please report the input: the shell mesh fails its certificate: {p}"
+            ),
+            ShellError::Internal(bug) => bug.fmt(f),
         }
     }
 }
 
-impl std::error::Error for ShellError {}
+impl std::error::Error for ShellError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            ShellError::Stopped(s) => Some(s),
+            ShellError::Exact(e) => Some(e),
+            ShellError::Uncertified(p) => Some(p),
+            ShellError::Internal(bug) => Some(bug),
+            _ => None,
+        }
+    }
+}
 
 impl From<Stopped> for ShellError {
-    fn from(_: Stopped) -> Self {
-        ShellError::Stopped
+    fn from(s: Stopped) -> Self {
+        ShellError::Stopped(s)
     }
 }
 
@@ -436,9 +456,9 @@ pub fn tetrahedralize(
         let tets = crate::geom::placing(&shell.points, &shell.inner, o)?;
         Some((tets, o.len()))
     });
-    let (tets, pieces) = placed
-        .min_by_key(|(tets, _)| tets.len())
-        .ok_or_else(|| ShellError::Internal("the inner polytope is flat".into()))?;
+    let (tets, pieces) = placed.min_by_key(|(tets, _)| tets.len()).ok_or_else(|| {
+        ShellError::Internal(Bug::new("the inner polytope, checked solid, has a hull"))
+    })?;
     Ok(ShellMesh {
         tets,
         pieces,

@@ -6,6 +6,7 @@
 
 use super::lemma41::{Lemma41, Lemma41Witness, lemma_4_1};
 use super::{Improvement, Method, Shell, ShellError, improve, tetrahedralize};
+use crate::bug::Bug;
 use crate::control::{Control, Verdict};
 use crate::geom::orient3d_value;
 use serde::Serialize;
@@ -168,7 +169,7 @@ pub fn shell(s: &Shell, opts: ShellOptions, ctl: &Control) -> Result<ShellOutcom
     }
     let (mut mesh, done, method) = match within_bound(s, opts, o.bound, ctl) {
         Ok(m) => m,
-        Err(ShellError::Stopped) => return Ok(o),
+        Err(ShellError::Stopped(_)) => return Ok(o),
         Err(e) => return Err(e),
     };
     // Each flip changes the tetrahedra and the interior edges by the same ±1 (Lemma
@@ -185,8 +186,7 @@ pub fn shell(s: &Shell, opts: ShellOptions, ctl: &Control) -> Result<ShellOutcom
             interior = None;
         }
     }
-    crate::mesh::certify_shell(&s.points, &mesh.tets, &s.inner)
-        .map_err(|p| ShellError::Internal(format!("the shell mesh failed its certificate: {p}")))?;
+    crate::mesh::certify_shell(&s.points, &mesh.tets, &s.inner).map_err(ShellError::Uncertified)?;
     o.verdict = Verdict::Yes;
     o.method = method.name();
     o.within_bound = Some(mesh.tets.len() <= o.bound);
@@ -373,14 +373,14 @@ fn exact_minimum(
     ctl: &Control,
 ) -> Result<(Optimum, Option<Tets>), ShellError> {
     use crate::exact::Outcome;
-    let (outcome, _) = super::optimum(s, ctl).map_err(|e| ShellError::Internal(e.to_string()))?;
+    let (outcome, _) = super::optimum(s, ctl).map_err(ShellError::Exact)?;
     let (proven, lower, best) = match outcome {
         Outcome::Optimal { tets, .. } | Outcome::Found { tets } => (true, tets.len(), Some(tets)),
         Outcome::Undecided { best, lower } => (false, lower, best),
         Outcome::Infeasible => {
-            return Err(ShellError::Internal(
-                "the exact solver found no tetrahedralization of a shell that has one".into(),
-            ));
+            return Err(ShellError::Internal(Bug::new(
+                "the exact solver finds a tetrahedralization of a shell that has one",
+            )));
         }
     };
     let best = best.filter(|b| b.len() < found);

@@ -61,7 +61,7 @@ pub(super) fn split_along(
         let inner = polygon_dp(points, pocket, &[], &usable, ctl);
         ctl.check()?;
         let inner =
-            inner.ok_or_else(|| PlanarError::internal("a pocket of L has no triangulation"))?;
+            inner.ok_or_else(|| PlanarError::internal("a pocket of L has a triangulation", []))?;
         common.extend(inner.edges);
         common.push(key(pocket[0], pocket[1]));
     }
@@ -71,7 +71,7 @@ pub(super) fn split_along(
     ctl.check()?;
     let complete = |inner: Option<Vec<[u32; 2]>>| -> Result<Vec<[u32; 2]>, PlanarError> {
         let mut edges = common.clone();
-        edges.extend(inner.ok_or_else(|| PlanarError::internal("L has no triangulation"))?);
+        edges.extend(inner.ok_or_else(|| PlanarError::internal("L has a triangulation", []))?);
         edges.sort_unstable();
         edges.dedup();
         certified_triangles(points, &hull, &edges)?;
@@ -80,7 +80,10 @@ pub(super) fn split_along(
     let with_xy = complete(with.map(|s| s.edges))?;
     let without_xy = complete(without.map(|s| s.edges))?;
     if with_xy.binary_search(&xy).is_err() || without_xy.binary_search(&xy).is_ok() {
-        return Err(PlanarError::internal("the split lost the constraint on xy"));
+        return Err(PlanarError::internal(
+            "the split keeps the constraint on xy",
+            [],
+        ));
     }
     Ok(Some(Optima {
         with_xy,

@@ -22,7 +22,7 @@ pub(crate) use polygon::polygon_dp;
 pub(crate) use walks::walk_area_sign;
 
 use super::{PlanarError, find};
-use crate::control::Control;
+use crate::control::{Control, Stopped};
 use crate::geom::{Hull2, Interval, Point2, orient2d};
 use crate::mesh::verify_triangulation;
 use crate::numbering::Renumbering;
@@ -106,7 +106,7 @@ pub struct Mwt {
 /// ([`mwt_bounds`] then gives certified bounds).
 ///
 /// ```
-/// use tetrakit::control::Control;
+/// use tetrakit::control::{Control, Stopped};
 /// use tetrakit::planar::{MwtOptions, PlanarError, mwt};
 /// let pts = [[0.0, 0.0], [4.0, 0.0], [4.0, 3.0], [0.0, 3.0], [1.0, 1.5]];
 /// let t = mwt(&pts, &MwtOptions::default(), &Control::new()).unwrap();
@@ -114,7 +114,7 @@ pub struct Mwt {
 /// assert!(t.weight.lo <= t.weight.hi);
 /// let stopped = Control::new();
 /// stopped.stop();
-/// assert_eq!(mwt(&pts, &MwtOptions::default(), &stopped).unwrap_err(), PlanarError::Stopped);
+/// assert_eq!(mwt(&pts, &MwtOptions::default(), &stopped).unwrap_err(), PlanarError::Stopped(Stopped));
 /// ```
 pub fn mwt(points: &[Point2], opts: &MwtOptions, ctl: &Control) -> Result<Mwt, PlanarError> {
     mwt_reporting(points, opts, ctl, &mut 0.0)
@@ -153,7 +153,7 @@ pub fn mwt_or_bounds(points: &[Point2], ctl: &Control) -> Result<MwtOutcome, Pla
     let mut lower = 0.0;
     match mwt_reporting(points, &MwtOptions::default(), ctl, &mut lower) {
         Ok(m) => Ok(MwtOutcome::Solved(m)),
-        Err(PlanarError::Stopped) => {
+        Err(PlanarError::Stopped(Stopped)) => {
             let mut b = mwt_bounds(points)?;
             if lower > b.lower.lo {
                 b.lower = Interval {
@@ -262,12 +262,10 @@ fn solve(
     let t1 = Instant::now();
     let (sk, lstats) = lmt::lmt_skeleton(points, &hull, cands, &forced, &forbidden, ctl).map_err(
         |[v, a, b]| {
-            PlanarError::internal(format!(
-                "candidate edges {0}-{1} and {0}-{2} overlap (one passes through a site)",
-                global.old(v),
-                global.old(a),
-                global.old(b)
-            ))
+            PlanarError::internal(
+                "no two candidate edges from one site overlap (at the site and the edges' other ends)",
+                [v, a, b].map(|x| global.old(x)),
+            )
         },
     )?;
     let (certain, alive) = (sk.with_status(CERTAIN), sk.with_status(ALIVE));
@@ -285,7 +283,7 @@ fn solve(
                 bounds::state_bound(points, &certain, &[(needed, alive)])
             }
         };
-        return Err(PlanarError::Stopped);
+        return Err(PlanarError::Stopped(Stopped));
     }
     stats.skeleton_edges = lstats.certain;
     stats.undecided_edges = lstats.undecided;
@@ -323,12 +321,13 @@ fn solve(
         });
         if ctl.is_stopped() {
             *lower = faces_bound(points, &certain, &problems, &solved);
-            return Err(PlanarError::Stopped);
+            return Err(PlanarError::Stopped(Stopped));
         }
         for s in solved {
             let s = s.ok_or_else(|| {
                 PlanarError::internal(
-                    "the exact stage found no triangulation of a face with the allowed edges",
+                    "the exact stage finds a triangulation of every face with the allowed edges",
+                    [],
                 )
             })?;
             edges.extend(s.edges);
@@ -422,7 +421,7 @@ fn convex_position(points: &[Point2], hull: &Hull2, ctl: &Control) -> Result<Mwt
         .collect();
     let dp = polygon_dp(points, &walk, &[], &|_| true, ctl);
     ctl.check()?;
-    let dp = dp.ok_or_else(|| PlanarError::internal("a convex polygon has no triangulation"))?;
+    let dp = dp.ok_or_else(|| PlanarError::internal("a convex polygon has a triangulation", []))?;
     let mut skeleton = lmt::hull_edges(points, hull);
     skeleton.sort_unstable();
     let mut edges: Vec<[u32; 2]> = skeleton.iter().copied().chain(dp.edges).collect();
@@ -483,11 +482,10 @@ pub(crate) fn certify(
     if !verify_triangulation(points, triangles).is_valid()
         || edges.len() != 3 * points.len() - 3 - h
     {
-        return Err(PlanarError::internal(format!(
-            "the edges do not form a triangulation ({} edges, {} triangles)",
-            edges.len(),
-            triangles.len()
-        )));
+        return Err(PlanarError::internal(
+            "the edges and triangles found form a triangulation",
+            [],
+        ));
     }
     Ok(())
 }
@@ -605,13 +603,14 @@ fn face_of(
             holes.push(vec![x - w]);
         } else if alone || walk_area_sign(points, &walks[x as usize]) > 0 {
             if outer.replace(walks[x as usize].clone()).is_some() {
-                return Err(PlanarError::internal("a face with two outer walks"));
+                return Err(PlanarError::internal("a face has one outer walk", []));
             }
         } else {
             holes.push(walks[x as usize].clone());
         }
     }
-    let outer = outer.ok_or_else(|| PlanarError::internal("undecided edges outside every face"))?;
+    let outer =
+        outer.ok_or_else(|| PlanarError::internal("every undecided edge is inside a face", []))?;
     Ok(Face { outer, holes })
 }
 
@@ -804,7 +803,7 @@ mod tests {
         for set in [&ring, &pts] {
             for ctl in [&stopped, &past] {
                 let err = mwt(set, &MwtOptions::default(), ctl).unwrap_err();
-                assert_eq!(err, PlanarError::Stopped);
+                assert_eq!(err, PlanarError::Stopped(Stopped));
             }
         }
     }
