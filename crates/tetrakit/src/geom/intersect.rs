@@ -123,13 +123,6 @@ fn coplanar_point_in_open_triangle(p: &Point3, a: &Point3, b: &Point3, c: &Point
 
 /// Definition 2.2's *puncture*: the relative interiors of segment `pq` and triangle `abc`
 /// intersect (any configuration, coplanar included).
-///
-/// ```
-/// use tetrakit::geom::segment_punctures_triangle;
-/// let (a, b, c) = ([0.0, 0.0, 0.0], [4.0, 0.0, 0.0], [0.0, 4.0, 0.0]);
-/// assert!(segment_punctures_triangle(&[1.0, 1.0, -1.0], &[1.0, 1.0, 1.0], &a, &b, &c));
-/// assert!(!segment_punctures_triangle(&[1.0, 1.0, 0.0], &[1.0, 1.0, 1.0], &a, &b, &c));
-/// ```
 pub fn segment_punctures_triangle(
     p: &Point3,
     q: &Point3,
@@ -471,6 +464,27 @@ pub fn segment_meets_tet_improperly(
 
 #[cfg(test)]
 mod tests {
+    /// `segment_punctures_triangle` on a worked example.
+    #[test]
+    fn segment_punctures_triangle_example() {
+        use crate::geom::segment_punctures_triangle;
+        let (a, b, c) = ([0.0, 0.0, 0.0], [4.0, 0.0, 0.0], [0.0, 4.0, 0.0]);
+        assert!(segment_punctures_triangle(
+            &[1.0, 1.0, -1.0],
+            &[1.0, 1.0, 1.0],
+            &a,
+            &b,
+            &c
+        ));
+        assert!(!segment_punctures_triangle(
+            &[1.0, 1.0, 0.0],
+            &[1.0, 1.0, 1.0],
+            &a,
+            &b,
+            &c
+        ));
+    }
+
     use super::*;
 
     const O: Point3 = [0.0, 0.0, 0.0];

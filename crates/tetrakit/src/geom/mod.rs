@@ -19,26 +19,32 @@ mod radical;
 
 pub(crate) use anchor::anchor;
 pub use coplanar::triangulate_coplanar;
-pub use expansion::{Expansion, det3, edge_edge_side, orient3d_value, parallel, vector};
+pub use expansion::{Expansion, orient3d_value};
+pub(crate) use expansion::{det3, parallel, vector};
 pub(crate) use grid::Grid2;
 pub use hull2::Hull2;
 pub use hull3::{Hull3, affine_dimension, placing};
 pub use intersect::{
     SegmentMeet, cones_overlap, coplanar_triangles_overlap, point_in_closed_tetrahedron,
-    point_in_segment_interior, segment_meets_open_tetrahedron, segment_meets_open_triangle,
-    segment_meets_tet_improperly, segment_punctures_triangle, segments_meet, tetrahedra_overlap,
-    triangle_meets_tet, triangles_meet_improperly,
+    point_in_segment_interior, segment_meets_tet_improperly, segments_meet, tetrahedra_overlap,
+    triangles_meet_improperly,
+};
+pub(crate) use intersect::{
+    segment_meets_open_tetrahedron, segment_meets_open_triangle, segment_punctures_triangle,
+    triangle_meets_tet,
+};
+pub(crate) use predicates::{
+    Dir, Plane, drop_axis, lex_cmp, orient2d_drop, project_to_plane, projection_axis,
+    strictly_between,
 };
 pub use predicates::{
-    ApexPlane, ApexSpheres, Dir, Frame, MAX_MAGNITUDE, MIN_MAGNITUDE, Plane, Point2, Point3,
-    bounding_box, collinear3, coordinate_in_range, drop_axis, incircle, insphere, lex_cmp,
-    orient2d, orient2d_drop, orient3d, project_to_plane, projection_axis, strictly_between,
+    Frame, MAX_MAGNITUDE, MIN_MAGNITUDE, Point2, Point3, bounding_box, collinear3,
+    coordinate_in_range, incircle, insphere, orient2d, orient3d,
 };
-pub use proximity::{
-    DiamondHit, Ratio, RatioError, cmp_length, corner_dot_sign, diamond_hit, in_beta_region,
-    in_lune, squared_length,
-};
-pub use radical::{DoubleDouble, Interval, compare_root_sums};
+pub use proximity::{Ratio, RatioError, in_beta_region, in_lune};
+pub(crate) use proximity::{cmp_length, corner_dot_sign, diamond_hit, squared_length};
+pub use radical::Interval;
+pub(crate) use radical::{DoubleDouble, compare_root_sums};
 
 /// The exact identity of a point, for hashing: equal keys mean equal coordinates
 /// (`-0.0` and `0.0` are one coordinate).

@@ -373,13 +373,6 @@ fn filtered_det(da: &Point3, db: &Point3, dc: &Point3) -> Option<i8> {
 /// The oriented plane through `a, b, c`, for many exact side tests against one plane.
 ///
 /// `side(x)` equals [`orient3d`]`(a, b, c, x)`.
-///
-/// ```
-/// use tetrakit::geom::Plane;
-/// let p = Plane::new(&[0.0, 0.0, 0.0], &[1.0, 0.0, 0.0], &[0.0, 1.0, 0.0]);
-/// assert_eq!(p.side(&[3.0, 3.0, 1.0]), 1);
-/// assert_eq!(p.side(&[3.0, 3.0, 0.0]), 0);
-/// ```
 #[derive(Clone, Copy, Debug)]
 pub struct Plane {
     a: Point3,
@@ -458,13 +451,6 @@ pub fn drop_axis(p: &Point3, axis: usize) -> Point2 {
 /// orientations are preserved for one fixed normal; `None` when they are collinear (or
 /// fewer than three distinct). The orientation of planar triangulations in this crate
 /// (counter-clockwise) is taken in this projection.
-///
-/// ```
-/// use tetrakit::geom::project_to_plane;
-/// let p = project_to_plane(&[[0.0, 0.0, 1.0], [1.0, 0.0, 1.0], [0.0, 1.0, 1.0]]).unwrap();
-/// assert_eq!(p[1], [1.0, 0.0]);
-/// assert!(project_to_plane(&[[0.0; 3], [1.0; 3], [2.0; 3]]).is_none());
-/// ```
 pub fn project_to_plane(points: &[Point3]) -> Option<Vec<Point2>> {
     let a = points.first()?;
     let b = points.iter().find(|p| *p != a)?;
@@ -526,18 +512,42 @@ pub fn lex_cmp(a: &Point3, b: &Point3) -> std::cmp::Ordering {
 }
 
 /// For three collinear points (2D or 3D), true when `p` lies strictly between `a` and `b`.
-///
-/// ```
-/// use tetrakit::geom::strictly_between;
-/// assert!(strictly_between(&[0.0, 4.0], &[0.0, 3.0], &[0.0, 1.0]));
-/// assert!(!strictly_between(&[0.0, 0.0, 0.0], &[2.0, 2.0, 2.0], &[1.0, 1.0, 1.0]));
-/// ```
 pub fn strictly_between<const N: usize>(a: &[f64; N], p: &[f64; N], b: &[f64; N]) -> bool {
     (0..N).any(|k| (a[k] < p[k] && p[k] < b[k]) || (b[k] < p[k] && p[k] < a[k]))
 }
 
 #[cfg(test)]
 mod tests {
+    /// `Plane` on a worked example.
+    #[test]
+    fn plane_example() {
+        use crate::geom::Plane;
+        let p = Plane::new(&[0.0, 0.0, 0.0], &[1.0, 0.0, 0.0], &[0.0, 1.0, 0.0]);
+        assert_eq!(p.side(&[3.0, 3.0, 1.0]), 1);
+        assert_eq!(p.side(&[3.0, 3.0, 0.0]), 0);
+    }
+
+    /// `project_to_plane` on a worked example.
+    #[test]
+    fn project_to_plane_example() {
+        use crate::geom::project_to_plane;
+        let p = project_to_plane(&[[0.0, 0.0, 1.0], [1.0, 0.0, 1.0], [0.0, 1.0, 1.0]]).unwrap();
+        assert_eq!(p[1], [1.0, 0.0]);
+        assert!(project_to_plane(&[[0.0; 3], [1.0; 3], [2.0; 3]]).is_none());
+    }
+
+    /// `strictly_between` on a worked example.
+    #[test]
+    fn strictly_between_example() {
+        use crate::geom::strictly_between;
+        assert!(strictly_between(&[0.0, 4.0], &[0.0, 3.0], &[0.0, 1.0]));
+        assert!(!strictly_between(
+            &[0.0, 0.0, 0.0],
+            &[2.0, 2.0, 2.0],
+            &[1.0, 1.0, 1.0]
+        ));
+    }
+
     use super::*;
 
     #[test]

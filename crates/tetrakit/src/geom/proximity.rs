@@ -180,11 +180,6 @@ fn exact_cross(u: &[Expansion; 2], v: &[Expansion; 2]) -> Expansion {
 
 /// Sign of `(p - r)·(q - r)`: negative when the angle `prq` is obtuse, zero when it is
 /// right (exact).
-///
-/// ```
-/// use tetrakit::geom::corner_dot_sign;
-/// assert_eq!(corner_dot_sign(&[1.0, 0.0], &[0.0, 1.0], &[0.0, 0.0]), 0);
-/// ```
 pub fn corner_dot_sign(p: &Point2, q: &Point2, r: &Point2) -> i8 {
     let (ux, uy, vx, vy) = (p[0] - r[0], p[1] - r[1], q[0] - r[0], q[1] - r[1]);
     let value = ux * vx + uy * vy;
@@ -287,15 +282,6 @@ pub struct DiamondHit {
 }
 
 /// Classifies `r` against the diamonds of `pq` (exact).
-///
-/// ```
-/// use tetrakit::geom::diamond_hit;
-/// let (p, q) = ([0.0, 0.0], [4.0, 0.0]);
-/// assert!(diamond_hit(&p, &q, &[2.0, 1.0]).left);
-/// assert!(diamond_hit(&p, &q, &[2.0, -1.0]).right);
-/// assert!(!diamond_hit(&p, &q, &[2.0, 1.7]).left); // above the apex (height 1.625)
-/// assert!(diamond_hit(&p, &q, &[1.0, 0.0]).on_segment);
-/// ```
 pub fn diamond_hit(p: &Point2, q: &Point2, r: &Point2) -> DiamondHit {
     // With d = q - p, w = r - p, c = d × w, t = d·w, n = |d|²: r is in the left diamond
     // iff 0 < c, 16c < 13t and 16c < 13(n - t); the right one is the mirror (c -> -c).
@@ -343,13 +329,6 @@ pub fn diamond_hit(p: &Point2, q: &Point2, r: &Point2) -> DiamondHit {
 }
 
 /// Compares `|ab|²` with `|cd|²` exactly.
-///
-/// ```
-/// use tetrakit::geom::cmp_length;
-/// use std::cmp::Ordering;
-/// assert_eq!(cmp_length(&[0.0, 0.0], &[3.0, 4.0], &[1.0, 1.0], &[6.0, 1.0]), Ordering::Equal);
-/// assert_eq!(cmp_length(&[0.0, 0.0], &[0.1, 0.0], &[0.0, 0.0], &[0.0, 0.1]), Ordering::Equal);
-/// ```
 pub fn cmp_length(a: &Point2, b: &Point2, c: &Point2, d: &Point2) -> Ordering {
     let (ux, uy, vx, vy) = (b[0] - a[0], b[1] - a[1], d[0] - c[0], d[1] - c[1]);
     let (lu, lv) = (ux * ux + uy * uy, vx * vx + vy * vy);
@@ -368,6 +347,39 @@ pub fn squared_length(a: &Point2, b: &Point2) -> Expansion {
 
 #[cfg(test)]
 mod tests {
+    /// `cmp_length` on a worked example.
+    #[test]
+    fn cmp_length_example() {
+        use crate::geom::cmp_length;
+        use std::cmp::Ordering;
+        assert_eq!(
+            cmp_length(&[0.0, 0.0], &[3.0, 4.0], &[1.0, 1.0], &[6.0, 1.0]),
+            Ordering::Equal
+        );
+        assert_eq!(
+            cmp_length(&[0.0, 0.0], &[0.1, 0.0], &[0.0, 0.0], &[0.0, 0.1]),
+            Ordering::Equal
+        );
+    }
+
+    /// `corner_dot_sign` on a worked example.
+    #[test]
+    fn corner_dot_sign_example() {
+        use crate::geom::corner_dot_sign;
+        assert_eq!(corner_dot_sign(&[1.0, 0.0], &[0.0, 1.0], &[0.0, 0.0]), 0);
+    }
+
+    /// `diamond_hit` on a worked example.
+    #[test]
+    fn diamond_hit_example() {
+        use crate::geom::diamond_hit;
+        let (p, q) = ([0.0, 0.0], [4.0, 0.0]);
+        assert!(diamond_hit(&p, &q, &[2.0, 1.0]).left);
+        assert!(diamond_hit(&p, &q, &[2.0, -1.0]).right);
+        assert!(!diamond_hit(&p, &q, &[2.0, 1.7]).left); // above the apex (height 1.625)
+        assert!(diamond_hit(&p, &q, &[1.0, 0.0]).on_segment);
+    }
+
     use super::*;
     use crate::rng::Rng;
 

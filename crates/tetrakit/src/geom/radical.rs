@@ -143,15 +143,6 @@ fn add_to(t: &mut Term, num: BigInt, den: &BigUint) {
 }
 
 /// The exact sign of `Σ √a_i − Σ √b_j` for non-negative exact values (squared lengths).
-///
-/// ```
-/// use tetrakit::geom::{Expansion, compare_root_sums};
-/// use std::cmp::Ordering;
-/// let e = |x: f64| Expansion::from(x);
-/// // √8 = 2√2 exactly, and √2 + √8 = √18.
-/// assert_eq!(compare_root_sums(&[e(2.0), e(8.0)], &[e(18.0)]), Ordering::Equal);
-/// assert_eq!(compare_root_sums(&[e(2.0), e(3.0)], &[e(10.0)]), Ordering::Less);
-/// ```
 pub fn compare_root_sums(a: &[Expansion], b: &[Expansion]) -> Ordering {
     let (a, b) = cancel_equal(a, b);
     if a.is_empty() && b.is_empty() {
@@ -233,17 +224,6 @@ fn fast_two_sum(a: f64, b: f64) -> (f64, f64) {
 /// and an addition of non-negative numbers within `3u² + 13u³` relative (Joldes, Muller
 /// and Popescu's AccurateDWPlusDW), so a sum of `k` lengths is within
 /// `(1 + k/8)·2^-100` of exact; the tests use `(2k + 2)·2^-96`, far above that.
-///
-/// ```
-/// use tetrakit::geom::DoubleDouble;
-/// use std::cmp::Ordering;
-/// let (o, u, v) = ([0.0, 0.0], [1.0, 1.0], [2.0, 2.0]);
-/// let w = [2.0, 2.0f64.next_up()]; // |ow| exceeds 2√2 by about 1e-16 relative
-/// let two = DoubleDouble::length(&o, &u).plus(DoubleDouble::length(&o, &u));
-/// assert_eq!(two.certain_cmp(DoubleDouble::length(&o, &w), 2), Some(Ordering::Less));
-/// // An exact tie (√2 + √2 = √8) is never decided here.
-/// assert_eq!(two.certain_cmp(DoubleDouble::length(&o, &v), 2), None);
-/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct DoubleDouble {
     /// The leading part.
@@ -398,6 +378,39 @@ fn bracket_sign(terms: &[Term]) -> Ordering {
 
 #[cfg(test)]
 mod tests {
+    /// `DoubleDouble` on a worked example.
+    #[test]
+    fn double_double_example() {
+        use crate::geom::DoubleDouble;
+        use std::cmp::Ordering;
+        let (o, u, v) = ([0.0, 0.0], [1.0, 1.0], [2.0, 2.0]);
+        let w = [2.0, 2.0f64.next_up()]; // |ow| exceeds 2√2 by about 1e-16 relative
+        let two = DoubleDouble::length(&o, &u).plus(DoubleDouble::length(&o, &u));
+        assert_eq!(
+            two.certain_cmp(DoubleDouble::length(&o, &w), 2),
+            Some(Ordering::Less)
+        );
+        // An exact tie (√2 + √2 = √8) is never decided here.
+        assert_eq!(two.certain_cmp(DoubleDouble::length(&o, &v), 2), None);
+    }
+
+    /// `compare_root_sums` on a worked example.
+    #[test]
+    fn compare_root_sums_example() {
+        use crate::geom::{Expansion, compare_root_sums};
+        use std::cmp::Ordering;
+        let e = |x: f64| Expansion::from(x);
+        // √8 = 2√2 exactly, and √2 + √8 = √18.
+        assert_eq!(
+            compare_root_sums(&[e(2.0), e(8.0)], &[e(18.0)]),
+            Ordering::Equal
+        );
+        assert_eq!(
+            compare_root_sums(&[e(2.0), e(3.0)], &[e(10.0)]),
+            Ordering::Less
+        );
+    }
+
     use super::*;
     use crate::geom::squared_length;
 
