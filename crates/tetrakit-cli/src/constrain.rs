@@ -143,8 +143,7 @@ pub fn write_proof<E: std::fmt::Display>(
 /// A generated CT instance: points and constraints, numbered from 1 where the format
 /// numbers.
 fn write_constraints(output: &Path, pts: &[[f64; 3]], segs: &[[u32; 2]]) -> Result<(), CliError> {
-    let pairs: Vec<(u32, u32)> = segs.iter().map(|&[a, b]| (a, b)).collect();
-    io::write_edges(output, pts, &pairs, 1).written(output)
+    io::write_edges(output, pts, segs, 1).written(output)
 }
 
 /// `generate gadget-grid`.

@@ -7,7 +7,7 @@ use tetrakit::detect::{Cells, Options, Route, detect};
 use tetrakit::generate::{self, Corruption};
 use tetrakit::mesh::Tetrahedralization;
 
-fn verdict(name: &str, t: &Tetrahedralization, edges: &[(u32, u32)]) {
+fn verdict(name: &str, t: &Tetrahedralization, edges: &[[u32; 2]]) {
     let start = Instant::now();
     let d = detect(&t.points, edges, &Options::default(), &Control::new())
         .expect("generated input is well-formed");

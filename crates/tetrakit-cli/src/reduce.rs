@@ -53,8 +53,7 @@ pub fn trid_to_tetrad(
             (r.points, r.segments, facts)
         }
     };
-    let pairs: Vec<(u32, u32)> = segments.iter().map(|&[a, b]| (a, b)).collect();
-    io::write_edges(output, &points, &pairs, inp.index_base).written(output)?;
+    io::write_edges(output, &points, &segments, inp.index_base).written(output)?;
     let shown = output.display().to_string();
     if as_json {
         let extra = [

@@ -15,8 +15,7 @@ pub fn detect(path: &Path, as_json: bool, output: Option<&Path>, opts: Options) 
     let input = io::read_input(path)?;
     let parsed = start.elapsed().as_secs_f64();
     let (segments, from_tets) = if !input.segments.is_empty() {
-        let s: Vec<(u32, u32)> = input.segments.iter().map(|s| (s[0], s[1])).collect();
-        (s, false)
+        (input.segments.clone(), false)
     } else if !input.tets.is_empty() {
         // A tetrahedron that repeats a vertex has no edge set: name it where it was read.
         if let Some(k) = input
@@ -243,10 +242,10 @@ fn user_name(k: CorruptKind) -> String {
 /// an instance that cannot be corrupted so is an error, never a valid file.
 fn corrupted(
     mesh: Tetrahedralization,
-    edges: &[(u32, u32)],
+    edges: &[[u32; 2]],
     k: CorruptKind,
     seed: u64,
-) -> Result<(Tetrahedralization, Vec<(u32, u32)>), CliError> {
+) -> Result<(Tetrahedralization, Vec<[u32; 2]>), CliError> {
     let kind = match k {
         CorruptKind::DropEdge => Corruption::DropEdge,
         CorruptKind::AddCrossing => Corruption::AddCrossing,

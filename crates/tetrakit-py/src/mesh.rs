@@ -99,10 +99,9 @@ pub fn detect<'py>(
     if input.segments.is_empty() {
         return Err(value_error("no segments to test"));
     }
-    let segs: Vec<(u32, u32)> = input.segments.iter().map(|s| (s[0], s[1])).collect();
     let ctl = tetrakit::control::Control::new();
     let d = convert::run(py, &ctl, || {
-        tetrakit::detect::detect(&input.points, &segs, &Options::default(), &ctl)
+        tetrakit::detect::detect(&input.points, &input.segments, &Options::default(), &ctl)
     })?
     .map_err(value_error)?;
     let v = tetrakit::report::detect_json(&d, |v| v, []);

@@ -432,7 +432,7 @@ fn agree(
             let edges: Vec<[u32; 2]> = match cells {
                 Cells::Tetrahedra(tets) => {
                     assert!(certify_hull(pts, tets).is_ok(), "{tag}");
-                    edges_of(tets).into_iter().map(|(a, b)| [a, b]).collect()
+                    edges_of(tets)
                 }
                 Cells::Triangles(tris) => {
                     let flat: Vec<Point2> = pts.iter().map(|q| [q[0], q[1]]).collect();
@@ -485,9 +485,7 @@ fn spatial_instances_against_the_enumeration() {
             .filter(|_| rng.below(4) < keep)
             .collect();
         let expected = any_tetrahedralization(&pts, &mut |t| {
-            edges_of(t)
-                .iter()
-                .all(|&(a, b)| l.iter().any(|s| key(*s) == [a, b]))
+            edges_of(t).iter().all(|e| l.iter().any(|s| key(*s) == *e))
         });
         agree(
             Question::Contains,
@@ -506,7 +504,7 @@ fn spatial_instances_against_the_enumeration() {
         g.dedup();
         let expected = any_tetrahedralization(&pts, &mut |t| {
             let e = edges_of(t);
-            g.iter().all(|s| e.contains(&(s[0], s[1])))
+            g.iter().all(|s| e.contains(s))
         });
         agree(
             Question::Constrained,
@@ -661,7 +659,7 @@ fn trid_to_tetrad_keeps_the_answer() {
         let allowed = |tets: &[[u32; 4]]| {
             edges_of(tets)
                 .iter()
-                .all(|&(a, b)| r.segments.iter().any(|s| key(*s) == [a, b]))
+                .all(|e| r.segments.iter().any(|s| key(*s) == *e))
         };
         match (&planar.answer, &spatial.answer) {
             (Answer::Yes(Cells::Triangles(tris)), Answer::Yes(Cells::Tetrahedra(tets))) => {

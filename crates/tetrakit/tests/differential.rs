@@ -20,7 +20,7 @@ struct Tally {
 
 /// Runs `detect` with both link methods (the sign table and the sphere sweep), with and
 /// without the Delaunay proposal first, against the oracle.
-fn check(points: &[Point3], edges: &[(u32, u32)], tally: &mut Tally, what: &str) {
+fn check(points: &[Point3], edges: &[[u32; 2]], tally: &mut Tally, what: &str) {
     let expected = forms_tetrahedralization(points, edges);
     for (delaunay_first, links) in [
         (false, LinkMethod::SignTable),
@@ -40,13 +40,7 @@ fn check(points: &[Point3], edges: &[(u32, u32)], tally: &mut Tally, what: &str)
     }
 }
 
-fn check_method(
-    points: &[Point3],
-    edges: &[(u32, u32)],
-    expected: bool,
-    opts: Options,
-    what: &str,
-) {
+fn check_method(points: &[Point3], edges: &[[u32; 2]], expected: bool, opts: Options, what: &str) {
     let d = detect(points, edges, &opts, &Control::new()).expect("well-formed input");
     assert_eq!(
         d.is_yes(),
@@ -94,8 +88,8 @@ fn check_method(
     }
 }
 
-fn sorted_edges(e: &[(u32, u32)]) -> Vec<(u32, u32)> {
-    let mut e: Vec<(u32, u32)> = e.iter().map(|&(a, b)| (a.min(b), a.max(b))).collect();
+fn sorted_edges(e: &[[u32; 2]]) -> Vec<[u32; 2]> {
+    let mut e: Vec<[u32; 2]> = e.iter().map(|&[a, b]| [a.min(b), a.max(b)]).collect();
     e.sort_unstable();
     e.dedup();
     e
@@ -105,7 +99,7 @@ fn sorted_edges(e: &[(u32, u32)]) -> Vec<(u32, u32)> {
 /// added (the oracle decides whether those are still valid: an added edge may be a flip).
 fn check_with_variants(
     points: &[Point3],
-    edges: &[(u32, u32)],
+    edges: &[[u32; 2]],
     rng: &mut Rng,
     tally: &mut Tally,
     what: &str,
@@ -117,8 +111,8 @@ fn check_with_variants(
         check(points, &e, tally, &format!("{what} minus an edge"));
     }
     let n = points.len() as u32;
-    let non: Vec<(u32, u32)> = (0..n)
-        .flat_map(|a| (a + 1..n).map(move |b| (a, b)))
+    let non: Vec<[u32; 2]> = (0..n)
+        .flat_map(|a| (a + 1..n).map(move |b| [a, b]))
         .filter(|x| !edges.contains(x))
         .collect();
     if !non.is_empty() {
@@ -224,7 +218,7 @@ fn random_segment_sets() {
         for a in 0..n as u32 {
             for b in a + 1..n as u32 {
                 if rng.unit() < density {
-                    e.push((a, b));
+                    e.push([a, b]);
                 }
             }
         }
@@ -258,9 +252,9 @@ fn kuhn_cube_single_edge_edits() {
     }
     for a in 0..8u32 {
         for b in a + 1..8 {
-            if !e.contains(&(a, b)) {
+            if !e.contains(&[a, b]) {
                 let mut f = e.clone();
-                f.push((a, b));
+                f.push([a, b]);
                 check(
                     &t.points,
                     &sorted_edges(&f),
@@ -277,7 +271,7 @@ fn kuhn_cube_single_edge_edits() {
 }
 
 /// A 2D placing triangulation (lexicographic insertion, exact) on points of a plane.
-fn planar_triangulation(p2: &[[f64; 2]]) -> Option<Vec<(u32, u32)>> {
+fn planar_triangulation(p2: &[[f64; 2]]) -> Option<Vec<[u32; 2]>> {
     let mut idx: Vec<u32> = (0..p2.len() as u32).collect();
     let q = |i: u32| &p2[i as usize];
     idx.sort_by(|&a, &b| {
@@ -296,25 +290,25 @@ fn planar_triangulation(p2: &[[f64; 2]]) -> Option<Vec<(u32, u32)>> {
         });
     }
     for &x in &idx[k + 1..] {
-        let mut dir: Vec<(u32, u32)> = tris
+        let mut dir: Vec<[u32; 2]> = tris
             .iter()
-            .flat_map(|t| [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])])
+            .flat_map(|t| [[t[0], t[1]], [t[1], t[2]], [t[2], t[0]]])
             .collect();
         dir.sort_unstable();
-        let boundary: Vec<(u32, u32)> = dir
+        let boundary: Vec<[u32; 2]> = dir
             .iter()
             .copied()
-            .filter(|&(a, b)| dir.binary_search(&(b, a)).is_err())
+            .filter(|&[a, b]| dir.binary_search(&[b, a]).is_err())
             .collect();
-        for (a, b) in boundary {
+        for [a, b] in boundary {
             if orient2d(q(a), q(b), q(x)) < 0 {
                 tris.push([b, a, x]);
             }
         }
     }
-    let e: Vec<(u32, u32)> = tris
+    let e: Vec<[u32; 2]> = tris
         .iter()
-        .flat_map(|t| [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])])
+        .flat_map(|t| [[t[0], t[1]], [t[1], t[2]], [t[2], t[0]]])
         .collect();
     Some(sorted_edges(&e))
 }

@@ -95,7 +95,7 @@ proptest! {
         let n = t.points.len();
         for &(a, b) in &add {
             let (a, b) = ((a % n) as u32, (b % n) as u32);
-            let key = (a.min(b), a.max(b));
+            let key = [a.min(b), a.max(b)];
             if a != b && !e.contains(&key) {
                 e.push(key);
             }

@@ -155,8 +155,7 @@ pub fn contains(
     ctl: &Control,
 ) -> Result<Decision, ConstrainError> {
     validate(points, segments)?;
-    let pairs: Vec<(u32, u32)> = segments.iter().map(|&[a, b]| (a, b)).collect();
-    match detect::detect(points, &pairs, &detect::Options::default(), ctl) {
+    match detect::detect(points, segments, &detect::Options::default(), ctl) {
         Ok(d) if d.is_yes() => {
             let cells = d.result.expect("a YES");
             return Ok(decided(

@@ -160,7 +160,7 @@ impl From<Stopped> for DetectError {
 /// use tetrakit::control::Control;
 /// use tetrakit::detect::{Options, WitnessKind, detect};
 /// let pts = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
-/// let all = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)];
+/// let all = [[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]];
 /// let (opts, ctl) = (Options::default(), Control::new());
 /// assert!(detect(&pts, &all, &opts, &ctl).unwrap().is_yes());
 /// let no = detect(&pts, &all[..5], &opts, &ctl).unwrap();
@@ -179,24 +179,24 @@ impl From<Stopped> for DetectError {
 /// ```
 pub fn detect(
     points: &[Point3],
-    segments: &[(u32, u32)],
+    segments: &[[u32; 2]],
     opts: &Options,
     ctl: &Control,
 ) -> Result<Detection, DetectError> {
     let n = points.len();
     if let Some(k) = segments
         .par_iter()
-        .position_first(|&(a, b)| a as usize >= n || b as usize >= n || a == b)
+        .position_first(|&[a, b]| a as usize >= n || b as usize >= n || a == b)
     {
         // Name malformed segments in the caller's numbering.
-        Graph::new(n, &[[segments[k].0, segments[k].1]])?;
+        Graph::new(n, &[segments[k]])?;
     }
     // Work in a space-filling-curve order: neighbours then sit close in memory.
     let renumber = Renumbering::from_order(spatial_order(points));
     let pts = renumber.reorder(points);
     let segs: Vec<[u32; 2]> = segments
         .par_iter()
-        .map(|&(a, b)| [renumber.new_of(a), renumber.new_of(b)])
+        .map(|s| s.map(|v| renumber.new_of(v)))
         .collect();
     // Only a repeated segment can be refused here (the others were checked above): name
     // it in the caller's numbering.
@@ -679,9 +679,9 @@ mod tests {
     fn a_repeated_segment_is_named() {
         let t = crate::generate::kuhn(2);
         let mut e = t.edges();
-        e.push((e[5].1, e[5].0));
+        e.push([e[5][1], e[5][0]]);
         let err = detect(&t.points, &e, &Options::default(), &Control::new()).unwrap_err();
-        let (a, b) = e[5];
+        let [a, b] = e[5];
         let want = SegmentError::Repeated {
             ends: [a.min(b), a.max(b)],
         };
@@ -782,7 +782,7 @@ mod tests {
             [0.0, 1.0, 0.0],
             [0.0, 0.0, 1.0],
         ];
-        let tet = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)];
+        let tet = [[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]];
         pts.push([0.2, 0.2, 0.2]);
         let w = detect(&pts, &tet, &Options::default(), &Control::new())
             .unwrap()
@@ -794,7 +794,7 @@ mod tests {
         let mut two = pts[..4].to_vec();
         two.extend(pts[..4].iter().map(|p| [p[0] + 5.0, p[1], p[2]]));
         let mut e = tet.to_vec();
-        e.extend(tet.iter().map(|&(a, b)| (a + 4, b + 4)));
+        e.extend(tet.iter().map(|&[a, b]| [a + 4, b + 4]));
         let w = detect(&two, &e, &Options::default(), &Control::new())
             .unwrap()
             .result
@@ -807,7 +807,7 @@ mod tests {
         let pts = [[0.0, 0.0, 0.0], [1.0, 1.0, 1.0], [2.0, 2.0, 2.0]];
         let d = detect(
             &pts,
-            &[(0, 1), (1, 2)],
+            &[[0, 1], [1, 2]],
             &Options::default(),
             &Control::new(),
         )

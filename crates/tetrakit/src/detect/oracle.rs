@@ -20,20 +20,20 @@ use crate::mesh::{edges_of, verify, verify_triangulation};
 /// ```
 /// use tetrakit::detect::oracle::forms_tetrahedralization;
 /// let pts = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
-/// let all = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)];
+/// let all = [[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]];
 /// assert!(forms_tetrahedralization(&pts, &all));
 /// assert!(!forms_tetrahedralization(&pts, &all[1..]));
 /// ```
-pub fn forms_tetrahedralization(points: &[Point3], segments: &[(u32, u32)]) -> bool {
+pub fn forms_tetrahedralization(points: &[Point3], segments: &[[u32; 2]]) -> bool {
     let n = points.len();
     let mut adj = vec![false; n * n];
-    for &(a, b) in segments {
+    for &[a, b] in segments {
         adj[a as usize * n + b as usize] = true;
         adj[b as usize * n + a as usize] = true;
     }
-    let mut want: Vec<(u32, u32)> = segments
+    let mut want: Vec<[u32; 2]> = segments
         .iter()
-        .map(|&(a, b)| (a.min(b), a.max(b)))
+        .map(|&[a, b]| [a.min(b), a.max(b)])
         .collect();
     want.sort_unstable();
     let hull = Hull3::new(points);
@@ -60,7 +60,7 @@ pub fn forms_tetrahedralization(points: &[Point3], segments: &[(u32, u32)]) -> b
                                 continue;
                             }
                             let t = [*pt(a), *pt(b), *pt(c), *pt(d)];
-                            let empty = segments.iter().all(|&(p, q)| {
+                            let empty = segments.iter().all(|&[p, q]| {
                                 !segment_meets_open_tetrahedron(pt(p as usize), pt(q as usize), &t)
                             }) && (0..n)
                                 .all(|x| !point_in_closed_tetrahedron(pt(x), &t));
@@ -92,7 +92,7 @@ pub fn forms_tetrahedralization(points: &[Point3], segments: &[(u32, u32)]) -> b
                         if o == 0 {
                             continue;
                         }
-                        let empty = segments.iter().all(|&(p, q)| {
+                        let empty = segments.iter().all(|&[p, q]| {
                             !segment_meets_open_triangle(
                                 pt(p as usize),
                                 pt(q as usize),
@@ -115,10 +115,10 @@ pub fn forms_tetrahedralization(points: &[Point3], segments: &[(u32, u32)]) -> b
                     }
                 }
             }
-            let mut te: Vec<(u32, u32)> = tris
+            let mut te: Vec<[u32; 2]> = tris
                 .iter()
                 .flat_map(|t| {
-                    [(t[0], t[1]), (t[1], t[2]), (t[0], t[2])].map(|(x, y)| (x.min(y), x.max(y)))
+                    [(t[0], t[1]), (t[1], t[2]), (t[0], t[2])].map(|(x, y)| [x.min(y), x.max(y)])
                 })
                 .collect();
             te.sort_unstable();

@@ -29,10 +29,7 @@ pub(super) fn certify(domain: Domain, edges: Edges, tets: &[[u32; 4]]) -> Result
         return Ok(());
     }
     let key = |[a, b]: [u32; 2]| [a.min(b), a.max(b)];
-    let used: HashSet<[u32; 2]> = crate::mesh::edges_of(tets)
-        .into_iter()
-        .map(|(a, b)| [a, b])
-        .collect();
+    let used: HashSet<[u32; 2]> = crate::mesh::edges_of(tets).into_iter().collect();
     if let Some(allowed) = edges.allowed {
         let allowed: HashSet<[u32; 2]> = allowed.iter().map(|&s| key(s)).collect();
         if let Some(&e) = used.iter().find(|e| !allowed.contains(*e)) {

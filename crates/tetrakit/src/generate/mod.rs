@@ -289,10 +289,10 @@ pub enum Corruption {
 /// ```
 pub fn corrupt_edges(
     points: &[Point3],
-    edges: &[(u32, u32)],
+    edges: &[[u32; 2]],
     c: Corruption,
     seed: u64,
-) -> Option<Vec<(u32, u32)>> {
+) -> Option<Vec<[u32; 2]>> {
     let mut rng = Rng::new(seed);
     let mut out = edges.to_vec();
     if c == Corruption::DropEdge {
@@ -303,7 +303,7 @@ pub fn corrupt_edges(
         return Some(out);
     }
     let mut adj: HashMap<u32, Vec<u32>> = HashMap::new();
-    for &(a, b) in edges {
+    for &[a, b] in edges {
         adj.entry(a).or_default().push(b);
         adj.entry(b).or_default().push(a);
     }
@@ -321,15 +321,15 @@ pub fn corrupt_edges(
         }
         cands.sort_unstable();
         cands.dedup();
-        let near: Vec<(u32, u32)> = cands
+        let near: Vec<[u32; 2]> = cands
             .iter()
-            .flat_map(|&x| adj[&x].iter().map(move |&y| (x, y)))
+            .flat_map(|&x| adj[&x].iter().map(move |&y| [x, y]))
             .collect();
         for &b in &cands {
             if b == a || adj[&a].contains(&b) {
                 continue;
             }
-            let meets = |&(x, y): &(u32, u32)| segments_meet(p(a), p(b), p(x), p(y));
+            let meets = |&[x, y]: &[u32; 2]| segments_meet(p(a), p(b), p(x), p(y));
             let hit = match c {
                 Corruption::AddOverlap => near
                     .iter()
@@ -342,7 +342,7 @@ pub fn corrupt_edges(
                 }
             };
             if hit {
-                out.push((a.min(b), a.max(b)));
+                out.push([a.min(b), a.max(b)]);
                 return Some(out);
             }
         }

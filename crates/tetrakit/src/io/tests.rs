@@ -166,7 +166,7 @@ fn written_files_read_back_exactly() {
     let back = read_input(&dir.join("m.ele")).unwrap();
     assert_eq!(back.points, pts);
     assert_eq!(back.tets, vec![[0, 1, 2, 3]]);
-    write_edges(&dir.join("m.obj"), &pts, &[(0, 1), (2, 3)], 1).unwrap();
+    write_edges(&dir.join("m.obj"), &pts, &[[0, 1], [2, 3]], 1).unwrap();
     assert_eq!(
         read_input(&dir.join("m.obj")).unwrap().segments,
         vec![[0, 1], [2, 3]]

@@ -62,20 +62,20 @@ pub fn write_mesh(path: &Path, points: &[Point3], tets: &[[u32; 4]], base: u32) 
 /// ```
 /// let pts = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
 /// let path = std::env::temp_dir().join("tetrakit-doc-edges.obj");
-/// tetrakit::io::write_edges(&path, &pts, &[(0, 1), (1, 2)], 1).unwrap();
+/// tetrakit::io::write_edges(&path, &pts, &[[0, 1], [1, 2]], 1).unwrap();
 /// assert!(std::fs::read_to_string(&path).unwrap().contains("l 2 3"));
 /// ```
 pub fn write_edges(
     path: &Path,
     points: &[Point3],
-    edges: &[(u32, u32)],
+    edges: &[[u32; 2]],
     base: u32,
 ) -> io::Result<()> {
     match ext(path).as_str() {
         "edge" => {
             save(&path.with_extension("node"), node_text(points, base))?;
             let mut s = format!("{} 0\n", edges.len());
-            for (i, (a, b)) in edges.iter().enumerate() {
+            for (i, [a, b]) in edges.iter().enumerate() {
                 let _ = writeln!(s, "{} {} {}", i as u32 + base, a + base, b + base);
             }
             save(path, s)
@@ -85,13 +85,13 @@ pub fn write_edges(
             for p in points {
                 let _ = writeln!(s, "v {} {} {}", p[0], p[1], p[2]);
             }
-            for (a, b) in edges {
+            for [a, b] in edges {
                 let _ = writeln!(s, "l {} {}", a + 1, b + 1);
             }
             save(path, s)
         }
         "json" => {
-            let segs: Vec<[u32; 2]> = edges.iter().map(|&(a, b)| [a, b]).collect();
+            let segs = edges;
             save(
                 path,
                 serde_json::json!({ "points": points, "segments": segs }).to_string(),
@@ -417,15 +417,14 @@ pub fn write_instance(
     path: &Path,
     points: &[Point3],
     tets: &[[u32; 4]],
-    segments: &[(u32, u32)],
+    segments: &[[u32; 2]],
 ) -> io::Result<()> {
     match ext(path).as_str() {
         "ele" => write_mesh(path, points, tets, 1)
             .and_then(|_| write_edges(&path.with_extension("edge"), points, segments, 1)),
         "vtk" | "vtu" => write_mesh(path, points, tets, 0),
         "json" => {
-            let segs: Vec<[u32; 2]> = segments.iter().map(|&(a, b)| [a, b]).collect();
-            let v = serde_json::json!({ "points": points, "segments": segs, "tets": tets });
+            let v = serde_json::json!({ "points": points, "segments": segments, "tets": tets });
             save(path, v.to_string())
         }
         _ => write_edges(path, points, segments, 1),

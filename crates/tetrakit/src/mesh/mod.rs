@@ -55,7 +55,7 @@ pub struct Tetrahedralization {
 
 impl Tetrahedralization {
     /// The sorted, deduplicated edge set `(i, j)` with `i < j`.
-    pub fn edges(&self) -> Vec<(u32, u32)> {
+    pub fn edges(&self) -> Vec<[u32; 2]> {
         edges_of(&self.tets)
     }
 
@@ -100,12 +100,12 @@ pub fn reorient(points: &[Point3], tets: &mut [[u32; 4]]) -> usize {
 }
 
 /// The sorted, deduplicated edge set of a list of tetrahedra.
-pub fn edges_of(tets: &[[u32; 4]]) -> Vec<(u32, u32)> {
-    let mut e: Vec<(u32, u32)> = tets
+pub fn edges_of(tets: &[[u32; 4]]) -> Vec<[u32; 2]> {
+    let mut e: Vec<[u32; 2]> = tets
         .iter()
         .flat_map(|t| {
             [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)]
-                .map(|(i, j)| (t[i].min(t[j]), t[i].max(t[j])))
+                .map(|(i, j)| [t[i].min(t[j]), t[i].max(t[j])])
         })
         .collect();
     e.sort_unstable();

@@ -406,12 +406,8 @@ impl QuasiPrism {
     /// have every edge of [`QuasiPrism::edges`].
     pub fn certify(&self, surface: &Polyhedron, tets: &[[u32; 4]]) -> Result<(), QuasiPrismError> {
         certify_polyhedron(surface, tets).map_err(QuasiPrismError::Uncertified)?;
-        let have: HashSet<(u32, u32)> = edges_of(tets).into_iter().collect();
-        match self
-            .edges()
-            .into_iter()
-            .find(|&[a, b]| !have.contains(&(a, b)))
-        {
+        let have: HashSet<[u32; 2]> = edges_of(tets).into_iter().collect();
+        match self.edges().into_iter().find(|e| !have.contains(e)) {
             Some(e) => Err(QuasiPrismError::MissingEdge(e)),
             None => Ok(()),
         }

@@ -30,7 +30,7 @@ struct DetectJson {
 /// use tetrakit::control::Control;
 /// use tetrakit::detect::{Options, detect};
 /// let pts = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
-/// let segs = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)];
+/// let segs = [[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]];
 /// let d = detect(&pts, &segs, &Options::default(), &Control::new()).unwrap();
 /// let v = tetrakit::report::detect_json(&d, |v| v + 1, []);
 /// assert_eq!((v["verdict"].as_str(), v["tetrahedra"].as_u64()), (Some("yes"), Some(1)));

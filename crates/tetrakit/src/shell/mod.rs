@@ -386,16 +386,13 @@ impl ShellMesh {
     /// The edges of the tetrahedra that are not on the boundary surfaces (`e_i` of
     /// Lemma 4.9: `t = e_i + n − 6` when `P` and `Q` are simplicial and do not touch).
     pub fn interior_edges(&self) -> usize {
-        let boundary: HashSet<(u32, u32)> = crate::mesh::boundary_faces(&self.tets)
+        let boundary: HashSet<[u32; 2]> = crate::mesh::boundary_faces(&self.tets)
             .iter()
             .flat_map(|f| [(f[0], f[1]), (f[1], f[2]), (f[0], f[2])])
-            .map(|(a, b)| (a.min(b), a.max(b)))
+            .map(|(a, b)| [a.min(b), a.max(b)])
             .collect();
         let edges = crate::mesh::edges_of(&self.tets);
-        edges
-            .into_iter()
-            .filter(|&(a, b)| !boundary.contains(&(a.min(b), a.max(b))))
-            .count()
+        edges.iter().filter(|e| !boundary.contains(*e)).count()
     }
 }
 

@@ -707,7 +707,7 @@ mod tests {
     /// are found, equal the faces of the exact rotation system. Returns how many vertices
     /// took the fast faces.
     fn check_methods_agree(t: &crate::mesh::Tetrahedralization) -> usize {
-        let segs: Vec<[u32; 2]> = t.edges().iter().map(|&(a, b)| [a, b]).collect();
+        let segs = t.edges();
         let g = Graph::new(t.points.len(), &segs).unwrap();
         let hull = Hull3::new(&t.points);
         let mut fast_hits = 0;
