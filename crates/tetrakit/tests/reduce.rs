@@ -175,3 +175,46 @@ fn quasi_prisms_by_staircases_and_the_exact_solver() {
         (40, 87, 62, 2)
     );
 }
+
+/// Each way an input fails to be a quasi-prism is its own typed error, and a stopped
+/// control is reached through `source()`.
+#[test]
+fn quasi_prism_inputs_are_refused_by_kind() {
+    use tetrakit::reduce::{NotQuasiPrism as E, QuasiPrism, QuasiPrismError};
+    let up =
+        |n: usize| -> Vec<Point3> { (0..n).map(|i| [i as f64, (i * i) as f64, 1.0]).collect() };
+    let down =
+        |n: usize| -> Vec<Point3> { (0..n).map(|i| [i as f64, (i * i) as f64, 0.0]).collect() };
+    let refused = |n: usize, m: usize, t: Vec<[u32; 3]>| match QuasiPrism::new(up(n), down(m), t) {
+        Err(QuasiPrismError::Input(e)) => e,
+        other => panic!("{:?}", other.map(|q| q.n())),
+    };
+    assert_eq!(
+        refused(3, 2, vec![[0, 1, 2]]),
+        E::Sizes { upper: 3, lower: 2 }
+    );
+    assert_eq!(refused(3, 3, vec![]), E::NoTriangles);
+    assert_eq!(
+        refused(3, 3, vec![[0, 1, 5]]),
+        E::NotUpper {
+            triangle: 0,
+            vertex: 5
+        }
+    );
+    assert_eq!(refused(3, 3, vec![[0, 0, 1]]), E::RepeatedVertex(0));
+    assert_eq!(
+        refused(3, 3, vec![[0, 1, 2], [2, 1, 0]]),
+        E::RepeatedTriangle(1)
+    );
+    assert_eq!(refused(4, 4, vec![[0, 1, 2]]), E::Unused(3));
+    let fan = vec![[0, 1, 2], [0, 1, 3], [0, 1, 4]];
+    assert_eq!(refused(5, 5, fan), E::NonManifoldEdge([0, 1]));
+    assert_eq!(refused(6, 6, vec![[0, 1, 2], [3, 4, 5]]), E::NotDisk);
+    // The sentence names the vertex in the library's numbering.
+    let e = QuasiPrismError::Input(E::Unused(3));
+    assert_eq!(
+        e.to_string(),
+        "not a quasi-prism: vertex #3 is on no triangle"
+    );
+    assert!(std::error::Error::source(&e).is_some());
+}

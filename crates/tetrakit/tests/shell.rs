@@ -284,10 +284,11 @@ fn a_stopped_control_stops() {
     let ctl = Control::new();
     ctl.stop();
     for m in [Method::Cap, Method::Bigcap] {
-        assert_eq!(
-            tetrahedralize(&shell, m, &ctl).unwrap_err(),
-            ShellError::Stopped(tetrakit::control::Stopped)
-        );
+        let e = tetrahedralize(&shell, m, &ctl).unwrap_err();
+        assert_eq!(e, ShellError::Stopped(tetrakit::control::Stopped));
+        // The one stop type is reached through `source()`, as from every error.
+        let source = std::error::Error::source(&e).expect("a stop has its source");
+        assert!(source.is::<tetrakit::control::Stopped>());
     }
 }
 
