@@ -109,37 +109,13 @@ pub fn check(a: &crate::CheckArgs) -> CmdResult {
     let outcome = mesh::check_pieces(&input.points, tets, &first, opts)
         .with_problems(input.interface_problems());
     if let Some(out) = &a.output {
-        write_problems(out, &input, &outcome)?;
+        io::write_check_output(out, &input, &outcome).written(out)?;
     }
     let verdict = Verdict::from(outcome.is_valid());
     let seconds = start.elapsed().as_secs_f64();
     let printed = tetrakit::report::check_printed(outcome, &input, seconds, parsed, as_json);
     out!("{printed}");
     Ok(verdict)
-}
-
-/// `check --output`: the mesh with its problem codes on cells and points; a `.pvtu`
-/// writes one `.vtu` per piece (the input's pieces, or one), vertices numbered as
-/// `check` names them (`GlobalNodeIds`).
-fn write_problems(out: &Path, input: &io::Input, o: &mesh::CheckOutcome) -> Result<(), CliError> {
-    let fields = io::Fields {
-        cells: vec![("problem", &o.cell_problems)],
-        points: vec![("problem", &o.point_problems)],
-    };
-    let pvtu = out
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("pvtu"));
-    if !pvtu {
-        return io::write_mesh_with_fields(out, &input.points, &o.tets, &fields).written(out);
-    }
-    let piece_of: Vec<u32> = (0..o.tets.len())
-        .map(|t| input.tet_piece(t).map_or(0, |(p, _)| p as u32))
-        .collect();
-    let ids: Vec<i32> = (0..input.points.len())
-        .map(|v| input.point_label(v) as i32)
-        .collect();
-    io::write_pieces_with_fields(out, &input.points, &o.tets, &piece_of, Some(&ids), &fields)
-        .written(out)
 }
 
 pub fn generate(kind: GenKind) -> CmdResult {

@@ -29,7 +29,8 @@ fn to_py<'py>(py: Python<'py>, out: Vec<Vec<u8>>) -> Messages<'py> {
 #[pymethods]
 impl RankCheck {
     #[new]
-    #[pyo3(signature = (index, rank, size, convex=false, manifold=false, reorient=false, tets_only=false))]
+    #[pyo3(signature = (index, rank, size, convex=false, manifold=false, reorient=false, tets_only=false, output=None))]
+    #[allow(clippy::too_many_arguments)] // Python's keyword arguments
     fn new(
         index: std::path::PathBuf,
         rank: usize,
@@ -38,14 +39,19 @@ impl RankCheck {
         manifold: bool,
         reorient: bool,
         tets_only: bool,
+        output: Option<std::path::PathBuf>,
     ) -> Self {
         let opts = CheckOptions {
             convex,
             manifold,
             reorient,
         };
+        let inner = distributed::RankCheck::new(&index, rank, size, opts, tets_only);
         RankCheck {
-            inner: distributed::RankCheck::new(&index, rank, size, opts, tets_only),
+            inner: match output {
+                Some(out) => inner.with_output(&out),
+                None => inner,
+            },
         }
     }
 

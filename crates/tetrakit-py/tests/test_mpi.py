@@ -176,3 +176,30 @@ def test_python_m_tetrakit_mpi(tmp_path):
         assert len([x for x in lines if x.startswith("tetrakit:")]) == 1 and named in r.stderr, r.stderr
     r = _mpirun(2, "-m", "tetrakit.mpi", "check", str(tmp_path / "k_0.vtu"))
     assert r.returncode == 2 and "checks a .pvtu" in r.stderr
+
+
+def test_mpirun_writes_the_pieces_tetrakit_check_writes(tmp_path):
+    """`--output P.pvtu` under `mpirun -n 1, 2, 3`: each rank writes its pieces with their
+    problem fields, the same bytes as `tetrakit check --output`; a path that cannot be
+    written, or not a .pvtu, is exit 2 with one line."""
+    _need_mpi()
+    index = tmp_path / "k.pvtu"
+    subprocess.run([str(EXE), "generate", "kuhn", "--size", "3", "--corrupt", "add-overlap",
+                    "-o", str(index), "--pieces", "3"], check=True, capture_output=True)
+    one = tmp_path / "one.pvtu"
+    r = subprocess.run([str(EXE), "check", str(index), "--output", str(one)], capture_output=True)
+    assert r.returncode == 1, r.stderr
+    for n in (1, 2, 3):
+        many = tmp_path / f"many{n}.pvtu"
+        r = _mpirun(n, "-m", "tetrakit.mpi", "check", str(index), "--output", str(many))
+        assert r.returncode == 1, r.stderr
+        for p in range(3):
+            a = (tmp_path / f"one_{p}.vtu").read_bytes()
+            assert a == (tmp_path / f"many{n}_{p}.vtu").read_bytes(), (n, p)
+            assert b'Name="problem"' in a
+        assert one.read_text().replace("one_", "X_") == many.read_text().replace(f"many{n}_", "X_")
+    r = _mpirun(2, "-m", "tetrakit.mpi", "check", str(index), "--output", str(tmp_path / "no" / "p.pvtu"))
+    lines = [x for x in r.stderr.splitlines() if x.startswith("tetrakit:")]
+    assert r.returncode == 2 and len(lines) == 1 and "p_0.vtu" in lines[0], r.stderr
+    r = _mpirun(2, "-m", "tetrakit.mpi", "check", str(index), "--output", str(tmp_path / "p.vtu"))
+    assert r.returncode == 2 and "as a .pvtu" in r.stderr

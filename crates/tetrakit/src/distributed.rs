@@ -38,7 +38,8 @@ use crate::mesh::{
 use serde::{Deserialize, Serialize, de::DeserializeOwned};
 use std::path::{Path, PathBuf};
 
-/// How many exchanges a check takes (all ranks take part in each).
+/// How many exchanges a check takes (all ranks take part in each); one more with an
+/// output ([`RankCheck::with_output`]).
 pub const ROUNDS: usize = 6;
 
 /// One process's side of a partitioned check: [`start`](Self::start), then
@@ -70,6 +71,10 @@ pub struct RankCheck {
     reps: Vec<(u32, u32, Point3)>,
     embedding: bool,
     outcome: Option<CheckOutcome>,
+    /// Where the pieces are written with their problem fields (`--output P.pvtu`).
+    output: Option<PathBuf>,
+    /// Rank 0: the problems that mark cells and points, in the order they mark them.
+    marks: Vec<Problem>,
     /// Bytes this rank sent, all rounds.
     pub bytes_sent: usize,
 }
@@ -199,6 +204,16 @@ impl RankCheck {
         }
     }
 
+    /// The check that also writes, as `tetrakit check X.pvtu --output P.pvtu` does, every
+    /// piece with its problem fields: each rank writes its own pieces (`<stem>_<p>.vtu`
+    /// beside `output`), rank 0 the index. One more round: rank 0 sends every rank the
+    /// problems kept (at most [`Report::LIMIT`]), and the pieces as read are kept until
+    /// then.
+    pub fn with_output(mut self, output: &Path) -> Self {
+        self.output = Some(output.to_path_buf());
+        self
+    }
+
     /// The first messages (one per rank): this rank reads its pieces.
     pub fn start(&mut self) -> Vec<Vec<u8>> {
         let mut hello = Hello::default();
@@ -278,18 +293,35 @@ impl RankCheck {
     /// The next messages, given what every rank sent this one (`inbox[r]` from rank
     /// `r`); `None` when the check is over (on every rank in the same round).
     pub fn step(&mut self, inbox: &[&[u8]]) -> Option<Vec<Vec<u8>>> {
-        if self.failure.is_some() || self.round > ROUNDS {
+        if self.failure.is_some() || self.round > ROUNDS + usize::from(self.output.is_some()) {
             return None;
         }
-        let out = match self.round {
-            1 => self.number(inbox),
-            2 => self.spread(inbox),
-            3 => self.faces(inbox),
-            4 => self.decide(inbox),
-            5 => self.embed(inbox),
-            _ => {
+        let out = match (self.round, &self.output) {
+            (1, _) => self.number(inbox),
+            (2, _) => self.spread(inbox),
+            (3, _) => self.faces(inbox),
+            (4, _) => self.decide(inbox),
+            (5, _) => self.embed(inbox),
+            (6, Some(_)) => {
                 self.finish(inbox);
-                self.round += 1;
+                let marks = std::mem::take(&mut self.marks);
+                let out = vec![
+                    if self.rank == 0 {
+                        encode(&marks)
+                    } else {
+                        Vec::new()
+                    };
+                    self.size
+                ];
+                self.sent(out)
+            }
+            _ => {
+                if self.round == 6 {
+                    self.finish(inbox);
+                } else {
+                    self.write_pieces(inbox);
+                }
+                self.round = ROUNDS + 2;
                 return None;
             }
         };
@@ -430,9 +462,11 @@ impl RankCheck {
                     .count() as u32
             })
             .sum();
-        // The parts hold what the checks need: the pieces as read go.
-        for m in &mut self.mine {
-            m.input = Input::default();
+        // The parts hold what the checks need: the pieces as read go (unless written).
+        if self.output.is_none() {
+            for m in &mut self.mine {
+                m.input = Input::default();
+            }
         }
         let out = out.iter().map(encode).collect();
         self.sent(out)
@@ -601,6 +635,14 @@ impl RankCheck {
         if self.opts.manifold {
             report = report.require_manifold();
         }
+        if self.output.is_some() {
+            // As `mesh::outcome` marks: the problems, the non-manifold edges, then what
+            // the reading found.
+            self.marks = (report.problems.iter().chain(&report.non_manifold))
+                .chain(&self.gathered.mismatches)
+                .cloned()
+                .collect();
+        }
         let g = &self.gathered;
         let reoriented = self.opts.reorient.then_some(g.reoriented as usize);
         let tets: usize = self.pieces.iter().map(|i| i.tets as usize).sum();
@@ -613,6 +655,56 @@ impl RankCheck {
         );
         o.tetrahedra = tets;
         self.outcome = Some(o.with_problems(std::mem::take(&mut self.gathered.mismatches)));
+    }
+
+    /// The last round with an output: this rank's pieces with the problem codes of the
+    /// problems rank 0 sent (each cell and point the first problem naming it marks),
+    /// vertices numbered as the check names them; rank 0 writes the index too. A file
+    /// that cannot be written is this rank's failure.
+    fn write_pieces(&mut self, inbox: &[&[u8]]) {
+        let Some(out) = self.output.clone() else {
+            return;
+        };
+        let marks: Vec<Problem> = decode(inbox[0]);
+        let mut at_vertex: std::collections::HashMap<u32, i32> = Default::default();
+        for p in &marks {
+            for &v in &p.vertices {
+                at_vertex.entry(v).or_insert(p.kind.code());
+            }
+        }
+        let offsets = self.tet_offsets();
+        let written = |m: &Local| {
+            let first = offsets[m.piece as usize];
+            let mut cells = vec![0; m.input.tets.len()];
+            for p in &marks {
+                for &t in &p.cells {
+                    let local = t.checked_sub(first).map(|k| k as usize);
+                    if let Some(c) = local.and_then(|k| cells.get_mut(k)).filter(|c| **c == 0) {
+                        *c = p.kind.code();
+                    }
+                }
+            }
+            let points: Vec<i32> = (m.labels.iter())
+                .map(|l| at_vertex.get(l).copied().unwrap_or(0))
+                .collect();
+            let ids: Vec<i32> = m.labels.iter().map(|&l| l as i32).collect();
+            let fields = io::Fields {
+                cells: vec![("problem", &cells)],
+                points: vec![("problem", &points)],
+            };
+            let name = io::piece_path(&out, m.piece as usize);
+            io::write_piece(&name, &m.input.points, &m.input.tets, Some(&ids), &fields)
+                .map_err(|e| format!("{}: {e}", name.display()))
+        };
+        let mut result: Result<(), String> = self.mine.iter().try_for_each(written);
+        if self.rank == 0 && result.is_ok() {
+            let names: Vec<PathBuf> = (0..self.pieces.len())
+                .map(|k| io::piece_path(&out, k))
+                .collect();
+            result =
+                io::write_pvtu_index(&out, &names).map_err(|e| format!("{}: {e}", out.display()));
+        }
+        self.failure = result.err();
     }
 
     /// The gathered boundary's self-intersections.
@@ -735,8 +827,23 @@ pub fn check_in_ranks(
     size: usize,
     opts: CheckOptions,
 ) -> (Result<CheckOutcome, String>, Vec<usize>) {
+    check_in_ranks_writing(index, size, opts, None)
+}
+
+/// [`check_in_ranks`], each rank writing its pieces with their problem fields to
+/// `output` as [`RankCheck::with_output`] says.
+pub fn check_in_ranks_writing(
+    index: &Path,
+    size: usize,
+    opts: CheckOptions,
+    output: Option<&Path>,
+) -> (Result<CheckOutcome, String>, Vec<usize>) {
     let mut ranks: Vec<RankCheck> = (0..size)
         .map(|r| RankCheck::new(index, r, size, opts, false))
+        .map(|r| match output {
+            Some(out) => r.with_output(out),
+            None => r,
+        })
         .collect();
     let mut outs: Vec<Vec<Vec<u8>>> = ranks.iter_mut().map(RankCheck::start).collect();
     loop {
@@ -751,7 +858,7 @@ pub fn check_in_ranks(
         outs = next.into_iter().map(Option::unwrap_or_default).collect();
     }
     let sent = ranks.iter().map(|r| r.bytes_sent).collect();
-    let result = match ranks[0].failure() {
+    let result = match ranks.iter().find_map(RankCheck::failure) {
         Some(f) => Err(f.to_string()),
         None => ranks[0]
             .outcome

@@ -511,3 +511,70 @@ fn a_piece_with_a_coordinate_out_of_range_is_refused() {
     assert!(err.contains("1e-300") && err.contains("m_1.vtu"), "{err}");
     let _ = std::fs::remove_dir_all(&d);
 }
+
+/// `--output P.pvtu` under ranks (`RankCheck::with_output`: each rank writes its own
+/// pieces, rank 0 the index) writes the files `tetrakit check X.pvtu --output P.pvtu`
+/// writes, byte for byte: the same points, tetrahedra (turned with `reorient`), global
+/// ids and problem codes on cells and points, on valid and corrupted meshes.
+#[test]
+fn ranks_write_the_pieces_check_writes() {
+    use tetrakit::distributed::check_in_ranks_writing;
+    let d = dir("ranks-output");
+    let mut rng = Rng::new(91);
+    let mut marked = 0;
+    for round in 0..40u64 {
+        let (points, tets) = corrupted(round, &mut rng);
+        let k = 2 + (round % 3) as u32;
+        let [slabs, random] = partitions(&points, &tets, k, &mut rng);
+        let piece_of = if round % 2 == 0 { slabs } else { random };
+        let path = d.join(format!("w{round}.pvtu"));
+        let ids: Vec<i32> = (0..points.len() as i32).collect();
+        let with_ids = (round / 2) % 2 == 0;
+        write_pieces(
+            &path,
+            &points,
+            &tets,
+            &piece_of,
+            with_ids.then_some(&ids[..]),
+        )
+        .unwrap();
+        let opts = CheckOptions {
+            reorient: round % 3 == 1,
+            manifold: round % 5 == 2,
+            ..Default::default()
+        };
+        let read = ReadOptions {
+            mesh: true,
+            ..Default::default()
+        };
+        let input = read_input_with(&path, read).unwrap();
+        let first: Vec<u32> = input.pieces.iter().map(|p| p.first_tet).collect();
+        let want = tetrakit::mesh::check_pieces(&input.points, input.tets.clone(), &first, opts)
+            .with_problems(input.interface_problems());
+        let one = d.join(format!("one{round}.pvtu"));
+        tetrakit::io::write_check_output(&one, &input, &want).unwrap();
+        marked += usize::from(want.cell_problems.iter().any(|&c| c != 0));
+        for size in [1, 2, 4] {
+            let many = d.join(format!("many{round}_{size}.pvtu"));
+            let (got, _) = check_in_ranks_writing(&path, size, opts, Some(&many));
+            assert_eq!(
+                got.unwrap().problem_count,
+                want.problem_count,
+                "round {round}"
+            );
+            for p in 0..k as usize {
+                let a = std::fs::read(tetrakit::io::piece_path(&one, p)).unwrap();
+                let b = std::fs::read(tetrakit::io::piece_path(&many, p)).unwrap();
+                assert!(a == b, "round {round}, {size} ranks: piece {p} differs");
+            }
+            let index =
+                |p: &Path, stem: &str| std::fs::read_to_string(p).unwrap().replace(stem, "X");
+            assert_eq!(
+                index(&one, &format!("one{round}")),
+                index(&many, &format!("many{round}_{size}")),
+                "round {round}"
+            );
+        }
+    }
+    assert!(marked >= 10, "only {marked} meshes had problems to mark");
+}

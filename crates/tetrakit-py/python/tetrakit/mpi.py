@@ -1,6 +1,6 @@
 """A partitioned mesh checked by several processes under MPI.
 
-    mpirun -n K python3 -m tetrakit.mpi check MESH.pvtu [--json] [--convex] [--manifold] [--reorient] [--tets-only]
+    mpirun -n K python3 -m tetrakit.mpi check MESH.pvtu [--json] [--convex] [--manifold] [--reorient] [--tets-only] [--output P.pvtu]
 
 Each rank reads only its pieces of the ``.pvtu`` (piece ``p`` on rank ``p mod K``) and
 checks them in Rust with the GIL released; the ranks exchange interface points by key,
@@ -8,7 +8,8 @@ the tetrahedra around interface vertices (ghosts), and the boundary faces, with 
 ``alltoall`` (six rounds). Rank 0 prints what ``tetrakit check MESH.pvtu`` prints, the
 same text or JSON, problem for problem, and every rank exits with its exit code: 0 valid,
 1 not, 2 bad input (one line naming the file and the line or piece). Ranks with no piece
-take part. Needs mpi4py (``pip install mpi4py``, over Open MPI: Debian ``openmpi-bin``
+take part. ``--output P.pvtu`` writes every piece with its problem fields for ParaView,
+as ``tetrakit check --output P.pvtu`` does, each rank its own pieces. Needs mpi4py (``pip install mpi4py``, over Open MPI: Debian ``openmpi-bin``
 and ``libopenmpi-dev``).
 
 The rounds themselves are :class:`tetrakit._core.RankCheck`, a byte-message state machine
@@ -49,6 +50,8 @@ def _parser() -> argparse.ArgumentParser:
     c.add_argument("--reorient", action="store_true", help="turn negatively oriented tetrahedra")
     c.add_argument("--tets-only", action="store_true",
                    help="check the tetrahedra of pieces with other cells (else those are bad input)")
+    c.add_argument("--output", metavar="P.pvtu",
+                   help="write every piece with its problem fields (each rank its own pieces)")
     c.add_argument("--stats", action="store_true",
                    help="each rank prints to stderr the bytes it sent, its peak memory and its seconds")
     return p
@@ -76,18 +79,29 @@ def run(comm, argv: Optional[List[str]] = None) -> int:
             print(f"tetrakit: {args.input}: python3 -m tetrakit.mpi checks a .pvtu "
                   "(use `tetrakit check` for one file)", file=sys.stderr)
         return 2
+    if args.output is not None and not args.output.lower().endswith(".pvtu"):
+        if comm.rank == 0:
+            print(f"tetrakit: --output {args.output}: under MPI the pieces are written "
+                  "as a .pvtu (each rank its own)", file=sys.stderr)
+        return 2
     start = time.perf_counter()
     # The ranks on one machine share its cores (Open MPI says how many ranks it has).
     local = int(os.environ.get("OMPI_COMM_WORLD_LOCAL_SIZE", "1"))
     os.environ.setdefault("RAYON_NUM_THREADS", str(max(1, (os.cpu_count() or 1) // local)))
     rc = _core.RankCheck(args.input, comm.rank, comm.size,
                          convex=args.convex, manifold=args.manifold, reorient=args.reorient,
-                         tets_only=args.tets_only)
+                         tets_only=args.tets_only, output=args.output)
     out = rc.start()
     parsed = time.perf_counter() - start
     while out is not None:
         out = rc.step(*_exchange(comm, *out))
     code, text = rc.printed(args.json, time.perf_counter() - start, parsed)
+    # A piece another rank could not write is the job's error (exit 2, its line).
+    failed = comm.gather(text if code == 2 else None, root=0)
+    if comm.rank == 0:
+        first = next((t for t in failed if t is not None), None)
+        if first is not None:
+            code, text = 2, first
     code = comm.bcast(code, root=0)
     if args.stats:
         import resource

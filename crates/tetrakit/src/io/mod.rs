@@ -32,8 +32,9 @@ mod write;
 pub use planar::{write_planar_edges, write_planar_triangulation, write_points2d};
 pub use svg::{Figure, Svg};
 pub use write::{
-    Fields, write_edges, write_instance, write_mesh, write_mesh_with_fields, write_pieces,
-    write_pieces_with_fields, write_points, write_surface, write_triangulation, write_vtk,
+    Fields, piece_path, write_check_output, write_edges, write_instance, write_mesh,
+    write_mesh_with_fields, write_piece, write_pieces, write_pieces_with_fields, write_points,
+    write_pvtu_index, write_surface, write_triangulation, write_vtk,
 };
 
 use crate::geom::{Point3, coordinate_in_range, lex_cmp};

@@ -6,7 +6,7 @@
 use crate::geom::Point3;
 use std::fmt::Write as _;
 use std::io;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 pub(super) fn save(path: &Path, text: String) -> io::Result<()> {
     std::fs::write(path, text)
@@ -269,52 +269,107 @@ pub fn write_pieces_with_fields(
     fields: &Fields,
 ) -> io::Result<()> {
     let pieces = piece_of.iter().map(|&k| k as usize + 1).max().unwrap_or(0);
+    let mut of_piece: Vec<Vec<usize>> = vec![Vec::new(); pieces];
+    for (t, &k) in piece_of.iter().enumerate() {
+        of_piece[k as usize].push(t);
+    }
+    let mut names = Vec::with_capacity(pieces);
+    for (k, mine) in of_piece.iter().enumerate() {
+        let name = piece_path(path, k);
+        let cells: Vec<Vec<i32>> = (fields.cells.iter())
+            .map(|f| mine.iter().map(|&t| f.1[t]).collect())
+            .collect();
+        let share = Fields {
+            cells: (fields.cells.iter().zip(&cells))
+                .map(|(f, c)| (f.0, &c[..]))
+                .collect(),
+            points: fields.points.clone(),
+        };
+        let its: Vec<[u32; 4]> = mine.iter().map(|&t| tets[t]).collect();
+        write_piece(&name, points, &its, ids, &share)?;
+        names.push(name);
+    }
+    write_pvtu_index(path, &names)
+}
+
+/// `check --output`: the mesh with its problem codes on cells and points (integer fields
+/// `problem`, 0 for none); a `.pvtu` writes one `.vtu` per piece of the input (or one),
+/// vertices numbered as `check` names them (`GlobalNodeIds`). The tetrahedra are the
+/// outcome's (turned where `--reorient` turned them).
+pub fn write_check_output(
+    out: &Path,
+    input: &super::Input,
+    o: &crate::mesh::CheckOutcome,
+) -> io::Result<()> {
+    let fields = Fields {
+        cells: vec![("problem", &o.cell_problems)],
+        points: vec![("problem", &o.point_problems)],
+    };
+    if ext(out) != "pvtu" {
+        return write_mesh_with_fields(out, &input.points, &o.tets, &fields);
+    }
+    let piece_of: Vec<u32> = (0..o.tets.len())
+        .map(|t| input.tet_piece(t).map_or(0, |(p, _)| p as u32))
+        .collect();
+    let ids: Vec<i32> = (0..input.points.len())
+        .map(|v| input.point_label(v) as i32)
+        .collect();
+    write_pieces_with_fields(out, &input.points, &o.tets, &piece_of, Some(&ids), &fields)
+}
+
+/// The file of piece `k` of the partitioned mesh whose index is `path`: `<stem>_<k>.vtu`
+/// beside it.
+pub fn piece_path(path: &Path, k: usize) -> PathBuf {
     let stem = path
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_default();
-    let mut names = Vec::with_capacity(pieces);
-    for k in 0..pieces {
-        let mine: Vec<usize> = (0..tets.len())
-            .filter(|&t| piece_of[t] as usize == k)
-            .collect();
-        let mut local = std::collections::HashMap::new();
-        let (mut pts, mut used) = (Vec::new(), Vec::new());
-        let renumbered: Vec<[u32; 4]> = mine
-            .iter()
-            .map(|&t| {
-                tets[t].map(|v| {
-                    *local.entry(v).or_insert_with(|| {
-                        pts.push(points[v as usize]);
-                        used.push(v as usize);
-                        (pts.len() - 1) as u32
-                    })
+    path.with_file_name(format!("{stem}_{k}.vtu"))
+}
+
+/// The `.pvtu` index at `path` naming the piece files `pieces`.
+pub fn write_pvtu_index(path: &Path, pieces: &[PathBuf]) -> io::Result<()> {
+    save(path, super::pvtu::index_text(pieces))
+}
+
+/// One piece as a `.vtu`: the tetrahedra `tets` on the points they use (indices into
+/// `points`, renumbered from 0 in order of first use), each point with its
+/// `GlobalNodeIds` (its index in `points`, or `ids[index]`); `fields.cells` indexed as
+/// `tets`, `fields.points` as `points`.
+pub fn write_piece(
+    name: &Path,
+    points: &[Point3],
+    tets: &[[u32; 4]],
+    ids: Option<&[i32]>,
+    fields: &Fields,
+) -> io::Result<()> {
+    let mut local = std::collections::HashMap::new();
+    let (mut pts, mut used) = (Vec::new(), Vec::new());
+    let renumbered: Vec<[u32; 4]> = (tets.iter())
+        .map(|t| {
+            t.map(|v| {
+                *local.entry(v).or_insert_with(|| {
+                    pts.push(points[v as usize]);
+                    used.push(v as usize);
+                    (pts.len() - 1) as u32
                 })
             })
-            .collect();
-        let global: Vec<i32> = (used.iter())
-            .map(|&v| ids.map_or(v as i32, |ids| ids[v]))
-            .collect();
-        let cells: Vec<Vec<i32>> = (fields.cells.iter())
-            .map(|f| mine.iter().map(|&t| f.1[t]).collect())
-            .collect();
-        let at_points: Vec<Vec<i32>> = (fields.points.iter())
-            .map(|f| used.iter().map(|&v| f.1[v]).collect())
-            .collect();
-        let name = path.with_file_name(format!("{stem}_{k}.vtu"));
-        let mut share = Fields {
-            cells: (fields.cells.iter().zip(&cells))
-                .map(|(f, c)| (f.0, &c[..]))
-                .collect(),
-            points: (fields.points.iter().zip(&at_points))
-                .map(|(f, c)| (f.0, &c[..]))
-                .collect(),
-        };
-        share.points.push(("GlobalNodeIds", &global));
-        save(&name, vtu_text(&pts, &renumbered, &share))?;
-        names.push(name);
-    }
-    save(path, super::pvtu::index_text(&names))
+        })
+        .collect();
+    let global: Vec<i32> = (used.iter())
+        .map(|&v| ids.map_or(v as i32, |ids| ids[v]))
+        .collect();
+    let at_points: Vec<Vec<i32>> = (fields.points.iter())
+        .map(|f| used.iter().map(|&v| f.1[v]).collect())
+        .collect();
+    let mut share = Fields {
+        cells: fields.cells.clone(),
+        points: (fields.points.iter().zip(&at_points))
+            .map(|(f, c)| (f.0, &c[..]))
+            .collect(),
+    };
+    share.points.push(("GlobalNodeIds", &global));
+    save(name, vtu_text(&pts, &renumbered, &share))
 }
 
 pub(super) fn ext(path: &Path) -> String {
