@@ -267,7 +267,8 @@ fn gmsh_meshes_read_with_one_verdict() {
 /// Gmsh's partitioned meshes in one file (`-part 3`, `.msh` 2.2 and 4.1): one piece per
 /// partition, checked part by part with the tetrahedra of the unpartitioned mesh; a
 /// tetrahedron turned inside out is named by its element tag and placed in its partition.
-/// The binary 4.1 file is read as one mesh. Needs `gmsh` (as above).
+/// Binary files (`-bin`, 4.1 and 2.2) are read in the same pieces, tetrahedron for
+/// tetrahedron. Needs `gmsh` (as above).
 #[test]
 fn gmsh_partitioned_meshes_are_read_in_pieces() {
     if Command::new("gmsh").arg("--version").output().is_err() {
@@ -286,6 +287,7 @@ fn gmsh_partitioned_meshes_are_read_in_pieces() {
         ("p22.msh", &["-format", "msh22", "-part", "3"]),
         ("p41.msh", &["-format", "msh41", "-part", "3"]),
         ("pbin.msh", &["-format", "msh41", "-bin", "-part", "3"]),
+        ("pbin22.msh", &["-format", "msh22", "-bin", "-part", "3"]),
     ] {
         let out = d.join(name);
         let g = Command::new("gmsh")
@@ -306,7 +308,23 @@ fn gmsh_partitioned_meshes_are_read_in_pieces() {
         ));
     }
     let t = facts[0].0;
-    assert_eq!(facts, [(t, 1), (t, 3), (t, 3), (t, 1)]);
+    assert_eq!(facts, [(t, 1), (t, 3), (t, 3), (t, 3), (t, 3)]);
+    // Binary and ASCII: the same tetrahedra, tags and partitions, piece for piece.
+    let read = |name: &str| {
+        let opts = tetrakit::io::ReadOptions {
+            mesh: true,
+            ..Default::default()
+        };
+        let i = tetrakit::io::read_input_with(&d.join(name), opts).unwrap();
+        let pieces: Vec<(u32, Option<i64>)> = i
+            .pieces
+            .iter()
+            .map(|p| (p.first_tet, p.partition))
+            .collect();
+        (i.tets, i.tet_labels, pieces)
+    };
+    assert_eq!(read("pbin.msh"), read("p41.msh"));
+    assert_eq!(read("pbin22.msh"), read("p22.msh"));
     // The other layout: one file per partition (`-part_split`), given together.
     let split = d.join("s.msh");
     let g = Command::new("gmsh")

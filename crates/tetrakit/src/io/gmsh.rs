@@ -10,8 +10,8 @@
 //! line of the first. Other sections (`$PhysicalNames`, `$Entities`, `$NodeData`, …)
 //! are skipped. A partitioned mesh in one file (`gmsh -part K`: 2.2 element tags `physical
 //! elementary count partition…`, 4.1 `$PartitionedEntities` volumes) is read in pieces, one
-//! per partition ([`Input::pieces`], the tetrahedra grouped by partition); the binary
-//! reader reads such a file as one mesh.
+//! per partition ([`Input::pieces`], the tetrahedra grouped by partition), by the binary
+//! reader as well.
 //!
 //! Node tags may be any distinct positive numbers below 2^32, in any order (Gmsh leaves
 //! gaps after boolean operations and with physical groups); messages name vertices by
@@ -76,7 +76,7 @@ pub(super) struct Cells<'p> {
     /// Each tetrahedron's partition (0 for none), and the partition of each 4.1
     /// partitioned volume entity.
     partitions: Vec<i64>,
-    volume_partition: std::collections::HashMap<i64, i64>,
+    pub(super) volume_partition: std::collections::HashMap<i64, i64>,
     pub(super) path: &'p Path,
 }
 

@@ -4,7 +4,9 @@
 //! -format msh22`: a node is an `int` tag and three doubles; elements come in runs of
 //! one type, each run a header of three `int`s, type, count and number of tags, then
 //! per element its `int` tag, tags and nodes). `$Entities` is parsed to be skipped;
-//! other sections are skipped to their `$End…` line. The same cells are kept and
+//! a partitioned file (`-part K`) is read in pieces as in ASCII (4.1's
+//! `$PartitionedEntities` gives each volume's partition, 2.2's element tags each
+//! tetrahedron's); other sections are skipped to their `$End…` line. The same cells are kept and
 //! refused as in ASCII, by [`Cells`]. A count is checked against the bytes left before
 //! anything is reserved for it; errors name the byte offset of the offending field.
 
@@ -27,6 +29,7 @@ pub(super) fn read(path: &Path) -> Result<Input, InputError> {
             "$Nodes" => r.nodes()?,
             "$Elements" => r.elements()?,
             "$Entities" => r.entities()?,
+            "$PartitionedEntities" if !v22 => r.partitioned_entities()?,
             _ => {
                 r.skip(&section)?;
                 continue;
@@ -228,14 +231,18 @@ impl Bytes<'_, '_> {
             }
             for _ in 0..run {
                 let tag = self.int("an element tag")?;
-                let mut region = 0;
+                // Tags: physical, elementary, then (partitioned) the number of partitions
+                // and the partitions, the first the element's own.
+                let mut t = [0i64; 4];
                 for j in 0..tags {
-                    let t = self.int("an element's tag")?;
-                    if j == 0 {
-                        region = t;
+                    let x = self.int("an element's tag")?;
+                    if let Some(slot) = t.get_mut(j) {
+                        *slot = x;
                     }
                 }
-                self.element(tag, name, nodes, region, |r| r.int("a node tag"))?;
+                let partition = if tags >= 4 && t[2] >= 1 { t[3] } else { 0 };
+                let node = |r: &mut Self| r.int("a node tag");
+                self.element(tag, name, nodes, [t[0], partition], node)?;
             }
             left -= run;
         }
@@ -248,7 +255,7 @@ impl Bytes<'_, '_> {
         tag: i64,
         name: &'static str,
         nodes: usize,
-        region: i64,
+        [region, partition]: [i64; 2],
         tag_of: impl Fn(&mut Self) -> Result<i64, InputError>,
     ) -> Result<(), InputError> {
         let mut corners = [0u32; 27];
@@ -258,7 +265,7 @@ impl Bytes<'_, '_> {
             *c = self.cells.vertex(raw).map_err(|e| self.err_at(at, e))?;
         }
         self.cells
-            .keep(0, tag, name, &corners[..nodes], region, 0)
+            .keep(0, tag, name, &corners[..nodes], region, partition)
             .map_err(|e| self.err(e.message))
     }
 
@@ -294,6 +301,43 @@ impl Bytes<'_, '_> {
                 for _ in 0..lists {
                     let n = self.count(4, "the number of an entity's tags")?;
                     self.take(4 * n, "an entity's tags")?;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// 4.1 `$PartitionedEntities` (`gmsh -part K -bin`): the partition of each
+    /// partitioned volume (its first partition tag); ghost entities, points, curves and
+    /// surfaces are read past. Counts are `size_t`, tags `int`, coordinates `double`.
+    fn partitioned_entities(&mut self) -> Result<(), InputError> {
+        self.step();
+        self.size("the number of partitions")?;
+        let ghosts = self.count(8, "the number of ghost entities")?;
+        self.take(8 * ghosts, "the ghost entities")?;
+        let mut counts = [0; 4];
+        for c in counts.iter_mut() {
+            *c = self.count(20, "the number of entities")?;
+        }
+        for (dim, &k) in counts.iter().enumerate() {
+            for _ in 0..k {
+                let tag = self.int("an entity tag")?;
+                self.take(8, "an entity's parent")?;
+                let n = self.count(4, "the number of partitions of an entity")?;
+                let first = match n {
+                    0 => None,
+                    _ => Some(self.int("a partition tag")?),
+                };
+                self.take(4 * n.saturating_sub(1), "an entity's partitions")?;
+                let doubles = if dim == 0 { 3 } else { 6 };
+                self.take(8 * doubles, "an entity's box")?;
+                let lists = if dim == 0 { 1 } else { 2 };
+                for _ in 0..lists {
+                    let n = self.count(4, "the number of an entity's tags")?;
+                    self.take(4 * n, "an entity's tags")?;
+                }
+                if let (3, Some(p)) = (dim, first) {
+                    self.cells.volume_partition.insert(tag, p);
                 }
             }
         }
@@ -355,7 +399,8 @@ impl Bytes<'_, '_> {
                 let tag = i64::try_from(self.size("an element tag")?).unwrap_or(-1);
                 totals.add(tag);
                 let size = |r: &mut Self| Ok(i64::try_from(r.size("a node tag")?).unwrap_or(-1));
-                self.element(tag, name, nodes, region, size)?;
+                let partition = self.cells.volume_partition.get(&region).copied();
+                self.element(tag, name, nodes, [region, partition.unwrap_or(0)], size)?;
             }
         }
         totals.check().map_err(|(at, e)| self.err_at(at, e))
