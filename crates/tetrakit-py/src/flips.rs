@@ -89,7 +89,7 @@ pub fn hamiltonian<'py>(
         tetrakit::dualpath::hamiltonian(&pts, &PathOptions::default(), &ctl)
     })?
     .map_err(|e| match e {
-        PathError::Uncertified(_) | PathError::Internal(_) => {
+        PathError::Uncertified(_) | PathError::Internal(_) | PathError::Enumeration(_) => {
             PyRuntimeError::new_err(e.to_string())
         }
         _ => value_error(e),

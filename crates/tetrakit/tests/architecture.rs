@@ -56,11 +56,13 @@ fn allowed(top: &str) -> Vec<&'static str> {
     // exact solver after, and builds its niche instances on `polyhedra`'s twisted prism;
     // `reduce` triangulates its generated quasi-prisms with `planar`'s Delaunay and hands a
     // quasi-prism without staircases to the exact solver; `mintetra`
-    // confirms its minimality with the exact solver.
+    // confirms its minimality with the exact solver; `dualpath` enumerates every
+    // tetrahedralization of a small set with `flipgraph` when no cone gives a path.
     let extra: &[&str] = match top {
         "distributed" => &["io"],
         "constrain" => &["detect", "exact", "polyhedra"],
         "shell" => &["exact", "flip"],
+        "dualpath" => &["flipgraph"],
         "reduce" => &["planar", "exact"],
         "polyhedra" => &["exact"],
         _ => &[],

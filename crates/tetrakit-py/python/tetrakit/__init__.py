@@ -487,6 +487,9 @@ class HamiltonianResult:
     steps: int
     certified: bool
     tets: np.ndarray = field(repr=False)
+    found_by: Optional[str] = None
+    enumerated: Optional[dict] = None
+    witness: Optional[dict] = None
 
 
 def hamiltonian(points, time_limit: Optional[float] = None) -> HamiltonianResult:
@@ -494,9 +497,11 @@ def hamiltonian(points, time_limit: Optional[float] = None) -> HamiltonianResult
     (every point a vertex), its tetrahedra ordered so that each shares a triangle with the
     next: a Hamiltonian path of the dual graph (thesis ch. 6), certified.
 
-    ``verdict`` is ``"yes"``, or ``"undecided"`` when the cone method found no path
-    within its search budget or ``time_limit`` (never ``"no"``: whether every convex
-    polytope has one is open).
+    ``verdict`` is ``"yes"`` (``found_by`` ``"cone"``, or ``"enumeration"`` when no cone
+    had a path and every tetrahedralization of a set of at most 12 points was searched);
+    ``"no"`` with a ``witness`` when all of them were enumerated and none has a path
+    (whether every convex polytope has one is open); ``"undecided"`` when the search
+    budget, the enumeration's limit or ``time_limit`` cut it.
 
     >>> import numpy as np, tetrakit
     >>> cube = np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)], dtype=float)

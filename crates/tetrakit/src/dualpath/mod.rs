@@ -16,11 +16,23 @@
 //! of every cone tetrahedron. When every point is a vertex of the hull, every vertex is
 //! eligible (the facets round a vertex `q` near `v` cannot all contain the edge `qv`).
 //!
+//! **Then every tetrahedralization.** When no cone gives a path and the set is small
+//! ([`PathOptions::enumerate_up_to`], 12 points), every tetrahedralization that uses
+//! every point is enumerated ([`crate::flipgraph::tetrahedralizations`], exact, each
+//! once) and each one's dual graph searched *completely* (`search::exact_path`: the same
+//! depth-first search without a budget, from a leaf or from every node; its pruning never
+//! drops a path). The first with a path is a YES (`found_by: "enumeration"`); none, with
+//! the enumeration complete, is a NO: no tetrahedralization of these points has a
+//! Hamiltonian dual path. That NO would answer the open question for that set; its
+//! witness is the count, which TOPCOM's `points2nallfinetriangs` checks, and each
+//! tetrahedralization can be listed again by `tetrakit flips --output`.
+//!
 //! **Certified**: the tetrahedra pass [`mesh::certify_hull`] (every point a vertex, the
 //! hull covered once, face to face) and [`mesh::verify_dual_path`] (each shares a
 //! triangle with the next). When no apex gives a path within the budget, or none is
-//! eligible, the answer is UNDECIDED, never NO: the method is a heuristic, and whether
-//! every convex polytope has such a tetrahedralization is the open question.
+//! eligible, and the set is too large to enumerate (or the enumeration's limit or the
+//! time limit cuts it), the answer is UNDECIDED: whether every convex polytope has such a
+//! tetrahedralization is the open question.
 //!
 //! ```
 //! use tetrakit::control::{Control, Verdict};
@@ -34,6 +46,7 @@ mod search;
 
 use crate::bug::Bug;
 use crate::control::{Control, Verdict};
+use crate::flipgraph::FlipError;
 use crate::geom::{Hull3, Point3, SetDefect, orient3d, solid_set, triangulate_coplanar};
 use crate::mesh;
 use serde::Serialize;
@@ -45,11 +58,23 @@ use std::fmt;
 pub struct PathOptions {
     /// Search steps per apex.
     pub budget: u64,
+    /// Try the cones first (off: the enumeration alone, for experiments and tests).
+    pub cones: bool,
+    /// When no cone gives a path, a set of at most this many points has every
+    /// tetrahedralization enumerated and each one's dual graph searched completely.
+    pub enumerate_up_to: usize,
+    /// The enumeration gives up (UNDECIDED) past this many tetrahedralizations.
+    pub enumerate_limit: usize,
 }
 
 impl Default for PathOptions {
     fn default() -> Self {
-        PathOptions { budget: 200_000 }
+        PathOptions {
+            budget: 200_000,
+            cones: true,
+            enumerate_up_to: 12,
+            enumerate_limit: 2_000_000,
+        }
     }
 }
 
@@ -63,6 +88,8 @@ pub enum PathError {
         /// The point.
         index: u32,
     },
+    /// The enumeration of every tetrahedralization failed (a bug if it ever happens).
+    Enumeration(FlipError),
     /// The tetrahedra failed the verifier (a bug if it ever happens): its problem.
     Uncertified(mesh::Problem),
     /// Two consecutive tetrahedra of the path share no triangle (a bug if it ever
@@ -83,6 +110,7 @@ impl fmt::Display for PathError {
                 "internal error, please report the input: the cone fails its certificate: {p}"
             ),
             PathError::Internal(bug) => bug.fmt(f),
+            PathError::Enumeration(e) => e.fmt(f),
         }
     }
 }
@@ -93,6 +121,7 @@ impl std::error::Error for PathError {
             PathError::Set(e) => Some(e),
             PathError::Uncertified(p) => Some(p),
             PathError::Internal(bug) => Some(bug),
+            PathError::Enumeration(e) => Some(e),
             PathError::Inside { .. } => None,
         }
     }
@@ -121,9 +150,39 @@ pub struct HamiltonianOutcome {
     pub steps: u64,
     /// The tetrahedra passed [`mesh::certify_hull`] and [`mesh::verify_dual_path`].
     pub certified: bool,
+    /// How the tetrahedralization was found: `"cone"` or `"enumeration"` (`None` when
+    /// none was).
+    pub found_by: Option<&'static str>,
+    /// When every tetrahedralization was enumerated: how many, and whether all were.
+    pub enumerated: Option<Enumerated>,
+    /// A NO: every tetrahedralization enumerated, none with a Hamiltonian dual path.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub witness: Option<NoPath>,
     /// The tetrahedra in path order (each shares a triangle with the next), positively
     /// oriented.
     pub tets: Vec<[u32; 4]>,
+}
+
+/// The enumeration's count ([`HamiltonianOutcome::enumerated`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct Enumerated {
+    /// Tetrahedralizations that use every point, found.
+    pub tetrahedralizations: usize,
+    /// Whether that is all of them (else the limit or the time limit cut it).
+    pub complete: bool,
+}
+
+/// Why no tetrahedralization of these points has a Hamiltonian dual path: all of them were
+/// enumerated (the count is TOPCOM's `points2nallfinetriangs`, which checks it) and each
+/// one's dual graph was searched completely.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct NoPath {
+    /// `"no_hamiltonian_tetrahedralization"`.
+    pub kind: &'static str,
+    /// The tetrahedralizations, all of them.
+    pub tetrahedralizations: usize,
+    /// A sentence for a person.
+    pub detail: String,
 }
 
 impl HamiltonianOutcome {
@@ -137,7 +196,9 @@ impl HamiltonianOutcome {
 
 /// A tetrahedralization of the convex polytope with boundary points `points` (every
 /// point a vertex) with its tetrahedra in an order where each shares a triangle with the
-/// next (see the module docs).
+/// next (see the module docs): by the cones, then, for at most
+/// [`PathOptions::enumerate_up_to`] points, by enumerating every tetrahedralization (a
+/// YES the cones missed, or a NO).
 pub fn hamiltonian(
     points: &[Point3],
     opts: &PathOptions,
@@ -164,9 +225,12 @@ pub fn hamiltonian(
         apexes_tried: 0,
         steps: 0,
         certified: false,
+        found_by: None,
+        enumerated: None,
+        witness: None,
         tets: Vec::new(),
     };
-    for &(_, v) in &apexes {
+    for &(_, v) in apexes.iter().filter(|_| opts.cones) {
         if ctl.is_stopped() {
             break;
         }
@@ -180,19 +244,96 @@ pub fn hamiltonian(
             .iter()
             .map(|&i| cone(points, v, tris[i as usize]))
             .collect();
-        mesh::certify_hull(points, &tets).map_err(PathError::Uncertified)?;
-        mesh::verify_dual_path(&tets).map_err(|i| {
-            let check = "consecutive tetrahedra of the path share a triangle";
-            PathError::Internal(Bug::at(check, [i as u32, i as u32 + 1]))
-        })?;
-        o.verdict = Verdict::Yes;
-        o.tetrahedra = tets.len();
+        accept(points, tets, "cone", &mut o)?;
         o.apex = Some(v);
-        o.certified = true;
-        o.tets = tets;
         break;
     }
+    if o.verdict == Verdict::Undecided && !ctl.is_stopped() && points.len() <= opts.enumerate_up_to
+    {
+        by_enumeration(points, opts, ctl, &mut o)?;
+    }
     Ok(o)
+}
+
+/// The YES of `tets` in path order, found by `how`, once certified.
+fn accept(
+    points: &[Point3],
+    tets: Vec<[u32; 4]>,
+    how: &'static str,
+    o: &mut HamiltonianOutcome,
+) -> Result<(), PathError> {
+    mesh::certify_hull(points, &tets).map_err(PathError::Uncertified)?;
+    mesh::verify_dual_path(&tets).map_err(|i| {
+        let check = "consecutive tetrahedra of the path share a triangle";
+        PathError::Internal(Bug::at(check, [i as u32, i as u32 + 1]))
+    })?;
+    o.verdict = Verdict::Yes;
+    o.tetrahedra = tets.len();
+    o.certified = true;
+    o.found_by = Some(how);
+    o.tets = tets;
+    Ok(())
+}
+
+/// Every tetrahedralization, each one's dual graph searched completely: the first with a
+/// path is a YES; none, when all were enumerated, is a NO.
+fn by_enumeration(
+    points: &[Point3],
+    opts: &PathOptions,
+    ctl: &Control,
+    o: &mut HamiltonianOutcome,
+) -> Result<(), PathError> {
+    let all = match crate::flipgraph::tetrahedralizations(points, opts.enumerate_limit, ctl) {
+        Ok(all) => all,
+        Err(FlipError::TooManyCandidates(_)) => return Ok(()),
+        Err(e) => return Err(PathError::Enumeration(e)),
+    };
+    o.enumerated = Some(Enumerated {
+        tetrahedralizations: all.len(),
+        complete: all.cut.is_none(),
+    });
+    for i in 0..all.len() {
+        let tets = all.get(i);
+        match search::exact_path(&tet_dual(&tets), ctl, &mut o.steps) {
+            None => return Ok(()),
+            Some(None) => continue,
+            Some(Some(order)) => {
+                let tets = order.iter().map(|&k| tets[k as usize]).collect();
+                return accept(points, tets, "enumeration", o);
+            }
+        }
+    }
+    if all.cut.is_none() && !ctl.is_stopped() {
+        o.verdict = Verdict::No;
+        o.witness = Some(NoPath {
+            kind: "no_hamiltonian_tetrahedralization",
+            tetrahedralizations: all.len(),
+            detail: format!(
+                "none of the {} tetrahedralizations that use every point has a Hamiltonian dual path (each dual graph searched completely)",
+                all.len()
+            ),
+        });
+    }
+    Ok(())
+}
+
+/// The dual graph of a tetrahedralization: tetrahedra joined when they share a triangle.
+fn tet_dual(tets: &[[u32; 4]]) -> Vec<Vec<u32>> {
+    let mut faces: Vec<([u32; 3], u32)> = (tets.iter().enumerate())
+        .flat_map(|(k, t)| {
+            [[0, 1, 2], [0, 1, 3], [0, 2, 3], [1, 2, 3]]
+                .map(|f| (mesh::sorted_face(f.map(|i| t[i])), k as u32))
+        })
+        .collect();
+    faces.sort_unstable();
+    let mut adj = vec![Vec::new(); tets.len()];
+    for w in faces.windows(2) {
+        if w[0].0 == w[1].0 {
+            adj[w[0].1 as usize].push(w[1].1);
+            adj[w[1].1 as usize].push(w[0].1);
+        }
+    }
+    adj
 }
 
 /// Each facet's triangles (every point on it used).

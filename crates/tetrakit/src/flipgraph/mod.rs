@@ -239,13 +239,60 @@ impl FlipGraph {
     }
 }
 
-/// Every tetrahedralization of `points` that uses every point, and the graph of the flips
-/// between them (see the module docs).
-pub fn flip_graph(
+/// Every tetrahedralization of a point set that uses every point, enumerated exactly and
+/// certified ([`tetrahedralizations`]): the first step of [`flip_graph`].
+#[derive(Clone, Debug)]
+pub struct Enumeration {
+    /// Why the enumeration ended before the last tetrahedralization (`None`: all found).
+    pub cut: Option<Cut>,
+    /// Search states visited.
+    pub states: u64,
+    /// The empty tetrahedra, positively oriented.
+    tets: Vec<[u32; 4]>,
+    found: enumerate::Family,
+}
+
+impl Enumeration {
+    /// How many were found.
+    pub fn len(&self) -> usize {
+        self.found.len()
+    }
+
+    /// Whether none was found (never, for a set that passes [`solid_set`]).
+    pub fn is_empty(&self) -> bool {
+        self.found.len() == 0
+    }
+
+    /// The `i`-th tetrahedralization found (`i < len()`), positively oriented.
+    pub fn get(&self, i: usize) -> Vec<[u32; 4]> {
+        let ids = self.found.get(i);
+        ids.iter().map(|&t| self.tets[t as usize]).collect()
+    }
+}
+
+/// Every tetrahedralization of `points` that uses every point, at most `limit` of them,
+/// each found once (see the module docs) and passed through [`mesh::verify`].
+///
+/// ```
+/// use tetrakit::control::Control;
+/// let cube: Vec<[f64; 3]> = (0..8).map(|i| [(i & 1) as f64, (i >> 1 & 1) as f64, (i >> 2) as f64]).collect();
+/// let all = tetrakit::flipgraph::tetrahedralizations(&cube, 1000, &Control::new()).unwrap();
+/// assert_eq!((all.len(), all.cut), (74, None));
+/// ```
+pub fn tetrahedralizations(
     points: &[Point3],
-    opts: &FlipOptions,
+    limit: usize,
     ctl: &Control,
-) -> Result<FlipGraph, FlipError> {
+) -> Result<Enumeration, FlipError> {
+    Ok(enumerated(points, limit, ctl)?.0)
+}
+
+/// [`tetrahedralizations`], and the candidates the flips are computed on.
+fn enumerated(
+    points: &[Point3],
+    limit: usize,
+    ctl: &Control,
+) -> Result<(Enumeration, candidates::Candidates), FlipError> {
     solid_set(points).map_err(FlipError::Set)?;
     ctl.stage("empty tetrahedra");
     let c = candidates::candidates(points)?;
@@ -256,28 +303,47 @@ pub fn flip_graph(
         .map(|t| t as u16)
         .collect();
     ctl.stage("tetrahedralizations");
-    let found = enumerate::enumerate(&c, &start, opts.limit.max(1), ctl);
+    let found = enumerate::enumerate(&c, &start, limit.max(1), ctl);
     let tets: Vec<[u32; 4]> = c.tets.iter().map(|&t| oriented(points, t)).collect();
     certify(points, &tets, &found.all)?;
-    let sizes = (0..found.all.len()).map(|i| found.all.get(i).len());
+    let e = Enumeration {
+        cut: found.cut,
+        states: found.states,
+        tets,
+        found: found.all,
+    };
+    Ok((e, c))
+}
+
+/// Every tetrahedralization of `points` that uses every point, and the graph of the flips
+/// between them (see the module docs).
+pub fn flip_graph(
+    points: &[Point3],
+    opts: &FlipOptions,
+    ctl: &Control,
+) -> Result<FlipGraph, FlipError> {
+    let (e, c) = enumerated(points, opts.limit, ctl)?;
+    let found = e.found;
+    let tets = e.tets;
+    let sizes = (0..found.len()).map(|i| found.get(i).len());
     let mut g = FlipGraph {
         verdict: Verdict::Undecided,
         points: points.len(),
         candidates: c.tets.len(),
-        tetrahedralizations: found.all.len(),
+        tetrahedralizations: found.len(),
         connected: None,
-        cut: found.cut,
-        states: found.states,
+        cut: e.cut,
+        states: e.states,
         min_tetrahedra: sizes.clone().min().unwrap_or(0),
         max_tetrahedra: sizes.max().unwrap_or(0),
         certified: true,
         graph: None,
         witness: None,
         tets,
-        found: found.all,
+        found,
         neighbours: Vec::new(),
     };
-    if found.cut.is_some() {
+    if g.cut.is_some() {
         return Ok(g);
     }
     ctl.stage("flips");

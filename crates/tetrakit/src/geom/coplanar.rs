@@ -7,7 +7,7 @@ use std::collections::HashMap;
 /// A triangulation of the coplanar points `on` (indices into `points`, spanning a plane)
 /// using all of them: the placing triangulation in lexicographic order and, given `rng`,
 /// random flips of strictly convex quadrilaterals after. Triangles are counter-clockwise
-/// in the projection that drops the plane's [`projection_axis`].
+/// in the projection that drops the plane's `projection_axis`.
 ///
 /// ```
 /// use tetrakit::geom::triangulate_coplanar;

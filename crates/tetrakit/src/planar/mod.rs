@@ -5,7 +5,7 @@
 //! Every decision is exact: β is a rational ([`Ratio`](crate::geom::Ratio)), regions are
 //! tested by polynomial signs ([`crate::geom::in_beta_region`]), and weights are compared
 //! with certified intervals and an exact fallback for sums of square roots
-//! ([`crate::geom::compare_root_sums`]).
+//! (`geom`'s exact comparison of root sums).
 //!
 //! [`triangulations`] enumerates every triangulation of a small set: the exhaustive
 //! oracle the exact stages are tested against.

@@ -207,15 +207,34 @@ pub fn hamiltonian_text(o: &HamiltonianOutcome, seconds: f64) -> String {
         .map_or("no apex is eligible".to_string(), |k| {
             format!("an ordinary cone has {k}")
         });
-    let _ = match (o.verdict, o.apex) {
-        (Verdict::Yes, Some(v)) => writeln!(
+    let enumerated = match o.enumerated {
+        Some(e) if e.complete => {
+            format!(
+                "; all {} tetrahedralizations enumerated",
+                e.tetrahedralizations
+            )
+        }
+        Some(e) => format!(
+            "; the enumeration stopped after {} tetrahedralizations",
+            e.tetrahedralizations
+        ),
+        None => String::new(),
+    };
+    let _ = match (o.verdict, o.apex, &o.witness) {
+        (Verdict::Yes, Some(v), _) => writeln!(
             s,
             "YES: {} tetrahedra in a Hamiltonian dual path (each shares a triangle with the next), a cone from vertex {v}; {ordinary}",
             o.tetrahedra
         ),
+        (Verdict::Yes, None, _) => writeln!(
+            s,
+            "YES: {} tetrahedra in a Hamiltonian dual path (each shares a triangle with the next), found among every tetrahedralization (no cone has one); {ordinary}",
+            o.tetrahedra
+        ),
+        (Verdict::No, _, Some(w)) => writeln!(s, "NO: {}; {ordinary}", w.detail),
         _ => writeln!(
             s,
-            "UNDECIDED: no Hamiltonian dual path found by the cone method ({} of {} eligible apexes tried, {} search steps); {ordinary}",
+            "UNDECIDED: no Hamiltonian dual path found by the cone method ({} of {} eligible apexes tried, {} search steps){enumerated}; {ordinary}",
             o.apexes_tried, o.apexes, o.steps
         ),
     };
