@@ -204,12 +204,9 @@ pub struct FlipGraph {
     /// Two tetrahedralizations no flips join (a NO).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub witness: Option<Disconnected>,
-    /// The empty tetrahedra, positively oriented.
+    /// Every tetrahedralization found, in the order found.
     #[serde(skip)]
-    tets: Vec<[u32; 4]>,
-    /// Every tetrahedralization found, as indices into `tets`, in the order found.
-    #[serde(skip)]
-    found: enumerate::Family,
+    all: Enumeration,
     /// Each one's flip neighbours (its place, kind), ascending; empty when cut.
     #[serde(skip)]
     pub neighbours: Vec<Vec<(u32, FlipKind)>>,
@@ -219,15 +216,14 @@ impl FlipGraph {
     /// The `i`-th tetrahedralization found (`i < tetrahedralizations`), positively
     /// oriented.
     pub fn tetrahedralization(&self, i: usize) -> Vec<[u32; 4]> {
-        let ids = self.found.get(i);
-        ids.iter().map(|&t| self.tets[t as usize]).collect()
+        self.all.get(i)
     }
 
     /// The same outcome with every vertex index plus `base` (a file's numbering);
     /// tetrahedralizations keep their 0-based places.
     pub fn shifted(mut self, base: u32) -> FlipGraph {
         let shift = |t: &mut Vec<[u32; 4]>| t.iter_mut().for_each(|q| *q = q.map(|v| v + base));
-        shift(&mut self.tets);
+        shift(&mut self.all.tets);
         if let Some(g) = &mut self.graph {
             g.isolated.iter_mut().for_each(shift);
         }
@@ -241,7 +237,7 @@ impl FlipGraph {
 
 /// Every tetrahedralization of a point set that uses every point, enumerated exactly and
 /// certified ([`tetrahedralizations`]): the first step of [`flip_graph`].
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Enumeration {
     /// Why the enumeration ended before the last tetrahedralization (`None`: all found).
     pub cut: Option<Cut>,
@@ -323,14 +319,12 @@ pub fn flip_graph(
     ctl: &Control,
 ) -> Result<FlipGraph, FlipError> {
     let (e, c) = enumerated(points, opts.limit, ctl)?;
-    let found = e.found;
-    let tets = e.tets;
-    let sizes = (0..found.len()).map(|i| found.get(i).len());
+    let sizes = (0..e.len()).map(|i| e.found.get(i).len());
     let mut g = FlipGraph {
         verdict: Verdict::Undecided,
         points: points.len(),
         candidates: c.tets.len(),
-        tetrahedralizations: found.len(),
+        tetrahedralizations: e.len(),
         connected: None,
         cut: e.cut,
         states: e.states,
@@ -339,15 +333,14 @@ pub fn flip_graph(
         certified: true,
         graph: None,
         witness: None,
-        tets,
-        found,
+        all: e,
         neighbours: Vec::new(),
     };
     if g.cut.is_some() {
         return Ok(g);
     }
     ctl.stage("flips");
-    let built = graph::adjacency(points, &c, &g.found, ctl)
+    let built = graph::adjacency(points, &c, &g.all.found, ctl)
         .and_then(|adj| Ok((facts(&adj, &g, opts, ctl)?, adj)));
     let (facts, adj) = match built {
         Ok(done) => done,
