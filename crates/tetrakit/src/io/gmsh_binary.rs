@@ -295,14 +295,22 @@ impl Bytes<'_, '_> {
         for (dim, &k) in counts.iter().enumerate() {
             for _ in 0..k {
                 self.int("an entity tag")?;
-                let doubles = if dim == 0 { 3 } else { 6 };
-                self.take(8 * doubles, "an entity's box")?;
-                let lists = if dim == 0 { 1 } else { 2 };
-                for _ in 0..lists {
-                    let n = self.count(4, "the number of an entity's tags")?;
-                    self.take(4 * n, "an entity's tags")?;
-                }
+                self.entity_box_and_tags(dim)?;
             }
+        }
+        Ok(())
+    }
+
+    /// An entity's box (a point's coordinates) and its tag lists (physical tags, then the
+    /// bounding entities unless a point), as `$Entities` and `$PartitionedEntities` end
+    /// each entity.
+    fn entity_box_and_tags(&mut self, dim: usize) -> Result<(), InputError> {
+        let doubles = if dim == 0 { 3 } else { 6 };
+        self.take(8 * doubles, "an entity's box")?;
+        let lists = if dim == 0 { 1 } else { 2 };
+        for _ in 0..lists {
+            let n = self.count(4, "the number of an entity's tags")?;
+            self.take(4 * n, "an entity's tags")?;
         }
         Ok(())
     }
@@ -329,13 +337,7 @@ impl Bytes<'_, '_> {
                     _ => Some(self.int("a partition tag")?),
                 };
                 self.take(4 * n.saturating_sub(1), "an entity's partitions")?;
-                let doubles = if dim == 0 { 3 } else { 6 };
-                self.take(8 * doubles, "an entity's box")?;
-                let lists = if dim == 0 { 1 } else { 2 };
-                for _ in 0..lists {
-                    let n = self.count(4, "the number of an entity's tags")?;
-                    self.take(4 * n, "an entity's tags")?;
-                }
+                self.entity_box_and_tags(dim)?;
                 if let (3, Some(p)) = (dim, first) {
                     self.cells.volume_partition.insert(tag, p);
                 }
