@@ -31,7 +31,7 @@
 //! read as one).
 
 use crate::geom::{Hull3, Point3, lex_cmp, point_key};
-use crate::io::{self, IdMismatch, Input, Piece};
+use crate::io::{self, IdMismatch, Input, InputError, Piece};
 use crate::mesh::{
     self, BoundaryFace, CheckOptions, CheckOutcome, Part, PartFaces, Problem, Report,
 };
@@ -56,7 +56,7 @@ pub struct RankCheck {
     round: usize,
     mine: Vec<Local>,
     pieces: Vec<Info>,
-    failure: Option<String>,
+    failure: Option<InputError>,
     parts: Vec<Part>,
     on_boundary: Vec<Vec<bool>>,
     mismatches: Vec<Problem>,
@@ -100,7 +100,7 @@ struct Info {
 
 #[derive(Default, Serialize, Deserialize)]
 struct Hello {
-    failure: Option<(u32, String)>,
+    failure: Option<(u32, InputError)>,
     pieces: Vec<Info>,
     keys: Vec<Occurrence>,
 }
@@ -219,7 +219,7 @@ impl RankCheck {
         let mut hello = Hello::default();
         let mut keys: Vec<Vec<Occurrence>> = vec![Vec::new(); self.size];
         match io::pvtu_pieces(&self.index) {
-            Err(e) => hello.failure = Some((0, e.to_string())),
+            Err(e) => hello.failure = Some((0, e)),
             Ok(files) => self.files = files,
         }
         for p in (self.rank..self.files.len()).step_by(self.size) {
@@ -229,7 +229,7 @@ impl RankCheck {
             };
             match io::read_piece(&self.files[p], read) {
                 Err(e) => {
-                    hello.failure.get_or_insert((p as u32, e.to_string()));
+                    hello.failure.get_or_insert((p as u32, e));
                 }
                 Ok((input, ids)) => {
                     let piece = p as u32;
@@ -332,16 +332,16 @@ impl RankCheck {
     }
 
     /// The error that stopped the check (every rank has it), as `file:line: problem`.
-    pub fn failure(&self) -> Option<&str> {
-        self.failure.as_deref()
+    pub fn failure(&self) -> Option<&InputError> {
+        self.failure.as_ref()
     }
 
     /// Round 2: the pieces' table, and the vertex numbers of the keys this rank owns.
     fn number(&mut self, inbox: &[&[u8]]) -> Vec<Vec<u8>> {
         let hellos: Vec<Hello> = inbox.iter().map(|b| decode(b)).collect();
-        let mut failures: Vec<(u32, String)> =
+        let mut failures: Vec<(u32, InputError)> =
             hellos.iter().filter_map(|h| h.failure.clone()).collect();
-        failures.sort();
+        failures.sort_by_key(|f| f.0);
         let mut pieces: Vec<Info> = hellos.iter().flat_map(|h| h.pieces.clone()).collect();
         pieces.sort_by_key(|i| i.piece);
         if failures.is_empty() {
@@ -355,7 +355,7 @@ impl RankCheck {
                     b.piece,
                     self.files[b.piece as usize].display()
                 );
-                failures.push((0, format!("{}: {why}", self.index.display())));
+                failures.push((0, InputError::new(&self.index, 0, why)));
             }
         }
         if let Some((_, why)) = failures.into_iter().next() {
@@ -694,15 +694,15 @@ impl RankCheck {
             };
             let name = io::piece_path(&out, m.piece as usize);
             io::write_piece(&name, &m.input.points, &m.input.tets, Some(&ids), &fields)
-                .map_err(|e| format!("{}: {e}", name.display()))
+                .map_err(|e| InputError::new(&name, 0, e.to_string()))
         };
-        let mut result: Result<(), String> = self.mine.iter().try_for_each(written);
+        let mut result: Result<(), InputError> = self.mine.iter().try_for_each(written);
         if self.rank == 0 && result.is_ok() {
             let names: Vec<PathBuf> = (0..self.pieces.len())
                 .map(|k| io::piece_path(&out, k))
                 .collect();
-            result =
-                io::write_pvtu_index(&out, &names).map_err(|e| format!("{}: {e}", out.display()));
+            result = io::write_pvtu_index(&out, &names)
+                .map_err(|e| InputError::new(&out, 0, e.to_string()));
         }
         self.failure = result.err();
     }
@@ -826,7 +826,7 @@ pub fn check_in_ranks(
     index: &Path,
     size: usize,
     opts: CheckOptions,
-) -> (Result<CheckOutcome, String>, Vec<usize>) {
+) -> (Result<CheckOutcome, InputError>, Vec<usize>) {
     check_in_ranks_writing(index, size, opts, None)
 }
 
@@ -837,7 +837,7 @@ pub fn check_in_ranks_writing(
     size: usize,
     opts: CheckOptions,
     output: Option<&Path>,
-) -> (Result<CheckOutcome, String>, Vec<usize>) {
+) -> (Result<CheckOutcome, InputError>, Vec<usize>) {
     let mut ranks: Vec<RankCheck> = (0..size)
         .map(|r| RankCheck::new(index, r, size, opts, false))
         .map(|r| match output {
@@ -859,11 +859,9 @@ pub fn check_in_ranks_writing(
     }
     let sent = ranks.iter().map(|r| r.bytes_sent).collect();
     let result = match ranks.iter().find_map(RankCheck::failure) {
-        Some(f) => Err(f.to_string()),
-        None => ranks[0]
-            .outcome
-            .clone()
-            .ok_or_else(|| "no outcome".to_string()),
+        Some(f) => Err(f.clone()),
+        None => (ranks.first().and_then(|r| r.outcome.clone()))
+            .ok_or_else(|| InputError::new(index, 0, "no rank took part (size 0)")),
     };
     (result, sent)
 }

@@ -264,3 +264,61 @@ fn paths_are_read_with_braces() {
     let names: Vec<String> = p.iter().map(|s| s.join("::")).collect();
     assert_eq!(names, ["grid", "PlanarError", "lens::f"]);
 }
+
+/// The code (without tests and comments) of every `.rs` file under `dir`, by path.
+fn sources(dir: &Path) -> Vec<(PathBuf, String)> {
+    let mut files = Vec::new();
+    source_files(dir, &mut files);
+    files.sort();
+    files
+        .into_iter()
+        .map(|f| {
+            let text = code(&std::fs::read_to_string(&f).expect("readable file"));
+            (f, text)
+        })
+        .collect()
+}
+
+/// The front ends print through the report layer: no JSON built by hand in the CLI or
+/// the Python binding.
+#[test]
+fn front_ends_build_no_json() {
+    let crates = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let mut found = Vec::new();
+    for front in ["tetrakit-cli/src", "tetrakit-py/src"] {
+        for (f, text) in sources(&crates.join(front)) {
+            if text.contains("json!(") {
+                found.push(f.display().to_string());
+            }
+        }
+    }
+    assert!(found.is_empty(), "json! in a front end: {found:?}");
+}
+
+/// Errors are typed: no public function returns a `String` error, and no error enum
+/// keeps a free-form `String` variant (a bug is a `bug::Bug`, a failed certificate the
+/// verifier's `mesh::Problem`).
+#[test]
+fn no_string_errors() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut found = Vec::new();
+    for (f, text) in sources(&src) {
+        let lines: Vec<&str> = text.lines().collect();
+        for (k, line) in lines.iter().enumerate() {
+            let returns_string_error = line.contains("pub fn")
+                && lines[k..(k + 6).min(lines.len())]
+                    .iter()
+                    .any(|l| l.contains(", String>"));
+            let in_error_enum = lines[..k]
+                .iter()
+                .rev()
+                .find(|l| l.starts_with("pub enum") || l.starts_with("enum") || *l == &"}")
+                .is_some_and(|l| l.starts_with("pub enum") && l.contains("Error"));
+            let string_variant = in_error_enum && line.trim_end().ends_with("(String),");
+            if returns_string_error || string_variant {
+                found.push(format!("{}:{}: {}", f.display(), k + 1, line.trim()));
+            }
+        }
+    }
+    assert!(found.is_empty(), "String errors: {found:#?}");
+}

@@ -449,7 +449,7 @@ fn pieces_with_and_without_global_ids_are_refused() {
         "{err}"
     );
     let (ranks, _) = tetrakit::distributed::check_in_ranks(&path, 2, CheckOptions::default());
-    let err = ranks.unwrap_err();
+    let err = ranks.unwrap_err().to_string();
     assert!(
         err.contains("m_0.vtu") && err.contains("m_1.vtu") && err.contains("disagree in layout"),
         "{err}"
@@ -507,7 +507,7 @@ fn a_piece_with_a_coordinate_out_of_range_is_refused() {
     let err = tetrakit::io::read_input(&path).unwrap_err().to_string();
     assert!(err.contains("1e-300") && err.contains("m_1.vtu"), "{err}");
     let (ranks, _) = tetrakit::distributed::check_in_ranks(&path, 2, CheckOptions::default());
-    let err = ranks.unwrap_err();
+    let err = ranks.unwrap_err().to_string();
     assert!(err.contains("1e-300") && err.contains("m_1.vtu"), "{err}");
     let _ = std::fs::remove_dir_all(&d);
 }
