@@ -275,42 +275,45 @@ fn accept(
     Ok(())
 }
 
-/// Every tetrahedralization, each one's dual graph searched completely: the first with a
-/// path is a YES; none, when all were enumerated, is a NO.
+/// Every tetrahedralization, each one's dual graph searched completely as it is found:
+/// the first with a path is a YES (the enumeration stops there); none, when all were
+/// enumerated, is a NO.
 fn by_enumeration(
     points: &[Point3],
     opts: &PathOptions,
     ctl: &Control,
     o: &mut HamiltonianOutcome,
 ) -> Result<(), PathError> {
-    let all = match crate::flipgraph::tetrahedralizations(points, opts.enumerate_limit, ctl) {
-        Ok(all) => all,
-        Err(FlipError::TooManyCandidates(_)) => return Ok(()),
-        Err(e) => return Err(PathError::Enumeration(e)),
-    };
-    o.enumerated = Some(Enumerated {
-        tetrahedralizations: all.len(),
-        complete: all.cut.is_none(),
-    });
-    for i in 0..all.len() {
-        let tets = all.get(i);
-        match search::exact_path(&tet_dual(&tets), ctl, &mut o.steps) {
-            None => return Ok(()),
-            Some(None) => continue,
+    let mut found: Option<Vec<[u32; 4]>> = None;
+    let mut each =
+        |tets: Vec<[u32; 4]>| match search::exact_path(&tet_dual(&tets), ctl, &mut o.steps) {
             Some(Some(order)) => {
-                let tets = order.iter().map(|&k| tets[k as usize]).collect();
-                return accept(points, tets, "enumeration", o);
+                found = Some(order.iter().map(|&k| tets[k as usize]).collect());
+                false
             }
-        }
+            _ => true, // no path (or stopped: the enumeration sees the stop too)
+        };
+    let limit = opts.enumerate_limit;
+    let (cut, count) =
+        match crate::flipgraph::for_each_tetrahedralization(points, limit, ctl, &mut each) {
+            Ok(ended) => ended,
+            Err(FlipError::TooManyCandidates(_)) => return Ok(()),
+            Err(e) => return Err(PathError::Enumeration(e)),
+        };
+    o.enumerated = Some(Enumerated {
+        tetrahedralizations: count,
+        complete: cut.is_none(),
+    });
+    if let Some(tets) = found {
+        return accept(points, tets, "enumeration", o);
     }
-    if all.cut.is_none() && !ctl.is_stopped() {
+    if cut.is_none() && !ctl.is_stopped() {
         o.verdict = Verdict::No;
         o.witness = Some(NoPath {
             kind: "no_hamiltonian_tetrahedralization",
-            tetrahedralizations: all.len(),
+            tetrahedralizations: count,
             detail: format!(
-                "none of the {} tetrahedralizations that use every point has a Hamiltonian dual path (each dual graph searched completely)",
-                all.len()
+                "none of the {count} tetrahedralizations that use every point has a Hamiltonian dual path (each dual graph searched completely)"
             ),
         });
     }

@@ -24,6 +24,8 @@ pub enum Cut {
     Limit,
     /// The time limit passed, or a stop was requested.
     TimeLimit,
+    /// The caller had what it was looking for ([`super::for_each_tetrahedralization`]).
+    Done,
 }
 
 /// Tetrahedralizations as candidate ids, ascending, one after another in one array.
@@ -68,7 +70,9 @@ struct Search<'a> {
     /// Per face: the side (0 or 1) a tetrahedron is asked for, or `NONE`.
     need: Vec<u8>,
     open: Vec<u32>,
-    found: Family,
+    /// Each tetrahedralization found, as candidate ids ascending: `false` ends the search.
+    visit: &'a mut dyn FnMut(&[u16]) -> bool,
+    count: usize,
     limit: usize,
     states: u64,
     ctl: &'a Control,
@@ -80,13 +84,32 @@ const NONE: u8 = u8::MAX;
 /// Every tetrahedralization, or the first `limit`, starting from the candidates `start`
 /// that hold the anchor.
 pub(super) fn enumerate(c: &Candidates, start: &[u16], limit: usize, ctl: &Control) -> Found {
+    let mut all = Family::default();
+    let mut keep = |t: &[u16]| {
+        all.push(t);
+        true
+    };
+    let (cut, states) = visit(c, start, limit, ctl, &mut keep);
+    Found { all, cut, states }
+}
+
+/// Each tetrahedralization (at most `limit`) handed to `each` as it is found, until it
+/// returns `false`: why the search ended early, if it did, and the states visited.
+pub(super) fn visit(
+    c: &Candidates,
+    start: &[u16],
+    limit: usize,
+    ctl: &Control,
+    each: &mut dyn FnMut(&[u16]) -> bool,
+) -> (Option<Cut>, u64) {
     let mut s = Search {
         c,
         allowed: vec![vec![u64::MAX; c.words]],
         chosen: Vec::new(),
         need: vec![NONE; c.faces.len()],
         open: Vec::new(),
-        found: Family::default(),
+        visit: each,
+        count: 0,
         limit,
         states: 0,
         ctl,
@@ -100,11 +123,7 @@ pub(super) fn enumerate(c: &Candidates, start: &[u16], limit: usize, ctl: &Contr
             break;
         }
     }
-    Found {
-        all: s.found,
-        cut: s.cut,
-        states: s.states,
-    }
+    (s.cut, s.states)
 }
 
 impl Search<'_> {
@@ -120,8 +139,10 @@ impl Search<'_> {
         let Some(face) = face else {
             let mut t = self.chosen.clone();
             t.sort_unstable();
-            self.found.push(&t);
-            if self.found.len() >= self.limit {
+            self.count += 1;
+            if !(self.visit)(&t) {
+                self.cut = Some(Cut::Done);
+            } else if self.count >= self.limit {
                 self.cut = Some(Cut::Limit);
             }
             return;

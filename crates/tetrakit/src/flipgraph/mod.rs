@@ -283,12 +283,42 @@ pub fn tetrahedralizations(
     Ok(enumerated(points, limit, ctl)?.0)
 }
 
-/// [`tetrahedralizations`], and the candidates the flips are computed on.
-fn enumerated(
+/// Each tetrahedralization of `points` that uses every point, handed to `each` (its
+/// tetrahedra, positively oriented) as the enumeration finds it, until `each` returns
+/// `false` (then [`Cut::Done`]) or `limit` were found; nothing is kept, so a count takes
+/// no memory. Why it ended early, if it did, and how many were handed.
+///
+/// ```
+/// use tetrakit::control::Control;
+/// use tetrakit::flipgraph::{Cut, for_each_tetrahedralization};
+/// let cube: Vec<[f64; 3]> = (0..8).map(|i| [(i & 1) as f64, (i >> 1 & 1) as f64, (i >> 2) as f64]).collect();
+/// let all = for_each_tetrahedralization(&cube, usize::MAX, &Control::new(), |_| true).unwrap();
+/// assert_eq!(all, (None, 74));
+/// let five = for_each_tetrahedralization(&cube, usize::MAX, &Control::new(), |t| t.len() != 5);
+/// assert_eq!(five.unwrap().0, Some(Cut::Done)); // stopped at the first of five tetrahedra
+/// ```
+pub fn for_each_tetrahedralization(
     points: &[Point3],
     limit: usize,
     ctl: &Control,
-) -> Result<(Enumeration, candidates::Candidates), FlipError> {
+    mut each: impl FnMut(Vec<[u32; 4]>) -> bool,
+) -> Result<(Option<Cut>, usize), FlipError> {
+    let (c, start) = prepared(points, ctl)?;
+    let tets: Vec<[u32; 4]> = c.tets.iter().map(|&t| oriented(points, t)).collect();
+    let mut count = 0;
+    let mut visit = |ids: &[u16]| {
+        count += 1;
+        each(ids.iter().map(|&t| tets[t as usize]).collect())
+    };
+    let (cut, _) = enumerate::visit(&c, &start, limit.max(1), ctl, &mut visit);
+    Ok((cut, count))
+}
+
+/// The candidates of `points` and those that hold the anchor (where every search starts).
+fn prepared(
+    points: &[Point3],
+    ctl: &Control,
+) -> Result<(candidates::Candidates, Vec<u16>), FlipError> {
     solid_set(points).map_err(FlipError::Set)?;
     ctl.stage("empty tetrahedra");
     let c = candidates::candidates(points)?;
@@ -299,6 +329,16 @@ fn enumerated(
         .map(|t| t as u16)
         .collect();
     ctl.stage("tetrahedralizations");
+    Ok((c, start))
+}
+
+/// [`tetrahedralizations`], and the candidates the flips are computed on.
+fn enumerated(
+    points: &[Point3],
+    limit: usize,
+    ctl: &Control,
+) -> Result<(Enumeration, candidates::Candidates), FlipError> {
+    let (c, start) = prepared(points, ctl)?;
     let found = enumerate::enumerate(&c, &start, limit.max(1), ctl);
     let tets: Vec<[u32; 4]> = c.tets.iter().map(|&t| oriented(points, t)).collect();
     certify(points, &tets, &found.all)?;
