@@ -3,6 +3,26 @@
 mod common;
 use common::*;
 
+/// `from`, a Gmsh 2.2 ASCII mesh, written to `to` with its first (or, with `last`, its
+/// last) tetrahedron turned inside out (its last two nodes swapped): that element line's
+/// fields.
+fn turned_inside_out(from: &Path, to: &Path, last: bool) -> Vec<String> {
+    let text = std::fs::read_to_string(from).unwrap();
+    let mut lines: Vec<String> = text.lines().map(String::from).collect();
+    let tet = |l: &String| l.split(' ').nth(1) == Some("4");
+    let k = match last {
+        true => lines.iter().rposition(tet),
+        false => lines.iter().position(tet),
+    }
+    .unwrap();
+    let mut f: Vec<String> = lines[k].split(' ').map(String::from).collect();
+    let n = f.len();
+    f.swap(n - 1, n - 2);
+    lines[k] = f.join(" ");
+    std::fs::write(to, lines.join("\n")).unwrap();
+    f
+}
+
 #[test]
 fn check_valid_and_overlapping_meshes() {
     let d = dir("check");
@@ -245,18 +265,8 @@ fn gmsh_meshes_read_with_one_verdict() {
         "{counts:?}"
     );
     // Turn the first tetrahedron of the 2.2 file inside out: swap its last two nodes.
-    let text = std::fs::read_to_string(d.join("b22.msh")).unwrap();
-    let mut lines: Vec<String> = text.lines().map(String::from).collect();
-    let k = lines
-        .iter()
-        .position(|l| l.split(' ').nth(1) == Some("4"))
-        .unwrap();
-    let mut f: Vec<&str> = lines[k].split(' ').collect();
-    let n = f.len();
-    f.swap(n - 1, n - 2);
-    let tag = f[0].to_string();
-    lines[k] = f.join(" ");
-    std::fs::write(d.join("bad.msh"), lines.join("\n")).unwrap();
+    let f = turned_inside_out(&d.join("b22.msh"), &d.join("bad.msh"), false);
+    let tag = f[0].clone();
     let o = run(&["check", s(&d.join("bad.msh")), "--json"]);
     assert_eq!(o.status.code(), Some(1));
     let w = json(&o)["witness"].clone();
@@ -350,18 +360,8 @@ fn gmsh_partitioned_meshes_are_read_in_pieces() {
         "{err}"
     );
     // Turn a tetrahedron of the partitioned 2.2 file inside out.
-    let text = std::fs::read_to_string(d.join("p22.msh")).unwrap();
-    let mut lines: Vec<String> = text.lines().map(String::from).collect();
-    let k = lines
-        .iter()
-        .rposition(|l| l.split(' ').nth(1) == Some("4"))
-        .unwrap();
-    let mut f: Vec<&str> = lines[k].split(' ').collect();
-    let n = f.len();
-    f.swap(n - 1, n - 2);
-    let (tag, partition) = (f[0].to_string(), f[6].parse::<u64>().unwrap());
-    lines[k] = f.join(" ");
-    std::fs::write(d.join("bad.msh"), lines.join("\n")).unwrap();
+    let f = turned_inside_out(&d.join("p22.msh"), &d.join("bad.msh"), true);
+    let (tag, partition) = (f[0].clone(), f[6].parse::<u64>().unwrap());
     let o = run(&["check", s(&d.join("bad.msh")), "--json"]);
     assert_eq!(o.status.code(), Some(1));
     let j = json(&o);

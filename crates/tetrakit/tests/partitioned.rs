@@ -333,21 +333,38 @@ fn checking_part_by_part_is_checking_the_merged_mesh() {
     }
 }
 
-/// What `tetrakit check X.pvtu` says: the merged mesh checked part by part, in the
-/// file's numbering.
-fn cli_check(path: &Path, opts: CheckOptions) -> tetrakit::mesh::CheckOutcome {
+/// The mesh partitioned by `piece_of` written to `path` (a `.pvtu`), its points with
+/// global ids or without.
+fn written(path: &Path, points: &[Point3], tets: &[[u32; 4]], piece_of: &[u32], ids: bool) {
+    let global: Vec<i32> = (0..points.len() as i32).collect();
+    write_pieces(path, points, tets, piece_of, ids.then_some(&global[..])).unwrap();
+}
+
+/// The `.pvtu` at `path` read as `tetrakit check` reads it and checked part by part, the
+/// problems in the merged mesh's numbering.
+fn merged_check(
+    path: &Path,
+    opts: CheckOptions,
+) -> (tetrakit::io::Input, tetrakit::mesh::CheckOutcome) {
     let read = ReadOptions {
         mesh: true,
         ..Default::default()
     };
     let input = read_input_with(path, read).unwrap();
     let first: Vec<u32> = input.pieces.iter().map(|p| p.first_tet).collect();
-    tetrakit::mesh::check_pieces(&input.points, input.tets.clone(), &first, opts)
-        .with_problems(input.interface_problems())
-        .relabeled(
-            |v| input.point_label(v as usize),
-            |t| input.tet_label(t as usize),
-        )
+    let o = tetrakit::mesh::check_pieces(&input.points, input.tets.clone(), &first, opts)
+        .with_problems(input.interface_problems());
+    (input, o)
+}
+
+/// What `tetrakit check X.pvtu` says: the merged mesh checked part by part, in the
+/// file's numbering.
+fn cli_check(path: &Path, opts: CheckOptions) -> tetrakit::mesh::CheckOutcome {
+    let (input, o) = merged_check(path, opts);
+    o.relabeled(
+        |v| input.point_label(v as usize),
+        |t| input.tet_label(t as usize),
+    )
 }
 
 /// Checked by 1 to 5 ranks that each read only their pieces and exchange messages
@@ -366,16 +383,7 @@ fn ranks_check_as_the_merged_mesh() {
         let [slabs, random] = partitions(&points, &tets, k, &mut rng);
         for (how, piece_of) in [slabs, random].iter().enumerate() {
             let path = d.join(format!("r{round}_{how}.pvtu"));
-            let ids: Vec<i32> = (0..points.len() as i32).collect();
-            let with_ids = (round / 2) % 2 == 0;
-            write_pieces(
-                &path,
-                &points,
-                &tets,
-                piece_of,
-                with_ids.then_some(&ids[..]),
-            )
-            .unwrap();
+            written(&path, &points, &tets, piece_of, (round / 2) % 2 == 0);
             let opts = match round % 4 {
                 1 => CheckOptions {
                     convex: true,
@@ -528,29 +536,13 @@ fn ranks_write_the_pieces_check_writes() {
         let [slabs, random] = partitions(&points, &tets, k, &mut rng);
         let piece_of = if round % 2 == 0 { slabs } else { random };
         let path = d.join(format!("w{round}.pvtu"));
-        let ids: Vec<i32> = (0..points.len() as i32).collect();
-        let with_ids = (round / 2) % 2 == 0;
-        write_pieces(
-            &path,
-            &points,
-            &tets,
-            &piece_of,
-            with_ids.then_some(&ids[..]),
-        )
-        .unwrap();
+        written(&path, &points, &tets, &piece_of, (round / 2) % 2 == 0);
         let opts = CheckOptions {
             reorient: round % 3 == 1,
             manifold: round % 5 == 2,
             ..Default::default()
         };
-        let read = ReadOptions {
-            mesh: true,
-            ..Default::default()
-        };
-        let input = read_input_with(&path, read).unwrap();
-        let first: Vec<u32> = input.pieces.iter().map(|p| p.first_tet).collect();
-        let want = tetrakit::mesh::check_pieces(&input.points, input.tets.clone(), &first, opts)
-            .with_problems(input.interface_problems());
+        let (input, want) = merged_check(&path, opts);
         let one = d.join(format!("one{round}.pvtu"));
         tetrakit::io::write_check_output(&one, &input, &want).unwrap();
         marked += usize::from(want.cell_problems.iter().any(|&c| c != 0));
