@@ -3,7 +3,7 @@
 use crate::exit::{CmdResult, Verdict};
 use std::time::Instant;
 use tetrakit::control::Control;
-use tetrakit::detect::{Cells, Options, Route, detect};
+use tetrakit::detect::{Answer, Cells, Options, Route, detect};
 use tetrakit::generate::{self, Corruption};
 use tetrakit::mesh::Tetrahedralization;
 
@@ -12,8 +12,8 @@ fn verdict(name: &str, t: &Tetrahedralization, edges: &[[u32; 2]]) {
     let d = detect(&t.points, edges, &Options::default(), &Control::new())
         .expect("generated input is well-formed");
     let ms = start.elapsed().as_secs_f64() * 1e3;
-    match &d.result {
-        Ok(Cells::Tetrahedra(tets)) => out!(
+    match &d.answer {
+        Answer::Yes(Cells::Tetrahedra(tets)) => out!(
             "  {name}: YES, {} segments on {} points form a tetrahedralization with {} tetrahedra ({}) [{ms:.1} ms]",
             edges.len(),
             t.points.len(),
@@ -24,15 +24,16 @@ fn verdict(name: &str, t: &Tetrahedralization, edges: &[[u32; 2]]) {
                 Route::Links => "every one found from all four of its vertices, certified",
             }
         ),
-        Ok(Cells::Triangles(tris)) => out!(
+        Answer::Yes(Cells::Triangles(tris)) => out!(
             "  {name}: YES, a planar triangulation with {} triangles [{ms:.1} ms]",
             tris.len()
         ),
-        Err(w) => out!(
+        Answer::No(w) => out!(
             "  {name}: NO [{ms:.1} ms]\n      witness {}: {}",
             w.kind,
             w.detail
         ),
+        Answer::Undecided => out!("  {name}: UNDECIDED [{ms:.1} ms]"),
     }
 }
 
@@ -516,8 +517,8 @@ fn planar_section() {
     // (tests pin 400 and 420); `tetrakit keil --beta 1.16` uses Lemma 5.8's n instead.
     for (b, n) in [("1.1548", None), ("1.16", Some(420))] {
         let start = Instant::now();
-        match planar::keil(b.parse().expect("a ratio"), n, &ctl) {
-            Ok(k) => {
+        match planar::keil(b.parse().expect("a ratio"), n, &ctl).map(|k| k.decided()) {
+            Ok(Some(k)) => {
                 let svg = std::env::temp_dir().join(format!("tetrakit-keil-{b}.svg"));
                 let picture = match std::fs::write(&svg, tetrakit::report::keil_svg(&k)) {
                     Ok(()) => format!("picture: {}", svg.display()),
@@ -543,6 +544,7 @@ fn planar_section() {
                     start.elapsed().as_secs_f64() * 1e3
                 );
             }
+            Ok(None) => out!("  Keil construction at β = {b}: undecided"),
             Err(e) => out!("  Keil construction at β = {b}: {e}"),
         }
     }

@@ -91,7 +91,7 @@ enum Cmd {
 }
 
 #[derive(Args)]
-struct DetectArgs {
+pub(crate) struct DetectArgs {
     /// X.edge (with X.node beside it), X.ele (its tetrahedra's edges are used), .obj with
     /// `v`/`l` lines, or .json.
     input: PathBuf,
@@ -109,6 +109,9 @@ struct DetectArgs {
     /// verdict never depends on it).
     #[arg(long)]
     links_only: bool,
+    /// Give up after this many seconds (exit 3, verdict "undecided").
+    #[arg(long, value_parser = seconds)]
+    time_limit: Option<Duration>,
 }
 
 #[derive(Args)]
@@ -372,9 +375,13 @@ struct SkeletonArgs {
     /// Print one JSON object on stdout.
     #[arg(long)]
     json: bool,
-    /// Write the edges: .json, .edge (with .node) or .svg.
+    /// Write the edges: .json, .edge (with .node) or .svg (not written when stopped).
     #[arg(long)]
     output: Option<PathBuf>,
+    /// Give up after this many seconds (β < 1: exit 3, verdict "undecided", with the
+    /// edges found so far counted).
+    #[arg(long, value_parser = seconds)]
+    time_limit: Option<Duration>,
 }
 
 #[derive(Args)]
@@ -425,6 +432,10 @@ struct KeilCliArgs {
     /// Check β-skeleton ⊆ MWT on this many random point sets instead.
     #[arg(long)]
     check_random: Option<usize>,
+    /// Give up on the construction's optima after this many seconds (exit 3, verdict
+    /// "undecided", with the sites and the skeleton test; no picture).
+    #[arg(long, value_parser = seconds, conflicts_with = "check_random")]
+    time_limit: Option<Duration>,
 }
 
 #[derive(Args)]
@@ -839,15 +850,7 @@ fn in_threads(work: impl FnOnce() -> CmdResult + Send) -> CmdResult {
 /// Runs one command.
 fn run(cmd: Cmd) -> CmdResult {
     match cmd {
-        Cmd::Detect(a) => run::detect(
-            &a.input,
-            a.json,
-            a.output.as_deref(),
-            tetrakit::detect::Options {
-                delaunay_first: !a.links_only,
-                links: a.links,
-            },
-        ),
+        Cmd::Detect(a) => run::detect(&a),
         Cmd::Check(a) => run::check(&a),
         Cmd::Mintetra(a) => poly::mintetra(&a.input, a.json, a.output.as_deref(), a.confirm),
         Cmd::Tetrahedralize(a) if a.hamiltonian => {
@@ -870,7 +873,16 @@ fn run(cmd: Cmd) -> CmdResult {
             &a.decide,
         ),
         Cmd::Skeleton(a) => {
-            planar::skeleton(&a.input, a.xy, &a.beta, a.lune, a.json, a.output.as_deref())
+            let output = a.output.as_deref();
+            planar::skeleton(
+                &a.input,
+                a.xy,
+                &a.beta,
+                a.lune,
+                a.json,
+                output,
+                a.time_limit,
+            )
         }
         Cmd::Mwt(a) => planar::mwt(planar::MwtArgs {
             input: &a.input,
@@ -886,6 +898,7 @@ fn run(cmd: Cmd) -> CmdResult {
             svg: a.svg.as_deref(),
             output: a.output.as_deref(),
             check_random: a.check_random,
+            time_limit: a.time_limit,
         }),
         Cmd::Flips(a) => flips::flips(flips::FlipsArgs {
             input: &a.input,

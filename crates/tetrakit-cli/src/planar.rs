@@ -5,7 +5,7 @@ use crate::progress::Run;
 use std::path::Path;
 use std::time::{Duration, Instant};
 use tetrakit::geom::{Point2, Ratio};
-use tetrakit::planar::{self, Distribution, MwtOutcome, Region};
+use tetrakit::planar::{self, Distribution, KeilOutcome, MwtOutcome, Region};
 use tetrakit::{io, report};
 
 /// Reads planar points and their heights. Without `xy` every z must be 0; with it the
@@ -50,6 +50,7 @@ pub fn skeleton(
     lune: bool,
     as_json: bool,
     output: Option<&Path>,
+    time_limit: Option<Duration>,
 ) -> CmdResult {
     let start = Instant::now();
     let beta = parse_beta(beta)?;
@@ -60,7 +61,7 @@ pub fn skeleton(
     // Below β = 1 each site's search may reach far: a bar from a few thousand sites.
     let below_one = beta.cmp_one() == std::cmp::Ordering::Less;
     let run = Run::new(
-        None,
+        time_limit,
         points.len(),
         if below_one { 5_000 } else { usize::MAX },
     );
@@ -68,7 +69,7 @@ pub fn skeleton(
     let sk = planar::beta_skeleton(&points, beta, region, &run.ctl).map_err(CliError::new)?;
     drop(run);
     let algorithm = t.elapsed().as_secs_f64();
-    if let Some(out) = output {
+    if let Some(out) = output.filter(|_| sk.complete) {
         io::write_planar_edges(out, &points, &sk.edges).written(out)?;
     }
     let n = points.len();
@@ -82,7 +83,10 @@ pub fn skeleton(
     } else {
         out!("{}", report::skeleton_text(&sk, beta, region, n, algorithm));
     }
-    Ok(Verdict::Yes)
+    Ok(match sk.complete {
+        true => Verdict::Yes,
+        false => Verdict::Undecided,
+    })
 }
 
 /// What `tetrakit mwt` was asked.
@@ -148,6 +152,7 @@ pub struct KeilArgs<'a> {
     pub svg: Option<&'a Path>,
     pub output: Option<&'a Path>,
     pub check_random: Option<usize>,
+    pub time_limit: Option<Duration>,
 }
 
 pub fn keil(a: KeilArgs) -> CmdResult {
@@ -161,30 +166,37 @@ pub fn keil(a: KeilArgs) -> CmdResult {
     if let Some(sets) = a.check_random {
         return check_random(beta, sets, a.n.unwrap_or(200), a.as_json, start);
     }
-    let run = Run::new(None, 0, 1);
-    let k = planar::keil(beta, a.n, &run.ctl).map_err(CliError::new)?;
+    let run = Run::new(a.time_limit, 0, 1);
+    let outcome = planar::keil(beta, a.n, &run.ctl).map_err(CliError::new)?;
     drop(run);
-    if let Some(path) = a.svg {
-        std::fs::write(path, tetrakit::report::keil_svg(&k)).written(path)?;
+    let (sites, verdict) = match &outcome {
+        KeilOutcome::Decided(k) => (&k.sites, Verdict::Yes),
+        KeilOutcome::Undecided(s) => (&s.sites, Verdict::Undecided),
+    };
+    if let (Some(path), KeilOutcome::Decided(k)) = (a.svg, &outcome) {
+        std::fs::write(path, tetrakit::report::keil_svg(k)).written(path)?;
     }
     if let Some(path) = a.output {
-        io::write_points2d(path, &k.sites).written(path)?;
+        io::write_points2d(path, sites).written(path)?;
     }
     if a.as_json {
         let shown = |p: Option<&Path>| p.map(|p| p.display().to_string());
         let extra = [
             ("output", shown(a.output).into()),
-            ("svg", shown(a.svg).into()),
+            (
+                "svg",
+                shown(a.svg.filter(|_| verdict == Verdict::Yes)).into(),
+            ),
             ("seconds", start.elapsed().as_secs_f64().into()),
         ];
-        out!("{}", report::keil_json(&k, extra));
+        out!("{}", report::keil_json(&outcome, extra));
     } else {
-        out!("{}", report::keil_text(&k));
-        if let Some(p) = a.svg {
+        out!("{}", report::keil_text(&outcome));
+        if let Some(p) = a.svg.filter(|_| verdict == Verdict::Yes) {
             out!("  picture: {}", p.display());
         }
     }
-    Ok(Verdict::Yes)
+    Ok(verdict)
 }
 
 fn check_random(beta: Ratio, sets: usize, n: usize, as_json: bool, start: Instant) -> CmdResult {

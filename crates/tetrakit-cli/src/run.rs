@@ -3,14 +3,19 @@
 use crate::exit::{CliError, CmdResult, Verdict, WriteContext};
 use crate::progress::Run;
 use crate::{CorruptKind, GenCommon, GenKind};
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::time::Instant;
 use tetrakit::detect::{Cells, Options};
 use tetrakit::generate::{self, Corruption};
 use tetrakit::io;
 use tetrakit::mesh::{self, Tetrahedralization};
 
-pub fn detect(path: &Path, as_json: bool, output: Option<&Path>, opts: Options) -> CmdResult {
+pub fn detect(a: &crate::DetectArgs) -> CmdResult {
+    let (path, as_json, output) = (a.input.as_path(), a.json, a.output.as_deref());
+    let opts = Options {
+        delaunay_first: !a.links_only,
+        links: a.links,
+    };
     let start = Instant::now();
     let input = io::read_input(path)?;
     let parsed = start.elapsed().as_secs_f64();
@@ -41,12 +46,12 @@ pub fn detect(path: &Path, as_json: bool, output: Option<&Path>, opts: Options) 
             "no segments to test (give an .edge file, OBJ 'l' lines or JSON \"segments\")",
         ));
     };
-    let run = Run::new(None, input.points.len(), 50_000);
+    let run = Run::new(a.time_limit, input.points.len(), 50_000);
     let d = tetrakit::detect::detect(&input.points, &segments, &opts, &run.ctl)
         .map_err(|e| CliError::at(path, e))?;
     drop(run);
     let seconds = start.elapsed().as_secs_f64();
-    if let (Some(out), Ok(cells)) = (output, &d.result) {
+    if let (Some(out), Some(cells)) = (output, d.answer.cells()) {
         match cells {
             Cells::Tetrahedra(t) => io::write_mesh(out, &input.points, t, input.index_base),
             Cells::Triangles(t) => io::write_triangulation(out, &input.points, t),
@@ -64,7 +69,7 @@ pub fn detect(path: &Path, as_json: bool, output: Option<&Path>, opts: Options) 
         let text = tetrakit::report::detect_text(&d, label, from_tets, seconds);
         out!("{}", text.trim_end());
     }
-    Ok(Verdict::from(d.is_yes()))
+    Ok(d.verdict())
 }
 
 pub fn check(a: &crate::CheckArgs) -> CmdResult {

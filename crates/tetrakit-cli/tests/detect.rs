@@ -27,6 +27,48 @@ fn generate_then_detect_yes_with_json_fields() {
     assert!(vtk.contains("CELL_TYPES 162"));
 }
 
+/// A time limit reached before the answer is UNDECIDED (exit 3) with the counts known,
+/// and nothing written; a generous one answers.
+#[test]
+fn a_time_limit_leaves_detect_undecided() {
+    let d = dir("limit");
+    let ele = d.join("k.ele");
+    assert!(
+        run(&["generate", "kuhn", "--size", "4", "-o", s(&ele)])
+            .status
+            .success()
+    );
+    let (edge, out) = (d.join("k.edge"), d.join("t.vtk"));
+    let o = run(&[
+        "detect",
+        s(&edge),
+        "--links-only",
+        "--time-limit",
+        "0",
+        "--json",
+        "--output",
+        s(&out),
+    ]);
+    assert_eq!(o.status.code(), Some(3));
+    let v = json(&o);
+    assert_eq!(
+        (v["verdict"].as_str(), v["vertices"].as_u64()),
+        (Some("undecided"), Some(125))
+    );
+    assert!(v.get("witness").is_none() && v.get("tetrahedra").is_none() && !out.exists());
+    let o = run(&["detect", s(&edge), "--links-only", "--time-limit", "0"]);
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        text.starts_with("UNDECIDED: stopped at the time limit"),
+        "{text}"
+    );
+    let o = run(&["detect", s(&edge), "--time-limit", "600", "--json"]);
+    assert_eq!(
+        (o.status.code(), json(&o)["verdict"].as_str()),
+        (Some(0), Some("yes"))
+    );
+}
+
 /// Both link methods give the same verdicts and tetrahedra on skew lines (huge links),
 /// valid and corrupted; an unknown method is a usage error.
 #[test]

@@ -58,6 +58,101 @@ fn mwt_time_limit_gives_exit_3_with_bounds() {
     assert_eq!(json(&o)["verdict"], "yes");
 }
 
+/// `skeleton` and `keil` out of time: exit 3, verdict undecided with what is known (the
+/// edges found so far; the sites and the skeleton test), nothing but the sites written.
+#[test]
+fn skeleton_and_keil_time_limits_are_undecided() {
+    let d = dir("limits");
+    let p = d.join("u.xyz");
+    assert!(
+        run(&["generate", "points2d", "--n", "3000", "--output", s(&p)])
+            .status
+            .success()
+    );
+    let out = d.join("e.json");
+    let o = run(&[
+        "skeleton",
+        s(&p),
+        "--beta",
+        "0.5",
+        "--time-limit",
+        "0",
+        "--json",
+        "--output",
+        s(&out),
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(3),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let v = json(&o);
+    assert_eq!(
+        (v["verdict"].as_str(), v["vertices"].as_u64()),
+        (Some("undecided"), Some(3000))
+    );
+    assert!(!out.exists());
+    let o = run(&[
+        "skeleton",
+        s(&p),
+        "--beta",
+        "0.5",
+        "--time-limit",
+        "600",
+        "--json",
+    ]);
+    assert_eq!(
+        (o.status.code(), json(&o)["verdict"].as_str()),
+        (Some(0), Some("yes"))
+    );
+    assert!(json(&o)["edges"].as_u64().unwrap() > v["edges"].as_u64().unwrap());
+    let (svg, sites) = (d.join("k.svg"), d.join("k.xyz"));
+    let args = [
+        "keil",
+        "--beta",
+        "1.16",
+        "--time-limit",
+        "0",
+        "--svg",
+        s(&svg),
+        "-o",
+        s(&sites),
+    ];
+    let o = run(&[&args[..], &["--json"]].concat());
+    assert_eq!(
+        o.status.code(),
+        Some(3),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let v = json(&o);
+    assert_eq!(
+        (v["verdict"].as_str(), v["xy_in_skeleton"].as_bool()),
+        (Some("undecided"), Some(true))
+    );
+    assert!(v.get("xy_in_mwt").is_none() && v["svg"].is_null() && !svg.exists());
+    assert_eq!(
+        std::fs::read_to_string(&sites).unwrap().lines().count(),
+        2906
+    );
+    let text = String::from_utf8_lossy(&run(&args).stdout).into_owned();
+    assert!(
+        text.starts_with("UNDECIDED: stopped at the time limit"),
+        "{text}"
+    );
+    let o = run(&[
+        "keil",
+        "--beta",
+        "1.16",
+        "--check-random",
+        "2",
+        "--time-limit",
+        "1",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+}
+
 #[test]
 fn planar_commands_json_fields_outputs_and_bad_input() {
     let d = dir("planar");

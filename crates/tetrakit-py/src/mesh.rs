@@ -87,28 +87,31 @@ pub fn read<'py>(
     ))
 }
 
-/// `detect(points, segments)`: the verdict as JSON and the cells of a YES (tetrahedra,
-/// or triangles for coplanar points; an empty `(0, 4)` array for a NO).
+/// `detect(points, segments, time_limit)`: the verdict as JSON and the cells of a YES
+/// (tetrahedra, or triangles for coplanar points; an empty `(0, 4)` array for a NO or
+/// when out of time).
 #[pyfunction]
+#[pyo3(signature = (points, segments, time_limit=None))]
 pub fn detect<'py>(
     py: Python<'py>,
     points: PyReadonlyArray2<'py, f64>,
     segments: PyReadonlyArray2<'py, i64>,
+    time_limit: Option<f64>,
 ) -> PyResult<(Json, Bound<'py, PyArray2<i64>>)> {
     let input = convert::with_segments(&points, &segments)?;
     if input.segments.is_empty() {
         return Err(value_error("no segments to test"));
     }
-    let ctl = tetrakit::control::Control::new();
+    let ctl = convert::control(time_limit)?;
     let d = convert::run(py, &ctl, || {
         tetrakit::detect::detect(&input.points, &input.segments, &Options::default(), &ctl)
     })?
     .map_err(value_error)?;
     let v = tetrakit::report::detect_json(&d, |v| v, []);
-    let cells = match &d.result {
-        Ok(Cells::Tetrahedra(t)) => array(py, t),
-        Ok(Cells::Triangles(t)) => array(py, t),
-        Err(_) => array::<4>(py, &[]),
+    let cells = match d.answer.cells() {
+        Some(Cells::Tetrahedra(t)) => array(py, t),
+        Some(Cells::Triangles(t)) => array(py, t),
+        None => array::<4>(py, &[]),
     };
     Ok((v.to_string(), cells))
 }

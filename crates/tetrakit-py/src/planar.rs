@@ -3,9 +3,8 @@
 use crate::convert::{self, Json, array, point_array, value_error};
 use numpy::{PyArray2, PyReadonlyArray2};
 use pyo3::prelude::*;
-use tetrakit::control::Control;
 use tetrakit::geom::{Point2, Ratio};
-use tetrakit::planar::{self, MwtOutcome, Region};
+use tetrakit::planar::{self, KeilOutcome, MwtOutcome, Region};
 use tetrakit::report;
 
 /// Planar sites from an `(n, 2)` array (or `(n, 3)` with every z = 0), checked as a
@@ -28,18 +27,20 @@ fn beta(text: &str) -> PyResult<Ratio> {
         .map_err(|e| value_error(format!("beta: {e}")))
 }
 
-/// `skeleton(points, beta, lune)`: the exact β-skeleton's JSON and its edges.
+/// `skeleton(points, beta, lune, time_limit)`: the exact β-skeleton's JSON and its edges
+/// (out of time, `undecided` with the edges found so far).
 #[pyfunction]
-#[pyo3(signature = (points, beta_text, lune=false))]
+#[pyo3(signature = (points, beta_text, lune=false, time_limit=None))]
 pub fn skeleton<'py>(
     py: Python<'py>,
     points: PyReadonlyArray2<'py, f64>,
     beta_text: &str,
     lune: bool,
+    time_limit: Option<f64>,
 ) -> PyResult<(Json, Bound<'py, PyArray2<i64>>)> {
     let (pts, b) = (sites(&points)?, beta(beta_text)?);
     let region = if lune { Region::Lune } else { Region::Circle };
-    let ctl = Control::new();
+    let ctl = convert::control(time_limit)?;
     let sk = convert::run(py, &ctl, || planar::beta_skeleton(&pts, b, region, &ctl))?
         .map_err(value_error)?;
     let v = report::skeleton_json(&sk, b, region, pts.len(), []);
@@ -69,22 +70,28 @@ pub fn mwt<'py>(
     Ok((v.to_string(), array(py, edges), array(py, triangles)))
 }
 
-/// `keil(beta, n)`: the §5.2 construction's exact verdicts as JSON, and its sites.
+/// `keil(beta, n, time_limit)`: the §5.2 construction's exact verdicts as JSON, and its
+/// sites (out of time, `undecided` with the sites and the skeleton test).
 #[pyfunction]
-#[pyo3(signature = (beta_text, n=None))]
+#[pyo3(signature = (beta_text, n=None, time_limit=None))]
 pub fn keil<'py>(
     py: Python<'py>,
     beta_text: &str,
     n: Option<usize>,
+    time_limit: Option<f64>,
 ) -> PyResult<(Json, Bound<'py, PyArray2<f64>>)> {
     let b = beta(beta_text)?;
     if n == Some(0) {
         return Err(value_error("n = 0: at least one site per arc"));
     }
-    let ctl = Control::new();
+    let ctl = convert::control(time_limit)?;
     let k = convert::run(py, &ctl, || planar::keil(b, n, &ctl))?.map_err(value_error)?;
+    let sites = match &k {
+        KeilOutcome::Decided(k) => &k.sites,
+        KeilOutcome::Undecided(s) => &s.sites,
+    };
     Ok((
         report::keil_json(&k, []).to_string(),
-        point_array(py, &k.sites),
+        point_array(py, sites),
     ))
 }

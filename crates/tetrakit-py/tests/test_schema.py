@@ -95,6 +95,17 @@ def test_detect_json_follows_the_schema(tmp_path, case):
     assert {k: out[k] for k in shared} == {k: fields(result, s)[k] for k in shared}
 
 
+def test_an_undecided_detect_follows_the_schema(tmp_path):
+    ele = tmp_path / "k.ele"
+    subprocess.run([str(EXE), "generate", "kuhn", "--size", "4", "-o", str(ele)], check=True)
+    out = subprocess.run([str(EXE), "detect", str(ele.with_suffix(".edge")), "--links-only",
+                          "--time-limit", "0", "--json"], capture_output=True, text=True)
+    assert out.returncode == 3, out.stderr
+    got = json.loads(out.stdout)
+    jsonschema.validate(got, schema("detect"))
+    assert got["verdict"] == "undecided"
+
+
 @pytest.mark.parametrize("corrupt", [None, "add-overlap"])
 def test_partitioned_check_json_follows_the_schema(tmp_path, corrupt):
     path = tmp_path / "k.pvtu"
@@ -303,6 +314,23 @@ def test_keil_json_follows_the_schema():
     jsonschema.validate(cli, s)
     same_fields(cli, result, construction, {"seconds", "output", "svg"})
     jsonschema.validate(cli_json("keil", "--beta", "1.2", "--check-random", "3", "--n", "30"), s)
+
+
+def test_stopped_keil_and_skeleton_follow_the_schema(tmp_path):
+    s = schema("keil")
+    result = tetrakit.keil("1.16", time_limit=0)
+    assert result.verdict == "undecided" and result.xy_in_mwt is None
+    jsonschema.validate(fields(result, s["oneOf"][0]), s)  # the None fields left out
+    s = schema("skeleton")
+    rng = np.random.default_rng(3)
+    result = tetrakit.skeleton(rng.random((3000, 2)), "1/2", time_limit=0)
+    assert result.verdict == "undecided"
+    jsonschema.validate(fields(result, s), s)
+    s = schema("detect")
+    grid = np.array([[x, y, z] for x in range(5) for y in range(5) for z in range(5)], float)
+    edges = np.array([[a, b] for a in range(125) for b in range(a + 1, 125)][:2000])
+    result = tetrakit.detect(grid, edges, time_limit=0)
+    jsonschema.validate(fields(result, s), s)
 
 
 def test_reduce_json_follows_the_schema(tmp_path):

@@ -5,7 +5,7 @@
 
 use tetrakit::control::Control;
 use tetrakit::detect::{
-    Cells, LinkMethod, Options, WitnessKind, detect, oracle::forms_tetrahedralization,
+    Answer, Cells, LinkMethod, Options, WitnessKind, detect, oracle::forms_tetrahedralization,
 };
 use tetrakit::generate::{cospherical_points, random_flips, random_points, tetrahedralize_points};
 use tetrakit::geom::{Hull3, Point3, orient2d, point_in_segment_interior, segments_meet};
@@ -46,10 +46,10 @@ fn check_method(points: &[Point3], edges: &[[u32; 2]], expected: bool, opts: Opt
         d.is_yes(),
         expected,
         "{what}: detect says {:?}\npoints {points:?}\nedges {edges:?}",
-        d.result.as_ref().err()
+        d.answer.witness()
     );
-    match &d.result {
-        Ok(Cells::Tetrahedra(t)) => {
+    match &d.answer {
+        Answer::Yes(Cells::Tetrahedra(t)) => {
             let hull = Hull3::new(points);
             let nb = (0..points.len()).filter(|&i| hull.on_boundary(i)).count();
             assert_eq!(
@@ -58,14 +58,15 @@ fn check_method(points: &[Point3], edges: &[[u32; 2]], expected: bool, opts: Opt
                 "{what}: Euler count"
             );
         }
-        Ok(Cells::Triangles(t)) => {
+        Answer::Yes(Cells::Triangles(t)) => {
             assert_eq!(
                 t.len(),
                 edges.len() + 1 - points.len(),
                 "{what}: planar Euler count"
             );
         }
-        Err(w) => {
+        Answer::Undecided => panic!("{what}: undecided without a limit"),
+        Answer::No(w) => {
             let p = |i: u32| &points[i as usize];
             match w.kind {
                 WitnessKind::CrossingSegments => {
@@ -373,7 +374,7 @@ fn delaunay_route_on_delaunay_edge_sets() {
         };
         let edges = tetrakit::mesh::edges_of(&tets);
         let d = detect(&points, &edges, &Options::default(), &Control::new()).unwrap();
-        let Ok(Cells::Tetrahedra(mut found)) = d.result else {
+        let Answer::Yes(Cells::Tetrahedra(mut found)) = d.answer else {
             panic!("case {case}: the Delaunay edge set is rejected");
         };
         assert_eq!(d.route, Route::Delaunay, "case {case}");

@@ -275,7 +275,10 @@ fn keil_construction_is_exact_and_consistent() {
     for b in ["1.16", "1.155", "1.1548"] {
         let beta: Ratio = b.parse().unwrap();
         for n in [1, 2, 5, 9] {
-            let k = tetrakit::planar::keil(beta, Some(n), &Control::new()).unwrap();
+            let k = tetrakit::planar::keil(beta, Some(n), &Control::new())
+                .unwrap()
+                .decided()
+                .unwrap();
             assert!(k.xy_in_skeleton && k.split, "β={b} n={n}");
             let same = |a: &[[u32; 2]], b: &[[u32; 2]]| cmp_edge_sets(&k.sites, a, b);
             let constrained = |forced: Vec<[u32; 2]>, forbidden: Vec<[u32; 2]>| {
@@ -312,7 +315,10 @@ fn keil_construction_is_exact_and_consistent() {
         ("1.16", Some(420)),
         ("1.16", None),
     ] {
-        let k = tetrakit::planar::keil(b.parse().unwrap(), n, &Control::new()).unwrap();
+        let k = tetrakit::planar::keil(b.parse().unwrap(), n, &Control::new())
+            .unwrap()
+            .decided()
+            .unwrap();
         assert!(k.n as f64 > k.lemma_bound || n.is_some());
         assert!(k.xy_in_skeleton && !k.xy_in_mwt, "β={b} n={}", k.n);
         assert_eq!(k.with_vs_without, Ordering::Greater, "β={b}");
@@ -322,7 +328,10 @@ fn keil_construction_is_exact_and_consistent() {
             Ordering::Equal
         );
     }
-    let k = tetrakit::planar::keil("1.16".parse().unwrap(), Some(400), &Control::new()).unwrap();
+    let k = tetrakit::planar::keil("1.16".parse().unwrap(), Some(400), &Control::new())
+        .unwrap()
+        .decided()
+        .unwrap();
     assert!(k.xy_in_mwt);
     for b in ["1.17", "1.15"] {
         let beta = b.parse().unwrap();

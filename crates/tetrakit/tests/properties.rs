@@ -101,7 +101,7 @@ proptest! {
             }
         }
         let d = detect(&t.points, &e, &Options::default(), &Control::new()).unwrap();
-        prop_assert_eq!(d.is_yes(), forms_tetrahedralization(&t.points, &e), "{:?}", d.result.err());
+        prop_assert_eq!(d.is_yes(), forms_tetrahedralization(&t.points, &e), "{:?}", d.answer.witness());
     }
 
     /// Writing and reading a mesh gives back the same bits.

@@ -207,11 +207,12 @@ class DetectResult:
     witness: Optional[dict] = None
 
 
-def detect(points, segments) -> DetectResult:
+def detect(points, segments, time_limit: Optional[float] = None) -> DetectResult:
     """Decides whether ``segments`` are exactly the edges of a tetrahedralization.
 
     YES gives the tetrahedra in ``cells`` (triangles, for coplanar points); NO gives a
-    ``witness`` naming the segments or vertices that prove it (thesis ch. 2).
+    ``witness`` naming the segments or vertices that prove it (thesis ch. 2); out of
+    ``time_limit`` seconds, the verdict is ``"undecided"``.
 
     >>> import numpy as np, tetrakit
     >>> pts = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], dtype=float)
@@ -221,7 +222,7 @@ def detect(points, segments) -> DetectResult:
     >>> tetrakit.detect(pts, edges[:5]).witness["kind"]
     'missing_hull_edge'
     """
-    text, cells = _core.detect(_points(points), _cells(segments, 2, "segments"))
+    text, cells = _core.detect(_points(points), _cells(segments, 2, "segments"), time_limit)
     return _make(DetectResult, text, cells=cells)
 
 
@@ -526,16 +527,19 @@ class SkeletonResult:
     cell_diameters: int = 0
 
 
-def skeleton(points, beta, lune: bool = False) -> SkeletonResult:
+def skeleton(points, beta, lune: bool = False,
+             time_limit: Optional[float] = None) -> SkeletonResult:
     """The exact β-skeleton of planar points, circle-based (the thesis's definition) or
     lune-based; ``beta`` is a number, a ``Fraction`` or a string (``"3/2"``), taken exactly.
+    Out of ``time_limit`` seconds (β < 1), the verdict is ``"undecided"`` and ``edges``
+    are those found so far.
 
     >>> import numpy as np, tetrakit
     >>> square = np.array([[0, 0], [1, 0], [1, 1], [0, 1]], dtype=float)
     >>> len(tetrakit.skeleton(square, 1).edges)  # Gabriel: the sides and both diagonals
     6
     """
-    text, edges = _core.skeleton(_points(points), _beta(beta), lune)
+    text, edges = _core.skeleton(_points(points), _beta(beta), lune, time_limit)
     return _make(SkeletonResult, text, edges=edges)
 
 
@@ -589,26 +593,28 @@ class KeilResult:
     xy: list = field(default_factory=list)
     lemma_5_8_bound: float = 0.0
     xy_in_skeleton: bool = False
-    xy_in_mwt: bool = False
-    refutes_keil: bool = False
-    weight_with_xy: float = 0.0
-    weight_with_xy_interval: list = field(default_factory=list)
-    weight_without_xy: float = 0.0
-    weight_without_xy_interval: list = field(default_factory=list)
-    with_minus_without_sign: int = 0
-    method: str = ""
+    xy_in_mwt: Optional[bool] = None
+    refutes_keil: Optional[bool] = None
+    weight_with_xy: Optional[float] = None
+    weight_with_xy_interval: Optional[list] = None
+    weight_without_xy: Optional[float] = None
+    weight_without_xy_interval: Optional[list] = None
+    with_minus_without_sign: Optional[int] = None
+    method: Optional[str] = None
 
 
-def keil(beta, n: Optional[int] = None) -> KeilResult:
+def keil(beta, n: Optional[int] = None, time_limit: Optional[float] = None) -> KeilResult:
     """The thesis's point set refuting Keil's conjecture (§5.2) for β, with exact verdicts:
-    is the pair ``xy`` in the β-skeleton, and in the minimum weight triangulation?
+    is the pair ``xy`` in the β-skeleton, and in the minimum weight triangulation? Out of
+    ``time_limit`` seconds, the verdict is ``"undecided"`` and the fields about the
+    minimum weight triangulation are ``None``.
 
     >>> import tetrakit
     >>> k = tetrakit.keil("1.156")
     >>> k.xy_in_skeleton, k.xy_in_mwt, k.refutes_keil
     (True, False, True)
     """
-    text, sites = _core.keil(_beta(beta), n)
+    text, sites = _core.keil(_beta(beta), n, time_limit)
     return _make(KeilResult, text, sites=sites)
 
 

@@ -42,16 +42,10 @@ pub struct Options {
     pub minimal: bool,
 }
 
-/// The answer of [`contains`] or [`constrained`].
-#[derive(Clone, Debug, PartialEq)]
-pub enum Answer {
-    /// The cells (tetrahedra, or triangles for planar input), certified.
-    Yes(Cells),
-    /// No tetrahedralization obeys the edge rules.
-    No(Witness),
-    /// The control stopped the search first.
-    Undecided,
-}
+/// The answer of [`contains`] or [`constrained`]: the cells (certified), a witness, or
+/// undecided when the control stopped the search first ([`detect`]'s answer over this
+/// module's kinds of witness).
+pub type Answer = detect::Answer<WitnessKind>;
 
 /// Which step answered.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
@@ -85,12 +79,7 @@ pub struct Decision {
 impl Decision {
     /// The verdict of the answer: `yes`, `no` (with its witness), or `undecided`.
     pub fn verdict(&self) -> crate::control::Verdict {
-        use crate::control::Verdict;
-        match self.answer {
-            Answer::Yes(_) => Verdict::Yes,
-            Answer::No(_) => Verdict::No,
-            Answer::Undecided => Verdict::Undecided,
-        }
+        self.answer.verdict()
     }
 }
 
@@ -155,21 +144,17 @@ pub fn contains(
     ctl: &Control,
 ) -> Result<Decision, ConstrainError> {
     validate(points, segments)?;
-    match detect::detect(points, segments, &detect::Options::default(), ctl) {
-        Ok(d) if d.is_yes() => {
-            let cells = d.result.expect("a YES");
-            return Ok(decided(
-                Answer::Yes(cells),
-                Route::Detect,
-                true,
-                d.dimension == 2,
-            ));
+    let d = detect::detect(points, segments, &detect::Options::default(), ctl)
+        .map_err(ConstrainError::Segments)?;
+    match d.answer {
+        detect::Answer::Yes(cells) => {
+            let planar = d.dimension == 2;
+            return Ok(decided(Answer::Yes(cells), Route::Detect, true, planar));
         }
-        Ok(_) => {}
-        Err(detect::DetectError::Stopped(_)) => {
+        detect::Answer::Undecided => {
             return Ok(decided(Answer::Undecided, Route::Detect, false, false));
         }
-        Err(detect::DetectError::Segments(e)) => return Err(ConstrainError::Segments(e)),
+        detect::Answer::No(_) => {}
     }
     let problem = Problem::new(points, segments)?;
     if let Some(w) = witness::missing_hull_edge(&problem.points, &problem.allowed) {

@@ -39,7 +39,7 @@ pub use graph::{Graph, SegmentError};
 pub use link::LinkMethod;
 pub use witness::{Witness, WitnessKind};
 
-use crate::control::{Control, Stopped};
+use crate::control::{Control, Stopped, Verdict};
 use crate::geom::{Hull3, Point3};
 use crate::mesh;
 use crate::numbering::{Renumbering, ids};
@@ -66,8 +66,8 @@ pub struct Detection {
     pub hull_vertices: usize,
     /// Affine dimension of the points (3 for tetrahedralizations, 2 for triangulations).
     pub dimension: usize,
-    /// The cells (YES) or why not (NO).
-    pub result: Result<Cells, Witness>,
+    /// The cells (YES), why not (NO), or nothing (stopped first).
+    pub answer: Answer,
     /// Which procedure gave the answer.
     pub route: Route,
 }
@@ -103,56 +103,70 @@ impl Default for Options {
     }
 }
 
+/// A decision about cells: the cells (YES), a witness (NO), or nothing when the control
+/// stopped it first. [`crate::constrain`] answers with the same type over its own kinds
+/// of witness.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Answer<K = WitnessKind> {
+    /// The cells (tetrahedra, or triangles for planar input), certified.
+    Yes(Cells),
+    /// No; the witness says why.
+    No(crate::witness::Witness<K>),
+    /// The control stopped the work first.
+    Undecided,
+}
+
+impl<K> Answer<K> {
+    /// `yes`, `no` or `undecided`.
+    pub fn verdict(&self) -> Verdict {
+        match self {
+            Answer::Yes(_) => Verdict::Yes,
+            Answer::No(_) => Verdict::No,
+            Answer::Undecided => Verdict::Undecided,
+        }
+    }
+
+    /// The cells of a YES.
+    pub fn cells(&self) -> Option<&Cells> {
+        match self {
+            Answer::Yes(c) => Some(c),
+            _ => None,
+        }
+    }
+
+    /// The witness of a NO.
+    pub fn witness(&self) -> Option<&crate::witness::Witness<K>> {
+        match self {
+            Answer::No(w) => Some(w),
+            _ => None,
+        }
+    }
+
+    /// The answer from a route's result: `Ok` cells or `Err` witness.
+    fn of(r: Result<Cells, crate::witness::Witness<K>>) -> Self {
+        match r {
+            Ok(c) => Answer::Yes(c),
+            Err(w) => Answer::No(w),
+        }
+    }
+}
+
 impl Detection {
     /// True for a YES.
     pub fn is_yes(&self) -> bool {
-        self.result.is_ok()
+        matches!(self.answer, Answer::Yes(_))
     }
-}
 
-/// Why [`detect`] gave no answer: the segments are malformed, or it was stopped.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum DetectError {
-    /// The segments are not a simple graph on the points (named in the caller's
-    /// numbering).
-    Segments(SegmentError),
-    /// The control was stopped first.
-    Stopped(Stopped),
-}
-
-impl std::fmt::Display for DetectError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            DetectError::Segments(e) => e.fmt(f),
-            DetectError::Stopped(s) => s.fmt(f),
-        }
-    }
-}
-
-impl std::error::Error for DetectError {
-    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
-        match self {
-            DetectError::Segments(e) => Some(e),
-            DetectError::Stopped(s) => Some(s),
-        }
-    }
-}
-
-impl From<SegmentError> for DetectError {
-    fn from(e: SegmentError) -> Self {
-        DetectError::Segments(e)
-    }
-}
-
-impl From<Stopped> for DetectError {
-    fn from(s: Stopped) -> Self {
-        DetectError::Stopped(s)
+    /// `yes`, `no` or `undecided`.
+    pub fn verdict(&self) -> Verdict {
+        self.answer.verdict()
     }
 }
 
 /// Decides whether `segments` is exactly the edge set of a tetrahedralization of `points`
 /// (or, when the points are coplanar, of a triangulation). Fails only on malformed
-/// segments (index out of range, self-loop, repeated segment) or when `ctl` stops it.
+/// segments (index out of range, self-loop, repeated segment); stopped by `ctl`, the
+/// answer is [`Answer::Undecided`] with the counts known by then.
 /// All [`Options`] give the same verdict; they differ only in work. Progress: the stage
 /// `"vertex links"` and its vertices done, when the thesis's per-vertex algorithm runs.
 ///
@@ -164,7 +178,7 @@ impl From<Stopped> for DetectError {
 /// let (opts, ctl) = (Options::default(), Control::new());
 /// assert!(detect(&pts, &all, &opts, &ctl).unwrap().is_yes());
 /// let no = detect(&pts, &all[..5], &opts, &ctl).unwrap();
-/// assert_eq!(no.result.unwrap_err().kind, WitnessKind::MissingHullEdge);
+/// assert_eq!(no.answer.witness().unwrap().kind, WitnessKind::MissingHullEdge);
 /// ```
 ///
 /// The thesis's per-vertex route alone, with the sign-table link method:
@@ -182,7 +196,7 @@ pub fn detect(
     segments: &[[u32; 2]],
     opts: &Options,
     ctl: &Control,
-) -> Result<Detection, DetectError> {
+) -> Result<Detection, SegmentError> {
     let n = points.len();
     if let Some(k) = segments
         .par_iter()
@@ -201,19 +215,19 @@ pub fn detect(
     // Only a repeated segment can be refused here (the others were checked above): name
     // it in the caller's numbering.
     let mut d = detect_ordered(&pts, &segs, opts, ctl).map_err(|e| match e {
-        DetectError::Segments(SegmentError::Repeated { ends: [a, b] }) => {
+        SegmentError::Repeated { ends: [a, b] } => {
             let (a, b) = (renumber.old(a), renumber.old(b));
             SegmentError::Repeated {
                 ends: [a.min(b), a.max(b)],
             }
-            .into()
         }
         other => other,
     })?;
-    d.result = match d.result {
-        Ok(Cells::Tetrahedra(t)) => Ok(Cells::Tetrahedra(renumber.to_old(&t))),
-        Ok(Cells::Triangles(t)) => Ok(Cells::Triangles(renumber.to_old(&t))),
-        Err(w) => Err(w.mapped(|v| renumber.old(v))),
+    d.answer = match d.answer {
+        Answer::Yes(Cells::Tetrahedra(t)) => Answer::Yes(Cells::Tetrahedra(renumber.to_old(&t))),
+        Answer::Yes(Cells::Triangles(t)) => Answer::Yes(Cells::Triangles(renumber.to_old(&t))),
+        Answer::No(w) => Answer::No(w.mapped(|v| renumber.old(v))),
+        Answer::Undecided => Answer::Undecided,
     };
     Ok(d)
 }
@@ -252,7 +266,7 @@ fn detect_ordered(
     segs: &[[u32; 2]],
     opts: &Options,
     ctl: &Control,
-) -> Result<Detection, DetectError> {
+) -> Result<Detection, SegmentError> {
     let mut phases = Phases::new();
     let g = Graph::new(points.len(), segs)?;
     phases.mark("graph");
@@ -263,23 +277,18 @@ fn detect_ordered(
         segments: segs.len(),
         hull_vertices: 0,
         dimension: hull.dimension,
-        result: Err(Witness::new(
-            WitnessKind::Degenerate,
-            vec![],
-            vec![],
-            String::new(),
-        )),
+        answer: Answer::Undecided,
         route: Route::Links,
     };
     if hull.dimension == 2 {
         let (hv, result) = coplanar::detect(points, &g);
         out.hull_vertices = hv;
-        out.result = result;
+        out.answer = Answer::of(result);
         return Ok(out);
     }
     if hull.dimension < 2 {
         out.hull_vertices = points.len();
-        out.result = Err(Witness::new(
+        out.answer = Answer::No(Witness::new(
             WitnessKind::Degenerate,
             vec![],
             vec![],
@@ -291,7 +300,9 @@ fn detect_ordered(
         return Ok(out);
     }
     out.hull_vertices = (0..points.len()).filter(|&i| hull.on_boundary(i)).count();
-    (out.route, out.result) = detect3(points, &g, &hull, out.hull_vertices, opts, ctl)?;
+    if let Ok((route, result)) = detect3(points, &g, &hull, out.hull_vertices, opts, ctl) {
+        (out.route, out.answer) = (route, Answer::of(result));
+    }
     Ok(out)
 }
 
@@ -685,10 +696,10 @@ mod tests {
         let want = SegmentError::Repeated {
             ends: [a.min(b), a.max(b)],
         };
-        assert_eq!(err, DetectError::Segments(want));
+        assert_eq!(err, want);
     }
 
-    /// A stopped control ends both routes with `Stopped`; a live one answers.
+    /// A stopped control leaves both routes undecided; a live one answers.
     #[test]
     fn a_stopped_control_ends_detection() {
         let t = crate::generate::kuhn(3);
@@ -706,8 +717,9 @@ mod tests {
                         .unwrap()
                         .is_yes()
                 );
-                let err = detect(&t.points, &e, &opts, &stopped).unwrap_err();
-                assert_eq!(err, DetectError::Stopped(Stopped));
+                let d = detect(&t.points, &e, &opts, &stopped).unwrap();
+                assert_eq!(d.answer, Answer::Undecided);
+                assert_eq!((d.verdict(), d.vertices), (Verdict::Undecided, 64));
             }
         }
     }
@@ -786,8 +798,10 @@ mod tests {
         pts.push([0.2, 0.2, 0.2]);
         let w = detect(&pts, &tet, &Options::default(), &Control::new())
             .unwrap()
-            .result
-            .unwrap_err();
+            .answer
+            .witness()
+            .cloned()
+            .unwrap();
         assert_eq!(w.kind, WitnessKind::Disconnected);
         assert!(w.detail.contains("#4 is on no segment"), "{}", w.detail);
         // Two tetrahedra, far apart, not joined.
@@ -797,8 +811,10 @@ mod tests {
         e.extend(tet.iter().map(|&[a, b]| [a + 4, b + 4]));
         let w = detect(&two, &e, &Options::default(), &Control::new())
             .unwrap()
-            .result
-            .unwrap_err();
+            .answer
+            .witness()
+            .cloned()
+            .unwrap();
         assert_eq!(w.kind, WitnessKind::Disconnected);
     }
 
@@ -812,6 +828,6 @@ mod tests {
             &Control::new(),
         )
         .unwrap();
-        assert_eq!(d.result.unwrap_err().kind, WitnessKind::Degenerate);
+        assert_eq!(d.answer.witness().unwrap().kind, WitnessKind::Degenerate);
     }
 }

@@ -1,7 +1,7 @@
 //! The JSON and the text of a `detect` outcome.
 
 use crate::control::Verdict;
-use crate::detect::{Cells, Detection, Route, Witness};
+use crate::detect::{Answer, Cells, Detection, Route, Witness};
 use serde::Serialize;
 use serde_json::Value;
 use std::fmt::Write;
@@ -41,17 +41,14 @@ pub fn detect_json<'a>(
     extra: impl IntoIterator<Item = (&'a str, Value)>,
 ) -> Value {
     let (mut tetrahedra, mut triangles, mut witness) = (None, None, None);
-    match &d.result {
-        Ok(Cells::Tetrahedra(t)) => tetrahedra = Some(t.len()),
-        Ok(Cells::Triangles(t)) => triangles = Some(t.len()),
-        Err(w) => witness = Some(w.clone().mapped(label)),
+    match &d.answer {
+        Answer::Yes(Cells::Tetrahedra(t)) => tetrahedra = Some(t.len()),
+        Answer::Yes(Cells::Triangles(t)) => triangles = Some(t.len()),
+        Answer::No(w) => witness = Some(w.clone().mapped(label)),
+        Answer::Undecided => {}
     }
     let fields = DetectJson {
-        verdict: if d.is_yes() {
-            Verdict::Yes
-        } else {
-            Verdict::No
-        },
+        verdict: d.verdict(),
         vertices: d.vertices,
         segments: d.segments,
         hull_vertices: d.hull_vertices,
@@ -78,18 +75,22 @@ pub fn detect_text(
     };
     let mut s = String::new();
     let (n, m, h) = (d.vertices, d.segments, d.hull_vertices);
-    let _ = match &d.result {
-        Ok(Cells::Tetrahedra(t)) => writeln!(
+    let _ = match &d.answer {
+        Answer::Yes(Cells::Tetrahedra(t)) => writeln!(
             s,
             "YES: the {m} segments{src} on {n} points form a tetrahedralization with {} tetrahedra ({h} points on the hull). [{seconds:.3} s]",
             t.len()
         ),
-        Ok(Cells::Triangles(t)) => writeln!(
+        Answer::Yes(Cells::Triangles(t)) => writeln!(
             s,
             "YES: the {m} segments{src} on {n} coplanar points form a triangulation with {} triangles ({h} points on the hull). [{seconds:.3} s]",
             t.len()
         ),
-        Err(w) => no_text(&mut s, d, &w.clone().mapped(label), src, seconds),
+        Answer::No(w) => no_text(&mut s, d, &w.clone().mapped(label), src, seconds),
+        Answer::Undecided => writeln!(
+            s,
+            "UNDECIDED: stopped at the time limit before the {m} segments{src} on {n} points were decided. [{seconds:.3} s]"
+        ),
     };
     s
 }

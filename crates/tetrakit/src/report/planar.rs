@@ -4,7 +4,9 @@
 
 use crate::control::Verdict;
 use crate::geom::{Interval, Ratio};
-use crate::planar::{KeilResult, MwtOutcome, Region, Skeleton, Violation};
+use crate::planar::{
+    KeilOutcome, KeilResult, KeilStopped, MwtOutcome, Region, Skeleton, Violation,
+};
 use serde::Serialize;
 use serde_json::Value;
 
@@ -27,7 +29,9 @@ fn region_name(region: Region) -> &'static str {
     }
 }
 
-/// The JSON of the β-skeleton `sk` of `vertices` sites, with `extra` fields after.
+/// The JSON of the β-skeleton `sk` of `vertices` sites, with `extra` fields after:
+/// `verdict` is `undecided` when the search was stopped (`edges` then counts those
+/// found).
 ///
 /// ```
 /// use tetrakit::control::Control;
@@ -46,7 +50,10 @@ pub fn skeleton_json<'a>(
     extra: impl IntoIterator<Item = (&'a str, Value)>,
 ) -> Value {
     let j = SkeletonJson {
-        verdict: Verdict::Yes,
+        verdict: match sk.complete {
+            true => Verdict::Yes,
+            false => Verdict::Undecided,
+        },
         beta: beta.to_string(),
         region: region_name(region),
         vertices,
@@ -65,12 +72,16 @@ pub fn skeleton_text(
     vertices: usize,
     seconds: f64,
 ) -> String {
-    format!(
-        "{}-based β-skeleton, β = {beta}: {} edges on {vertices} sites ({} candidates tested exactly) in {seconds:.3} s",
-        region_name(region),
-        sk.edges.len(),
-        sk.candidates
-    )
+    let region = region_name(region);
+    let (edges, tested) = (sk.edges.len(), sk.candidates);
+    match sk.complete {
+        true => format!(
+            "{region}-based β-skeleton, β = {beta}: {edges} edges on {vertices} sites ({tested} candidates tested exactly) in {seconds:.3} s"
+        ),
+        false => format!(
+            "UNDECIDED: stopped at the time limit after {seconds:.3} s; {edges} edges of the {region}-based β-skeleton, β = {beta}, found on {vertices} sites so far ({tested} candidates tested exactly), not all"
+        ),
+    }
 }
 
 /// The seconds of the MWT solver's stages.
@@ -229,6 +240,18 @@ struct KeilJson {
     method: &'static str,
 }
 
+/// `keil --json`'s fields when stopped before the optima.
+#[derive(Serialize)]
+struct KeilStoppedJson {
+    verdict: Verdict,
+    beta: String,
+    n: usize,
+    sites: usize,
+    xy: [u32; 2],
+    lemma_5_8_bound: f64,
+    xy_in_skeleton: bool,
+}
+
 /// How the two optima were found.
 fn keil_method(k: &KeilResult) -> &'static str {
     if k.split {
@@ -239,9 +262,25 @@ fn keil_method(k: &KeilResult) -> &'static str {
 }
 
 /// The JSON of Keil's construction (thesis §5.2), with `extra` fields after. The verdict
-/// is `yes`: the construction was built and both questions decided exactly
-/// (`refutes_keil` says whether this realization separates `xy`).
-pub fn keil_json<'a>(k: &KeilResult, extra: impl IntoIterator<Item = (&'a str, Value)>) -> Value {
+/// is `yes` when the construction was built and both questions decided exactly
+/// (`refutes_keil` says whether this realization separates `xy`), `undecided` with the
+/// construction and the skeleton test when stopped before the optima.
+pub fn keil_json<'a>(k: &KeilOutcome, extra: impl IntoIterator<Item = (&'a str, Value)>) -> Value {
+    let k = match k {
+        KeilOutcome::Decided(k) => k,
+        KeilOutcome::Undecided(s) => {
+            let j = KeilStoppedJson {
+                verdict: Verdict::Undecided,
+                beta: s.beta.to_string(),
+                n: s.n,
+                sites: s.sites.len(),
+                xy: s.xy,
+                lemma_5_8_bound: s.lemma_bound,
+                xy_in_skeleton: s.xy_in_skeleton,
+            };
+            return super::json(&j, extra);
+        }
+    };
     let iv = |w: &Interval| [w.lo, w.hi];
     let j = KeilJson {
         verdict: Verdict::Yes,
@@ -264,7 +303,25 @@ pub fn keil_json<'a>(k: &KeilResult, extra: impl IntoIterator<Item = (&'a str, V
 }
 
 /// The lines a person reads for Keil's construction.
-pub fn keil_text(k: &KeilResult) -> String {
+pub fn keil_text(k: &KeilOutcome) -> String {
+    match k {
+        KeilOutcome::Decided(k) => decided_keil_text(k),
+        KeilOutcome::Undecided(s) => stopped_keil_text(s),
+    }
+}
+
+fn stopped_keil_text(s: &KeilStopped) -> String {
+    format!(
+        "UNDECIDED: stopped at the time limit before the optima were found.\n  Keil construction (thesis §5.2), β = {}, n = {} ({} sites; Lemma 5.8 asks n > {:.1}):\n  xy in the β-skeleton: {} (exact)",
+        s.beta,
+        s.n,
+        s.sites.len(),
+        s.lemma_bound,
+        s.xy_in_skeleton
+    )
+}
+
+fn decided_keil_text(k: &KeilResult) -> String {
     let verdict = if k.xy_in_skeleton && !k.xy_in_mwt {
         "xy is a β-skeleton edge in no MWT: Keil's conjecture fails here".to_string()
     } else {

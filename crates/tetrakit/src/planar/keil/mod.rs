@@ -85,6 +85,44 @@ pub struct KeilResult {
     pub split: bool,
 }
 
+/// What [`keil`] knew when the control stopped it before both optima were found: the
+/// construction and the exact skeleton test on `xy`.
+#[derive(Clone, Debug)]
+pub struct KeilStopped {
+    /// β used.
+    pub beta: Ratio,
+    /// The sites, in [`KeilResult::sites`]'s order.
+    pub sites: Vec<Point2>,
+    /// Indices of `x` and `y`.
+    pub xy: [u32; 2],
+    /// `n`, the number of sites on each arc.
+    pub n: usize,
+    /// Lemma 5.8's bound on `n` (computed in floating point).
+    pub lemma_bound: f64,
+    /// `xy` is an edge of the (circle-based) β-skeleton (exact).
+    pub xy_in_skeleton: bool,
+}
+
+/// The answer of [`keil`]: everything decided, or what was known when stopped.
+#[derive(Clone, Debug)]
+#[allow(clippy::large_enum_variant)]
+pub enum KeilOutcome {
+    /// Both questions on `xy` decided exactly.
+    Decided(KeilResult),
+    /// Stopped before the optima were found.
+    Undecided(KeilStopped),
+}
+
+impl KeilOutcome {
+    /// The decided result, if it is one.
+    pub fn decided(self) -> Option<KeilResult> {
+        match self {
+            KeilOutcome::Decided(k) => Some(k),
+            KeilOutcome::Undecided(_) => None,
+        }
+    }
+}
+
 /// The best triangulation containing `xy`, for `x`, `y` on the hull and no other site on
 /// the line `xy`: the chord splits the hull into two convex regions whose triangulations
 /// are those of the sites on each side plus `x` and `y`, so it is the union of two
@@ -145,15 +183,22 @@ pub const MAX_N: usize = 4000;
 ///
 /// The optima are found by splitting along the polygon `L` when every side of `L` is
 /// certified to be in every triangulation (`split`), else by the general MWT solver.
+/// Stopped by `ctl` first, the answer is [`KeilOutcome::Undecided`] with the
+/// construction and the skeleton test.
 ///
 /// ```
 /// use tetrakit::control::Control;
-/// use tetrakit::planar::keil;
+/// use tetrakit::planar::{KeilOutcome, keil};
 /// let k = keil("1.1548".parse().unwrap(), Some(20), &Control::new()).unwrap();
+/// let k = k.decided().unwrap();
 /// assert!(k.xy_in_skeleton && !k.xy_in_mwt);
 /// assert!(k.with_xy.0.lo > k.without_xy.0.hi);
+/// let stopped = Control::new();
+/// stopped.stop();
+/// let k = keil("1.1548".parse().unwrap(), Some(20), &stopped).unwrap();
+/// assert!(matches!(k, KeilOutcome::Undecided(s) if s.xy_in_skeleton));
 /// ```
-pub fn keil(beta: Ratio, n: Option<usize>, ctl: &Control) -> Result<KeilResult, PlanarError> {
+pub fn keil(beta: Ratio, n: Option<usize>, ctl: &Control) -> Result<KeilOutcome, PlanarError> {
     let (build, lemma_bound) = construction(beta)?;
     let n = n
         .unwrap_or((lemma_bound.max(0.0).floor() as usize).saturating_add(1))
@@ -172,9 +217,22 @@ pub fn keil(beta: Ratio, n: Option<usize>, ctl: &Control) -> Result<KeilResult, 
         i as u32 == xy[0] || i as u32 == xy[1] || !in_beta_region(&x, &y, &sites[i], beta)
     });
     let cycle: Vec<u32> = (0..sites.len() as u32).collect();
-    let (optima, split) = match split::split_along(&sites, &cycle, xy, ctl)? {
-        Some(s) => (s, true),
-        None => (general(&sites, xy, ctl)?, false),
+    let found = split::split_along(&sites, &cycle, xy, ctl).and_then(|s| match s {
+        Some(s) => Ok((s, true)),
+        None => Ok((general(&sites, xy, ctl)?, false)),
+    });
+    let (optima, split) = match found {
+        Err(PlanarError::Stopped(_)) => {
+            return Ok(KeilOutcome::Undecided(KeilStopped {
+                beta,
+                sites,
+                xy,
+                n,
+                lemma_bound,
+                xy_in_skeleton,
+            }));
+        }
+        other => other?,
     };
     let Optima {
         with_xy: with,
@@ -182,7 +240,7 @@ pub fn keil(beta: Ratio, n: Option<usize>, ctl: &Control) -> Result<KeilResult, 
     } = optima;
     let with_vs_without = cmp_edge_sets(&sites, &with, &without);
     let xy_in_mwt = with_vs_without != Ordering::Greater;
-    Ok(KeilResult {
+    Ok(KeilOutcome::Decided(KeilResult {
         beta,
         n,
         lemma_bound,
@@ -199,7 +257,7 @@ pub fn keil(beta: Ratio, n: Option<usize>, ctl: &Control) -> Result<KeilResult, 
         with_vs_without,
         split,
         sites,
-    })
+    }))
 }
 
 /// The two optima by the general solver: the MWT, the best triangulation with `xy`,

@@ -46,7 +46,8 @@ use std::sync::atomic::{AtomicUsize, Ordering as AtomicOrdering};
 const MAX_EDGES: usize = 2 << 30;
 
 /// The β-skeleton for `0 < β < 1` of checked, distinct sites, reporting
-/// `(sites searched, sites)` to `ctl` every [`REPORT_EVERY`] sites.
+/// `(sites searched, sites)` to `ctl` every [`REPORT_EVERY`] sites; once `ctl` is
+/// stopped no further site is searched (incomplete, the edges found kept).
 pub(super) fn lens_skeleton(
     points: &[Point2],
     beta: Ratio,
@@ -91,7 +92,6 @@ fn at_most(
             },
         )
         .collect();
-    ctl.check()?;
     if edges.into_inner() > limit {
         return Err(PlanarError::TooManyEdges {
             sites: points.len(),
@@ -103,6 +103,7 @@ fn at_most(
     edges.par_sort_unstable();
     Ok(Skeleton {
         edges,
+        complete: done.into_inner() == points.len(),
         candidates: decided.into_inner(),
         cell_diameters: 0,
     })
@@ -561,6 +562,33 @@ mod tests {
             matches!(err, PlanarError::TooManyEdges { sites: 2000, limit, .. } if limit == all / 2),
             "{err}"
         );
+    }
+
+    /// Stopped after its first progress report, the search keeps the edges found from
+    /// the sites searched (a subset of the skeleton, marked incomplete); stopped before,
+    /// it has none.
+    #[test]
+    fn a_stopped_search_keeps_the_edges_found() {
+        let mut rng = Rng::new(8);
+        let pts: Vec<Point2> = (0..20_000).map(|_| [rng.unit(), rng.unit()]).collect();
+        let beta: Ratio = "0.9".parse().unwrap();
+        let all = lens_skeleton(&pts, beta, &Control::new()).unwrap();
+        assert!(all.complete);
+        let parent = Control::new();
+        let p = parent.clone();
+        let part = lens_skeleton(&pts, beta, &parent.child().with_progress(move |_| p.stop()));
+        let part = part.unwrap();
+        assert!(!part.complete && !part.edges.is_empty());
+        assert!(part.edges.len() < all.edges.len());
+        assert!(
+            part.edges
+                .iter()
+                .all(|e| all.edges.binary_search(e).is_ok())
+        );
+        let stopped = Control::new();
+        stopped.stop();
+        let none = lens_skeleton(&pts, beta, &stopped).unwrap();
+        assert!(!none.complete && none.edges.is_empty());
     }
 
     /// On uniform sites the search decides a bounded number of pairs per site (about 59

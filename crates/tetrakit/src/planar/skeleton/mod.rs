@@ -53,10 +53,14 @@ pub enum Region {
 }
 
 /// A β-skeleton and how it was found.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug)]
 pub struct Skeleton {
     /// Edges `[p, q]` with `p < q`, sorted.
     pub edges: Vec<[u32; 2]>,
+    /// False when the control stopped the search first (β < 1 only): `edges` are then
+    /// the skeleton's edges found from the sites searched by then, each decided exactly,
+    /// a subset of the skeleton.
+    pub complete: bool,
     /// Number of candidate pairs tested.
     pub candidates: usize,
     /// Diameters of cocircular Delaunay cells added for β = 1.
@@ -65,9 +69,10 @@ pub struct Skeleton {
 
 /// The β-skeleton of distinct points (exact; an error names coinciding sites or a
 /// coordinate outside the exact range). For β < 1 the search around each site may take
-/// minutes for small β: it reports `(sites searched, sites)` to `ctl` now and then and
-/// gives up with [`PlanarError::Stopped`] once `ctl` is stopped; for β ≥ 1 (a Delaunay
-/// triangulation and one test per edge) it reports nothing.
+/// minutes for small β: it reports `(sites searched, sites)` to `ctl` now and then and,
+/// once `ctl` is stopped, searches no further site and answers with the edges found so
+/// far ([`Skeleton::complete`] false); for β ≥ 1 (a Delaunay triangulation and one test
+/// per edge) it reports nothing and always completes.
 ///
 /// ```
 /// use tetrakit::control::Control;
@@ -109,7 +114,12 @@ pub fn beta_skeleton(
 ) -> Result<Skeleton, PlanarError> {
     super::check_coordinates(points)?;
     if points.len() < 2 {
-        return Ok(Skeleton::default());
+        return Ok(Skeleton {
+            edges: Vec::new(),
+            complete: true,
+            candidates: 0,
+            cell_diameters: 0,
+        });
     }
     if beta.cmp_one() == Ordering::Less {
         super::check_sites(points)?;
@@ -137,6 +147,7 @@ pub fn beta_skeleton(
         let (edges, candidates) = delaunay_edges_where(points, keep)?;
         return Ok(Skeleton {
             edges,
+            complete: true,
             candidates,
             cell_diameters: 0,
         });
@@ -164,6 +175,7 @@ pub fn beta_skeleton(
     edges.dedup();
     Ok(Skeleton {
         edges,
+        complete: true,
         candidates: dt.edges.len() + cell_diameters,
         cell_diameters,
     })
