@@ -82,8 +82,7 @@ pub fn run() -> CmdResult {
                 report
                     .problems
                     .first()
-                    .map(|p| p.detail.as_str())
-                    .unwrap_or("-")
+                    .map_or("-".to_string(), |p| p.detail.to_string())
             );
         }
     }

@@ -13,13 +13,14 @@
 //!     WitnessKind::VertexOnSegment,
 //!     vec![4],
 //!     vec![[1, 2]],
-//!     "vertex #4 lies inside segment (#1, #2)".into(),
+//!     "vertex #4 lies inside segment (#1, #2)",
 //! );
 //! let w = w.shifted(1);
 //! assert_eq!((w.vertices, w.segments), (vec![5], vec![[2, 3]]));
-//! assert_eq!(w.detail, "vertex #5 lies inside segment (#2, #3)");
+//! assert_eq!(w.detail.to_string(), "vertex #5 lies inside segment (#2, #3)");
 //! ```
 
+use crate::numbering::Sentence;
 use serde::Serialize;
 
 /// A checkable reason for a NO, of a capability's kind `K` (see the module documentation).
@@ -31,18 +32,23 @@ pub struct Witness<K> {
     pub vertices: Vec<u32>,
     /// The segments it names.
     pub segments: Vec<[u32; 2]>,
-    /// A sentence for a person.
-    pub detail: String,
+    /// A sentence for a person, naming vertices as `#12`.
+    pub detail: Sentence,
 }
 
 impl<K> Witness<K> {
     /// A witness of `kind`.
-    pub fn new(kind: K, vertices: Vec<u32>, segments: Vec<[u32; 2]>, detail: String) -> Self {
+    pub fn new(
+        kind: K,
+        vertices: Vec<u32>,
+        segments: Vec<[u32; 2]>,
+        detail: impl Into<Sentence>,
+    ) -> Self {
         Witness {
             kind,
             vertices,
             segments,
-            detail,
+            detail: detail.into(),
         }
     }
 
@@ -50,7 +56,7 @@ impl<K> Witness<K> {
     pub fn mapped(mut self, f: impl Fn(u32) -> u32) -> Self {
         self.vertices.iter_mut().for_each(|v| *v = f(*v));
         self.segments.iter_mut().flatten().for_each(|v| *v = f(*v));
-        self.detail = crate::numbering::map_text(&self.detail, f);
+        self.detail = self.detail.map(f, |t| t);
         self
     }
 
@@ -60,8 +66,10 @@ impl<K> Witness<K> {
     where
         K: Clone,
     {
-        let mut w = self.clone().mapped(|v| v + base);
-        w.detail = crate::numbering::renumber_text(&self.detail, base);
+        let mut w = self.clone();
+        w.vertices.iter_mut().for_each(|v| *v += base);
+        w.segments.iter_mut().flatten().for_each(|v| *v += base);
+        w.detail = w.detail.shifted(base);
         w
     }
 }

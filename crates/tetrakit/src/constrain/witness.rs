@@ -160,25 +160,33 @@ pub(super) fn from_obstacle(o: &Obstacle, n: usize) -> Witness {
             WitnessKind::NoCandidate,
             vec![],
             vec![],
-            "no tetrahedron on the points is a candidate (edges allowed, no other point in it, no constraint crossing it)".into(),
+            "no tetrahedron on the points is a candidate (edges allowed, no other point in it, no constraint crossing it)",
         ),
         Obstacle::UncoveredVertex(v) => Witness::new(
             WitnessKind::UncoveredVertex,
             vec![v],
             vec![],
-            format!("point #{v} is in no candidate tetrahedron (edges allowed, no other point in it, no constraint crossing it), so no tetrahedralization uses it"),
+            format!(
+                "point #{v} is in no candidate tetrahedron (edges allowed, no other point in it, no constraint crossing it), so no tetrahedralization uses it"
+            ),
         ),
         Obstacle::UnusableSegment(s) => Witness::new(
             WitnessKind::UnusableConstraint,
             vec![],
             vec![s],
-            format!("constraint (#{}, #{}) is an edge of no candidate tetrahedron", s[0], s[1]),
+            format!(
+                "constraint (#{}, #{}) is an edge of no candidate tetrahedron",
+                s[0], s[1]
+            ),
         ),
         Obstacle::UncoveredFacet(f) => Witness::new(
             WitnessKind::NoCandidate,
             f.iter().copied().filter(|&v| (v as usize) < n).collect(),
             vec![],
-            format!("facet (#{}, #{}, #{}) is a face of no candidate", f[0], f[1], f[2]),
+            format!(
+                "facet (#{}, #{}, #{}) is a face of no candidate",
+                f[0], f[1], f[2]
+            ),
         ),
     }
 }

@@ -23,7 +23,7 @@ pub(super) fn detect(points: &[Point3], g: &Graph) -> (usize, Result<Cells, Witn
                 WitnessKind::Degenerate,
                 vec![],
                 vec![],
-                "points are collinear".into(),
+                "points are collinear",
             )),
         );
     };

@@ -464,7 +464,8 @@ fn sharpen(points: &[Point3], g: &Graph, w: Witness) -> Witness {
     }
     match rotation::local_crossing(points, g, &w.vertices) {
         Some(mut better) => {
-            better.detail = format!("{} (found where {}: {})", better.detail, w.kind, w.detail);
+            better.detail =
+                format!("{} (found where {}: {})", better.detail, w.kind, w.detail).into();
             better
         }
         None => w,

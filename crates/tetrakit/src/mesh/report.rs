@@ -1,5 +1,6 @@
 //! What the verifiers find: [`Problem`]s of a [`ProblemKind`], gathered in a [`Report`].
 
+use crate::numbering::Sentence;
 use serde::{Deserialize, Serialize};
 use std::fmt;
 
@@ -102,8 +103,8 @@ pub struct Problem {
     pub cells: Vec<u32>,
     /// Vertices involved (e.g. the shared face).
     pub vertices: Vec<u32>,
-    /// A sentence for a person.
-    pub detail: String,
+    /// A sentence for a person, naming vertices as `#12` and cells as `T12`.
+    pub detail: Sentence,
 }
 
 impl fmt::Display for Problem {
@@ -120,7 +121,7 @@ impl Problem {
     pub(crate) fn relabel(&mut self, vertex: &impl Fn(u32) -> u32, cell: &impl Fn(u32) -> u32) {
         self.cells.iter_mut().for_each(|t| *t = cell(*t));
         self.vertices.iter_mut().for_each(|v| *v = vertex(*v));
-        self.detail = crate::numbering::relabel_text(&self.detail, vertex, cell);
+        self.detail = std::mem::take(&mut self.detail).map(vertex, cell);
     }
 
     /// Writes this problem's code on its cells and vertices where no earlier problem did.
@@ -136,12 +137,17 @@ impl Problem {
     }
 
     /// A problem of `kind` naming `cells` and `vertices`, with a sentence for a person.
-    pub fn new(kind: ProblemKind, cells: Vec<u32>, vertices: Vec<u32>, detail: String) -> Self {
+    pub fn new(
+        kind: ProblemKind,
+        cells: Vec<u32>,
+        vertices: Vec<u32>,
+        detail: impl Into<Sentence>,
+    ) -> Self {
         Problem {
             kind,
             cells,
             vertices,
-            detail,
+            detail: detail.into(),
         }
     }
 }

@@ -8,6 +8,7 @@ use super::{HullGapError, QuasiPrism, QuasiPrismError, Reduction, SphereReductio
 use crate::control::{Control, Verdict};
 use crate::exact::{self, Domain, Edges, Outcome};
 use crate::mesh::Polyhedron;
+use crate::numbering::Sentence;
 use serde::Serialize;
 
 /// The witness of a NO from [`solve_hull_gap`]: reflex edges remain and none flips.
@@ -18,7 +19,7 @@ pub struct StuckWitness {
     /// The first reflex edge that no flip removes.
     pub edge: [u32; 2],
     /// A sentence for a person.
-    pub detail: String,
+    pub detail: Sentence,
 }
 
 /// The outcome of [`solve_hull_gap`] (`reduce hull-gap --json` without the timing).
@@ -50,7 +51,7 @@ impl HullGapOutcome {
         self.tets.iter_mut().flatten().for_each(|v| *v += base);
         if let Some(w) = &mut self.witness {
             w.edge = w.edge.map(|v| v + base);
-            w.detail = crate::numbering::renumber_text(&w.detail, base);
+            w.detail = std::mem::take(&mut w.detail).shifted(base);
         }
         self
     }
@@ -89,7 +90,7 @@ pub fn solve_hull_gap(q: &Polyhedron, ctl: &Control) -> Result<HullGapOutcome, H
             o.witness = Some(StuckWitness {
                 kind: "stuck",
                 edge,
-                detail: e.to_string(),
+                detail: e.to_string().into(),
             });
         }
         Err(HullGapError::Stopped(_)) => o.verdict = Verdict::Undecided,
@@ -126,7 +127,7 @@ pub struct QuasiPrismOutcome {
     pub route: Option<QuasiPrismRoute>,
     /// Why no staircase exists, when the exact solver answered.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub staircase: Option<String>,
+    pub staircase: Option<Sentence>,
     /// The exact solver's candidate tetrahedra, when it ran.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub candidates: Option<usize>,
@@ -148,9 +149,7 @@ impl QuasiPrismOutcome {
     /// The outcome in an input's numbering from `base`.
     pub fn shifted(mut self, base: u32) -> Self {
         self.tets.iter_mut().flatten().for_each(|v| *v += base);
-        self.staircase = self
-            .staircase
-            .map(|s| crate::numbering::renumber_text(&s, base));
+        self.staircase = self.staircase.map(|s| s.shifted(base));
         self.witness = self.witness.map(|w| w.shifted(base));
         self
     }
@@ -193,7 +192,7 @@ impl QuasiPrism {
             }
             Err(e @ (QuasiPrismError::Irregular { .. } | QuasiPrismError::NoStaircase)) => {
                 o.regular = !matches!(e, QuasiPrismError::Irregular { .. });
-                o.staircase = Some(e.to_string());
+                o.staircase = Some(e.to_string().into());
                 o.route = Some(QuasiPrismRoute::Exact);
                 self.by_exact(ctl, &mut o)?;
             }

@@ -23,7 +23,9 @@ pub fn hull_gap_text(o: &HullGapOutcome) -> String {
         ),
         Verdict::No | Verdict::AssumptionFails => format!(
             "NO: {}",
-            o.witness.as_ref().map_or("", |w| w.detail.as_str())
+            o.witness
+                .as_ref()
+                .map_or(String::new(), |w| w.detail.to_string())
         ),
         Verdict::Undecided => "UNDECIDED: the time limit stopped the flips".to_string(),
     }
@@ -31,7 +33,11 @@ pub fn hull_gap_text(o: &HullGapOutcome) -> String {
 
 /// The line a person reads for a quasi-prism.
 pub fn quasi_prism_text(o: &QuasiPrismOutcome) -> String {
-    let (prisms, why) = (o.prisms, o.staircase.as_deref().unwrap_or(""));
+    let why = o
+        .staircase
+        .as_ref()
+        .map_or(String::new(), |s| s.to_string());
+    let prisms = o.prisms;
     let t = o.tetrahedra.unwrap_or(0);
     match (o.verdict, o.route) {
         (Verdict::Yes, Some(QuasiPrismRoute::Order)) => format!(
@@ -45,7 +51,9 @@ pub fn quasi_prism_text(o: &QuasiPrismOutcome) -> String {
         ),
         (Verdict::No | Verdict::AssumptionFails, _) => format!(
             "NO: no tetrahedralization keeps every edge of the quasi-prism: {} ({why})",
-            o.witness.as_ref().map_or("", |w| w.detail.as_str())
+            o.witness
+                .as_ref()
+                .map_or(String::new(), |w| w.detail.to_string())
         ),
         (Verdict::Undecided, _) => format!("UNDECIDED: the time limit stopped the work {why}"),
     }
