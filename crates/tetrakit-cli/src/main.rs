@@ -353,8 +353,9 @@ enum ShellMethod {
     Cap,
     /// Greedy bigcaps (§4.2–4.3).
     Bigcap,
-    /// BIGCAP-REMOVE's Lemma 4.1 checked exactly first (exit 1 with a witness where it
-    /// fails); steps 2–6 are not built, so where it holds the greedy bigcaps run.
+    /// BIGCAP-REMOVE: Lemma 4.1 checked exactly first (exit 1 with a witness where it
+    /// fails), then Steps 1–3 and 5 (S-bigcaps over the chains of P_a; Step 3a greedy,
+    /// Step 6 left to caps), refused S-bigcaps repaired.
     Thesis,
 }
 

@@ -168,6 +168,26 @@ fn shell_bad_input_and_time_limit() {
             v["tetrahedra"].as_u64() <= v["bound"].as_u64(),
             "{kind}: {v}"
         );
+        // BIGCAP-REMOVE's steps run where the lemma is not examined (Q touches P).
+        let v = json(&run(&[
+            "shell",
+            s(&o),
+            s(&i),
+            "--method",
+            "thesis",
+            "--json",
+        ]));
+        assert_eq!(
+            (v["verdict"].as_str(), v["method"].as_str()),
+            (Some("yes"), Some("thesis"))
+        );
+        let steps = &v["thesis_steps"];
+        assert!(steps["rounds"].as_u64() > Some(0), "{kind}: {v}");
+        let pieces = steps["s_bigcaps"].as_u64().unwrap() + steps["repaired"].as_u64().unwrap();
+        assert!(
+            pieces > 0 && v["lemma_4_1"] == "not_examined",
+            "{kind}: {v}"
+        );
     }
 }
 

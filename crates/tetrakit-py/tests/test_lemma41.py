@@ -202,6 +202,7 @@ def test_thesis_method_agrees_with_an_independent_check():
         r = tetrakit.shell(np.array(outer, float), np.array(inner, float), method="thesis")
         if first is None:
             assert r.verdict == "yes" and r.lemma_4_1 == "holds", (outer, inner)
+            assert r.method == "thesis" and r.thesis_steps["rounds"] >= 0
             continue
         failing += 1
         assert r.verdict == "assumption_fails", (outer, inner, first)

@@ -13,7 +13,7 @@ use tetrakit::shell::{
 
 /// Both methods, each certified and within 9n − 6; the cap removal's mesh is returned.
 fn solve(outer: &[Point3], inner: &[Point3]) -> (Shell, ShellMesh) {
-    solve_by(outer, inner, &[Method::Bigcap, Method::Cap])
+    solve_by(outer, inner, &[Method::Thesis, Method::Bigcap, Method::Cap])
 }
 
 /// The given methods (the last one's mesh is returned).
@@ -360,6 +360,7 @@ fn bern_disks_within_the_bound_after_flips() {
             pieces: 0,
             finished_by: Finish::Removal,
             ledger: None,
+            thesis: None,
         };
         assert_eq!(o.interior_edges, Some(recount.interior_edges()));
         assert_eq!(o.within_bound, Some(flips), "{t} against {}", o.bound);
@@ -374,7 +375,7 @@ fn bern_disks_within_the_bound_after_flips() {
 #[test]
 fn small_shells_against_the_exact_optimum() {
     let shapes = [Shape::Sphere, Shape::Random];
-    let mut worst = [1.0f64; 4];
+    let mut worst = [1.0f64; 6];
     let (mut solved, mut tried) = (0, 0);
     for seed in 0..200u64 {
         let p = NestedParams {
@@ -395,7 +396,7 @@ fn small_shells_against_the_exact_optimum() {
         if !simplicial(&own(&shell.outer)) || !simplicial(&own(&shell.inner)) {
             continue;
         }
-        let meshes: Vec<ShellMesh> = [Method::Cap, Method::Bigcap]
+        let meshes: Vec<ShellMesh> = [Method::Cap, Method::Bigcap, Method::Thesis]
             .iter()
             .map(|&m| tetrahedralize(&shell, m, &Control::new()).expect("a mesh"))
             .collect();
@@ -424,13 +425,13 @@ fn small_shells_against_the_exact_optimum() {
         }
     }
     eprintln!(
-        "{solved} of {tried} shells solved; worst ratios cap, cap+flips, bigcap, bigcap+flips: {worst:.3?}"
+        "{solved} of {tried} shells solved; worst ratios cap, cap+flips, bigcap, bigcap+flips, thesis, thesis+flips: {worst:.3?}"
     );
     assert!(
         solved * 10 >= tried * 9 && tried >= 150,
         "{solved} of {tried}"
     );
-    let pinned = [1.35, 1.25, 1.45, 1.35];
+    let pinned = [1.35, 1.25, 1.45, 1.35, 1.4, 1.35];
     assert!(worst.iter().zip(pinned).all(|(w, p)| *w <= p), "{worst:?}");
 }
 
@@ -660,7 +661,7 @@ fn boxes_touching_a_box_anywhere() {
                 inner.reverse();
             }
             let shell = Shell::new(&big, &inner).unwrap();
-            for m in [Method::Cap, Method::Bigcap] {
+            for m in [Method::Cap, Method::Bigcap, Method::Thesis] {
                 match tetrahedralize(&shell, m, &Control::new()) {
                     Ok(mesh) => {
                         let cert = certify_shell(&shell.points, &mesh.tets, &shell.inner);
@@ -990,4 +991,60 @@ fn every_degenerate_shell_is_tetrahedralized() {
         }
     }
     assert!(endings[0] > 2000 && endings[1] > 10, "{endings:?}");
+}
+
+/// BIGCAP-REMOVE's steps (`Method::Thesis`, the lemma's check left out) on the issue's
+/// small random shells in general position: 8 to 14 points on a sphere or a flattened
+/// one around 4 to 8 on a small off-centre sphere. Every mesh is certified; what the
+/// steps did and §4.4's largest weight are printed.
+#[test]
+fn thesis_steps_on_small_random_shells() {
+    let mut rng = tetrakit::rng::Rng::new(41);
+    let (mut whole, mut repaired, mut rounds, mut heaviest, mut by_removal) = (0, 0, 0, 0, 0);
+    let mut caps_by_removal = 0;
+    let mut worst_per_vertex = 0f64;
+    let sphere = |rng: &mut tetrakit::rng::Rng, m: usize, r: f64, c: Point3, flat: f64| {
+        (0..m)
+            .map(|_| {
+                let p = [0; 3].map(|_| 2.0 * rng.unit() - 1.0);
+                let l = (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt();
+                [
+                    c[0] + r * p[0] / l,
+                    c[1] + r * p[1] / l,
+                    c[2] + flat * r * p[2] / l,
+                ]
+            })
+            .collect::<Vec<Point3>>()
+    };
+    let shells = 200;
+    for k in 0..shells {
+        let flat = if k % 2 == 0 { 1.0 } else { 0.5 };
+        let outer = sphere(&mut rng, 8 + k % 7, 1.0, [0.0; 3], flat);
+        let c = [0.1, 0.1, 0.05].map(|s| s * (2.0 * rng.unit() - 1.0));
+        let inner = sphere(&mut rng, 4 + k % 5, 0.15, c, 1.0);
+        let Ok(shell) = Shell::new(&outer, &inner) else {
+            continue;
+        };
+        let mesh = tetrahedralize(&shell, Method::Thesis, &Control::new()).expect("a mesh");
+        let cert = certify_shell(&shell.points, &mesh.tets, &shell.inner);
+        assert_eq!(cert, Ok(()), "shell {k}");
+        assert!(ledger_is_exact(&mesh), "shell {k}");
+        let steps = mesh.thesis.expect("the steps ran");
+        (whole, repaired, rounds) = (
+            whole + steps.s_bigcaps,
+            repaired + steps.repaired,
+            rounds + steps.rounds,
+        );
+        if let Some(l) = &mesh.ledger {
+            heaviest = heaviest.max(l.heaviest().0);
+            by_removal += 1;
+        }
+        worst_per_vertex = worst_per_vertex.max(mesh.tets.len() as f64 / shell.n() as f64);
+        let cap = tetrahedralize(&shell, Method::Cap, &Control::new()).expect("a mesh");
+        caps_by_removal += usize::from(cap.finished_by == Finish::Removal);
+    }
+    eprintln!(
+        "{shells} shells: {rounds} rounds, {whole} S-bigcaps whole, {repaired} repaired; {by_removal} finished by removal (caps: {caps_by_removal}); largest weight {heaviest}; most tetrahedra per vertex {worst_per_vertex:.2}"
+    );
+    assert!(rounds > 0 && whole + repaired > 0 && heaviest <= 8);
 }

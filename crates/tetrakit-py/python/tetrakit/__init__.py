@@ -399,6 +399,7 @@ class ShellResult:
     finished_by: Optional[str] = None
     flips: Optional[dict] = None
     weights: Optional[dict] = None
+    thesis_steps: Optional[dict] = None
 
 
 def shell(outer, inner, method: str = "cap", flips: bool = True, optimum: bool = False,

@@ -48,13 +48,15 @@ pub fn shell_text(o: &ShellOutcome, seconds: f64) -> String {
         Some("holds") => {
             let _ = writeln!(
                 s,
-                "  Lemma 4.1 holds at every tip of the outer polytope; BIGCAP-REMOVE's steps 2–6 are not built, the greedy bigcaps ran"
+                "  Lemma 4.1 holds at every tip of the outer polytope; BIGCAP-REMOVE's steps ran{}",
+                steps_text(o)
             );
         }
         Some(_) => {
             let _ = writeln!(
                 s,
-                "  Lemma 4.1 not examined (the inner polytope touches the outer one); the greedy bigcaps ran"
+                "  Lemma 4.1 not examined (the inner polytope touches the outer one); BIGCAP-REMOVE's steps ran{}",
+                steps_text(o)
             );
         }
         None => {}
@@ -104,4 +106,15 @@ pub fn shell_text(o: &ShellOutcome, seconds: f64) -> String {
         );
     }
     s
+}
+
+/// What BIGCAP-REMOVE's steps did, for the text line (empty when the mesh is another
+/// method's).
+fn steps_text(o: &ShellOutcome) -> String {
+    o.thesis_steps.map_or(String::new(), |t| {
+        format!(
+            ": {} round(s) of Steps 2–3, {} S-bigcap(s) whole, {} repaired (refused as the thesis defines them), {} Step-1 cap(s)",
+            t.rounds, t.s_bigcaps, t.repaired, t.step_1_caps
+        )
+    })
 }

@@ -5,7 +5,7 @@
 //! other method is run too and the smaller mesh kept; `within_bound` says how it ended.
 
 use super::lemma41::{Lemma41, Lemma41Witness, lemma_4_1};
-use super::{Improvement, Method, Shell, ShellError, improve, tetrahedralize};
+use super::{Improvement, Method, Shell, ShellError, ThesisSteps, improve, tetrahedralize};
 use crate::bug::Bug;
 use crate::control::{Control, Verdict};
 use crate::geom::orient3d_value;
@@ -66,6 +66,10 @@ pub struct ShellOutcome {
     /// Where the lemma fails: the tip, `U_v` and the bottom triangle the tip cannot see.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub witness: Option<AssumptionWitness>,
+    /// `--method thesis` where the lemma does not stop it: what BIGCAP-REMOVE's steps did
+    /// (Step 1's caps, rounds of Steps 2–3, S-bigcaps removed whole and repaired).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub thesis_steps: Option<ThesisSteps>,
     /// With `optimum`: the exact minimum, or its bounds when stopped first.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub optimum: Option<Optimum>,
@@ -146,6 +150,7 @@ pub fn shell(s: &Shell, opts: ShellOptions, ctl: &Control) -> Result<ShellOutcom
         finished_by: None,
         flips: None,
         weights: None,
+        thesis_steps: None,
         tets: Vec::new(),
     };
     if opts.method == Method::Thesis {
@@ -196,6 +201,7 @@ pub fn shell(s: &Shell, opts: ShellOptions, ctl: &Control) -> Result<ShellOutcom
     o.pieces = Some(mesh.pieces);
     o.finished_by = Some(mesh.finished_by);
     o.weights = mesh.ledger.as_ref().map(|l| Weights::new(s, l));
+    o.thesis_steps = mesh.thesis;
     o.flips = Some(opts.flips.then_some(FlipCounts {
         three_two: done.three_two,
         delaunay: done.delaunay,

@@ -227,6 +227,16 @@ impl<'a> Surface<'a> {
         self.incident[v as usize].clone()
     }
 
+    /// Every point (the shell's).
+    pub(super) fn points(&self) -> &'a [Point3] {
+        self.pts
+    }
+
+    /// The vertices of triangle `t`.
+    pub(super) fn triangle(&self, t: u32) -> [u32; 3] {
+        self.tris[t as usize]
+    }
+
     /// The number of live triangles at `v` (its degree on the surface).
     pub(super) fn degree(&mut self, v: u32) -> usize {
         self.star(v).len()

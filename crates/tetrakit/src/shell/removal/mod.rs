@@ -3,13 +3,17 @@
 //! cap is refused, and the order removed so far when nothing more is (for the placing
 //! that finishes the shell, see [`super::tetrahedralize`]).
 
+mod thesis;
+
 use super::Method;
 use super::ledger::Record;
+use super::lemma41::Blocker;
 use super::surface::{self, Surface};
 use crate::control::{Control, Stopped};
 use rustc_hash::FxHashSet as HashSet;
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
+pub use thesis::ThesisSteps;
 
 /// The most vertices one bigcap removes (each added vertex costs a local hull).
 const BIGCAP_LIMIT: usize = 32;
@@ -44,6 +48,8 @@ pub(super) struct Removed {
     pub order: Vec<u32>,
     /// The vertices no piece removed (every cap, pair and bigcap at them refused).
     pub left: Vec<u32>,
+    /// What BIGCAP-REMOVE's steps did ([`Method::Thesis`]).
+    pub thesis: Option<ThesisSteps>,
 }
 
 impl Removal<'_, '_> {
@@ -161,25 +167,38 @@ impl Removal<'_, '_> {
 /// Bern's order: the removable vertex of least degree first (ties by number), degrees
 /// updated as the surface changes (a lazy heap: stale entries are skipped). A refused cap
 /// is tried again once the surface has changed, and where every cap is refused, a tip
-/// with a neighbour; what is still refused then is [`Removed::left`].
+/// with a neighbour; what is still refused then is [`Removed::left`]. For
+/// [`Method::Thesis`], BIGCAP-REMOVE's rounds ([`thesis`]) first, `inner` being `Q`'s
+/// vertices; Bern's order takes what they leave.
 pub(super) fn run(
     surface: &mut Surface,
     removable: &[u32],
+    inner: &[u32],
     method: Method,
     ctl: &Control,
 ) -> Result<Removed, Stopped> {
-    let heap = removable
-        .iter()
-        .map(|&v| Reverse((surface.degree(v), v)))
-        .collect();
     let mut r = Removal {
         surface,
         left: removable.iter().copied().collect(),
-        heap,
+        heap: BinaryHeap::new(),
         tets: Vec::new(),
         records: Vec::new(),
         order: Vec::with_capacity(removable.len()),
     };
+    let thesis = match method {
+        Method::Thesis => {
+            let pts = r.surface.points();
+            let q: Vec<_> = inner.iter().map(|&v| pts[v as usize]).collect();
+            Some(thesis::run(&mut r, inner, &Blocker::new(&q), ctl)?)
+        }
+        _ => None,
+    };
+    let mut left: Vec<u32> = r.left.iter().copied().collect();
+    left.sort_unstable();
+    r.heap = left
+        .into_iter()
+        .map(|v| Reverse((r.surface.degree(v), v)))
+        .collect();
     let total = removable.len();
     let mut refused: Vec<u32> = Vec::new();
     loop {
@@ -201,8 +220,8 @@ pub(super) fn run(
         }
         ctl.check()?;
         let done = match method {
-            Method::Cap => r.cap(v),
-            Method::Bigcap | Method::Thesis => r.bigcap(v),
+            Method::Cap | Method::Thesis => r.cap(v),
+            Method::Bigcap => r.bigcap(v),
         };
         if done {
             ctl.items((total - r.left.len()) as u64, total as u64);
@@ -217,5 +236,6 @@ pub(super) fn run(
         records: r.records,
         order: r.order,
         left,
+        thesis,
     })
 }
