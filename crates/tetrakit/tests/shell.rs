@@ -1001,7 +1001,7 @@ fn every_degenerate_shell_is_tetrahedralized() {
 fn thesis_steps_on_small_random_shells() {
     let mut rng = tetrakit::rng::Rng::new(41);
     let (mut whole, mut repaired, mut rounds, mut heaviest, mut by_removal) = (0, 0, 0, 0, 0);
-    let mut caps_by_removal = 0;
+    let (mut caps_by_removal, mut valid) = (0, 0);
     let mut worst_per_vertex = 0f64;
     let sphere = |rng: &mut tetrakit::rng::Rng, m: usize, r: f64, c: Point3, flat: f64| {
         (0..m)
@@ -1023,8 +1023,9 @@ fn thesis_steps_on_small_random_shells() {
         let c = [0.1, 0.1, 0.05].map(|s| s * (2.0 * rng.unit() - 1.0));
         let inner = sphere(&mut rng, 4 + k % 5, 0.15, c, 1.0);
         let Ok(shell) = Shell::new(&outer, &inner) else {
-            continue;
+            continue; // Q reaches out of P
         };
+        valid += 1;
         let mesh = tetrahedralize(&shell, Method::Thesis, &Control::new()).expect("a mesh");
         let cert = certify_shell(&shell.points, &mesh.tets, &shell.inner);
         assert_eq!(cert, Ok(()), "shell {k}");
@@ -1044,7 +1045,8 @@ fn thesis_steps_on_small_random_shells() {
         caps_by_removal += usize::from(cap.finished_by == Finish::Removal);
     }
     eprintln!(
-        "{shells} shells: {rounds} rounds, {whole} S-bigcaps whole, {repaired} repaired; {by_removal} finished by removal (caps: {caps_by_removal}); largest weight {heaviest}; most tetrahedra per vertex {worst_per_vertex:.2}"
+        "{valid} of {shells} shells nested: {rounds} rounds, {whole} S-bigcaps whole, {repaired} repaired; {by_removal} finished by removal (caps: {caps_by_removal}); largest weight {heaviest}; most tetrahedra per vertex {worst_per_vertex:.2}"
     );
     assert!(rounds > 0 && whole + repaired > 0 && heaviest <= 8);
+    assert!(valid > 100 && by_removal == valid && caps_by_removal == valid);
 }

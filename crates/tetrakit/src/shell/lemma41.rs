@@ -337,6 +337,8 @@ pub(super) struct Blocker {
     points: Vec<Point3>,
     planes: Vec<[Point3; 3]>,
     edges: Vec<[Point3; 2]>,
+    /// The boundary's triangles.
+    triangles: Vec<[Point3; 3]>,
 }
 
 impl Blocker {
@@ -357,11 +359,43 @@ impl Blocker {
                 }
             }
         }
+        let triangles = hull
+            .triangles
+            .iter()
+            .map(|t| t.map(|i| points[i as usize]))
+            .collect();
         Blocker {
             points: points.to_vec(),
             planes,
             edges,
+            triangles,
         }
+    }
+
+    /// A point of `s` lies in the closed polytope, or a segment between two points of
+    /// `s` crosses a boundary triangle (its ends strictly on both sides of the
+    /// triangle's plane, the line through the closed triangle), so `conv(s)` meets the
+    /// polytope: the quick NO of [`Blocker::misses`], `orient3d` only.
+    fn crossed(&self, s: &[Point3]) -> bool {
+        let sign = |a: &Point3, b: &Point3, c: &Point3, d: &Point3| orient3d(a, b, c, d);
+        let inside = |p: &Point3| self.planes.iter().all(|[a, b, c]| sign(a, b, c, p) <= 0);
+        if s.iter().any(inside) {
+            return true;
+        }
+        (0..s.len()).any(|i| {
+            (i + 1..s.len()).any(|j| {
+                let (a, b) = (&s[i], &s[j]);
+                self.triangles.iter().any(|[x, y, z]| {
+                    let (sa, sb) = (sign(x, y, z, a), sign(x, y, z, b));
+                    if sa == 0 || sb == 0 || sa == sb {
+                        return false;
+                    }
+                    // Not all three zero: the ends are on both sides of the plane.
+                    let e = [sign(a, b, x, y), sign(a, b, y, z), sign(a, b, z, x)];
+                    e.iter().all(|&k| k >= 0) || e.iter().all(|&k| k <= 0)
+                })
+            })
+        })
     }
 
     /// `conv(s)` misses the polytope: some plane separates them strictly. The candidates
@@ -369,6 +403,12 @@ impl Blocker {
     /// three points of `s`, or a plane spanned by a direction of `s` and an edge
     /// direction of the polytope.
     pub(super) fn misses(&self, s: &[Point3]) -> bool {
+        !self.crossed(s) && self.separated(s)
+    }
+
+    /// Some candidate plane of [`Blocker::misses`] separates `conv(s)` from the
+    /// polytope strictly.
+    fn separated(&self, s: &[Point3]) -> bool {
         let outside =
             |a: &Point3, b: &Point3, c: &Point3| s.iter().all(|x| orient3d(a, b, c, x) > 0);
         if self.planes.iter().any(|[a, b, c]| outside(a, b, c)) {
@@ -526,6 +566,34 @@ impl Filtered {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// What the quick test finds (a point inside, a crossing) is never separated: on random
+    /// and grid segments and triangles, the quick NO agrees with the full search run
+    /// without it.
+    #[test]
+    fn the_quick_crossing_agrees_with_the_separating_planes() {
+        let mut rng = crate::rng::Rng::new(13);
+        let mut crossings = 0;
+        for case in 0..3000 {
+            let pick = |rng: &mut crate::rng::Rng| -> Point3 {
+                match case % 2 {
+                    0 => [0; 3].map(|_| rng.below(5) as f64),
+                    _ => [0; 3].map(|_| rng.unit() * 4.0),
+                }
+            };
+            let q: Vec<Point3> = (0..5).map(|_| pick(&mut rng)).collect();
+            if Hull3::new(&q).dimension < 3 {
+                continue;
+            }
+            let b = Blocker::new(&q);
+            let s: Vec<Point3> = (0..2 + case % 3).map(|_| pick(&mut rng)).collect();
+            if b.crossed(&s) {
+                crossings += 1;
+                assert!(!b.separated(&s), "case {case}");
+            }
+        }
+        assert!(crossings > 300, "{crossings}");
+    }
 
     /// The filtered axis test answers as the exact one, on grid points (ties, zero
     /// values, parallel axes) and on random ones.
