@@ -75,16 +75,25 @@ impl Removal<'_, '_> {
     /// [`BIGCAP_TRIES`] sets tried) whose piece is still star-shaped from `v` and passes
     /// every check of [`Surface::plan`]; false when even the cap at `v` is refused.
     fn bigcap(&mut self, v: u32) -> bool {
+        self.grow(v, None, BIGCAP_LIMIT, BIGCAP_TRIES)
+    }
+
+    /// Removes the largest set grown greedily from `{v}` over the vertices left (and in
+    /// `within`, if given): neighbours of the set in increasing number, each kept while
+    /// [`Surface::plan`] accepts the piece, at most `limit` vertices and `tries` sets
+    /// tried; false when even the cap at `v` is refused.
+    fn grow(&mut self, v: u32, within: Option<&HashSet<u32>>, limit: usize, tries: usize) -> bool {
         let mut set = vec![v];
         let Ok(mut best) = self.surface.plan(v, &set) else {
             return false;
         };
         let mut tried: HashSet<u32> = set.iter().copied().collect();
-        while tried.len() < BIGCAP_TRIES {
+        while tried.len() < tries {
             let mut next: Vec<u32> = set
                 .iter()
                 .flat_map(|&u| self.surface.neighbours(u))
                 .filter(|u| self.left.contains(u) && !tried.contains(u))
+                .filter(|u| within.is_none_or(|w| w.contains(u)))
                 .collect();
             next.sort_unstable();
             next.dedup();
@@ -93,7 +102,7 @@ impl Removal<'_, '_> {
             }
             for u in next {
                 tried.insert(u);
-                if set.len() >= BIGCAP_LIMIT || tried.len() > BIGCAP_TRIES {
+                if set.len() >= limit || tried.len() > tries {
                     break;
                 }
                 set.push(u);
@@ -104,7 +113,7 @@ impl Removal<'_, '_> {
                     }
                 }
             }
-            if set.len() >= BIGCAP_LIMIT {
+            if set.len() >= limit {
                 break;
             }
         }

@@ -213,34 +213,5 @@ fn u_v(r: &mut Removal, v: u32, s: &HashSet<u32>, q: &Blocker) -> Vec<u32> {
 /// `v` is refused.
 fn grown(r: &mut Removal, v: u32, within: &[u32]) -> bool {
     let allowed: HashSet<u32> = within.iter().copied().collect();
-    let mut set = vec![v];
-    let Ok(mut best) = r.surface.plan(v, &set) else {
-        return false;
-    };
-    let mut tried: HashSet<u32> = HashSet::default();
-    tried.insert(v);
-    loop {
-        let mut next: Vec<u32> = set
-            .iter()
-            .flat_map(|&u| r.surface.neighbours(u))
-            .filter(|u| allowed.contains(u) && !tried.contains(u))
-            .collect();
-        next.sort_unstable();
-        next.dedup();
-        if next.is_empty() {
-            break;
-        }
-        for u in next {
-            tried.insert(u);
-            set.push(u);
-            match r.surface.plan(v, &set) {
-                Ok(p) => best = p,
-                Err(_) => {
-                    set.pop();
-                }
-            }
-        }
-    }
-    r.take(v, best, &set);
-    true
+    r.grow(v, Some(&allowed), usize::MAX, usize::MAX)
 }
