@@ -5,7 +5,7 @@ use crate::exit::{CliError, CmdResult, WriteContext};
 use crate::progress::Run;
 use std::path::Path;
 use std::time::{Duration, Instant};
-use tetrakit::flipgraph::{FlipError, FlipOptions, flip_graph};
+use tetrakit::flipgraph::{FlipError, FlipOptions, count, flip_graph};
 use tetrakit::{io, report};
 
 /// What `flips` was asked.
@@ -15,6 +15,7 @@ pub struct FlipsArgs<'a> {
     pub time_limit: Option<Duration>,
     pub as_json: bool,
     pub output: Option<&'a Path>,
+    pub count_only: bool,
 }
 
 pub fn flips(a: FlipsArgs) -> CmdResult {
@@ -31,6 +32,16 @@ pub fn flips(a: FlipsArgs) -> CmdResult {
         ..FlipOptions::default()
     };
     let run = Run::new(a.time_limit, input.points.len(), 12);
+    if a.count_only {
+        let c = count(&input.points, opts.limit, &run.ctl).map_err(|e| blame(e, &input))?;
+        drop(run);
+        let seconds = start.elapsed().as_secs_f64();
+        match a.as_json {
+            true => out!("{}", report::json(&c, [("seconds", seconds.into())])),
+            false => out!("{}", report::flip_count_text(&c, seconds)),
+        }
+        return Ok(c.verdict);
+    }
     let g = flip_graph(&input.points, &opts, &run.ctl).map_err(|e| blame(e, &input))?;
     drop(run);
     let g = g.shifted(input.index_base);

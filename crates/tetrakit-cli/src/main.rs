@@ -315,6 +315,10 @@ struct FlipsArgs {
     /// Write the graph as JSON: the points, every tetrahedralization, every flip.
     #[arg(long, short, value_name = "G.json")]
     output: Option<PathBuf>,
+    /// Only count the tetrahedralizations (each certified, none kept: no graph, and
+    /// memory for one at a time), as TOPCOM's points2nallfinetriangs does.
+    #[arg(long, conflicts_with = "output")]
+    count_only: bool,
 }
 
 #[derive(Args)]
@@ -907,6 +911,7 @@ fn run(cmd: Cmd) -> CmdResult {
             time_limit: a.time_limit,
             as_json: a.json,
             output: a.output.as_deref(),
+            count_only: a.count_only,
         }),
         Cmd::Shell(a) => shell::shell(shell::ShellArgs {
             outer: &a.outer,

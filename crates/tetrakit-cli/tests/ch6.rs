@@ -41,6 +41,39 @@ fn the_cube_is_connected_and_its_graph_is_written() {
     );
 }
 
+/// `--count-only`: the cube's 74, each certified, and no graph; at a limit, undecided
+/// (exit 3) with at least that many; with `--output`, a usage error.
+#[test]
+fn counting_only() {
+    let d = dir("count");
+    let pts = d.join("cube.xyz");
+    std::fs::write(&pts, CUBE).unwrap();
+    let o = run(&["flips", s(&pts), "--count-only", "--json"]);
+    assert_eq!(o.status.code(), Some(0));
+    let v = json(&o);
+    assert_eq!(
+        (v["verdict"].as_str(), v["tetrahedralizations"].as_u64()),
+        (Some("yes"), Some(74))
+    );
+    assert!(v.get("flips").is_none() && v["certified"] == true && v["cut"].is_null());
+    let o = run(&["flips", s(&pts), "--count-only", "--limit", "10", "--json"]);
+    assert_eq!(o.status.code(), Some(3));
+    assert_eq!(
+        (
+            json(&o)["tetrahedralizations"].as_u64(),
+            json(&o)["cut"].as_str()
+        ),
+        (Some(10), Some("limit"))
+    );
+    let text = String::from_utf8(run(&["flips", s(&pts), "--count-only"]).stdout).unwrap();
+    assert!(
+        text.starts_with("74 tetrahedralizations of the 8 points"),
+        "{text}"
+    );
+    let o = run(&["flips", s(&pts), "--count-only", "-o", s(&d.join("g.json"))]);
+    assert_eq!(o.status.code(), Some(2));
+}
+
 /// A 1-based TetGen file: the tetrahedralizations name its numbers.
 #[test]
 fn tetrahedra_are_in_the_files_numbering() {

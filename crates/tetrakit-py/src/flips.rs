@@ -5,7 +5,7 @@ use crate::convert::{self, Json, Rows, array, value_error};
 use numpy::{PyArray2, PyReadonlyArray2};
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
-use tetrakit::flipgraph::{FlipError, FlipKind, FlipOptions, flip_graph};
+use tetrakit::flipgraph::{FlipError, FlipKind, FlipOptions, count, flip_graph};
 use tetrakit::report;
 
 type FlipsOut<'py> = (
@@ -26,6 +26,31 @@ fn points_in_space(points: &PyReadonlyArray2<'_, f64>) -> PyResult<Vec<tetrakit:
     Ok(convert::input(pts, dim, &Rows::default(), false)?.points)
 }
 
+/// A bug is a `RuntimeError`, anything else about the set a `ValueError`.
+fn raised(e: FlipError) -> PyErr {
+    match e {
+        FlipError::FlipOutside { .. } | FlipError::Uncertified { .. } | FlipError::NoAnchor => {
+            PyRuntimeError::new_err(format!("{e} (a bug: please report it)"))
+        }
+        _ => value_error(e),
+    }
+}
+
+/// `count_tetrahedralizations(points, limit, time_limit)`: the count as JSON.
+#[pyfunction]
+#[pyo3(signature = (points, limit=usize::MAX, time_limit=None))]
+pub fn count_tetrahedralizations(
+    py: Python<'_>,
+    points: PyReadonlyArray2<'_, f64>,
+    limit: usize,
+    time_limit: Option<f64>,
+) -> PyResult<Json> {
+    let ctl = convert::control(time_limit)?;
+    let pts = points_in_space(&points)?;
+    let c = convert::run(py, &ctl, || count(&pts, limit.max(1), &ctl))?.map_err(raised)?;
+    Ok(report::json(&c, []).to_string())
+}
+
 /// `flips(points, limit, time_limit)`: the outcome as JSON, every tetrahedralization
 /// found (one array of tetrahedra each), the flips as pairs of places in that list
 /// (`i < j`) and each flip's kind (`"2-3"`, `"2-2"`, `"4-4"`).
@@ -43,12 +68,7 @@ pub fn flips<'py>(
         limit: limit.max(1),
         ..FlipOptions::default()
     };
-    let g = convert::run(py, &ctl, || flip_graph(&pts, &opts, &ctl))?.map_err(|e| match e {
-        FlipError::FlipOutside { .. } | FlipError::Uncertified { .. } | FlipError::NoAnchor => {
-            PyRuntimeError::new_err(format!("{e} (a bug: please report it)"))
-        }
-        _ => value_error(e),
-    })?;
+    let g = convert::run(py, &ctl, || flip_graph(&pts, &opts, &ctl))?.map_err(raised)?;
     let all = (0..g.tetrahedralizations)
         .map(|i| array(py, &g.tetrahedralization(i)))
         .collect();

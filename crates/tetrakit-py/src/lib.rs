@@ -30,6 +30,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(poly::tetrahedralize, m)?)?;
     m.add_function(wrap_pyfunction!(poly::shell, m)?)?;
     m.add_function(wrap_pyfunction!(flips::flips, m)?)?;
+    m.add_function(wrap_pyfunction!(flips::count_tetrahedralizations, m)?)?;
     m.add_function(wrap_pyfunction!(flips::hamiltonian, m)?)?;
     m.add_function(wrap_pyfunction!(planar::skeleton, m)?)?;
     m.add_function(wrap_pyfunction!(planar::mwt, m)?)?;

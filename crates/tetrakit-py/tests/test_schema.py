@@ -386,6 +386,19 @@ FLIPS = {"cube": (CUBE, {}, "yes"),
          "stopped": (GRID12, {"time_limit": 0.0}, "undecided")}
 
 
+def test_flip_count_follows_the_schema(tmp_path):
+    s = schema("flips-count")
+    cube = np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)], dtype=float)
+    for limit in (None, 10):
+        result = tetrakit.count_tetrahedralizations(cube, limit=limit)
+        jsonschema.validate(fields(result, s), s)
+    path = tmp_path / "cube.xyz"
+    path.write_text("".join(f"{x} {y} {z}\n" for x, y, z in cube))
+    cli = cli_json("flips", path, "--count-only")
+    jsonschema.validate(cli, s)
+    assert cli["tetrahedralizations"] == 74 == tetrakit.count_tetrahedralizations(cube).tetrahedralizations
+
+
 @pytest.mark.parametrize("case", sorted(FLIPS))
 def test_flips_json_follows_the_schema(tmp_path, case):
     pts, opts, want = FLIPS[case]

@@ -181,6 +181,11 @@ fn counts_equal_topcom() {
                 .map(|i| set(&g.tetrahedralization(i)))
                 .collect();
             assert_eq!(distinct.len(), g.tetrahedralizations, "{name}: repeats");
+            let c = tetrakit::flipgraph::count(&pts, usize::MAX, &Control::new()).unwrap();
+            assert_eq!(
+                (c.tetrahedralizations, c.candidates),
+                (g.tetrahedralizations, g.candidates)
+            );
             let Some((all, reached, flips)) = topcom(&pts) else {
                 eprintln!("TOPCOM not on the PATH: skipped");
                 return;
@@ -228,6 +233,12 @@ fn lattice_sets_equal_topcom() {
         };
         let facts = g.graph.as_ref().unwrap();
         assert_eq!(g.tetrahedralizations, all, "{pts:?}");
+        let c = tetrakit::flipgraph::count(&pts, usize::MAX, &Control::new()).unwrap();
+        assert_eq!(
+            (c.tetrahedralizations, c.verdict),
+            (all, Verdict::Yes),
+            "{pts:?}"
+        );
         assert_eq!(facts.components, 1, "{pts:?}: TOPCOM reaches {reached}");
         assert_eq!((reached, facts.flips.total), (all, flips), "{pts:?}");
         compared += 1;

@@ -40,6 +40,7 @@ __all__ = [
     "tetrahedralize",
     "shell",
     "flips",
+    "count_tetrahedralizations",
     "hamiltonian",
     "skeleton",
     "mwt",
@@ -53,6 +54,7 @@ __all__ = [
     "TetrahedralizeResult",
     "ShellResult",
     "FlipsResult",
+    "CountResult",
     "HamiltonianResult",
     "SkeletonResult",
     "MwtResult",
@@ -454,6 +456,36 @@ class FlipsResult:
     isolated: Optional[list] = None
     diameter: Optional[int] = None
     witness: Optional[dict] = None
+
+
+@dataclass
+class CountResult:
+    """The count of :func:`count_tetrahedralizations` (``tetrakit flips --count-only --json``)."""
+
+    verdict: str
+    points: int
+    candidates: int
+    tetrahedralizations: int
+    cut: Optional[str]
+    certified: bool
+
+
+def count_tetrahedralizations(points, limit: Optional[int] = None,
+                              time_limit: Optional[float] = None) -> CountResult:
+    """How many tetrahedralizations of ``points`` use every point (TOPCOM's fine
+    triangulations), each certified as it is found and none kept; ``"undecided"`` with at
+    least that many when ``limit`` or ``time_limit`` cuts the enumeration.
+
+    >>> import numpy as np, tetrakit
+    >>> cube = np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)], dtype=float)
+    >>> tetrakit.count_tetrahedralizations(cube).tetrahedralizations
+    74
+    """
+    if limit is None:
+        text = _core.count_tetrahedralizations(_points(points), time_limit=time_limit)
+    else:
+        text = _core.count_tetrahedralizations(_points(points), limit, time_limit)
+    return _make(CountResult, text)
 
 
 def flips(points, limit: int = 1_000_000, time_limit: Optional[float] = None) -> FlipsResult:

@@ -301,8 +301,18 @@ pub fn for_each_tetrahedralization(
     points: &[Point3],
     limit: usize,
     ctl: &Control,
-    mut each: impl FnMut(Vec<[u32; 4]>) -> bool,
+    each: impl FnMut(Vec<[u32; 4]>) -> bool,
 ) -> Result<(Option<Cut>, usize), FlipError> {
+    streamed(points, limit, ctl, each).map(|(cut, count, _)| (cut, count))
+}
+
+/// [`for_each_tetrahedralization`], with the number of candidates.
+fn streamed(
+    points: &[Point3],
+    limit: usize,
+    ctl: &Control,
+    mut each: impl FnMut(Vec<[u32; 4]>) -> bool,
+) -> Result<(Option<Cut>, usize, usize), FlipError> {
     let (c, start) = prepared(points, ctl)?;
     let tets: Vec<[u32; 4]> = c.tets.iter().map(|&t| oriented(points, t)).collect();
     let mut count = 0;
@@ -311,7 +321,72 @@ pub fn for_each_tetrahedralization(
         each(ids.iter().map(|&t| tets[t as usize]).collect())
     };
     let (cut, _) = enumerate::visit(&c, &start, limit.max(1), ctl, &mut visit);
-    Ok((cut, count))
+    Ok((cut, count, tets.len()))
+}
+
+/// The number of tetrahedralizations of a point set that use every point
+/// ([`count`]): `tetrakit flips --count-only --json` without the timing.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct Count {
+    /// `yes` when every tetrahedralization was counted, `undecided` when the limit or
+    /// the time limit cut the enumeration (there are at least that many).
+    pub verdict: Verdict,
+    /// Points.
+    pub points: usize,
+    /// Empty tetrahedra the enumeration chose from.
+    pub candidates: usize,
+    /// Tetrahedralizations counted, each certified.
+    pub tetrahedralizations: usize,
+    /// Why the enumeration ended early, if it did.
+    pub cut: Option<Cut>,
+    /// Every one counted passed [`mesh::verify`] against the hull.
+    pub certified: bool,
+}
+
+/// Counts the tetrahedralizations of `points` that use every point, as [`flip_graph`]
+/// enumerates them (up to `limit`), without keeping any: each is checked by
+/// [`mesh::verify`] against the hull as it is found and dropped, so the count of
+/// millions takes the memory of one. TOPCOM's `points2nallfinetriangs` counts the same
+/// (fine triangulations).
+///
+/// ```
+/// use tetrakit::control::{Control, Verdict};
+/// use tetrakit::flipgraph::count;
+/// let cube: Vec<[f64; 3]> = (0..8).map(|i| [(i & 1) as f64, (i >> 1 & 1) as f64, (i >> 2) as f64]).collect();
+/// let c = count(&cube, usize::MAX, &Control::new()).unwrap();
+/// assert_eq!((c.verdict, c.tetrahedralizations, c.certified), (Verdict::Yes, 74, true));
+/// let c = count(&cube, 10, &Control::new()).unwrap();
+/// assert_eq!((c.verdict, c.tetrahedralizations), (Verdict::Undecided, 10));
+/// ```
+pub fn count(points: &[Point3], limit: usize, ctl: &Control) -> Result<Count, FlipError> {
+    let hull = Hull3::new(points);
+    let mut failed = None;
+    let (cut, n, candidates) = streamed(points, limit, ctl, |t| {
+        match mesh::verify(points, &t, Some(&hull)).problems.first() {
+            None => true,
+            Some(p) => {
+                failed = Some(p.clone());
+                false
+            }
+        }
+    })?;
+    if let Some(problem) = failed {
+        return Err(FlipError::Uncertified {
+            index: n - 1,
+            problem,
+        });
+    }
+    Ok(Count {
+        verdict: match cut {
+            None => Verdict::Yes,
+            Some(_) => Verdict::Undecided,
+        },
+        points: points.len(),
+        candidates,
+        tetrahedralizations: n,
+        cut,
+        certified: true,
+    })
 }
 
 /// The candidates of `points` and those that hold the anchor (where every search starts).

@@ -2,10 +2,38 @@
 //! `--output G.json` writes.
 
 use crate::control::Verdict;
-use crate::flipgraph::{Cut, FlipGraph, FlipKind};
+use crate::flipgraph::{Count, Cut, FlipGraph, FlipKind};
 use crate::geom::Point3;
 use serde_json::{Value, json};
 use std::fmt::Write;
+
+/// The line a person reads for a count of tetrahedralizations made in `seconds`.
+///
+/// ```
+/// use tetrakit::control::Control;
+/// let pts = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [1.0, 1.0, 1.0]];
+/// let c = tetrakit::flipgraph::count(&pts, usize::MAX, &Control::new()).unwrap();
+/// let text = tetrakit::report::flip_count_text(&c, 0.0);
+/// assert!(text.starts_with("2 tetrahedralizations"));
+/// ```
+pub fn flip_count_text(c: &Count, seconds: f64) -> String {
+    let n = c.tetrahedralizations;
+    let what = match c.cut {
+        None => format!("{n} tetrahedralizations"),
+        Some(Cut::Limit) => {
+            format!(
+                "UNDECIDED: at least {n} tetrahedralizations (the enumeration stopped at the limit)"
+            )
+        }
+        Some(_) => {
+            format!("UNDECIDED: at least {n} tetrahedralizations (stopped at the time limit)")
+        }
+    };
+    format!(
+        "{what} of the {} points using every point, from {} empty tetrahedra, every one certified [{seconds:.3} s]",
+        c.points, c.candidates
+    )
+}
 
 /// The lines a person reads for a flip graph computed in `seconds`.
 ///

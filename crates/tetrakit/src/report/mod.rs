@@ -20,7 +20,7 @@ mod shell;
 pub use check::{MeshFacts, check_printed, check_text, mesh_facts, pieces_text, problem_pieces};
 pub use constrain::{constrain_json, constrain_text};
 pub use detect::{detect_json, detect_text};
-pub use flips::{flip_graph_json, flips_text};
+pub use flips::{flip_count_text, flip_graph_json, flips_text};
 pub use keil_picture::keil_svg;
 pub use planar::{
     check_random_json, check_random_text, keil_json, keil_text, mwt_json, mwt_text, skeleton_json,
