@@ -72,6 +72,25 @@ fn counting_only() {
     );
     let o = run(&["flips", s(&pts), "--count-only", "-o", s(&d.join("g.json"))]);
     assert_eq!(o.status.code(), Some(2));
+    // A 3 × 2 × 2 grid (10,748 in all) cut by a zero time limit: at least that many.
+    let grid = d.join("grid.xyz");
+    let text: String = (0..12)
+        .map(|i| format!("{} {} {}\n", i % 3, i / 3 % 2, i / 6))
+        .collect();
+    std::fs::write(&grid, text).unwrap();
+    let o = run(&[
+        "flips",
+        s(&grid),
+        "--count-only",
+        "--time-limit",
+        "0",
+        "--json",
+    ]);
+    assert_eq!(
+        (o.status.code(), json(&o)["cut"].as_str()),
+        (Some(3), Some("time_limit"))
+    );
+    assert!(json(&o)["tetrahedralizations"].as_u64() < Some(10_748));
 }
 
 /// A 1-based TetGen file: the tetrahedralizations name its numbers.
