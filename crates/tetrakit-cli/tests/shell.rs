@@ -183,6 +183,9 @@ fn shell_bad_input_and_time_limit() {
         );
         let steps = &v["thesis_steps"];
         assert!(steps["rounds"].as_u64() > Some(0), "{kind}: {v}");
+        let chosen =
+            steps["step_3a_exact"].as_u64().unwrap() + steps["step_3a_every_tip"].as_u64().unwrap();
+        assert_eq!(Some(chosen), steps["rounds"].as_u64(), "{kind}: {v}");
         let pieces = steps["s_bigcaps"].as_u64().unwrap() + steps["repaired"].as_u64().unwrap();
         assert!(
             pieces > 0 && v["lemma_4_1"] == "not_examined",

@@ -371,7 +371,7 @@ fn bern_disks_within_the_bound_after_flips() {
 /// The exact optimum of 200 small random simplicial shells (n ≤ 18, 5 s each) against
 /// both methods, before and after the flips: never below it, and the worst ratios
 /// pinned a little above those measured (cap 1.30, cap with flips 1.19, bigcap 1.42,
-/// bigcap with flips 1.30).
+/// bigcap with flips 1.30, BIGCAP-REMOVE's steps 1.42, with flips 1.30).
 #[test]
 fn small_shells_against_the_exact_optimum() {
     let shapes = [Shape::Sphere, Shape::Random];
@@ -431,7 +431,7 @@ fn small_shells_against_the_exact_optimum() {
         solved * 10 >= tried * 9 && tried >= 150,
         "{solved} of {tried}"
     );
-    let pinned = [1.35, 1.25, 1.45, 1.35, 1.4, 1.35];
+    let pinned = [1.35, 1.25, 1.45, 1.35, 1.45, 1.35];
     assert!(worst.iter().zip(pinned).all(|(w, p)| *w <= p), "{worst:?}");
 }
 
@@ -1002,6 +1002,7 @@ fn thesis_steps_on_small_random_shells() {
     let mut rng = tetrakit::rng::Rng::new(41);
     let (mut whole, mut repaired, mut rounds, mut heaviest, mut by_removal) = (0, 0, 0, 0, 0);
     let (mut caps_by_removal, mut valid) = (0, 0);
+    let (mut exact, mut every_tip, mut largest) = (0, 0, 0);
     let mut worst_per_vertex = 0f64;
     let sphere = |rng: &mut tetrakit::rng::Rng, m: usize, r: f64, c: Point3, flat: f64| {
         (0..m)
@@ -1036,6 +1037,12 @@ fn thesis_steps_on_small_random_shells() {
             repaired + steps.repaired,
             rounds + steps.rounds,
         );
+        assert_eq!(steps.step_3a_exact + steps.step_3a_every_tip, steps.rounds);
+        (exact, every_tip) = (
+            exact + steps.step_3a_exact,
+            every_tip + steps.step_3a_every_tip,
+        );
+        largest = largest.max(steps.largest_p_a_searched);
         if let Some(l) = &mesh.ledger {
             heaviest = heaviest.max(l.heaviest().0);
             by_removal += 1;
@@ -1045,8 +1052,12 @@ fn thesis_steps_on_small_random_shells() {
         caps_by_removal += usize::from(cap.finished_by == Finish::Removal);
     }
     eprintln!(
-        "{valid} of {shells} shells nested: {rounds} rounds, {whole} S-bigcaps whole, {repaired} repaired; {by_removal} finished by removal (caps: {caps_by_removal}); largest weight {heaviest}; most tetrahedra per vertex {worst_per_vertex:.2}"
+        "{valid} of {shells} shells nested: {rounds} rounds ({exact} with Step 3a's exact minimum, |P_a| up to {largest}; {every_tip} with every tip), {whole} S-bigcaps whole, {repaired} repaired; {by_removal} finished by removal (caps: {caps_by_removal}); largest weight {heaviest}; most tetrahedra per vertex {worst_per_vertex:.2}"
     );
     assert!(rounds > 0 && whole + repaired > 0 && heaviest <= 8);
+    assert!(
+        exact * 2 > rounds && largest >= 3,
+        "{exact} of {rounds}, {largest}"
+    );
     assert!(valid > 100 && by_removal == valid && caps_by_removal == valid);
 }

@@ -16,6 +16,7 @@
 use crate::geom::Point3;
 
 /// Hidden inner vertices by the surface triangle above them.
+#[derive(Clone)]
 pub(super) struct Hidden {
     /// The centre of the rays: a point strictly inside `Q`.
     pub(super) centre: Point3,

@@ -372,6 +372,11 @@ impl Blocker {
         }
     }
 
+    /// Its vertices (what one test of [`Blocker::misses`] costs grows with).
+    pub(super) fn len(&self) -> usize {
+        self.points.len()
+    }
+
     /// A point of `s` lies in the closed polytope, or a segment between two points of
     /// `s` crosses a boundary triangle (its ends strictly on both sides of the
     /// triangle's plane, the line through the closed triangle), so `conv(s)` meets the

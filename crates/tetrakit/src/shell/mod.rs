@@ -23,14 +23,15 @@
 //!   is simple and not star-shaped from it, and [`lemma41::counterexample`] has 10
 //!   points. Where it fails the answer is the witness. Where it holds, BIGCAP-REMOVE's
 //!   Steps 1–3 and 5 run on the evolving hull (`Q_a`, `P_a`, `V_a^P`, the chains `C_a`,
-//!   `U_v^S` exact past `Q`; Step 3a takes every tip of `P_a` rather than the fewest,
-//!   Step 6 is left to caps), and an S-bigcap the surface refuses (not star-shaped from
+//!   `U_v^S` exact past `Q`, Step 3a's fewest tips by exact search within a budget,
+//!   Step 6 left to caps), and an S-bigcap the surface refuses (not star-shaped from
 //!   its tip: Lemma 4.1 failing later in the run) is **repaired**, grown from its tip
 //!   within `U_v^S` while accepted ([`ThesisSteps`]). Run without the lemma's check on
-//!   158 small random shells (test `thesis_steps_on_small_random_shells`): 625 S-bigcaps
-//!   whole and 45 repaired in 254 rounds, every shell finished by the removal, largest
-//!   weight of §4.4 4 (Theorem 4.2's 8 holds there), at most 2.48 tetrahedra per vertex;
-//!   on 200 others, worst 1.375 × the exact optimum.
+//!   158 small random shells (test `thesis_steps_on_small_random_shells`): 632 S-bigcaps
+//!   whole and 89 repaired in 264 rounds, Step 3a decided by its search in all of them,
+//!   every shell finished by the removal, largest weight of §4.4 4 (Theorem 4.2's 8
+//!   holds there), at most 2.48 tetrahedra per vertex; on 200 others, worst 1.419 × the
+//!   exact optimum (1.296 after the flips).
 //!
 //! **Flips** ([`improve`]): after the removals, exact 3-2 flips, and above 3 tetrahedra
 //! per vertex Lawson's flips towards the constrained Delaunay tetrahedralization, kept

@@ -34,7 +34,9 @@ use super::recover::QEdges;
 use crate::geom::{Hull3, Plane, Point3, bounding_box, orient2d_drop, orient3d, projection_axis};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
-/// The triangulated surface of the current hull.
+/// The triangulated surface of the current hull (cloned by Step 3a's search, which tries
+/// orders of removal on copies).
+#[derive(Clone)]
 pub(super) struct Surface<'a> {
     pts: &'a [Point3],
     tris: Vec<[u32; 3]>,
@@ -218,6 +220,22 @@ impl<'a> Surface<'a> {
         (self.tris.iter().zip(&self.alive))
             .filter_map(|(t, &a)| a.then_some(*t))
             .collect()
+    }
+
+    /// The live triangles, each turned to start at its least vertex, sorted: two
+    /// surfaces are the same exactly when their keys are.
+    pub(super) fn key(&self) -> Vec<[u32; 3]> {
+        let mut key: Vec<[u32; 3]> = self
+            .triangles()
+            .into_iter()
+            .map(|[a, b, c]| match a.min(b).min(c) {
+                m if m == a => [a, b, c],
+                m if m == b => [b, c, a],
+                _ => [c, a, b],
+            })
+            .collect();
+        key.sort_unstable();
+        key
     }
 
     /// The live triangles at `v`.

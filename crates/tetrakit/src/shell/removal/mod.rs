@@ -52,7 +52,20 @@ pub(super) struct Removed {
     pub thesis: Option<ThesisSteps>,
 }
 
-impl Removal<'_, '_> {
+impl<'s, 'a> Removal<'s, 'a> {
+    /// A removal on `surface` with `left` left and nothing removed yet (Step 3a's search
+    /// tries orders on copies).
+    fn new(surface: &'s mut Surface<'a>, left: HashSet<u32>) -> Self {
+        Removal {
+            surface,
+            left,
+            heap: BinaryHeap::new(),
+            tets: Vec::new(),
+            records: Vec::new(),
+            order: Vec::new(),
+        }
+    }
+
     /// Removes the cap at `v` and requeues its neighbours with their new degrees; false
     /// (nothing changed) when the cap's checks refuse it.
     fn cap(&mut self, v: u32) -> bool {
@@ -186,14 +199,7 @@ pub(super) fn run(
     method: Method,
     ctl: &Control,
 ) -> Result<Removed, Stopped> {
-    let mut r = Removal {
-        surface,
-        left: removable.iter().copied().collect(),
-        heap: BinaryHeap::new(),
-        tets: Vec::new(),
-        records: Vec::new(),
-        order: Vec::with_capacity(removable.len()),
-    };
+    let mut r = Removal::new(surface, removable.iter().copied().collect());
     let thesis = match method {
         Method::Thesis => {
             let pts = r.surface.points();
