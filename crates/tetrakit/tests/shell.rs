@@ -1003,6 +1003,7 @@ fn thesis_steps_on_small_random_shells() {
     let (mut whole, mut repaired, mut rounds, mut heaviest, mut by_removal) = (0, 0, 0, 0, 0);
     let (mut caps_by_removal, mut valid) = (0, 0);
     let (mut exact, mut every_tip, mut largest) = (0, 0, 0);
+    let (mut chains, mut step_6) = (0, 0);
     let mut worst_per_vertex = 0f64;
     let sphere = |rng: &mut tetrakit::rng::Rng, m: usize, r: f64, c: Point3, flat: f64| {
         (0..m)
@@ -1043,6 +1044,7 @@ fn thesis_steps_on_small_random_shells() {
             every_tip + steps.step_3a_every_tip,
         );
         largest = largest.max(steps.largest_p_a_searched);
+        (chains, step_6) = (chains + steps.step_6_chains, step_6 + steps.step_6_bigcaps);
         if let Some(l) = &mesh.ledger {
             heaviest = heaviest.max(l.heaviest().0);
             by_removal += 1;
@@ -1052,7 +1054,7 @@ fn thesis_steps_on_small_random_shells() {
         caps_by_removal += usize::from(cap.finished_by == Finish::Removal);
     }
     eprintln!(
-        "{valid} of {shells} shells nested: {rounds} rounds ({exact} with Step 3a's exact minimum, |P_a| up to {largest}; {every_tip} with every tip), {whole} S-bigcaps whole, {repaired} repaired; {by_removal} finished by removal (caps: {caps_by_removal}); largest weight {heaviest}; most tetrahedra per vertex {worst_per_vertex:.2}"
+        "{valid} of {shells} shells nested: {rounds} rounds ({exact} with Step 3a's exact minimum, |P_a| up to {largest}; {every_tip} with every tip), {whole} S-bigcaps whole, {repaired} repaired, {chains} Step-6 chains with {step_6} S_b-bigcaps; {by_removal} finished by removal (caps: {caps_by_removal}); largest weight {heaviest}; most tetrahedra per vertex {worst_per_vertex:.2}"
     );
     assert!(rounds > 0 && whole + repaired > 0 && heaviest <= 8);
     assert!(
@@ -1060,4 +1062,31 @@ fn thesis_steps_on_small_random_shells() {
         "{exact} of {rounds}, {largest}"
     );
     assert!(valid > 100 && by_removal == valid && caps_by_removal == valid);
+}
+
+/// BIGCAP-REMOVE's Step 6 on contact shells (`Q` touching `P` at a vertex, where the
+/// lemma is not examined): chains of `P_b` are found and removed chord by chord, every
+/// mesh certified, the ledger exact and Theorem 4.2's weights at most 8.
+#[test]
+fn step_6_removes_chains_on_contact_shells() {
+    let (mut chains, mut bigcaps) = (0, 0);
+    for seed in 0..6u64 {
+        let (outer, inner) = contact(Contact::Vertex, 40, 40, seed).unwrap();
+        let shell = Shell::new(&outer, &inner).unwrap();
+        let mesh = tetrahedralize(&shell, Method::Thesis, &Control::new()).expect("a mesh");
+        let cert = certify_shell(&shell.points, &mesh.tets, &shell.inner);
+        assert_eq!(cert, Ok(()), "seed {seed}");
+        assert!(ledger_is_exact(&mesh), "seed {seed}");
+        assert!(
+            mesh.ledger.as_ref().is_none_or(|l| l.heaviest().0 <= 8),
+            "seed {seed}"
+        );
+        let steps = mesh.thesis.expect("the steps ran");
+        (chains, bigcaps) = (chains + steps.step_6_chains, bigcaps + steps.step_6_bigcaps);
+    }
+    eprintln!("{chains} Step-6 chains, {bigcaps} S_b-bigcaps");
+    assert!(
+        chains > 0 && bigcaps >= chains,
+        "{chains} chains, {bigcaps} S_b-bigcaps"
+    );
 }

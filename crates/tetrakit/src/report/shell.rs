@@ -113,14 +113,16 @@ pub fn shell_text(o: &ShellOutcome, seconds: f64) -> String {
 fn steps_text(o: &ShellOutcome) -> String {
     o.thesis_steps.map_or(String::new(), |t| {
         format!(
-            ": {} round(s) of Steps 2–3 ({} with Step 3a's fewest tips by exact search, |P_a| up to {}; {} with every tip), {} S-bigcap(s) whole, {} repaired (refused as the thesis defines them), {} Step-1 cap(s)",
+            ": {} round(s) of Steps 2–3 ({} with Step 3a's fewest tips by exact search, |P_a| up to {}; {} with every tip), {} S-bigcap(s) whole, {} repaired (refused as the thesis defines them), {} Step-1 cap(s), {} Step-6 chain(s) with {} S_b-bigcap(s)",
             t.rounds,
             t.step_3a_exact,
             t.largest_p_a_searched,
             t.step_3a_every_tip,
             t.s_bigcaps,
             t.repaired,
-            t.step_1_caps
+            t.step_1_caps,
+            t.step_6_chains,
+            t.step_6_bigcaps
         )
     })
 }

@@ -13,7 +13,7 @@
 //! - [`Method::Bigcap`]: bigcaps (§4.2): from each tip, in the same order, a set of
 //!   outer vertices removed at once, grown greedily (neighbours in increasing number,
 //!   kept while the piece stays star-shaped from the tip and passes every check, at most
-//!   32). Step 6's chains and the S-constraints of the 9n − 6 proof are not built: on a
+//!   32), without BIGCAP-REMOVE's rounds (those are [`Method::Thesis`]): on a
 //!   Bern disk no two neighbouring ring vertices form a piece star-shaped from either
 //!   (the surface's plan refuses "a bottom triangle is behind the tip"), although both
 //!   are visible past `Q` with their facets, so the thesis's `U_v` does not give a
@@ -24,7 +24,7 @@
 //!   points. Where it fails the answer is the witness. Where it holds, BIGCAP-REMOVE's
 //!   Steps 1–3 and 5 run on the evolving hull (`Q_a`, `P_a`, `V_a^P`, the chains `C_a`,
 //!   `U_v^S` exact past `Q`, Step 3a's fewest tips by exact search within a budget,
-//!   Step 6 left to caps), and an S-bigcap the surface refuses (not star-shaped from
+//!   Step 6's chains of `P_b` chord by chord), and an S-bigcap the surface refuses (not star-shaped from
 //!   its tip: Lemma 4.1 failing later in the run) is **repaired**, grown from its tip
 //!   within `U_v^S` while accepted ([`ThesisSteps`]). Run without the lemma's check on
 //!   158 small random shells (test `thesis_steps_on_small_random_shells`): 632 S-bigcaps
@@ -353,8 +353,9 @@ pub enum Method {
     /// BIGCAP-REMOVE: its assumption first, Lemma 4.1 checked exactly at every tip of
     /// `P` ([`lemma41`]), where it fails the answer is that witness, not a mesh; where
     /// it holds (or `Q` touches `P`, where it is not examined) the removal follows
-    /// Steps 1, 2, 3 and 5 ([`ThesisSteps`]: S-bigcaps over the chains of `P_a`, Step 3a
-    /// greedy, Step 6 left to caps), then Bern's order for what they leave.
+    /// Steps 1 to 7 ([`ThesisSteps`]: S-bigcaps over the chains of `P_a`, Step 3a by
+    /// exact search within a budget, Step 6's chains of `P_b` chord by chord), then
+    /// Bern's order for what they leave.
     Thesis,
 }
 

@@ -238,6 +238,29 @@ impl<'a> Surface<'a> {
         key
     }
 
+    /// The live triangles that `v` sees: `v` strictly beyond their planes (after a
+    /// piece at `v`, its view, thesis §4.2).
+    pub(super) fn seen_from(&self, v: u32) -> Vec<u32> {
+        let p = |x: u32| &self.pts[x as usize];
+        (0..self.tris.len() as u32)
+            .filter(|&t| self.alive[t as usize])
+            .filter(|&t| {
+                let [a, b, c] = self.tris[t as usize];
+                orient3d(p(a), p(b), p(c), p(v)) == 1
+            })
+            .collect()
+    }
+
+    /// Triangle `t` is still on the surface.
+    pub(super) fn is_live(&self, t: u32) -> bool {
+        self.alive[t as usize]
+    }
+
+    /// The live triangle across the edge `ab` from the one that has it directed `a → b`.
+    pub(super) fn across(&self, a: u32, b: u32) -> Option<u32> {
+        self.edge.get(&(b, a)).copied()
+    }
+
     /// The live triangles at `v`.
     pub(super) fn star(&mut self, v: u32) -> Vec<u32> {
         let alive = &self.alive;
