@@ -288,3 +288,40 @@ fn chapter_6_bad_inputs_are_named() {
         assert!(err.contains(expected), "{args:?}: {err}");
     }
 }
+
+/// A triangulated prism that no tetrahedralization fits: the NO's witness names the
+/// vertices of a minimal core of the refutation (in the file's numbering), and the
+/// text says what it covers and pairs.
+#[test]
+fn a_triangulated_no_names_its_core() {
+    let d = dir("core");
+    let off = d.join("prism.off");
+    let g = run(&[
+        "generate",
+        "convex-triangulated",
+        "--shape",
+        "prism",
+        "--n",
+        "4",
+        "--seed",
+        "5",
+        "-o",
+        s(&off),
+    ]);
+    assert_eq!(g.status.code(), Some(0));
+    let o = run(&["tetrahedralize", s(&off), "--json"]);
+    assert_eq!(o.status.code(), Some(1));
+    let v = json(&o);
+    let w = &v["witness"];
+    let vertices = w["vertices"].as_array().unwrap();
+    assert_eq!(w["kind"], "unsatisfiable", "{v}");
+    assert!(!vertices.is_empty() && vertices.len() <= 8, "{v}");
+    assert!(
+        w["detail"]
+            .as_str()
+            .unwrap()
+            .contains("a minimal core of the refutation")
+    );
+    let text = String::from_utf8(run(&["tetrahedralize", s(&off)]).stdout).unwrap();
+    assert!(text.contains("inner face(s), on"), "{text}");
+}

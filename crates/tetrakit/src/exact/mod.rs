@@ -63,12 +63,14 @@
 //! downward from each solution found until the bound is unsatisfiable.
 
 mod certify;
+mod core;
 mod encode;
 mod outcome;
 mod proof;
 mod separate;
 
 pub use certify::Uncertified;
+pub use core::{FaceCore, face_core};
 pub use encode::{Domain, Edges, MAX_CANDIDATES};
 
 pub use outcome::{TetraOptions, TetraOutcome, Witness, WitnessKind, tetrahedralize};
@@ -592,6 +594,10 @@ fn add(solver: &mut Solver, lits: &[Lit]) {
 
 /// The candidates of a problem and the formula saying "these candidates form a
 /// tetrahedralization" (without the objective), one variable per candidate first.
+/// Each guarded triangle with the literal its clauses hold under
+/// ([`Formula::guarded`]).
+type Guards = Vec<([u32; 3], Lit)>;
+
 struct Formula {
     cand: Candidates,
     cnf: Cnf,
@@ -611,6 +617,18 @@ impl Formula {
 
     /// [`Formula::new`] once the size is checked and a polyhedron's pairs restricted.
     fn over(domain: Domain, edges: Edges, ctl: &Control) -> Result<Option<Formula>, ExactError> {
+        Formula::guarded(domain, edges, ctl, None)
+    }
+
+    /// [`Formula::over`]; with `guards`, each facet's covering clause and each inner
+    /// face's pairing clauses hold only under a literal of their own, listed there (for
+    /// [`core::face_core`]).
+    fn guarded(
+        domain: Domain,
+        edges: Edges,
+        ctl: &Control,
+        guards: Option<&mut Guards>,
+    ) -> Result<Option<Formula>, ExactError> {
         let cand = match candidates(domain, edges, ctl) {
             Ok(Some(c)) => c,
             Ok(None) => return Ok(None),
@@ -627,12 +645,11 @@ impl Formula {
                 Domain::Polyhedron(_) => None,
             };
             add_structure(
-                &mut cnf,
-                &mut vars,
+                (&mut cnf, &mut vars),
                 &cand,
                 &tet_lits,
                 domain,
-                anchor.as_deref(),
+                (anchor.as_deref(), guards),
             );
         }
         Ok(Some(Formula {
@@ -673,12 +690,11 @@ fn at_most_one(solver: &mut Cnf, vars: &mut BasicVarManager, lits: &[Lit]) {
 }
 
 fn add_structure(
-    solver: &mut Cnf,
-    vars: &mut BasicVarManager,
+    (solver, vars): (&mut Cnf, &mut BasicVarManager),
     cand: &Candidates,
     tet: &[Lit],
     domain: Domain,
-    anchor: Option<&[u32]>,
+    (anchor, mut guards): (Option<&[u32]>, Option<&mut Guards>),
 ) {
     let facets: std::collections::HashSet<[u32; 3]> = domain
         .faces()
@@ -696,16 +712,29 @@ fn add_structure(
         if facets.contains(key) {
             // Candidates on a facet were filtered to its inner side: all on one side.
             let inner = if pos.is_empty() { &neg } else { &pos };
-            push(solver, inner);
+            let mut c = inner.clone();
+            if let Some(g) = guards.as_deref_mut() {
+                let s = vars.new_lit();
+                g.push((*key, s));
+                c.push(!s);
+            }
+            push(solver, &c);
             continue;
         }
         if usage.on_hull {
             continue;
         }
+        // The face's pairing clauses, under its guard where there are guards.
+        let guard = guards.as_deref_mut().map(|g| {
+            let s = vars.new_lit();
+            g.push((*key, s));
+            !s
+        });
         for (side, other) in [(&pos, &neg), (&neg, &pos)] {
             for &t in side.iter() {
                 let mut c = vec![!t];
                 c.extend(other.iter().copied());
+                c.extend(guard);
                 push(solver, &c);
             }
         }

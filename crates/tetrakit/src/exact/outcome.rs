@@ -78,6 +78,39 @@ impl Witness {
     }
 }
 
+/// Polyhedra with at most this many vertices whose NO needs the SAT refutation name
+/// the vertices of a minimal core of it ([`super::face_core`]: a few more SAT calls);
+/// larger ones keep the formula's witness alone.
+const CORE_UP_TO: usize = 40;
+
+/// The witness of a NO: [`Witness::of`], with the vertices and facets of a minimal core
+/// of the refutation where the domain is a polyhedron of at most [`CORE_UP_TO`]
+/// vertices and the core is found before `ctl` stops.
+fn no_witness(domain: Domain, stats: &Stats, ctl: &Control) -> Result<Witness, ExactError> {
+    let w = Witness::of(stats);
+    let Domain::Polyhedron(p) = domain else {
+        return Ok(w);
+    };
+    if w.kind != WitnessKind::Unsatisfiable || p.points.len() > CORE_UP_TO {
+        return Ok(w);
+    }
+    let Some(core) = super::face_core(p, ctl)? else {
+        return Ok(w);
+    };
+    let facets: Vec<String> = (core.facets.iter())
+        .map(|f| format!("#{} #{} #{}", f[0], f[1], f[2]))
+        .collect();
+    let detail = format!(
+        "no set of the {} candidate tetrahedra (no other vertex inside, on the inner side of the boundary) satisfies the face-pairing clauses; a minimal core of the refutation covers the {} facet(s) {} and pairs {} inner face(s), on {} vertices: no tetrahedralization without Steiner points exists",
+        stats.candidates,
+        core.facets.len(),
+        facets.join(", "),
+        core.faces.len(),
+        core.vertices.len()
+    );
+    Ok(Witness::new(w.kind, core.vertices, Vec::new(), detail))
+}
+
 /// The outcome of [`tetrahedralize`]: `yes` with certified tetrahedra (the minimum when
 /// asked), `no` with a [`Witness`], or `undecided` (stopped) with bounds on the minimum
 /// and the best tetrahedralization found. Serialized, the JSON of
@@ -207,7 +240,7 @@ pub fn tetrahedralize(
         Outcome::Found { tets } => tets,
         Outcome::Infeasible => {
             o.verdict = Verdict::No;
-            o.witness = Some(Witness::of(&stats));
+            o.witness = Some(no_witness(domain, &stats, ctl)?);
             Vec::new()
         }
         Outcome::Undecided { best, lower } => {

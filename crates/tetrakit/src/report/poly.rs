@@ -158,7 +158,8 @@ pub fn tetrahedralize_text(o: &TetraOutcome, seconds: f64) -> String {
                 o.domain
             );
             let _ = match &o.witness {
-                Some(w) if w.kind != WitnessKind::Unsatisfiable => {
+                // The formula's own witness names its core's vertices where it has one.
+                Some(w) if w.kind != WitnessKind::Unsatisfiable || !w.vertices.is_empty() => {
                     writeln!(s, "  proof: {}", w.detail)
                 }
                 _ => writeln!(
