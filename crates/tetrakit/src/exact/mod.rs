@@ -592,12 +592,12 @@ fn add(solver: &mut Solver, lits: &[Lit]) {
         .expect("batsat accepts clauses");
 }
 
-/// The candidates of a problem and the formula saying "these candidates form a
-/// tetrahedralization" (without the objective), one variable per candidate first.
 /// Each guarded triangle with the literal its clauses hold under
 /// ([`Formula::guarded`]).
 type Guards = Vec<([u32; 3], Lit)>;
 
+/// The candidates of a problem and the formula saying "these candidates form a
+/// tetrahedralization" (without the objective), one variable per candidate first.
 struct Formula {
     cand: Candidates,
     cnf: Cnf,
@@ -702,6 +702,15 @@ fn add_structure(
         .map(|&f| crate::mesh::sorted_face(f))
         .collect();
     let lits = |ids: &[u32]| -> Vec<Lit> { ids.iter().map(|&i| tet[i as usize]).collect() };
+    // A new guard for triangle `key`'s clauses (its negation, to add to each), where
+    // there are guards.
+    let mut guard = |vars: &mut BasicVarManager, key: [u32; 3]| {
+        guards.as_deref_mut().map(|g| {
+            let s = vars.new_lit();
+            g.push((key, s));
+            !s
+        })
+    };
     let mut keys: Vec<&[u32; 3]> = cand.triangles.keys().collect();
     keys.sort_unstable();
     for key in keys {
@@ -712,24 +721,17 @@ fn add_structure(
         if facets.contains(key) {
             // Candidates on a facet were filtered to its inner side: all on one side.
             let inner = if pos.is_empty() { &neg } else { &pos };
-            let mut c = inner.clone();
-            if let Some(g) = guards.as_deref_mut() {
-                let s = vars.new_lit();
-                g.push((*key, s));
-                c.push(!s);
+            match guard(vars, *key) {
+                Some(g) => push(solver, &[inner.as_slice(), &[g]].concat()),
+                None => push(solver, inner),
             }
-            push(solver, &c);
             continue;
         }
         if usage.on_hull {
             continue;
         }
         // The face's pairing clauses, under its guard where there are guards.
-        let guard = guards.as_deref_mut().map(|g| {
-            let s = vars.new_lit();
-            g.push((*key, s));
-            !s
-        });
+        let guard = guard(vars, *key);
         for (side, other) in [(&pos, &neg), (&neg, &pos)] {
             for &t in side.iter() {
                 let mut c = vec![!t];

@@ -90,8 +90,8 @@ fn s_bigcap(r: &mut Removal, v: u32, round: &Round, q: &Blocker) -> Option<Taken
     }
 }
 
-/// The rounds of Steps 1–3 and 5 on `r`, until no outer vertex is left or none of
-/// them can be removed.
+/// The rounds of Steps 1–7 on `r`, until no outer vertex is left or none of them can
+/// be removed.
 pub(super) fn run(
     r: &mut Removal,
     inner: &[u32],
@@ -124,7 +124,7 @@ pub(super) fn run(
                 Taken::Repaired => steps.repaired += 1,
             }
         }
-        step_6::run(r, &round, &step_3.views, (inner, q), &mut steps);
+        step_6::run(r, &round, &step_3.views, (inner, q), (&mut steps, ctl))?;
         if r.left.len() == before {
             if !step_1(r) {
                 break;

@@ -16,6 +16,7 @@
 //! in the disk the chain bounds, where Lemma 4.7 puts no vertex).
 
 use super::{Round, ThesisSteps, grown, u_v};
+use crate::control::{Control, Stopped};
 use crate::shell::lemma41::Blocker;
 use crate::shell::removal::Removal;
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
@@ -27,22 +28,23 @@ pub(super) fn run(
     old: &Round,
     views: &[u32],
     (inner, q): (&[u32], &Blocker),
-    steps: &mut ThesisSteps,
-) {
+    (steps, ctl): (&mut ThesisSteps, &Control),
+) -> Result<(), Stopped> {
     let region: HashSet<u32> = (views.iter().copied())
         .filter(|&t| r.surface.is_live(t))
         .collect();
     let Some(cycles) = boundary(r, &region) else {
-        return;
+        return Ok(());
     };
     let p_b: HashSet<u32> = cycles.iter().flatten().copied().collect();
     let new = Round::new(r, inner);
     for cycle in &cycles {
         for chain in chains(r, cycle, old, &new) {
             steps.step_6_chains += 1;
-            steps.step_6_bigcaps += by_chords(r, chain, &p_b, q);
+            steps.step_6_bigcaps += by_chords(r, chain, (&p_b, q), ctl)?;
         }
     }
+    Ok(())
 }
 
 /// The cycles bounding `region` (directed as its triangles), or `None` where a
@@ -118,9 +120,15 @@ fn sees_stretch(r: &Removal, y: u32, stretch: &[u32], q: &Blocker) -> bool {
 }
 
 /// Step 6b and 6c on one chain; the `S_b`-bigcaps removed.
-fn by_chords(r: &mut Removal, mut chain: Vec<u32>, p_b: &HashSet<u32>, q: &Blocker) -> usize {
+fn by_chords(
+    r: &mut Removal,
+    mut chain: Vec<u32>,
+    (p_b, q): (&HashSet<u32>, &Blocker),
+    ctl: &Control,
+) -> Result<usize, Stopped> {
     let mut removed = 0;
     'chain: while chain.len() > 2 {
+        ctl.check()?;
         let mut chords = Vec::new();
         for i in 0..chain.len() {
             let around = r.surface.neighbours(chain[i]);
@@ -161,5 +169,5 @@ fn by_chords(r: &mut Removal, mut chain: Vec<u32>, p_b: &HashSet<u32>, q: &Block
         }
         break;
     }
-    removed
+    Ok(removed)
 }
