@@ -37,7 +37,8 @@ def _cases(tmp_path, meshio, count):
     """`count` partitioned meshes: Kuhn grids and random tetrahedralizations, valid or
     corrupted (a tetrahedron dropped, inverted, repeated, a small one nested inside
     another, a vertex moved), cut into 2-5 pieces in slabs or at random, written by
-    meshio with or without GlobalNodeIds."""
+    meshio with or without GlobalNodeIds; every fifth with its pieces two to a file (a
+    `.vtu` of several `Piece`s)."""
     rng = np.random.default_rng(46)
     out = []
     for k in range(count):
@@ -83,6 +84,8 @@ def _cases(tmp_path, meshio, count):
             name = f"case{k}_{p}.vtu"
             meshio.write(tmp_path / name, meshio.Mesh(pts[used], [("tetra", cells)], point_data=data))
             sources.append(name)
+        if k % 5 == 4:
+            sources = _two_to_a_file(tmp_path, sources)
         index.write_text(
             '<?xml version="1.0"?>\n<VTKFile type="PUnstructuredGrid" version="0.1">\n'
             '<PUnstructuredGrid GhostLevel="0">\n'
@@ -90,6 +93,20 @@ def _cases(tmp_path, meshio, count):
             + "</PUnstructuredGrid>\n</VTKFile>\n")
         out.append(index)
     return out
+
+
+def _two_to_a_file(folder, sources):
+    """The pieces of the files `sources` (in `folder`) put two to a file, in order: the
+    new files' names."""
+    grouped = []
+    for g in range(0, len(sources), 2):
+        texts = [(folder / s).read_text() for s in sources[g:g + 2]]
+        body = "".join(t[t.index("<Piece "):t.rindex("</Piece>") + len("</Piece>")] for t in texts)
+        head, tail = texts[0][:texts[0].index("<Piece ")], texts[0][texts[0].rindex("</Piece>") + 8:]
+        name = sources[g].replace(".vtu", "_pair.vtu")
+        (folder / name).write_text(head + body + tail)
+        grouped.append(name)
+    return grouped
 
 
 def _strip(text):
@@ -114,13 +131,14 @@ DRIVER = """
 import json, sys
 from mpi4py import MPI
 from tetrakit import mpi
+limit = int(sys.argv[3]) if len(sys.argv) > 3 else mpi.MESSAGE_LIMIT
 out = []
 for line in open(sys.argv[1]).read().splitlines():
     path, *flags = line.split()
     import io, contextlib
     buf = io.StringIO()
     with contextlib.redirect_stdout(buf):
-        code = mpi.run(MPI.COMM_WORLD, ["check", path, "--json", *flags])
+        code = mpi.run(MPI.COMM_WORLD, ["check", path, "--json", *flags], limit=limit)
     out.append([code, buf.getvalue()])
 if MPI.COMM_WORLD.rank == 0:
     open(sys.argv[2], "w").write(json.dumps(out))
@@ -129,7 +147,9 @@ if MPI.COMM_WORLD.rank == 0:
 
 def test_mpirun_checks_as_tetrakit_check(tmp_path):
     """Many meshes in one `mpirun -n 2` (a driver calling `tetrakit.mpi.run` per file),
-    and a few under `-n 1` and `-n 4`, each compared with `tetrakit check`."""
+    and a few under `-n 1` and `-n 4`, each compared with `tetrakit check`; and under
+    `-n 3` with at most 600 bytes an exchange, so that every message goes in rounds (as
+    those past MPI's 2 GB do)."""
     _need_mpi()
     meshio = pytest.importorskip("meshio")
     cases = _cases(tmp_path, meshio, 120)
@@ -138,9 +158,10 @@ def test_mpirun_checks_as_tetrakit_check(tmp_path):
     (tmp_path / "jobs.txt").write_text("".join(f"{c} {' '.join(f)}\n" for c, f in jobs))
     (tmp_path / "driver.py").write_text(DRIVER)
     invalid = 0
-    for n, take in ((2, len(jobs)), (1, 12), (4, 12)):
+    for n, take, limit in ((2, len(jobs), []), (1, 12, []), (4, 12, []), (3, 15, ["600"])):
         (tmp_path / "jobs.txt").write_text("".join(f"{c} {' '.join(f)}\n" for c, f in jobs[:take]))
-        r = _mpirun(n, str(tmp_path / "driver.py"), str(tmp_path / "jobs.txt"), str(tmp_path / "out.json"))
+        r = _mpirun(n, str(tmp_path / "driver.py"), str(tmp_path / "jobs.txt"), str(tmp_path / "out.json"),
+                    *limit)
         assert r.returncode == 0, r.stderr
         got = json.loads((tmp_path / "out.json").read_text())
         assert len(got) == take

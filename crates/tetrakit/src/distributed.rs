@@ -5,7 +5,8 @@
 //! the outcome `tetrakit check X.pvtu` prints ([`crate::mesh::check_pieces`] on the merged
 //! mesh), problem for problem.
 //!
-//! Piece `p` is read by rank `p mod K`. The rounds:
+//! The `.pvtu`'s file `f` is read by rank `f mod K`; each `Piece` in it is a piece,
+//! numbered across the files in order as `tetrakit check` numbers them. The rounds:
 //! 1. every rank sends every piece's point counts, and each of its points (its global
 //!    id, or its exact coordinates) to the point's *key owner* (a hash of the key);
 //! 2. a key owner numbers each point as the merged reader does: the first occurrence (by
@@ -27,8 +28,7 @@
 //! Memory per rank: its pieces, its parts (each piece's tetrahedra again, compacted) and
 //! its layer (the ghosts); rank 0 also holds the boundary faces. A vertex number in the
 //! problems is its place among all pieces' points (piece 0's first), as `tetrakit check`
-//! numbers a `.pvtu`'s vertices. A piece file is one piece (a file of several `Piece`s is
-//! read as one).
+//! numbers a `.pvtu`'s vertices.
 
 use crate::geom::{Hull3, Point3, lex_cmp, point_key};
 use crate::io::{self, IdMismatch, Input, InputError, Piece};
@@ -81,6 +81,9 @@ pub struct RankCheck {
 
 /// A piece this rank read.
 struct Local {
+    /// Its file and its place in it; its number among all pieces (known from round 2).
+    file: u32,
+    sub: u32,
     piece: u32,
     input: Input,
     /// Each point's vertex number, and whether it is on an interface and who owns it.
@@ -91,7 +94,9 @@ struct Local {
 
 #[derive(Clone, Debug, Default, Serialize, Deserialize)]
 struct Info {
-    piece: u32,
+    /// Its file, and its place among the file's pieces.
+    file: u32,
+    sub: u32,
     points: u32,
     tets: u32,
     other_cells: u32,
@@ -108,7 +113,9 @@ struct Hello {
 #[derive(Clone, Copy, Serialize, Deserialize)]
 struct Occurrence {
     key: [u64; 3],
-    piece: u32,
+    /// The piece's file and place in it (in the order of the pieces' numbers).
+    file: u32,
+    sub: u32,
     index: u32,
     at: Point3,
 }
@@ -184,6 +191,21 @@ fn owner_of(key: &[u64; 3], size: usize) -> usize {
     (h % size as u64) as usize
 }
 
+impl Local {
+    fn new(file: u32, sub: u32, input: Input) -> Self {
+        let n = input.points.len();
+        Local {
+            file,
+            sub,
+            piece: u32::MAX,
+            input,
+            labels: vec![u32::MAX; n],
+            shared: vec![false; n],
+            owner: vec![0; n],
+        }
+    }
+}
+
 impl RankCheck {
     /// Rank `rank` of `size` checking the `.pvtu` at `index`; with `tets_only`, pieces
     /// with other cells are checked by their tetrahedra (else they are bad input).
@@ -222,45 +244,42 @@ impl RankCheck {
             Err(e) => hello.failure = Some((0, e)),
             Ok(files) => self.files = files,
         }
-        for p in (self.rank..self.files.len()).step_by(self.size) {
+        for f in (self.rank..self.files.len()).step_by(self.size) {
             let read = io::ReadOptions {
                 mesh: true,
                 tets_only: self.tets_only,
             };
-            match io::read_piece(&self.files[p], read) {
+            match io::read_pieces(&self.files[f], read) {
                 Err(e) => {
-                    hello.failure.get_or_insert((p as u32, e));
+                    hello.failure.get_or_insert((f as u32, e));
                 }
-                Ok((input, ids)) => {
-                    let piece = p as u32;
-                    for (i, at) in input.points.iter().enumerate() {
-                        let key = match &ids {
-                            Some(ids) => [ids[i] as u64, 0, 0],
-                            None => point_key(at),
-                        };
-                        let o = Occurrence {
-                            key,
-                            piece,
-                            index: i as u32,
-                            at: *at,
-                        };
-                        keys[owner_of(&key, self.size)].push(o);
+                Ok(pieces) => {
+                    for (sub, (input, ids)) in pieces.into_iter().enumerate() {
+                        let (file, sub) = (f as u32, sub as u32);
+                        for (i, at) in input.points.iter().enumerate() {
+                            let key = match &ids {
+                                Some(ids) => [ids[i] as u64, 0, 0],
+                                None => point_key(at),
+                            };
+                            let o = Occurrence {
+                                key,
+                                file,
+                                sub,
+                                index: i as u32,
+                                at: *at,
+                            };
+                            keys[owner_of(&key, self.size)].push(o);
+                        }
+                        hello.pieces.push(Info {
+                            file,
+                            sub,
+                            points: input.points.len() as u32,
+                            tets: input.tets.len() as u32,
+                            other_cells: (input.other_cells.as_ref()).map_or(0, |o| o.count as u32),
+                            ids: ids.is_some(),
+                        });
+                        self.mine.push(Local::new(file, sub, input));
                     }
-                    hello.pieces.push(Info {
-                        piece,
-                        points: input.points.len() as u32,
-                        tets: input.tets.len() as u32,
-                        other_cells: input.other_cells.as_ref().map_or(0, |o| o.count as u32),
-                        ids: ids.is_some(),
-                    });
-                    let n = input.points.len();
-                    self.mine.push(Local {
-                        piece,
-                        input,
-                        labels: vec![u32::MAX; n],
-                        shared: vec![false; n],
-                        owner: vec![0; n],
-                    });
                 }
             }
         }
@@ -343,17 +362,16 @@ impl RankCheck {
             hellos.iter().filter_map(|h| h.failure.clone()).collect();
         failures.sort_by_key(|f| f.0);
         let mut pieces: Vec<Info> = hellos.iter().flat_map(|h| h.pieces.clone()).collect();
-        pieces.sort_by_key(|i| i.piece);
+        pieces.sort_by_key(|i| (i.file, i.sub));
         if failures.is_empty() {
-            let with = pieces.iter().find(|i| i.ids);
-            let without = pieces.iter().find(|i| !i.ids && i.points > 0);
+            let with = pieces.iter().position(|i| i.ids);
+            let without = pieces.iter().position(|i| !i.ids && i.points > 0);
             if let (Some(a), Some(b)) = (with, without) {
+                let file = |k: usize| self.files[pieces[k].file as usize].display();
                 let why = format!(
-                    "piece {} ({}) has global point ids but piece {} ({}) has none: the pieces disagree in layout",
-                    a.piece,
-                    self.files[a.piece as usize].display(),
-                    b.piece,
-                    self.files[b.piece as usize].display()
+                    "piece {a} ({}) has global point ids but piece {b} ({}) has none: the pieces disagree in layout",
+                    file(a),
+                    file(b)
                 );
                 failures.push((0, InputError::new(&self.index, 0, why)));
             }
@@ -363,15 +381,21 @@ impl RankCheck {
             return Vec::new();
         }
         self.pieces = pieces;
+        for m in &mut self.mine {
+            m.piece = piece_of(&self.pieces, m.file, m.sub);
+        }
         let offsets = self.point_offsets();
         let mut occ: Vec<Occurrence> = hellos.into_iter().flat_map(|h| h.keys).collect();
-        occ.sort_by_key(|o| (o.key, o.piece, o.index));
+        occ.sort_by_key(|o| (o.key, o.file, o.sub, o.index));
         let ids = self.pieces.iter().any(|i| i.ids);
         let mut out: Vec<Vec<Label>> = vec![Vec::new(); self.size];
+        let mut mismatches = Vec::new();
         for group in occ.chunk_by(|a, b| a.key == b.key) {
             let c = group[0];
-            let concat = |o: &Occurrence| offsets[o.piece as usize] + o.index;
-            let new = |o: &Occurrence| o.piece == c.piece || (ids && o.at != c.at);
+            let piece = |o: &Occurrence| piece_of(&self.pieces, o.file, o.sub);
+            let concat = |o: &Occurrence| offsets[piece(o) as usize] + o.index;
+            let same_piece = |o: &Occurrence| (o.file, o.sub) == (c.file, c.sub);
+            let new = |o: &Occurrence| same_piece(o) || (ids && o.at != c.at);
             let merged = group.iter().any(|o| !new(o));
             for o in group {
                 let label = match new(o) {
@@ -379,24 +403,25 @@ impl RankCheck {
                     false => concat(&c),
                 };
                 let shared = !new(o) || (concat(o) == concat(&c) && merged);
-                if ids && new(o) && o.piece != c.piece {
+                if ids && new(o) && !same_piece(o) {
                     let m = IdMismatch {
                         id: c.key[0] as i64,
                         first: concat(&c),
                         second: concat(o),
-                        piece: o.piece,
+                        piece: piece(o),
                     };
-                    self.mismatches.push(m.problem(c.at, o.at));
+                    mismatches.push(m.problem(c.at, o.at));
                 }
                 let l = Label {
-                    piece: o.piece,
+                    piece: piece(o),
                     index: o.index,
                     label,
                     shared,
                 };
-                out[o.piece as usize % self.size].push(l);
+                out[o.file as usize % self.size].push(l);
             }
         }
+        self.mismatches = mismatches;
         let out = out.iter().map(encode).collect();
         self.sent(out)
     }
@@ -423,9 +448,8 @@ impl RankCheck {
         for (from, b) in inbox.iter().enumerate() {
             let labels: Vec<Label> = decode(b);
             for l in labels {
-                // Piece p is read by rank p mod K: it is this rank's (p / K)-th.
-                let m = self.mine.get_mut(l.piece as usize / self.size);
-                if let Some(m) = m.filter(|m| m.piece == l.piece) {
+                let at = self.mine.binary_search_by_key(&l.piece, |m| m.piece);
+                if let Some(m) = at.ok().map(|k| &mut self.mine[k]) {
                     let k = l.index as usize;
                     (m.labels[k], m.shared[k], m.owner[k]) = (l.label, l.shared, from as u32);
                 }
@@ -737,9 +761,9 @@ impl RankCheck {
             dim: 3,
             point_file: self.index.clone(),
             tet_file: self.index.clone(),
-            pieces: (self.files.iter().zip(&offsets))
-                .map(|(file, &first_tet)| Piece {
-                    file: file.clone(),
+            pieces: (self.pieces.iter().zip(&offsets))
+                .map(|(info, &first_tet)| Piece {
+                    file: self.files[info.file as usize].clone(),
                     first_tet,
                     partition: None,
                 })
@@ -752,6 +776,12 @@ impl RankCheck {
             ..Default::default()
         }
     }
+}
+
+/// The number of the piece `sub` of file `file` in the pieces' table.
+fn piece_of(pieces: &[Info], file: u32, sub: u32) -> u32 {
+    let at = pieces.binary_search_by_key(&(file, sub), |i| (i.file, i.sub));
+    at.expect("every piece read is in the table") as u32
 }
 
 fn relabeled(found: Vec<Problem>, label: impl Fn(u32) -> u32) -> Vec<Problem> {

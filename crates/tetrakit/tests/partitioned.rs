@@ -570,3 +570,100 @@ fn ranks_write_the_pieces_check_writes() {
     }
     assert!(marked >= 10, "only {marked} meshes had problems to mark");
 }
+
+/// The pieces of the `.pvtu` at `path` (written by [`written`], `k` of them) regrouped
+/// into files of several `Piece`s each (`sizes`, in order), under a new index at `to`.
+fn regrouped(path: &Path, k: usize, sizes: &[usize], to: &Path) {
+    let stem = to.file_stem().unwrap().to_string_lossy().into_owned();
+    let mut names = Vec::new();
+    let mut next = 0;
+    for (g, &n) in sizes.iter().enumerate() {
+        let texts: Vec<String> = (next..(next + n).min(k))
+            .map(|p| std::fs::read_to_string(tetrakit::io::piece_path(path, p)).unwrap())
+            .collect();
+        next += n;
+        let piece = |t: &String| {
+            let (a, b) = (t.find("<Piece ").unwrap(), t.rfind("</Piece>").unwrap());
+            t[a..b + "</Piece>\n".len()].to_string()
+        };
+        let head = &texts[0][..texts[0].find("<Piece ").unwrap()];
+        let tail = &texts[0][texts[0].rfind("</Piece>").unwrap() + "</Piece>\n".len()..];
+        let body: String = texts.iter().map(piece).collect();
+        let name = to.with_file_name(format!("{stem}_group{g}.vtu"));
+        std::fs::write(&name, format!("{head}{body}{tail}")).unwrap();
+        names.push(name);
+    }
+    tetrakit::io::write_pvtu_index(to, &names).unwrap();
+}
+
+/// A `.pvtu` whose files hold several `Piece`s each (as VTK's writers may put them) has
+/// that many pieces: `tetrakit check` and the ranks (which read whole files) number the
+/// pieces and their vertices alike, so the problems are those of the same pieces one per
+/// file, and `--output` under ranks writes what `check --output` writes.
+#[test]
+fn several_pieces_in_one_file_are_pieces_under_ranks() {
+    use tetrakit::distributed::{check_in_ranks, check_in_ranks_writing};
+    let d = dir("grouped");
+    let mut rng = Rng::new(4646);
+    let (mut cases, mut invalid) = (0, 0);
+    for round in 0..60u64 {
+        let (points, tets) = corrupted(round, &mut rng);
+        let k = 3 + (round % 4) as usize;
+        let [slabs, random] = partitions(&points, &tets, k as u32, &mut rng);
+        let piece_of = if round % 2 == 0 { slabs } else { random };
+        let path = d.join(format!("g{round}.pvtu"));
+        written(&path, &points, &tets, &piece_of, (round / 2) % 2 == 0);
+        let mut sizes = Vec::new();
+        while sizes.iter().sum::<usize>() < k {
+            sizes.push(1 + rng.below(3));
+        }
+        let grouped = d.join(format!("h{round}.pvtu"));
+        regrouped(&path, k, &sizes, &grouped);
+        let opts = CheckOptions {
+            reorient: round % 3 == 1,
+            manifold: round % 5 == 2,
+            convex: round % 7 == 3,
+        };
+        let want = cli_check(&path, opts);
+        let (input, merged) = merged_check(&grouped, opts);
+        assert_eq!(input.pieces.len(), k, "round {round}");
+        assert_eq!(
+            cli_check(&grouped, opts).problems,
+            want.problems,
+            "round {round}"
+        );
+        let one = d.join(format!("one{round}.pvtu"));
+        tetrakit::io::write_check_output(&one, &input, &merged).unwrap();
+        for size in [1, 2, 3] {
+            let at = format!("round {round}, groups {sizes:?}, {size} ranks");
+            let (got, _) = check_in_ranks(&grouped, size, opts);
+            let got = got.unwrap();
+            assert_eq!(got.problems, want.problems, "{at}");
+            assert_eq!(
+                (got.verdict, got.tetrahedra, got.vertices, got.reoriented),
+                (
+                    want.verdict,
+                    want.tetrahedra,
+                    want.vertices,
+                    want.reoriented
+                ),
+                "{at}"
+            );
+            let many = d.join(format!("many{round}_{size}.pvtu"));
+            let (written, _) = check_in_ranks_writing(&grouped, size, opts, Some(&many));
+            assert_eq!(written.unwrap().problem_count, want.problem_count, "{at}");
+            for p in 0..k {
+                let a = std::fs::read(tetrakit::io::piece_path(&one, p)).unwrap();
+                let b = std::fs::read(tetrakit::io::piece_path(&many, p)).unwrap();
+                assert!(a == b, "{at}: piece {p} differs");
+            }
+            cases += 1;
+            invalid += usize::from(!want.is_valid());
+        }
+    }
+    assert!(
+        cases == 180 && invalid >= 60,
+        "{cases} cases, {invalid} invalid"
+    );
+    let _ = std::fs::remove_dir_all(&d);
+}

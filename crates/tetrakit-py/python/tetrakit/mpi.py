@@ -2,7 +2,8 @@
 
     mpirun -n K python3 -m tetrakit.mpi check MESH.pvtu [--json] [--convex] [--manifold] [--reorient] [--tets-only] [--output P.pvtu]
 
-Each rank reads only its pieces of the ``.pvtu`` (piece ``p`` on rank ``p mod K``) and
+Each rank reads only its files of the ``.pvtu`` (file ``f`` on rank ``f mod K``; each
+``Piece`` in a file is a piece, numbered as ``tetrakit check`` numbers them) and
 checks them in Rust with the GIL released; the ranks exchange interface points by key,
 the tetrahedra around interface vertices (ghosts), and the boundary faces, with mpi4py's
 ``alltoall`` (six rounds). Rank 0 prints what ``tetrakit check MESH.pvtu`` prints, the
@@ -57,22 +58,43 @@ def _parser() -> argparse.ArgumentParser:
     return p
 
 
-def _exchange(comm, buffer: bytes, counts: List[int]):
+#: The most bytes one all-to-all moves into or out of a rank: MPI counts and
+#: displacements are C ints, so a larger exchange goes in rounds of at most this many.
+MESSAGE_LIMIT = 2**31 - 1
+
+
+def _exchange(comm, buffer: bytes, counts: List[int], limit: int = MESSAGE_LIMIT):
     """All-to-all of one message per rank (``buffer``, rank after rank, ``counts`` long
-    each): what every rank sent this one, as a uint8 array and its counts."""
+    each): what every rank sent this one, as a uint8 array and its counts. Where some rank
+    would send or receive more than ``limit`` bytes, in rounds that each move at most
+    ``limit // size`` bytes between two ranks."""
     import numpy as np
     from mpi4py import MPI
     got = comm.alltoall(counts)
     send = np.frombuffer(buffer, dtype=np.uint8)
     recv = np.empty(sum(got), dtype=np.uint8)
     at = lambda c: np.concatenate([[0], np.cumsum(c)[:-1]]).astype(np.int64)  # noqa: E731
-    comm.Alltoallv([send, (counts, at(counts)), MPI.BYTE], [recv, (got, at(got)), MPI.BYTE])
+    if comm.allreduce(max(sum(counts), sum(got)), op=MPI.MAX) <= limit:
+        comm.Alltoallv([send, (counts, at(counts)), MPI.BYTE], [recv, (got, at(got)), MPI.BYTE])
+        return recv, got
+    chunk = max(1, limit // comm.size)
+    longest = comm.allreduce(max(counts, default=0), op=MPI.MAX)
+    starts, ends = at(counts), at(got)
+    for r in range(-(-longest // chunk)):
+        cut = lambda c: [min(max(x - r * chunk, 0), chunk) for x in c]  # noqa: E731
+        out, into = cut(counts), cut(got)
+        part = np.concatenate([send[s + r * chunk:s + r * chunk + n] for s, n in zip(starts, out)])
+        back = np.empty(sum(into), dtype=np.uint8)
+        comm.Alltoallv([part, (out, at(out)), MPI.BYTE], [back, (into, at(into)), MPI.BYTE])
+        for s, n, b in zip(ends, into, at(into)):
+            recv[s + r * chunk:s + r * chunk + n] = back[b:b + n]
     return recv, got
 
 
-def run(comm, argv: Optional[List[str]] = None) -> int:
+def run(comm, argv: Optional[List[str]] = None, *, limit: int = MESSAGE_LIMIT) -> int:
     """Runs the command of ``argv`` over the communicator ``comm``; returns the exit code
-    (the same on every rank). Rank 0 prints."""
+    (the same on every rank). Rank 0 prints. ``limit``: the most bytes one all-to-all
+    moves into or out of a rank (:data:`MESSAGE_LIMIT`; tests set it small)."""
     args = _parser().parse_args(argv)
     if not args.input.lower().endswith(".pvtu"):
         if comm.rank == 0:
@@ -91,10 +113,17 @@ def run(comm, argv: Optional[List[str]] = None) -> int:
     rc = _core.RankCheck(args.input, comm.rank, comm.size,
                          convex=args.convex, manifold=args.manifold, reorient=args.reorient,
                          tets_only=args.tets_only, output=args.output)
-    out = rc.start()
-    parsed = time.perf_counter() - start
-    while out is not None:
-        out = rc.step(*_exchange(comm, *out))
+    try:
+        out = rc.start()
+        parsed = time.perf_counter() - start
+        while out is not None:
+            out = rc.step(*_exchange(comm, *out, limit=limit))
+    except BaseException:
+        # A rank that fails here (a bug: a message that does not decode) would leave the
+        # others waiting in the next exchange: the job stops, with its traceback.
+        import traceback
+        traceback.print_exc()
+        comm.Abort(70)
     code, text = rc.printed(args.json, time.perf_counter() - start, parsed)
     # A piece another rank could not write is the job's error (exit 2, its line).
     failed = comm.gather(text if code == 2 else None, root=0)

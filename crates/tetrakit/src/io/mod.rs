@@ -300,17 +300,24 @@ pub fn read_files(files: &[PathBuf], opts: ReadOptions) -> Result<Input, InputEr
     }
 }
 
-/// Reads one piece of a partitioned mesh (a `.vtu`; its own `Piece`s merged as
-/// [`read_input`] merges them) and accepts it as [`read_input_with`] does: the mesh,
-/// and each point's global id (`GlobalNodeIds` or `GlobalPointIds`) where every point
-/// has one.
-pub fn read_piece(path: &Path, opts: ReadOptions) -> Result<(Input, Option<Vec<i64>>), InputError> {
-    let (input, ids) = vtu::read_piece(path)?;
-    // A piece alone may hold no tetrahedron (an empty partition): its points are only
-    // required to be ones the predicates take.
-    check_coordinates(&input)?;
-    only_tets(path, &input, opts)?;
-    Ok((input, ids))
+/// A piece of a partitioned mesh as read: its mesh, and its points' global ids where it
+/// has them.
+pub type PieceRead = (Input, Option<Vec<i64>>);
+
+/// Reads the pieces of one piece file of a partitioned mesh (a `.vtu`), each `Piece`
+/// apart, and accepts each as [`read_input_with`] does: its mesh, and each point's
+/// global id (`GlobalNodeIds` or `GlobalPointIds`) where every point has one. A `.pvtu`
+/// whose files hold several `Piece`s has that many pieces, numbered across its files
+/// in order, as [`read_input`] numbers them.
+pub fn read_pieces(path: &Path, opts: ReadOptions) -> Result<Vec<PieceRead>, InputError> {
+    let pieces = vtu::read_pieces(path)?;
+    for (input, _) in &pieces {
+        // A piece alone may hold no tetrahedron (an empty partition): its points are
+        // only required to be ones the predicates take.
+        check_coordinates(input)?;
+        only_tets(path, input, opts)?;
+    }
+    Ok(pieces)
 }
 
 /// Reads `path`, choosing the format by extension: `.node` (with sibling `.edge`, `.ele`

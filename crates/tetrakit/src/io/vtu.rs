@@ -105,19 +105,25 @@ pub(super) fn read_files(
     merged.finish(&files[0])
 }
 
-/// Reads one `.vtu` as a piece of a partitioned mesh: the mesh, and each point's global
-/// id where every point has one.
-pub(super) fn read_piece(path: &Path) -> Result<(Input, Option<Vec<i64>>), InputError> {
-    let mut merged = Merged::new(path);
-    read_into(path, &mut merged)?;
-    let ids: Option<Vec<i64>> = (0..merged.input.points.len() as u32)
-        .map(|k| merged.point_ids.get(&k).copied())
-        .collect();
-    if merged.input.points.is_empty() {
-        // An empty piece (a partition without cells) is a piece, of either layout.
-        return Ok((merged.input, None));
-    }
-    Ok((merged.finish(path)?, ids))
+/// Reads each `Piece` of one `.vtu` as a piece of a partitioned mesh, apart (a `.pvtu`'s
+/// piece file may hold several, as `tetrakit check` counts them): its mesh, and each
+/// point's global id where every point has one.
+pub(super) fn read_pieces(path: &Path) -> Result<Vec<super::PieceRead>, InputError> {
+    let mut read = Vec::new();
+    each_piece(path, |d, p, piece, arrays| {
+        let mut merged = Merged::new(path);
+        add_piece(d, p, piece, arrays, &mut merged)?;
+        let ids: Option<Vec<i64>> = (0..merged.input.points.len() as u32)
+            .map(|k| merged.point_ids.get(&k).copied())
+            .collect();
+        read.push(match merged.input.points.is_empty() {
+            // An empty piece (a partition without cells) is a piece, of either layout.
+            true => (merged.input, None),
+            false => (merged.finish(path)?, ids),
+        });
+        Ok(())
+    })?;
+    Ok(read)
 }
 
 /// Pieces read so far, one mesh: a point of a later piece (or piece file) at the exact
@@ -300,6 +306,16 @@ impl Merged {
 pub(super) fn read_into(path: &Path, merged: &mut Merged) -> Result<(), InputError> {
     merged.file = path.to_path_buf();
     merged.by_id = false;
+    each_piece(path, |d, p, piece, arrays| {
+        add_piece(d, p, piece, arrays, merged)
+    })
+}
+
+/// Scans the `.vtu` at `path` and hands each `Piece`, in order, with its arrays to `add`.
+fn each_piece(
+    path: &Path,
+    mut add: impl FnMut(&Decoder, usize, Piece, [Option<&Array>; 5]) -> Result<(), InputError>,
+) -> Result<(), InputError> {
     let bytes = read_bytes(path)?;
     let lines = LineIndex::new(&bytes);
     let (xml, appended) = split_appended(&bytes, path, &lines)?;
@@ -319,7 +335,7 @@ pub(super) fn read_into(path: &Path, merged: &mut Merged) -> Result<(), InputErr
                 return Err(InputError::new(path, a.line, why));
             }
         }
-        add_piece(&source, p, *piece, mine, merged)?;
+        add(&source, p, *piece, mine)?;
     }
     Ok(())
 }
