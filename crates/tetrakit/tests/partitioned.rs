@@ -667,3 +667,39 @@ fn several_pieces_in_one_file_are_pieces_under_ranks() {
     );
     let _ = std::fs::remove_dir_all(&d);
 }
+
+/// The pieces are decoded several files at a time but merged in order: with a bad cell
+/// in piece 1 and a file that is not XML at piece 2, the error is piece 1's, on one
+/// thread or four, as reading one file after another finds it.
+#[test]
+fn the_first_bad_piece_is_the_one_named() {
+    let d = dir("first-bad");
+    let t = tetrakit::generate::kuhn(3);
+    let path = d.join("m.pvtu");
+    let piece_of = tetrakit::generate::slabs(&t.points, &t.tets, 4);
+    write_pieces(&path, &t.points, &t.tets, &piece_of, None).unwrap();
+    let one = d.join("m_1.vtu");
+    let text = std::fs::read_to_string(&one).unwrap();
+    let at = text
+        .find("Name=\"connectivity\" format=\"ascii\">\n")
+        .unwrap()
+        + 36;
+    let first = at + text[at..].find(' ').unwrap();
+    std::fs::write(&one, format!("{}999{}", &text[..at], &text[first..])).unwrap();
+    std::fs::write(d.join("m_2.vtu"), "<VTKFile").unwrap();
+    for threads in [1, 4] {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        let err = pool
+            .install(|| tetrakit::io::read_input(&path))
+            .unwrap_err();
+        let err = err.to_string();
+        assert!(
+            err.contains("m_1.vtu") && err.contains("999"),
+            "{threads} threads: {err}"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&d);
+}

@@ -8,15 +8,23 @@
 //! absolute path): a hostile index cannot make the reader open another file. A missing
 //! or unreadable piece is an error naming it.
 
-use super::vtu::{Merged, read_into};
+use super::vtu::{Merged, absorb_file, decode_file};
 use super::{Input, InputError, read_bytes};
 use quick_xml::events::Event;
+use rayon::prelude::*;
 use std::path::{Component, Path, PathBuf};
 
+/// Reads the pieces a few files at a time: each file decoded on its own thread, then
+/// merged in order (the same mesh, and the same first error, as one file after another;
+/// the memory of the merged mesh and of as many decoded files as there are threads).
 pub(super) fn read(path: &Path) -> Result<Input, InputError> {
     let mut merged = Merged::new(path);
-    for file in piece_files(path)? {
-        read_into(&file, &mut merged)?;
+    let files = piece_files(path)?;
+    for some in files.chunks(rayon::current_num_threads().max(1)) {
+        let decoded: Vec<_> = some.par_iter().map(|f| decode_file(f)).collect();
+        for (file, pieces) in some.iter().zip(decoded) {
+            absorb_file(file, pieces, &mut merged)?;
+        }
     }
     merged.finish(path)
 }

@@ -643,74 +643,146 @@ impl Decoder<'_> {
     }
 }
 
-/// One piece's points and cells, added to `input`.
+/// One piece's points and cells, added to `merged`.
 fn add_piece(
     d: &Decoder,
     p: usize,
     piece: Piece,
-    [points, conn, offsets, types, ids]: [Option<&Array>; 5],
+    arrays: [Option<&Array>; 5],
     merged: &mut Merged,
 ) -> Result<(), InputError> {
-    merged.ids = match ids {
-        Some(_) => Some(d.ints(ids, piece.points, piece)?),
-        None => None,
+    absorb(d.path, decode(d, p, piece, arrays), merged)
+}
+
+/// A piece's arrays decoded, each step's result kept: absorbing it ([`absorb`]) meets
+/// the errors in the order reading the piece meets them.
+pub(super) struct Decoded {
+    p: usize,
+    piece: Piece,
+    ids: Result<Option<Vec<i64>>, InputError>,
+    coordinates: Result<Vec<f64>, InputError>,
+    cells: Result<Cells, InputError>,
+}
+
+/// A piece's cell arrays: offsets, types, and the connectivity's first `entries`
+/// values (the array's line for messages).
+struct Cells {
+    offsets: Vec<i64>,
+    types: Vec<i64>,
+    conn: Vec<i64>,
+    entries: usize,
+    line: usize,
+}
+
+/// Decodes a piece's arrays (no merging: any number of pieces at once).
+fn decode(
+    d: &Decoder,
+    p: usize,
+    piece: Piece,
+    [points, conn, offsets, types, ids]: [Option<&Array>; 5],
+) -> Decoded {
+    let line = conn.map_or(piece.line, |a| a.line);
+    let cells = || {
+        let offsets = d.ints(offsets, piece.cells, piece)?;
+        let types = d.ints(types, piece.cells, piece)?;
+        let last = offsets.last().copied().unwrap_or(0);
+        let why = format!("piece {p}: the last offset is {last}");
+        let entries = usize::try_from(last).map_err(|_| InputError::new(d.path, line, why))?;
+        let conn = d.ints(conn, entries, piece)?;
+        Ok(Cells {
+            offsets,
+            types,
+            conn,
+            entries,
+            line,
+        })
     };
-    add_points(d, piece, points, merged)?;
-    let offsets = d.ints(offsets, piece.cells, piece)?;
-    let types = d.ints(types, piece.cells, piece)?;
-    let line = |a: Option<&Array>| a.map_or(piece.line, |a| a.line);
-    let err = |a: Option<&Array>, why: String| InputError::new(d.path, line(a), why);
-    let last = offsets.last().copied().unwrap_or(0);
-    let entries = usize::try_from(last)
-        .map_err(|_| err(conn, format!("piece {p}: the last offset is {last}")))?;
-    let conn_values = d.ints(conn, entries, piece)?;
+    Decoded {
+        p,
+        piece,
+        ids: ids.map(|_| d.ints(ids, piece.points, piece)).transpose(),
+        coordinates: coordinates(d, piece, points),
+        cells: cells(),
+    }
+}
+
+/// Each piece of the `.vtu` at `path` decoded, in order; a fault in the file's layout
+/// ends the list as an error.
+pub(super) fn decode_file(path: &Path) -> Vec<Result<Decoded, InputError>> {
+    let mut out = Vec::new();
+    let each = each_piece(path, |d, p, piece, arrays| {
+        out.push(Ok(decode(d, p, piece, arrays)));
+        Ok(())
+    });
+    if let Err(e) = each {
+        out.push(Err(e));
+    }
+    out
+}
+
+/// The pieces of `path` (the file a [`decode_file`] read) added to `merged`, in order.
+pub(super) fn absorb_file(
+    path: &Path,
+    pieces: Vec<Result<Decoded, InputError>>,
+    merged: &mut Merged,
+) -> Result<(), InputError> {
+    merged.file = path.to_path_buf();
+    merged.by_id = false;
+    pieces
+        .into_iter()
+        .try_for_each(|d| absorb(path, d?, merged))
+}
+
+/// A decoded piece's points and cells, added to `merged`.
+fn absorb(path: &Path, d: Decoded, merged: &mut Merged) -> Result<(), InputError> {
+    let (p, piece) = (d.p, d.piece);
+    merged.ids = d.ids?;
+    merged.add_points(&d.coordinates?)?;
+    let c = d.cells?;
+    let err = |why: String| InputError::new(path, c.line, why);
     let mut begin = 0usize;
     let mut cell = Vec::new();
-    for (k, (&end, &t)) in offsets.iter().zip(&types).enumerate() {
+    for (k, (&end, &t)) in c.offsets.iter().zip(&c.types).enumerate() {
         let Some(end) = usize::try_from(end)
             .ok()
-            .filter(|&e| e >= begin && e <= entries)
+            .filter(|&e| e >= begin && e <= c.entries)
         else {
             let why = format!(
-                "cell {k} of piece {p}: offset {end} is not between the previous one ({begin}) and the last ({entries})"
+                "cell {k} of piece {p}: offset {end} is not between the previous one ({begin}) and the last ({})",
+                c.entries
             );
-            return Err(err(conn, why));
+            return Err(err(why));
         };
         cell.clear();
-        for &v in &conn_values[begin..end] {
+        for &v in &c.conn[begin..end] {
             if v < 0 || v as usize >= piece.points {
                 let why = format!(
                     "cell {k} of piece {p} names point {v}, but the piece has points 0..={}",
                     piece.points.saturating_sub(1)
                 );
-                return Err(err(conn, why));
+                return Err(err(why));
             }
             cell.push(merged.local[v as usize]);
         }
         merged
             .sorter
-            .add(t, &cell, line(conn), &mut merged.input)
-            .map_err(|why| err(conn, format!("cell {k} of piece {p}: {why}")))?;
+            .add(t, &cell, c.line, &mut merged.input)
+            .map_err(|why| err(format!("cell {k} of piece {p}: {why}")))?;
         begin = end;
     }
     Ok(())
 }
 
 /// A piece's `Points`: exactly `3 × NumberOfPoints` coordinates.
-fn add_points(
-    d: &Decoder,
-    piece: Piece,
-    points: Option<&Array>,
-    merged: &mut Merged,
-) -> Result<(), InputError> {
+fn coordinates(d: &Decoder, piece: Piece, points: Option<&Array>) -> Result<Vec<f64>, InputError> {
     let want = piece.points.saturating_mul(3);
     match points.map(|a| (a, d.values(a, want))) {
-        Some((_, Ok(Values::Float(c)))) => merged.add_points(&c),
+        Some((_, Ok(Values::Float(c)))) => Ok(c),
         Some((a, Ok(Values::Int(_)))) => {
             Err(InputError::new(d.path, a.line, "integer point coordinates"))
         }
         Some((_, Err(e))) => Err(e),
-        None if piece.points == 0 => merged.add_points(&[]),
+        None if piece.points == 0 => Ok(Vec::new()),
         None => {
             let why = format!("a Piece of {} points without Points", piece.points);
             Err(InputError::new(d.path, piece.line, why))
