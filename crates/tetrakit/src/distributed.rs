@@ -40,7 +40,7 @@ use std::path::{Path, PathBuf};
 
 /// How many exchanges a check takes (all ranks take part in each); one more with an
 /// output ([`RankCheck::with_output`]).
-pub const ROUNDS: usize = 6;
+pub(crate) const ROUNDS: usize = 6;
 
 /// One process's side of a partitioned check: [`start`](Self::start), then
 /// [`step`](Self::step) with what every rank sent it until it returns `None`; then

@@ -1,7 +1,6 @@
-//! Vertex numbers and message text: a renumbering of points for locality
-//! ([`Renumbering`]), sentences that name vertices and cells as data ([`Sentence`]),
-//! input tokens quoted for messages ([`quote`]), and the contract's names of kinds
-//! ([`json_name`]).
+//! Vertex numbers and message text: sentences that name vertices and cells as data
+//! ([`Sentence`]); inside the crate, a renumbering of points for locality, input tokens
+//! quoted for messages, and the contract's names of kinds.
 //!
 //! Sentences for a person name vertices as `#12` and cells (tetrahedra, triangles) as
 //! `T12`. The library numbers both from 0; a file may number from 1 (TetGen), may number
@@ -164,16 +163,8 @@ pub fn ids(v: &[u32]) -> String {
 /// A renumbering of points, `new → old` and `old → new`: algorithms that read points at
 /// random work in an order where neighbours in space are neighbours in memory (a
 /// space-filling curve, grid cells), then give their answer in the caller's numbering.
-///
-/// ```
-/// use tetrakit::numbering::Renumbering;
-/// let r = Renumbering::from_order(vec![2, 0, 1]); // new 0 is old 2, ...
-/// assert_eq!(r.reorder(&['a', 'b', 'c']), ['c', 'a', 'b']);
-/// assert_eq!(r.to_new(&[[2, 1]]), [[0, 2]]);
-/// assert_eq!(r.to_old(&[[0, 2]]), [[2, 1]]);
-/// ```
 #[derive(Clone, Debug)]
-pub struct Renumbering {
+pub(crate) struct Renumbering {
     order: Vec<u32>,
     rank: Vec<u32>,
 }
@@ -225,14 +216,7 @@ impl Renumbering {
 
 /// An input token for a message, in single quotes: escaped (no control character from
 /// a file reaches the terminal) and cut to 40 characters.
-///
-/// ```
-/// use tetrakit::numbering::quote;
-/// assert_eq!(quote("1.5"), "'1.5'");
-/// assert_eq!(quote("\u{1b}[31m"), "'\\u{1b}[31m'");
-/// assert_eq!(quote(&"7".repeat(100)).chars().count(), 43);
-/// ```
-pub fn quote(tok: &str) -> String {
+pub(crate) fn quote(tok: &str) -> String {
     let mut q: String = tok.chars().take(40).flat_map(char::escape_debug).collect();
     if tok.chars().nth(40).is_some() {
         q.push('…');
@@ -242,7 +226,7 @@ pub fn quote(tok: &str) -> String {
 
 /// The name a unit enum variant has in the JSON contract (its serde name: `"no_candidate"`),
 /// for the `Display` of the kinds of problems and witnesses; `fallback` if it has none.
-pub fn json_name(value: &impl serde::Serialize, fallback: &'static str) -> String {
+pub(crate) fn json_name(value: &impl serde::Serialize, fallback: &'static str) -> String {
     match serde_json::to_value(value) {
         Ok(serde_json::Value::String(s)) => s,
         _ => fallback.to_string(),
@@ -252,6 +236,21 @@ pub fn json_name(value: &impl serde::Serialize, fallback: &'static str) -> Strin
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn renumbering_maps_both_ways() {
+        let r = Renumbering::from_order(vec![2, 0, 1]); // new 0 is old 2, ...
+        assert_eq!(r.reorder(&['a', 'b', 'c']), ['c', 'a', 'b']);
+        assert_eq!(r.to_new(&[[2, 1]]), [[0, 2]]);
+        assert_eq!(r.to_old(&[[0, 2]]), [[2, 1]]);
+    }
+
+    #[test]
+    fn quote_escapes_and_cuts() {
+        assert_eq!(quote("1.5"), "'1.5'");
+        assert_eq!(quote("\u{1b}[31m"), "'\\u{1b}[31m'");
+        assert_eq!(quote(&"7".repeat(100)).chars().count(), 43);
+    }
 
     /// Shown unchanged, a sentence is its text; only `#<digits>` and a word's
     /// `T<digits>` are numbers, and mapping them leaves every other character alone.

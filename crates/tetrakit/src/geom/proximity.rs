@@ -84,7 +84,7 @@ impl Ratio {
 }
 
 /// Why a text is not a [`Ratio`]. The text is kept quoted, escaped and cut
-/// ([`quote`](crate::numbering::quote)).
+/// (as every message quotes a token from a file).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum RatioError {
     /// Not a positive decimal or fraction `a/b` below 2^53.

@@ -31,10 +31,10 @@ mod write;
 
 pub use planar::{write_planar_edges, write_planar_triangulation, write_points2d};
 pub use svg::{Figure, Svg};
+pub(crate) use write::{Fields, write_piece};
 pub use write::{
-    Fields, piece_path, write_check_output, write_edges, write_instance, write_mesh,
-    write_mesh_with_fields, write_piece, write_pieces, write_pieces_with_fields, write_points,
-    write_pvtu_index, write_surface, write_triangulation, write_vtk,
+    piece_path, write_check_output, write_edges, write_instance, write_mesh, write_pieces,
+    write_points, write_pvtu_index, write_surface, write_triangulation, write_vtk,
 };
 
 use crate::geom::{Point3, coordinate_in_range, lex_cmp};
@@ -284,7 +284,7 @@ impl Input {
 
 /// The piece files of the `.pvtu` at `path`, in order, each a file inside its folder
 /// (an index naming another is an error at its line).
-pub fn pvtu_pieces(path: &Path) -> Result<Vec<PathBuf>, InputError> {
+pub(crate) fn pvtu_pieces(path: &Path) -> Result<Vec<PathBuf>, InputError> {
     pvtu::piece_files(path)
 }
 
@@ -302,14 +302,14 @@ pub fn read_files(files: &[PathBuf], opts: ReadOptions) -> Result<Input, InputEr
 
 /// A piece of a partitioned mesh as read: its mesh, and its points' global ids where it
 /// has them.
-pub type PieceRead = (Input, Option<Vec<i64>>);
+pub(crate) type PieceRead = (Input, Option<Vec<i64>>);
 
 /// Reads the pieces of one piece file of a partitioned mesh (a `.vtu`), each `Piece`
 /// apart, and accepts each as [`read_input_with`] does: its mesh, and each point's
 /// global id (`GlobalNodeIds` or `GlobalPointIds`) where every point has one. A `.pvtu`
 /// whose files hold several `Piece`s has that many pieces, numbered across its files
 /// in order, as [`read_input`] numbers them.
-pub fn read_pieces(path: &Path, opts: ReadOptions) -> Result<Vec<PieceRead>, InputError> {
+pub(crate) fn read_pieces(path: &Path, opts: ReadOptions) -> Result<Vec<PieceRead>, InputError> {
     let pieces = vtu::read_pieces(path)?;
     for (input, _) in &pieces {
         // A piece alone may hold no tetrahedron (an empty partition): its points are

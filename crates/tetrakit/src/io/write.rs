@@ -117,7 +117,7 @@ pub fn write_vtk(path: &Path, points: &[Point3], tets: &[[u32; 4]]) -> io::Resul
 /// by them): `(name, values)` pairs, one value per tetrahedron in `cells` and one per
 /// point in `points`. Names are plain words (no spaces or markup).
 #[derive(Clone, Debug, Default)]
-pub struct Fields<'a> {
+pub(crate) struct Fields<'a> {
     /// Per-tetrahedron fields.
     pub cells: Vec<(&'a str, &'a [i32])>,
     /// Per-point fields.
@@ -126,18 +126,7 @@ pub struct Fields<'a> {
 
 /// Writes a tetrahedralization with integer fields, as legacy VTK (`.vtk`, `CELL_DATA`
 /// and `POINT_DATA` scalars) or VTK XML (`.vtu`, ASCII), chosen by the extension.
-///
-/// ```
-/// use tetrakit::io::{Fields, write_mesh_with_fields};
-/// let pts = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
-/// let code = [4];
-/// let fields = Fields { cells: vec![("problem", &code)], points: vec![] };
-/// let path = std::env::temp_dir().join("tetrakit-doc-fields.vtu");
-/// write_mesh_with_fields(&path, &pts, &[[0, 2, 1, 3]], &fields).unwrap();
-/// let text = std::fs::read_to_string(&path).unwrap();
-/// assert!(text.contains(r#"<DataArray type="Int32" Name="problem" format="ascii">"#));
-/// ```
-pub fn write_mesh_with_fields(
+pub(crate) fn write_mesh_with_fields(
     path: &Path,
     points: &[Point3],
     tets: &[[u32; 4]],
@@ -260,7 +249,7 @@ pub fn write_pieces(
 /// [`write_pieces`] with integer fields on the tetrahedra and points (indexed as
 /// `tets` and `points`), each piece written with its share of them: `check --output
 /// P.pvtu` for ParaView.
-pub fn write_pieces_with_fields(
+pub(crate) fn write_pieces_with_fields(
     path: &Path,
     points: &[Point3],
     tets: &[[u32; 4]],
@@ -336,7 +325,7 @@ pub fn write_pvtu_index(path: &Path, pieces: &[PathBuf]) -> io::Result<()> {
 /// `points`, renumbered from 0 in order of first use), each point with its
 /// `GlobalNodeIds` (its index in `points`, or `ids[index]`); `fields.cells` indexed as
 /// `tets`, `fields.points` as `points`.
-pub fn write_piece(
+pub(crate) fn write_piece(
     name: &Path,
     points: &[Point3],
     tets: &[[u32; 4]],
@@ -506,5 +495,29 @@ pub fn write_points(path: &Path, points: &[Point3]) -> io::Result<()> {
         "node" => save(path, node_text(points, 1)),
         "json" => save(path, serde_json::json!({ "points": points }).to_string()),
         other => Err(unsupported(other, ".xyz, .txt, .node or .json")),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fields_are_written_as_int32_arrays() {
+        let pts = [
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.0, 0.0, 1.0],
+        ];
+        let code = [4];
+        let fields = Fields {
+            cells: vec![("problem", &code)],
+            points: vec![],
+        };
+        let path = std::env::temp_dir().join("tetrakit-doc-fields.vtu");
+        write_mesh_with_fields(&path, &pts, &[[0, 2, 1, 3]], &fields).unwrap();
+        let text = std::fs::read_to_string(&path).unwrap();
+        assert!(text.contains(r#"<DataArray type="Int32" Name="problem" format="ascii">"#));
     }
 }

@@ -29,14 +29,6 @@ pub enum Blocker {
 
 /// `None` when the segment between sites `a` and `b` is an edge of every triangulation
 /// of `points`; otherwise the witness that it is not. Exact, `O(n log n)`.
-///
-/// ```
-/// use tetrakit::planar::{Blocker, edge_blocker};
-/// let pts = [[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0], [1.0, 0.0]];
-/// assert_eq!(edge_blocker(&pts, 0, 3), None); // a hull edge
-/// assert!(matches!(edge_blocker(&pts, 0, 2), Some(Blocker::Crossing(_))));
-/// assert_eq!(edge_blocker(&pts, 0, 1), Some(Blocker::Site(4)));
-/// ```
 pub fn edge_blocker(points: &[Point2], a: u32, b: u32) -> Option<Blocker> {
     let p = |i: u32| &points[i as usize];
     let (pa, pb) = (p(a), p(b));
@@ -87,12 +79,6 @@ pub fn edge_blocker(points: &[Point2], a: u32, b: u32) -> Option<Blocker> {
 
 /// Every pair of sites `[i, j]` (`i < j`) whose open segment holds another site. Exact,
 /// `O(n² log n)`: the sites around each site sorted by direction, then by distance.
-///
-/// ```
-/// use tetrakit::planar::blocked_pairs;
-/// let pts = [[0.0, 0.0], [1.0, 1.0], [2.0, 2.0], [2.0, 0.0]];
-/// assert_eq!(blocked_pairs(&pts).into_iter().collect::<Vec<_>>(), vec![[0, 2]]);
-/// ```
 pub fn blocked_pairs(points: &[Point2]) -> HashSet<[u32; 2]> {
     let n = points.len() as u32;
     let p = |i: u32| &points[i as usize];
@@ -139,6 +125,26 @@ mod tests {
     use super::*;
     use crate::planar::mwt::cross;
     use crate::rng::Rng;
+
+    #[test]
+    fn edge_blocker_names_the_witness() {
+        let pts = [[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0], [1.0, 0.0]];
+        assert_eq!(edge_blocker(&pts, 0, 3), None); // a hull edge
+        assert!(matches!(
+            edge_blocker(&pts, 0, 2),
+            Some(Blocker::Crossing(_))
+        ));
+        assert_eq!(edge_blocker(&pts, 0, 1), Some(Blocker::Site(4)));
+    }
+
+    #[test]
+    fn blocked_pairs_have_a_site_between() {
+        let pts = [[0.0, 0.0], [1.0, 1.0], [2.0, 2.0], [2.0, 0.0]];
+        assert_eq!(
+            blocked_pairs(&pts).into_iter().collect::<Vec<_>>(),
+            vec![[0, 2]]
+        );
+    }
 
     /// Site `s` lies in the open segment `ab` (brute force: orientation and order).
     fn inside(pts: &[Point2], a: u32, b: u32, s: u32) -> bool {

@@ -25,11 +25,9 @@ use rayon::prelude::*;
 
 pub use delaunay::{Delaunay, DelaunayEdge, delaunay};
 pub use error::PlanarError;
-pub use forced::{Blocker, blocked_pairs, edge_blocker};
 pub use generate::{Distribution, points2d};
 pub use keil::{
-    KeilOutcome, KeilResult, KeilStopped, Violation, above_cheng_xu, check_random,
-    in_keil_interval, keil, keil_sites,
+    KeilOutcome, KeilResult, KeilStopped, Violation, above_cheng_xu, check_random, keil, keil_sites,
 };
 pub use mwt::{
     LowerBound, Mwt, MwtBounds, MwtOptions, MwtOutcome, MwtStats, candidate_edges, cmp_edge_sets,

@@ -22,7 +22,7 @@ mod outcome;
 mod triangulated;
 
 pub use crate::mesh::{Polyhedron, SurfaceError, certify_polyhedron};
-pub use bpnet::{BpNet, are_disjoint, bp_nets, is_proper, proper_nets_disjoint, strip_stacked};
+pub use bpnet::{BpNet, are_disjoint, bp_nets, is_proper, proper_nets_disjoint};
 pub use graph::SurfaceGraph;
 pub use mintetra::{Checks, Mintetra, Seconds, minimality, mintetra, mintetra_certified};
 pub use outcome::{Minimality, MintetraOptions, MintetraOutcome, MintetraWitness, solve_mintetra};

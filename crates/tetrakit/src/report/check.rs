@@ -50,14 +50,6 @@ const LISTED: usize = 20;
 
 /// The lines a person reads for `outcome`, checked in `seconds`; `other_cells` is the
 /// count and the description of the cells a mixed mesh had besides its tetrahedra.
-///
-/// ```
-/// use tetrakit::mesh::{CheckOptions, check};
-/// let pts = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
-/// let o = check(&pts, vec![[0, 2, 1, 3]], CheckOptions::default());
-/// let text = tetrakit::report::check_text(&o, 0.0, None);
-/// assert!(text.starts_with("INVALID: 1 problem(s) in 1 tetrahedra:\n  inverted: "));
-/// ```
 pub fn check_text(
     outcome: &CheckOutcome,
     seconds: f64,
@@ -202,5 +194,24 @@ pub fn mesh_facts(input: &crate::io::Input) -> MeshFacts {
         id_mismatches: (input.id_mismatches.iter())
             .map(|m| [m.id, m.first.into(), m.second.into(), m.piece.into()])
             .collect(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_text_of_an_inverted_tetrahedron() {
+        use crate::mesh::{CheckOptions, check};
+        let pts = [
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.0, 0.0, 1.0],
+        ];
+        let o = check(&pts, vec![[0, 2, 1, 3]], CheckOptions::default());
+        let text = check_text(&o, 0.0, None);
+        assert!(text.starts_with("INVALID: 1 problem(s) in 1 tetrahedra:\n  inverted: "));
     }
 }

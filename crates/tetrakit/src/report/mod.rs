@@ -17,7 +17,7 @@ mod poly;
 mod reduce;
 mod shell;
 
-pub use check::{MeshFacts, check_printed, check_text, mesh_facts, pieces_text, problem_pieces};
+pub use check::{MeshFacts, check_printed, mesh_facts, problem_pieces};
 pub use constrain::{constrain_json, constrain_text};
 pub use detect::{detect_json, detect_text};
 pub use flips::{flip_count_text, flip_graph_json, flips_text};

@@ -23,7 +23,7 @@ pub enum Shape {
 }
 
 /// The smallest number of points each shape takes.
-pub fn min_points(shape: Shape) -> usize {
+pub(crate) fn min_points(shape: Shape) -> usize {
     match shape {
         Shape::Sphere | Shape::Random => 4,
         Shape::Cube => 8,

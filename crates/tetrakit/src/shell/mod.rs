@@ -117,7 +117,7 @@ mod surface;
 use crate::bug::Bug;
 use crate::control::{Control, Stopped};
 use crate::geom::{Hull3, Point3, point_key};
-pub use improve::{DELAUNAY_ABOVE, Improvement, improve};
+pub use improve::{Improvement, improve};
 pub use ledger::Ledger;
 pub use optimum::optimum;
 pub use outcome::{

@@ -13,9 +13,10 @@
 
 use crate::control::Control;
 use crate::geom::{Hull2, Point2};
+use crate::planar::PlanarError;
 use crate::planar::edge_key as key;
+use crate::planar::forced::{blocked_pairs, edge_blocker};
 use crate::planar::mwt::{certified_triangles, polygon_dp, walk_area_sign};
-use crate::planar::{PlanarError, blocked_pairs, edge_blocker};
 use rayon::prelude::*;
 
 /// The best triangulations with and without `xy`, as sorted edge lists.

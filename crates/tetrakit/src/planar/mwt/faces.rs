@@ -575,7 +575,7 @@ mod tests {
             .collect();
         let n = pts.len() as u32;
         let inner: Vec<u32> = (0..n).filter(|&v| !hull.on_boundary[v as usize]).collect();
-        let blocked = crate::planar::blocked_pairs(pts);
+        let blocked = crate::planar::forced::blocked_pairs(pts);
         let mut holes: Vec<Vec<u32>> = inner.iter().map(|&v| vec![v]).collect();
         if let Some((walk, edges)) = hole_of(pts, &inner, shape, &blocked) {
             holes.retain(|h| !walk.contains(&h[0]));
@@ -727,7 +727,7 @@ mod tests {
             {
                 continue;
             }
-            let blocked = crate::planar::blocked_pairs(&pts);
+            let blocked = crate::planar::forced::blocked_pairs(&pts);
             let h = hull.vertices.len();
             let mut fixed: Vec<[u32; 2]> = (0..h)
                 .map(|i| key(hull.vertices[i], hull.vertices[(i + 1) % h]))
@@ -822,7 +822,7 @@ mod tests {
                     pts.push(hang);
                     pts.len() as u32 - 1
                 });
-            let blocked = crate::planar::blocked_pairs(&pts);
+            let blocked = crate::planar::forced::blocked_pairs(&pts);
             let mut fixed: Vec<[u32; 2]> = (0..m)
                 .map(|i| key(i as u32, ((i + 1) % m) as u32))
                 .collect();
@@ -896,7 +896,7 @@ mod tests {
         // and 10 inside.
         let mut fixed: Vec<[u32; 2]> = (0..6).map(|i| key(i, (i + 1) % 6)).collect();
         fixed.extend([[0, 11], [6, 7]]);
-        let blocked = crate::planar::blocked_pairs(&pts);
+        let blocked = crate::planar::forced::blocked_pairs(&pts);
         let chords = free_segments(&pts, &fixed, &blocked).expect("fixed edges apart");
         let face = Face {
             outer: vec![3, 4, 5, 0, 11, 0, 1, 2],
@@ -934,7 +934,7 @@ mod tests {
         };
         let (outer, hole): (Vec<u32>, Vec<u32>) = ((0..4).collect(), (4..8).collect());
         let fixed: Vec<[u32; 2]> = ring(&outer).into_iter().chain(ring(&hole)).collect();
-        let blocked = crate::planar::blocked_pairs(&pts);
+        let blocked = crate::planar::forced::blocked_pairs(&pts);
         let mut chords = free_segments(&pts, &fixed, &blocked).expect("fixed edges apart");
         chords.retain(|e| e[0] < 4); // not inside the hole
         let face = Face {

@@ -514,7 +514,7 @@ fn collinear(points: &[Point2]) -> Mwt {
 
 /// Every segment without a site on its open interior (`O(n² log n)`; small inputs).
 fn all_segments(points: &[Point2]) -> Vec<[u32; 2]> {
-    let blocked = super::blocked_pairs(points);
+    let blocked = super::forced::blocked_pairs(points);
     let n = points.len() as u32;
     (0..n)
         .flat_map(|a| (a + 1..n).map(move |b| [a, b]))
