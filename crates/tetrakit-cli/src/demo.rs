@@ -525,17 +525,17 @@ fn planar_section() {
                 };
                 out!(
                     "  Keil construction (§5.2) at β = {b}, n = {} ({} sites; Lemma 5.8 asks n > {:.1}): xy in the β-skeleton: {}; in an MWT: {}",
-                    k.n,
-                    k.sites.len(),
-                    k.lemma_bound,
-                    k.xy_in_skeleton,
+                    k.construction.n,
+                    k.construction.sites.len(),
+                    k.construction.lemma_bound,
+                    k.construction.xy_in_skeleton,
                     k.xy_in_mwt,
                 );
                 out!(
                     "    best with xy {:.9}, without {:.9}{} [{:.0} ms; {picture}]",
                     k.with_xy.0.mid(),
                     k.without_xy.0.mid(),
-                    if k.xy_in_skeleton && !k.xy_in_mwt {
+                    if k.construction.xy_in_skeleton && !k.xy_in_mwt {
                         " -> Keil's conjecture fails (exact)"
                     } else {
                         " (not separated at this n)"

@@ -169,9 +169,10 @@ pub fn keil(a: KeilArgs) -> CmdResult {
     let run = Run::new(a.time_limit, 0, 1);
     let outcome = planar::keil(beta, a.n, &run.ctl).map_err(CliError::new)?;
     drop(run);
-    let (sites, verdict) = match &outcome {
-        KeilOutcome::Decided(k) => (&k.sites, Verdict::Yes),
-        KeilOutcome::Undecided(s) => (&s.sites, Verdict::Undecided),
+    let sites = &outcome.construction().sites;
+    let verdict = match &outcome {
+        KeilOutcome::Decided(_) => Verdict::Yes,
+        KeilOutcome::Undecided(_) => Verdict::Undecided,
     };
     if let (Some(path), KeilOutcome::Decided(k)) = (a.svg, &outcome) {
         std::fs::write(path, tetrakit::report::keil_svg(k)).written(path)?;

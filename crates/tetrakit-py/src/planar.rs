@@ -4,7 +4,7 @@ use crate::convert::{self, Json, array, point_array, value_error};
 use numpy::{PyArray2, PyReadonlyArray2};
 use pyo3::prelude::*;
 use tetrakit::geom::{Point2, Ratio};
-use tetrakit::planar::{self, KeilOutcome, MwtOutcome, Region};
+use tetrakit::planar::{self, MwtOutcome, Region};
 use tetrakit::report;
 
 /// Planar sites from an `(n, 2)` array (or `(n, 3)` with every z = 0), checked as a
@@ -86,12 +86,8 @@ pub fn keil<'py>(
     }
     let ctl = convert::control(time_limit)?;
     let k = convert::run(py, &ctl, || planar::keil(b, n, &ctl))?.map_err(value_error)?;
-    let sites = match &k {
-        KeilOutcome::Decided(k) => &k.sites,
-        KeilOutcome::Undecided(s) => &s.sites,
-    };
     Ok((
         report::keil_json(&k, []).to_string(),
-        point_array(py, sites),
+        point_array(py, &k.construction().sites),
     ))
 }

@@ -279,28 +279,39 @@ fn keil_construction_is_exact_and_consistent() {
                 .unwrap()
                 .decided()
                 .unwrap();
-            assert!(k.xy_in_skeleton && k.split, "β={b} n={n}");
-            let same = |a: &[[u32; 2]], b: &[[u32; 2]]| cmp_edge_sets(&k.sites, a, b);
+            assert!(k.construction.xy_in_skeleton && k.split, "β={b} n={n}");
+            let same = |a: &[[u32; 2]], b: &[[u32; 2]]| cmp_edge_sets(&k.construction.sites, a, b);
             let constrained = |forced: Vec<[u32; 2]>, forbidden: Vec<[u32; 2]>| {
-                mwt(&k.sites, &MwtOptions { forced, forbidden }, &Control::new())
-                    .unwrap()
-                    .edges
+                mwt(
+                    &k.construction.sites,
+                    &MwtOptions { forced, forbidden },
+                    &Control::new(),
+                )
+                .unwrap()
+                .edges
             };
             assert_eq!(
                 same(
-                    &mwt(&k.sites, &MwtOptions::default(), &Control::new())
-                        .unwrap()
-                        .edges,
+                    &mwt(
+                        &k.construction.sites,
+                        &MwtOptions::default(),
+                        &Control::new()
+                    )
+                    .unwrap()
+                    .edges,
                     &k.mwt
                 ),
                 Ordering::Equal
             );
             assert_eq!(
-                same(&constrained(vec![k.xy], vec![]), &k.with_xy.1),
+                same(&constrained(vec![k.construction.xy], vec![]), &k.with_xy.1),
                 Ordering::Equal
             );
             assert_eq!(
-                same(&constrained(vec![], vec![k.xy]), &k.without_xy.1),
+                same(
+                    &constrained(vec![], vec![k.construction.xy]),
+                    &k.without_xy.1
+                ),
                 Ordering::Equal
             );
             assert_eq!(k.xy_in_mwt, k.with_vs_without != Ordering::Greater);
@@ -319,12 +330,16 @@ fn keil_construction_is_exact_and_consistent() {
             .unwrap()
             .decided()
             .unwrap();
-        assert!(k.n as f64 > k.lemma_bound || n.is_some());
-        assert!(k.xy_in_skeleton && !k.xy_in_mwt, "β={b} n={}", k.n);
+        assert!(k.construction.n as f64 > k.construction.lemma_bound || n.is_some());
+        assert!(
+            k.construction.xy_in_skeleton && !k.xy_in_mwt,
+            "β={b} n={}",
+            k.construction.n
+        );
         assert_eq!(k.with_vs_without, Ordering::Greater, "β={b}");
         assert!(k.with_xy.0.lo > k.without_xy.0.hi);
         assert_eq!(
-            cmp_edge_sets(&k.sites, &k.mwt, &k.without_xy.1),
+            cmp_edge_sets(&k.construction.sites, &k.mwt, &k.without_xy.1),
             Ordering::Equal
         );
     }

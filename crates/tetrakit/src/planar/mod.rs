@@ -27,7 +27,8 @@ pub use delaunay::{Delaunay, DelaunayEdge, delaunay};
 pub use error::PlanarError;
 pub use generate::{Distribution, points2d};
 pub use keil::{
-    KeilOutcome, KeilResult, KeilStopped, Violation, above_cheng_xu, check_random, keil, keil_sites,
+    KeilConstruction, KeilOutcome, KeilResult, Violation, above_cheng_xu, check_random, keil,
+    keil_sites,
 };
 pub use mwt::{
     LowerBound, Mwt, MwtBounds, MwtOptions, MwtOutcome, MwtStats, candidate_edges, cmp_edge_sets,

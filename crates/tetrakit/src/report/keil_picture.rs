@@ -15,17 +15,17 @@ use crate::planar::KeilResult;
 /// weights and the exact verdicts.
 ///
 pub fn keil_svg(k: &KeilResult) -> String {
-    let x = k.sites[k.xy[0] as usize];
-    let b = k.beta.to_f64();
+    let x = k.construction.sites[k.construction.xy[0] as usize];
+    let b = k.construction.beta.to_f64();
     let h = (b * b - 1.0).sqrt();
-    let mut view = k.sites.clone();
+    let mut view = k.construction.sites.clone();
     view.extend([[-b, h + b], [b, -h - b]]);
     let (lo, hi) = crate::geom::bounding_box(&view);
     let m = 0.06 * (hi[0] - lo[0]);
     let whole = ([lo[0] - m, lo[1] - m], [hi[0] + m, hi[1] + m]);
     let zoom_w = 430.0;
     let (w_a, h_b) = (430.0, 300.0);
-    let arc = &k.sites[2..2 + k.n];
+    let arc = &k.construction.sites[2..2 + k.construction.n];
     let near_x = around(&x, 3.0 * fan_offset(k), zoom_w / h_b);
     let (alo, ahi) = crate::geom::bounding_box(arc);
     let c = [(alo[0] + ahi[0]) / 2.0, (alo[1] + ahi[1]) / 2.0];
@@ -62,7 +62,7 @@ fn keil_caption(k: &KeilResult) -> String {
     let why = if k.xy_in_mwt {
         format!(
             "With n = {} sites per arc xy is in an MWT: the construction needs more (Lemma 5.8: n > {:.1}).",
-            k.n, k.lemma_bound
+            k.construction.n, k.construction.lemma_bound
         )
     } else {
         "The MWT's fans from q' to the p_i and from s' to the r_i cross xy beside x and y (b);\n\
@@ -77,8 +77,12 @@ fn keil_caption(k: &KeilResult) -> String {
     format!(
         "β = {}: xy (dashed red) is {} the β-skeleton (the disks: its β-region) and {} the MWT (blue).\n\
          {why}\nWeight with xy {with:.6}, without {without:.6}: {cost} (compared exactly).",
-        k.beta,
-        if k.xy_in_skeleton { "in" } else { "not in" },
+        k.construction.beta,
+        if k.construction.xy_in_skeleton {
+            "in"
+        } else {
+            "not in"
+        },
         if k.xy_in_mwt { "in" } else { "not in" },
     )
 }
@@ -86,38 +90,55 @@ fn keil_caption(k: &KeilResult) -> String {
 /// The marks of the Keil picture, the same in every panel (each clips them); the ends of
 /// the arc of `p_i` are named where it is magnified (`detail`).
 fn draw_keil(svg: &mut Svg, k: &KeilResult, [h, b]: [f64; 2], detail: bool) {
-    let (x, y) = (k.sites[k.xy[0] as usize], k.sites[k.xy[1] as usize]);
+    let (x, y) = (
+        k.construction.sites[k.construction.xy[0] as usize],
+        k.construction.sites[k.construction.xy[1] as usize],
+    );
     for c in [[0.0, h], [0.0, -h]] {
         svg.circle(&c, b, "disk");
     }
     let mwt: std::collections::HashSet<&[u32; 2]> = k.mwt.iter().collect();
     for e in k.with_xy.1.iter().filter(|e| !mwt.contains(e)) {
-        svg.line(&k.sites[e[0] as usize], &k.sites[e[1] as usize], "best");
+        svg.line(
+            &k.construction.sites[e[0] as usize],
+            &k.construction.sites[e[1] as usize],
+            "best",
+        );
     }
     for e in &k.mwt {
-        svg.line(&k.sites[e[0] as usize], &k.sites[e[1] as usize], "mwt");
+        svg.line(
+            &k.construction.sites[e[0] as usize],
+            &k.construction.sites[e[1] as usize],
+            "mwt",
+        );
     }
     svg.line(&x, &y, "xy");
-    for p in &k.sites {
+    for p in &k.construction.sites {
         svg.site(p);
     }
     svg.label(&x, "x");
     svg.label(&y, "y");
-    svg.label(&k.sites[0], "q'");
+    svg.label(&k.construction.sites[0], "q'");
     if detail {
-        svg.label(&k.sites[2], "p_n");
-        svg.label(&k.sites[k.n + 1], "p_1");
+        svg.label(&k.construction.sites[2], "p_n");
+        svg.label(&k.construction.sites[k.construction.n + 1], "p_1");
     }
 }
 
 /// How far from `x` the MWT edges crossing `xy` meet it (at least a tiny positive length,
 /// so the window around `x` is never empty).
 fn fan_offset(k: &KeilResult) -> f64 {
-    let (x, y) = (k.sites[k.xy[0] as usize], k.sites[k.xy[1] as usize]);
+    let (x, y) = (
+        k.construction.sites[k.construction.xy[0] as usize],
+        k.construction.sites[k.construction.xy[1] as usize],
+    );
     let len = ((y[0] - x[0]).powi(2) + (y[1] - x[1]).powi(2)).sqrt();
     let mut far: f64 = 1e-9 * len;
     for e in &k.mwt {
-        let (p, q) = (k.sites[e[0] as usize], k.sites[e[1] as usize]);
+        let (p, q) = (
+            k.construction.sites[e[0] as usize],
+            k.construction.sites[e[1] as usize],
+        );
         let (sp, sq) = (side(&x, &y, &p), side(&x, &y, &q));
         if sp * sq < 0.0 {
             let t = sp / (sp - sq);

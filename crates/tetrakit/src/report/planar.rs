@@ -5,7 +5,7 @@
 use crate::control::Verdict;
 use crate::geom::{Interval, Ratio};
 use crate::planar::{
-    KeilOutcome, KeilResult, KeilStopped, MwtOutcome, Region, Skeleton, Violation,
+    KeilConstruction, KeilOutcome, KeilResult, MwtOutcome, Region, Skeleton, Violation,
 };
 use serde::Serialize;
 use serde_json::Value;
@@ -220,16 +220,43 @@ pub fn mwt_text(m: &MwtOutcome, vertices: usize, seconds: f64, written: bool) ->
     }
 }
 
-/// `keil --json`'s own fields.
+/// `keil --json`'s fields of the construction, decided or not.
 #[derive(Serialize)]
-struct KeilJson {
-    verdict: Verdict,
+struct ConstructionJson {
     beta: String,
     n: usize,
     sites: usize,
     xy: [u32; 2],
     lemma_5_8_bound: f64,
     xy_in_skeleton: bool,
+}
+
+impl ConstructionJson {
+    fn new(c: &KeilConstruction) -> Self {
+        ConstructionJson {
+            beta: c.beta.to_string(),
+            n: c.n,
+            sites: c.sites.len(),
+            xy: c.xy,
+            lemma_5_8_bound: c.lemma_bound,
+            xy_in_skeleton: c.xy_in_skeleton,
+        }
+    }
+}
+
+/// `keil --json`'s own fields (stopped before the optima: the construction's alone).
+#[derive(Serialize)]
+struct KeilJson {
+    verdict: Verdict,
+    #[serde(flatten)]
+    construction: ConstructionJson,
+    #[serde(flatten)]
+    optima: Option<OptimaJson>,
+}
+
+/// `keil --json`'s fields of the two optima.
+#[derive(Serialize)]
+struct OptimaJson {
     xy_in_mwt: bool,
     refutes_keil: bool,
     weight_with_xy: f64,
@@ -238,18 +265,6 @@ struct KeilJson {
     weight_without_xy_interval: [f64; 2],
     with_minus_without_sign: i8,
     method: &'static str,
-}
-
-/// `keil --json`'s fields when stopped before the optima.
-#[derive(Serialize)]
-struct KeilStoppedJson {
-    verdict: Verdict,
-    beta: String,
-    n: usize,
-    sites: usize,
-    xy: [u32; 2],
-    lemma_5_8_bound: f64,
-    xy_in_skeleton: bool,
 }
 
 /// How the two optima were found.
@@ -266,38 +281,27 @@ fn keil_method(k: &KeilResult) -> &'static str {
 /// (`refutes_keil` says whether this realization separates `xy`), `undecided` with the
 /// construction and the skeleton test when stopped before the optima.
 pub fn keil_json<'a>(k: &KeilOutcome, extra: impl IntoIterator<Item = (&'a str, Value)>) -> Value {
-    let k = match k {
-        KeilOutcome::Decided(k) => k,
-        KeilOutcome::Undecided(s) => {
-            let j = KeilStoppedJson {
-                verdict: Verdict::Undecided,
-                beta: s.beta.to_string(),
-                n: s.n,
-                sites: s.sites.len(),
-                xy: s.xy,
-                lemma_5_8_bound: s.lemma_bound,
-                xy_in_skeleton: s.xy_in_skeleton,
-            };
-            return super::json(&j, extra);
-        }
-    };
     let iv = |w: &Interval| [w.lo, w.hi];
-    let j = KeilJson {
-        verdict: Verdict::Yes,
-        beta: k.beta.to_string(),
-        n: k.n,
-        sites: k.sites.len(),
-        xy: k.xy,
-        lemma_5_8_bound: k.lemma_bound,
-        xy_in_skeleton: k.xy_in_skeleton,
-        xy_in_mwt: k.xy_in_mwt,
-        refutes_keil: k.xy_in_skeleton && !k.xy_in_mwt,
-        weight_with_xy: k.with_xy.0.mid(),
-        weight_with_xy_interval: iv(&k.with_xy.0),
-        weight_without_xy: k.without_xy.0.mid(),
-        weight_without_xy_interval: iv(&k.without_xy.0),
-        with_minus_without_sign: k.with_vs_without as i8,
-        method: keil_method(k),
+    let j = match k {
+        KeilOutcome::Undecided(c) => KeilJson {
+            verdict: Verdict::Undecided,
+            construction: ConstructionJson::new(c),
+            optima: None,
+        },
+        KeilOutcome::Decided(k) => KeilJson {
+            verdict: Verdict::Yes,
+            construction: ConstructionJson::new(&k.construction),
+            optima: Some(OptimaJson {
+                xy_in_mwt: k.xy_in_mwt,
+                refutes_keil: k.construction.xy_in_skeleton && !k.xy_in_mwt,
+                weight_with_xy: k.with_xy.0.mid(),
+                weight_with_xy_interval: iv(&k.with_xy.0),
+                weight_without_xy: k.without_xy.0.mid(),
+                weight_without_xy_interval: iv(&k.without_xy.0),
+                with_minus_without_sign: k.with_vs_without as i8,
+                method: keil_method(k),
+            }),
+        },
     };
     super::json(&j, extra)
 }
@@ -306,38 +310,40 @@ pub fn keil_json<'a>(k: &KeilOutcome, extra: impl IntoIterator<Item = (&'a str, 
 pub fn keil_text(k: &KeilOutcome) -> String {
     match k {
         KeilOutcome::Decided(k) => decided_keil_text(k),
-        KeilOutcome::Undecided(s) => stopped_keil_text(s),
+        KeilOutcome::Undecided(c) => format!(
+            "UNDECIDED: stopped at the time limit before the optima were found.\n  {}\n  xy in the β-skeleton: {} (exact)",
+            construction_line(c),
+            c.xy_in_skeleton
+        ),
     }
 }
 
-fn stopped_keil_text(s: &KeilStopped) -> String {
+/// The construction's line: β, n, the sites, Lemma 5.8's bound.
+fn construction_line(c: &KeilConstruction) -> String {
     format!(
-        "UNDECIDED: stopped at the time limit before the optima were found.\n  Keil construction (thesis §5.2), β = {}, n = {} ({} sites; Lemma 5.8 asks n > {:.1}):\n  xy in the β-skeleton: {} (exact)",
-        s.beta,
-        s.n,
-        s.sites.len(),
-        s.lemma_bound,
-        s.xy_in_skeleton
+        "Keil construction (thesis §5.2), β = {}, n = {} ({} sites; Lemma 5.8 asks n > {:.1}):",
+        c.beta,
+        c.n,
+        c.sites.len(),
+        c.lemma_bound
     )
 }
 
 fn decided_keil_text(k: &KeilResult) -> String {
-    let verdict = if k.xy_in_skeleton && !k.xy_in_mwt {
+    let c = &k.construction;
+    let verdict = if c.xy_in_skeleton && !k.xy_in_mwt {
         "xy is a β-skeleton edge in no MWT: Keil's conjecture fails here".to_string()
     } else {
         format!(
             "this realization does not separate xy yet at n = {}; try a larger --n (Lemma 5.8: n > {:.1} suffices)",
-            k.n, k.lemma_bound
+            c.n, c.lemma_bound
         )
     };
     format!(
-        "Keil construction (thesis §5.2), β = {}, n = {} ({} sites; Lemma 5.8 asks n > {:.1}):\n  method: {}\n  xy in the β-skeleton: {} (exact)\n  xy in the minimum weight triangulation: {} (exact)\n  best triangulation with xy:    {:.15}\n  best triangulation without xy: {:.15}\n  verdict: {verdict}",
-        k.beta,
-        k.n,
-        k.sites.len(),
-        k.lemma_bound,
+        "{}\n  method: {}\n  xy in the β-skeleton: {} (exact)\n  xy in the minimum weight triangulation: {} (exact)\n  best triangulation with xy:    {:.15}\n  best triangulation without xy: {:.15}\n  verdict: {verdict}",
+        construction_line(c),
         keil_method(k),
-        k.xy_in_skeleton,
+        c.xy_in_skeleton,
         k.xy_in_mwt,
         k.with_xy.0.mid(),
         k.without_xy.0.mid(),

@@ -55,9 +55,10 @@ fn cmp_with_root12(beta: Ratio, c: u32, d: u32) -> Ordering {
 /// Largest site count for the constrained optima, which use all `O(n²)` segments.
 pub const CONSTRAINED_LIMIT: usize = 160;
 
-/// The Keil point set and what was found on it.
+/// Keil's construction for one β: the sites, `xy`, and the exact skeleton test on it
+/// (what [`keil`] knows before any triangulation is optimized).
 #[derive(Clone, Debug)]
-pub struct KeilResult {
+pub struct KeilConstruction {
     /// β used.
     pub beta: Ratio,
     /// The sites: `q', x, p_n..p_1, r_1..r_n, y, s'` in this order.
@@ -70,6 +71,13 @@ pub struct KeilResult {
     pub lemma_bound: f64,
     /// `xy` is an edge of the (circle-based) β-skeleton (exact).
     pub xy_in_skeleton: bool,
+}
+
+/// The Keil point set and what was found on it.
+#[derive(Clone, Debug)]
+pub struct KeilResult {
+    /// The construction and the skeleton test.
+    pub construction: KeilConstruction,
     /// `xy` is an edge of some minimum weight triangulation (exact).
     pub xy_in_mwt: bool,
     /// A minimum weight triangulation (the one with `xy` on a tie).
@@ -85,35 +93,25 @@ pub struct KeilResult {
     pub split: bool,
 }
 
-/// What [`keil`] knew when the control stopped it before both optima were found: the
-/// construction and the exact skeleton test on `xy`.
-#[derive(Clone, Debug)]
-pub struct KeilStopped {
-    /// β used.
-    pub beta: Ratio,
-    /// The sites, in [`KeilResult::sites`]'s order.
-    pub sites: Vec<Point2>,
-    /// Indices of `x` and `y`.
-    pub xy: [u32; 2],
-    /// `n`, the number of sites on each arc.
-    pub n: usize,
-    /// Lemma 5.8's bound on `n` (computed in floating point).
-    pub lemma_bound: f64,
-    /// `xy` is an edge of the (circle-based) β-skeleton (exact).
-    pub xy_in_skeleton: bool,
-}
-
 /// The answer of [`keil`]: everything decided, or what was known when stopped.
 #[derive(Clone, Debug)]
 #[allow(clippy::large_enum_variant)]
 pub enum KeilOutcome {
     /// Both questions on `xy` decided exactly.
     Decided(KeilResult),
-    /// Stopped before the optima were found.
-    Undecided(KeilStopped),
+    /// Stopped before the optima were found: the construction alone.
+    Undecided(KeilConstruction),
 }
 
 impl KeilOutcome {
+    /// The construction, decided or not.
+    pub fn construction(&self) -> &KeilConstruction {
+        match self {
+            KeilOutcome::Decided(k) => &k.construction,
+            KeilOutcome::Undecided(c) => c,
+        }
+    }
+
     /// The decided result, if it is one.
     pub fn decided(self) -> Option<KeilResult> {
         match self {
@@ -221,42 +219,37 @@ pub fn keil(beta: Ratio, n: Option<usize>, ctl: &Control) -> Result<KeilOutcome,
         Some(s) => Ok((s, true)),
         None => Ok((general(&sites, xy, ctl)?, false)),
     });
+    let construction = KeilConstruction {
+        beta,
+        sites,
+        xy,
+        n,
+        lemma_bound,
+        xy_in_skeleton,
+    };
     let (optima, split) = match found {
-        Err(PlanarError::Stopped(_)) => {
-            return Ok(KeilOutcome::Undecided(KeilStopped {
-                beta,
-                sites,
-                xy,
-                n,
-                lemma_bound,
-                xy_in_skeleton,
-            }));
-        }
+        Err(PlanarError::Stopped(_)) => return Ok(KeilOutcome::Undecided(construction)),
         other => other?,
     };
+    let sites = &construction.sites;
     let Optima {
         with_xy: with,
         without_xy: without,
     } = optima;
-    let with_vs_without = cmp_edge_sets(&sites, &with, &without);
+    let with_vs_without = cmp_edge_sets(sites, &with, &without);
     let xy_in_mwt = with_vs_without != Ordering::Greater;
     Ok(KeilOutcome::Decided(KeilResult {
-        beta,
-        n,
-        lemma_bound,
-        xy,
-        xy_in_skeleton,
         xy_in_mwt,
         mwt: if xy_in_mwt {
             with.clone()
         } else {
             without.clone()
         },
-        with_xy: (weight_of(&sites, &with), with),
-        without_xy: (weight_of(&sites, &without), without),
+        with_xy: (weight_of(sites, &with), with),
+        without_xy: (weight_of(sites, &without), without),
         with_vs_without,
         split,
-        sites,
+        construction,
     }))
 }
 
