@@ -70,7 +70,7 @@ mod proof;
 mod separate;
 
 pub use certify::Uncertified;
-pub use core::{FaceCore, face_core};
+pub use core::{FaceCore, SmallestCore, face_core, smallest_core};
 pub use encode::{Domain, Edges, MAX_CANDIDATES};
 
 pub use outcome::{TetraOptions, TetraOutcome, Witness, WitnessKind, tetrahedralize};
