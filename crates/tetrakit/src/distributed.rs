@@ -254,31 +254,9 @@ impl RankCheck {
                     hello.failure.get_or_insert((f as u32, e));
                 }
                 Ok(pieces) => {
-                    for (sub, (input, ids)) in pieces.into_iter().enumerate() {
-                        let (file, sub) = (f as u32, sub as u32);
-                        for (i, at) in input.points.iter().enumerate() {
-                            let key = match &ids {
-                                Some(ids) => [ids[i] as u64, 0, 0],
-                                None => point_key(at),
-                            };
-                            let o = Occurrence {
-                                key,
-                                file,
-                                sub,
-                                index: i as u32,
-                                at: *at,
-                            };
-                            keys[owner_of(&key, self.size)].push(o);
-                        }
-                        hello.pieces.push(Info {
-                            file,
-                            sub,
-                            points: input.points.len() as u32,
-                            tets: input.tets.len() as u32,
-                            other_cells: (input.other_cells.as_ref()).map_or(0, |o| o.count as u32),
-                            ids: ids.is_some(),
-                        });
-                        self.mine.push(Local::new(file, sub, input));
+                    for (sub, piece) in pieces.into_iter().enumerate() {
+                        let at = (f as u32, sub as u32);
+                        self.take(at, piece, &mut hello, &mut keys);
                     }
                 }
             }
@@ -295,6 +273,40 @@ impl RankCheck {
             })
             .collect();
         self.sent(out)
+    }
+
+    /// Piece `sub` of file `file`, read: each point to its key's owner, its facts to
+    /// every rank, the piece kept.
+    fn take(
+        &mut self,
+        (file, sub): (u32, u32),
+        (input, ids): io::PieceRead,
+        hello: &mut Hello,
+        keys: &mut [Vec<Occurrence>],
+    ) {
+        for (i, at) in input.points.iter().enumerate() {
+            let key = match &ids {
+                Some(ids) => [ids[i] as u64, 0, 0],
+                None => point_key(at),
+            };
+            let o = Occurrence {
+                key,
+                file,
+                sub,
+                index: i as u32,
+                at: *at,
+            };
+            keys[owner_of(&key, self.size)].push(o);
+        }
+        hello.pieces.push(Info {
+            file,
+            sub,
+            points: input.points.len() as u32,
+            tets: input.tets.len() as u32,
+            other_cells: (input.other_cells.as_ref()).map_or(0, |o| o.count as u32),
+            ids: ids.is_some(),
+        });
+        self.mine.push(Local::new(file, sub, input));
     }
 
     fn sent(&mut self, out: Vec<Vec<u8>>) -> Vec<Vec<u8>> {
