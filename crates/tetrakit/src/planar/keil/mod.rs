@@ -189,7 +189,7 @@ pub const MAX_N: usize = 4000;
 /// use tetrakit::planar::{KeilOutcome, keil};
 /// let k = keil("1.1548".parse().unwrap(), Some(20), &Control::new()).unwrap();
 /// let k = k.decided().unwrap();
-/// assert!(k.xy_in_skeleton && !k.xy_in_mwt);
+/// assert!(k.construction.xy_in_skeleton && !k.xy_in_mwt);
 /// assert!(k.with_xy.0.lo > k.without_xy.0.hi);
 /// let stopped = Control::new();
 /// stopped.stop();
