@@ -19,14 +19,24 @@
 //!    owner, and its points to the owner of their coordinates (coincident and unused
 //!    vertices);
 //! 4. each rank checks its parts' faces and edges (the owner's layer of ghosts is one
-//!    more part) and sends what they decide, with the boundary faces, to rank 0;
+//!    more part) and sends what they decide to rank 0, with the boundary faces' vertices
+//!    and tetrahedra (their corners only with `convex`, for the hull test; else the
+//!    place of each face's first vertex) and the box of its boundary faces;
 //! 5. rank 0 puts them in the merged check's order and, where the embedding checks are
-//!    due, sends one vertex of every boundary component to all ranks;
+//!    due, sends every rank one vertex of every boundary component and a grid over the
+//!    boundary's box (about one cell per face, each cell owned by a rank);
 //! 6. every rank runs the cone tests of the vertices it owns and the nesting test of
-//!    its pieces; rank 0 finishes.
+//!    its pieces (to rank 0), and sends each of its boundary faces, with its corners, to
+//!    the owners of the cells its box meets;
+//! 7. each rank tests the faces it received pairwise and keeps the pairs whose boxes'
+//!    intersection starts in a cell it owns (so each pair is decided once, by a rank
+//!    that has both faces), the first 100 in the merged check's order to rank 0, which
+//!    merges them and finishes.
 //!
-//! Memory per rank: its pieces, its parts (each piece's tetrahedra again, compacted) and
-//! its layer (the ghosts); rank 0 also holds the boundary faces. A vertex number in the
+//! Memory per rank: its pieces, its parts (each piece's tetrahedra again, compacted),
+//! its layer (the ghosts) and the boundary faces of its cells; rank 0 also holds the
+//! boundary's vertices and tetrahedra (16 bytes a face, and up to 28 more for the place
+//! of its first vertex; every corner with `convex`). A vertex number in the
 //! problems is its place among all pieces' points (piece 0's first), as `tetrakit check`
 //! numbers a `.pvtu`'s vertices.
 
@@ -40,7 +50,7 @@ use std::path::{Path, PathBuf};
 
 /// How many exchanges a check takes (all ranks take part in each); one more with an
 /// output ([`RankCheck::with_output`]).
-pub(crate) const ROUNDS: usize = 6;
+pub(crate) const ROUNDS: usize = 7;
 
 /// One process's side of a partitioned check: [`start`](Self::start), then
 /// [`step`](Self::step) with what every rank sent it until it returns `None`; then
@@ -67,7 +77,14 @@ pub struct RankCheck {
     gathered: Gathered,
     hull_points: Vec<(Point3, u32)>,
     report: Report,
+    /// Rank 0 with `convex`: the boundary faces with their corners.
     boundary: Vec<([u32; 3], u32, [Point3; 3])>,
+    /// This rank's boundary faces (those its parts decide), with their corners.
+    mine_boundary: Vec<Face>,
+    /// Rank 0: what the cone and nesting tests found on every rank (round 6).
+    embedded: Vec<Embedded>,
+    /// The cells of the self-intersection test, when it runs.
+    grid: Option<Grid>,
     reps: Vec<(u32, u32, Point3)>,
     embedding: bool,
     outcome: Option<CheckOutcome>,
@@ -148,6 +165,8 @@ struct Spread {
 #[derive(Default, Serialize, Deserialize)]
 struct Gathered {
     faces: Vec<PartFaces>,
+    /// The box of this rank's boundary faces.
+    bbox: Option<(Point3, Point3)>,
     coincident: Vec<(Point3, Problem)>,
     unused: Vec<u32>,
     mismatches: Vec<Problem>,
@@ -159,6 +178,91 @@ struct Gathered {
 struct Decision {
     embed: bool,
     reps: Vec<(Point3, u32)>,
+    /// The cells the boundary's self-intersection test is spread over.
+    grid: Option<Grid>,
+}
+
+/// A boundary face: its vertices (outward), its tetrahedron, its corners.
+#[derive(Clone, Copy, Serialize, Deserialize)]
+struct Face {
+    v: [u32; 3],
+    tet: u32,
+    at: [Point3; 3],
+}
+
+impl Face {
+    /// Its place in the merged check's boundary order (its vertices sorted).
+    fn key(&self) -> [u32; 3] {
+        let mut k = self.v;
+        k.sort_unstable();
+        k
+    }
+
+    fn bbox(&self) -> (Point3, Point3) {
+        let [a, b, c] = &self.at;
+        crate::mesh::grid::aabb(&[a, b, c])
+    }
+}
+
+/// Round 6's messages: to rank 0 what the cone and nesting tests found, to the owners
+/// of the cells a boundary face's box meets, the face.
+#[derive(Default, Serialize, Deserialize)]
+struct Sixth {
+    embedded: Option<Embedded>,
+    faces: Vec<Face>,
+}
+
+/// A uniform grid over the boundary's box, about one cell per face: each cell is owned
+/// by a rank (a hash of its index), and a pair of faces whose boxes meet is decided by
+/// the owner of the cell that holds the low corner of the boxes' intersection, to whom
+/// both faces were sent (the cell index is monotone in each coordinate).
+#[derive(Clone, Copy, Default, Serialize, Deserialize)]
+struct Grid {
+    lo: Point3,
+    h: f64,
+    n: [u64; 3],
+}
+
+impl Grid {
+    fn new((lo, hi): (Point3, Point3), faces: usize) -> Grid {
+        let extent = (0..3).map(|i| hi[i] - lo[i]).fold(0.0, f64::max);
+        let h = extent / (faces.max(1) as f64).cbrt().ceil();
+        let h = if h.is_finite() && h > 0.0 { h } else { 1.0 };
+        let n = std::array::from_fn(|i| ((hi[i] - lo[i]) / h).floor().max(0.0) as u64 + 1);
+        Grid { lo, h, n }
+    }
+
+    fn index(&self, x: f64, i: usize) -> u64 {
+        let k = ((x - self.lo[i]) / self.h).floor();
+        match k >= 0.0 {
+            true => (k as u64).min(self.n[i] - 1),
+            false => 0,
+        }
+    }
+
+    fn cell(&self, x: &Point3) -> [u64; 3] {
+        std::array::from_fn(|i| self.index(x[i], i))
+    }
+
+    /// The ranks owning the cells `b` meets (every rank when they are many).
+    fn owners(&self, b: &(Point3, Point3), size: usize) -> Vec<usize> {
+        let (lo, hi) = (self.cell(&b.0), self.cell(&b.1));
+        let cells: u64 = (0..3).map(|i| hi[i] - lo[i] + 1).product();
+        if cells > 8 * size as u64 {
+            return (0..size).collect();
+        }
+        let mut owners = Vec::new();
+        for x in lo[0]..=hi[0] {
+            for y in lo[1]..=hi[1] {
+                for z in lo[2]..=hi[2] {
+                    owners.push(owner_of(&[x, y, z], size));
+                }
+            }
+        }
+        owners.sort_unstable();
+        owners.dedup();
+        owners
+    }
 }
 
 #[derive(Default, Serialize, Deserialize)]
@@ -333,7 +437,8 @@ impl RankCheck {
             (3, _) => self.faces(inbox),
             (4, _) => self.decide(inbox),
             (5, _) => self.embed(inbox),
-            (6, Some(_)) => {
+            (6, _) => self.pairs(inbox),
+            (7, Some(_)) => {
                 self.finish(inbox);
                 let marks = std::mem::take(&mut self.marks);
                 let out = vec![
@@ -347,7 +452,7 @@ impl RankCheck {
                 self.sent(out)
             }
             _ => {
-                if self.round == 6 {
+                if self.round == 7 {
                     self.finish(inbox);
                 } else {
                     self.write_pieces(inbox);
@@ -534,9 +639,15 @@ impl RankCheck {
         self.on_boundary = (faces.iter_mut())
             .map(|f| std::mem::take(&mut f.on_boundary))
             .collect();
+        self.keep_boundary(&mut faces);
+        let bbox = (self.mine_boundary.iter().map(Face::bbox)).reduce(|a, b| {
+            let lo = std::array::from_fn(|i| a.0[i].min(b.0[i]));
+            (lo, std::array::from_fn(|i| a.1[i].max(b.1[i])))
+        });
         let (coincident, unused) = places(points);
         let g = Gathered {
             faces,
+            bbox,
             coincident,
             unused: if self.opts.convex { unused } else { Vec::new() },
             mismatches: std::mem::take(&mut self.mismatches),
@@ -544,6 +655,29 @@ impl RankCheck {
             reoriented: self.reoriented,
         };
         self.send_to_rank0(&g)
+    }
+
+    /// This rank's boundary faces kept with their corners; rank 0 gets, beside their
+    /// vertices, the corners of each face's first vertex only (a component's
+    /// representative is one), all of them with `convex` (the hull test needs them).
+    fn keep_boundary(&mut self, faces: &mut [PartFaces]) {
+        for f in faces.iter_mut() {
+            let at = |v: u32| {
+                let k = f.places.binary_search_by_key(&v, |p| p.0);
+                f.places[k.expect("a boundary vertex has its place")].1
+            };
+            let kept = f.boundary.iter().map(|&(v, tet)| Face {
+                v,
+                tet,
+                at: v.map(at),
+            });
+            self.mine_boundary.extend(kept);
+            if !self.opts.convex {
+                let mut first: Vec<u32> = f.boundary.iter().map(|b| b.0[0]).collect();
+                first.sort_unstable();
+                f.places.retain(|p| first.binary_search(&p.0).is_ok());
+            }
+        }
     }
 
     /// Round 5, rank 0: the report so far in the merged check's order, and whether (and
@@ -559,6 +693,13 @@ impl RankCheck {
             all.coincident.extend(g.coincident);
             all.unused.extend(g.unused);
             all.mismatches.extend(g.mismatches);
+            all.bbox = match (all.bbox, g.bbox) {
+                (Some(a), Some(b)) => Some((
+                    std::array::from_fn(|i| a.0[i].min(b.0[i])),
+                    std::array::from_fn(|i| a.1[i].max(b.1[i])),
+                )),
+                (a, b) => a.or(b),
+            };
             all.vertices += g.vertices;
             all.reoriented += g.reoriented;
         }
@@ -571,11 +712,11 @@ impl RankCheck {
         for (_, p) in std::mem::take(&mut all.coincident) {
             report.push(p);
         }
-        self.boundary = (boundary.iter())
-            .map(|f| (f.v, f.tet, f.v.map(|v| corners[&v])))
-            .collect();
         let mut decision = Decision::default();
         if self.opts.convex {
+            self.boundary = (boundary.iter())
+                .map(|f| (f.v, f.tet, f.v.map(|v| corners[&v])))
+                .collect();
             all.unused.sort_unstable();
             for &v in &all.unused {
                 report.push(mesh::unused_vertex(v));
@@ -593,6 +734,7 @@ impl RankCheck {
             decision = Decision {
                 embed: true,
                 reps: self.reps.iter().map(|&(v, _, x)| (x, v)).collect(),
+                grid: all.bbox.map(|b| Grid::new(b, boundary.len())),
             };
         }
         self.report = report;
@@ -625,10 +767,26 @@ impl RankCheck {
     /// Round 6: the cone tests of this rank's vertices and its pieces' nesting test.
     fn embed(&mut self, inbox: &[&[u8]]) -> Vec<Vec<u8>> {
         let decision: Decision = decode(inbox[0]);
-        if !decision.embed {
-            return self.send_to_rank0(&Embedded::default());
+        let mut out: Vec<Sixth> = (0..self.size).map(|_| Sixth::default()).collect();
+        out[0].embedded = Some(self.cones_and_nesting(&decision));
+        if let Some(grid) = decision.grid.filter(|_| decision.embed) {
+            for f in std::mem::take(&mut self.mine_boundary) {
+                for r in grid.owners(&f.bbox(), self.size) {
+                    out[r].faces.push(f);
+                }
+            }
         }
+        self.grid = decision.grid;
+        let out = out.iter().map(encode).collect();
+        self.sent(out)
+    }
+
+    /// The cone tests of this rank's vertices and its pieces' nesting test.
+    fn cones_and_nesting(&self, decision: &Decision) -> Embedded {
         let mut e = Embedded::default();
+        if !decision.embed {
+            return e;
+        }
         for (part, on) in self.parts.iter().zip(&self.on_boundary) {
             e.overlaps.extend(part.vertex_overlaps(on));
         }
@@ -638,7 +796,52 @@ impl RankCheck {
                 mesh::first_hits(&mut e.hits, part.containing(&decision.reps));
             }
         }
-        self.send_to_rank0(&e)
+        e
+    }
+
+    /// Round 7: the boundary faces of the cells this rank owns, tested pairwise (each
+    /// pair where its boxes' intersection starts); the first pairs, in the merged
+    /// check's order, to rank 0.
+    fn pairs(&mut self, inbox: &[&[u8]]) -> Vec<Vec<u8>> {
+        let mut faces: Vec<Face> = Vec::new();
+        for b in inbox {
+            let sixth: Sixth = decode(b);
+            self.embedded.extend(sixth.embedded);
+            faces.extend(sixth.faces);
+        }
+        let found = match self.grid {
+            Some(grid) => self.pairs_in(grid, faces),
+            None => Vec::new(),
+        };
+        self.send_to_rank0(&found)
+    }
+
+    /// Among `faces` (some twice), the improper pairs this rank decides, ordered by
+    /// their faces' sorted vertices, at most [`mesh::SELF_INTERSECTIONS`].
+    fn pairs_in(&self, grid: Grid, mut faces: Vec<Face>) -> Vec<(FaceId, FaceId)> {
+        faces.sort_by_key(Face::key);
+        faces.dedup_by_key(|f| f.key());
+        let mut labels: Vec<(u32, Point3)> = (faces.iter())
+            .flat_map(|f| (0..3).map(|i| (f.v[i], f.at[i])))
+            .collect();
+        labels.sort_by_key(|p| p.0);
+        labels.dedup_by_key(|p| p.0);
+        let local = |v: u32| labels.binary_search_by_key(&v, |p| p.0).unwrap_or(0) as u32;
+        let place: Vec<Point3> = labels.iter().map(|p| p.1).collect();
+        let plain: Vec<[u32; 3]> = faces.iter().map(|f| f.v.map(local)).collect();
+        let mut found: Vec<(FaceId, FaceId)> =
+            crate::mesh::grid::improper_pairs(&place, &plain, usize::MAX)
+                .into_iter()
+                .filter(|&(i, j)| {
+                    let (a, b) = (faces[i].bbox(), faces[j].bbox());
+                    let low: Point3 = std::array::from_fn(|k| a.0[k].max(b.0[k]));
+                    owner_of(&grid.cell(&low), self.size) == self.rank
+                })
+                .map(|(i, j)| ((faces[i].v, faces[i].tet), (faces[j].v, faces[j].tet)))
+                .collect();
+        found.sort_by_key(|(a, b)| (sorted(a.0), sorted(b.0)));
+        found.truncate(mesh::SELF_INTERSECTIONS);
+        found
     }
 
     /// Rank 0: the last problems and the outcome.
@@ -649,8 +852,7 @@ impl RankCheck {
         let mut report = std::mem::take(&mut self.report);
         let mut overlaps = Vec::new();
         let mut hits = vec![None; self.reps.len()];
-        for b in inbox {
-            let e: Embedded = decode(b);
+        for e in std::mem::take(&mut self.embedded) {
             overlaps.extend(e.overlaps);
             mesh::first_hits(&mut hits, e.hits);
         }
@@ -659,8 +861,14 @@ impl RankCheck {
             report.push(p);
         }
         if self.embedding {
-            for p in self.self_intersections() {
-                report.push(p);
+            let mut pairs: Vec<(FaceId, FaceId)> = Vec::new();
+            for b in inbox {
+                pairs.extend(decode::<Vec<(FaceId, FaceId)>>(b));
+            }
+            pairs.sort_by_key(|(a, b)| (sorted(a.0), sorted(b.0)));
+            pairs.truncate(mesh::SELF_INTERSECTIONS);
+            for (a, b) in pairs {
+                report.push(mesh::self_intersection(a, b));
             }
         }
         for (&(v, own, _), hit) in self.reps.iter().zip(hits) {
@@ -743,22 +951,6 @@ impl RankCheck {
         self.failure = result.err();
     }
 
-    /// The gathered boundary's self-intersections.
-    fn self_intersections(&self) -> Vec<Problem> {
-        let mut points: Vec<(u32, Point3)> = (self.boundary.iter())
-            .flat_map(|(v, _, at)| (0..3).map(|i| (v[i], at[i])))
-            .collect();
-        points.sort_by_key(|p| p.0);
-        points.dedup_by_key(|p| p.0);
-        let place: Vec<Point3> = points.iter().map(|p| p.1).collect();
-        let local = |v: u32| points.binary_search_by_key(&v, |p| p.0).unwrap_or(0) as u32;
-        let faces: Vec<([u32; 3], u32)> = (self.boundary.iter())
-            .map(|(v, t, _)| (v.map(local), *t))
-            .collect();
-        let found = mesh::boundary_self_intersections(&place, &faces);
-        relabeled(found, |k| points[k as usize].0)
-    }
-
     /// Rank 0, when the check is over: its outcome.
     pub fn outcome(&self) -> Option<&CheckOutcome> {
         self.outcome.as_ref()
@@ -788,6 +980,14 @@ impl RankCheck {
             ..Default::default()
         }
     }
+}
+
+/// A boundary face as a problem names it: its vertices (outward) and its tetrahedron.
+type FaceId = ([u32; 3], u32);
+
+fn sorted(mut v: [u32; 3]) -> [u32; 3] {
+    v.sort_unstable();
+    v
 }
 
 /// The number of the piece `sub` of file `file` in the pieces' table.

@@ -703,3 +703,54 @@ fn the_first_bad_piece_is_the_one_named() {
     }
     let _ = std::fs::remove_dir_all(&d);
 }
+
+/// Two Kuhn grids pushed into each other (each valid, their boundaries crossing), cut
+/// into pieces: under ranks the boundary's self-intersection test is spread over a grid
+/// of cells, each pair decided by one rank, and the problems are the merged check's,
+/// the first 100 pairs included where there are more.
+#[test]
+fn crossing_boundaries_are_found_across_ranks() {
+    use tetrakit::distributed::check_in_ranks;
+    let d = dir("crossing");
+    let mut rng = Rng::new(4648);
+    let (mut cases, mut many, mut few) = (0, 0, 0);
+    for round in 0..24u64 {
+        let a = tetrakit::generate::kuhn(3 + (round as usize % 4));
+        let b = tetrakit::generate::kuhn(3 + (round as usize / 4 % 3));
+        let shift: Point3 = std::array::from_fn(|_| 0.3 + 2.0 * rng.unit());
+        let n = a.points.len() as u32;
+        let mut points = a.points.clone();
+        points.extend(
+            b.points
+                .iter()
+                .map(|p| std::array::from_fn(|i| p[i] + shift[i])),
+        );
+        let mut tets = a.tets.clone();
+        tets.extend(b.tets.iter().map(|t| t.map(|v| v + n)));
+        let k = 2 + (round % 4) as u32;
+        let [slabs, random] = partitions(&points, &tets, k, &mut rng);
+        for (how, piece_of) in [slabs, random].iter().enumerate() {
+            let path = d.join(format!("x{round}_{how}.pvtu"));
+            written(&path, &points, &tets, piece_of, round % 2 == 0);
+            let want = cli_check(&path, CheckOptions::default());
+            let crossings = (want.problems.iter())
+                .filter(|p| p.kind.to_string() == "boundary_self_intersection")
+                .count();
+            for size in [1, 2, 3, 5] {
+                let (got, _) = check_in_ranks(&path, size, CheckOptions::default());
+                let got = got.unwrap();
+                let at = format!("round {round}, partition {how}, {size} ranks");
+                assert_eq!(got.problems, want.problems, "{at}");
+                assert_eq!(got.problem_count, want.problem_count, "{at}");
+                cases += 1;
+            }
+            many += usize::from(crossings == 100);
+            few += usize::from((1..100).contains(&crossings));
+        }
+    }
+    assert!(
+        cases == 192 && many >= 3 && few >= 3,
+        "{cases} cases, {many} with 100 crossings, {few} with fewer"
+    );
+    let _ = std::fs::remove_dir_all(&d);
+}

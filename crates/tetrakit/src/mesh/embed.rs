@@ -158,24 +158,30 @@ pub(crate) fn boundary_self_intersections(
     faces: &[([u32; 3], u32)],
 ) -> Vec<Problem> {
     let plain: Vec<[u32; 3]> = faces.iter().map(|f| f.0).collect();
-    super::grid::improper_pairs(points, &plain, 100)
+    super::grid::improper_pairs(points, &plain, SELF_INTERSECTIONS)
         .into_iter()
-        .map(|(i, j)| {
-            let (fi, fj) = (&faces[i], &faces[j]);
-            Problem::new(
-                ProblemKind::BoundarySelfIntersection,
-                vec![fi.1, fj.1],
-                fi.0.iter().chain(&fj.0).copied().collect(),
-                format!(
-                    "boundary faces {} (of tetrahedron T{}) and {} (of tetrahedron T{}) intersect",
-                    ids(&fi.0),
-                    fi.1,
-                    ids(&fj.0),
-                    fj.1
-                ),
-            )
-        })
+        .map(|(i, j)| self_intersection(faces[i], faces[j]))
         .collect()
+}
+
+/// The most boundary self-intersections a check reports: the first pairs in the order
+/// of the boundary faces sorted by their sorted vertices.
+pub(crate) const SELF_INTERSECTIONS: usize = 100;
+
+/// Boundary faces `fi` and `fj` (`(vertices, tetrahedron)`) intersect.
+pub(crate) fn self_intersection(fi: ([u32; 3], u32), fj: ([u32; 3], u32)) -> Problem {
+    Problem::new(
+        ProblemKind::BoundarySelfIntersection,
+        vec![fi.1, fj.1],
+        fi.0.iter().chain(&fj.0).copied().collect(),
+        format!(
+            "boundary faces {} (of tetrahedron T{}) and {} (of tetrahedron T{}) intersect",
+            ids(&fi.0),
+            fi.1,
+            ids(&fj.0),
+            fj.1
+        ),
+    )
 }
 
 /// Pieces of mesh nested inside others: for one vertex `v` of each boundary component

@@ -22,7 +22,9 @@ pub use certify::{
 };
 pub(crate) use check::outcome;
 pub use check::{CheckOptions, CheckOutcome, check};
-pub(crate) use embed::{boundary_components, boundary_self_intersections, nested_problem};
+pub(crate) use embed::{
+    SELF_INTERSECTIONS, boundary_components, nested_problem, self_intersection,
+};
 pub use partitioned::check_pieces;
 pub(crate) use partitioned::{Part, PartFaces, assemble_faces, first_hits};
 pub use report::{Problem, ProblemKind, Report};
