@@ -640,10 +640,7 @@ impl RankCheck {
             .map(|f| std::mem::take(&mut f.on_boundary))
             .collect();
         self.keep_boundary(&mut faces);
-        let bbox = (self.mine_boundary.iter().map(Face::bbox)).reduce(|a, b| {
-            let lo = std::array::from_fn(|i| a.0[i].min(b.0[i]));
-            (lo, std::array::from_fn(|i| a.1[i].max(b.1[i])))
-        });
+        let bbox = (self.mine_boundary.iter().map(Face::bbox)).reduce(box_union);
         let (coincident, unused) = places(points);
         let g = Gathered {
             faces,
@@ -694,10 +691,7 @@ impl RankCheck {
             all.unused.extend(g.unused);
             all.mismatches.extend(g.mismatches);
             all.bbox = match (all.bbox, g.bbox) {
-                (Some(a), Some(b)) => Some((
-                    std::array::from_fn(|i| a.0[i].min(b.0[i])),
-                    std::array::from_fn(|i| a.1[i].max(b.1[i])),
-                )),
+                (Some(a), Some(b)) => Some(box_union(a, b)),
                 (a, b) => a.or(b),
             };
             all.vertices += g.vertices;
@@ -980,6 +974,12 @@ impl RankCheck {
             ..Default::default()
         }
     }
+}
+
+/// The smallest box holding boxes `a` and `b`.
+fn box_union(a: (Point3, Point3), b: (Point3, Point3)) -> (Point3, Point3) {
+    let lo = std::array::from_fn(|i| a.0[i].min(b.0[i]));
+    (lo, std::array::from_fn(|i| a.1[i].max(b.1[i])))
 }
 
 /// A boundary face as a problem names it: its vertices (outward) and its tetrahedron.
