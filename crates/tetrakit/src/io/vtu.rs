@@ -110,9 +110,9 @@ pub(super) fn read_files(
 /// point's global id where every point has one.
 pub(super) fn read_pieces(path: &Path) -> Result<Vec<super::PieceRead>, InputError> {
     let mut read = Vec::new();
-    each_piece(path, |d, p, piece, arrays| {
+    for decoded in decode_file(path) {
         let mut merged = Merged::new(path);
-        add_piece(d, p, piece, arrays, &mut merged)?;
+        absorb(path, decoded?, &mut merged)?;
         let ids: Option<Vec<i64>> = (0..merged.input.points.len() as u32)
             .map(|k| merged.point_ids.get(&k).copied())
             .collect();
@@ -121,8 +121,7 @@ pub(super) fn read_pieces(path: &Path) -> Result<Vec<super::PieceRead>, InputErr
             true => (merged.input, None),
             false => (merged.finish(path)?, ids),
         });
-        Ok(())
-    })?;
+    }
     Ok(read)
 }
 
