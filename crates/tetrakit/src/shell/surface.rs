@@ -457,10 +457,17 @@ impl<'a> Surface<'a> {
         };
         let mut candidates: Vec<u32> = self.hidden.under(region);
         candidates.retain(in_box);
-        // The exact test costs a small hull: worth it when the box leaves many.
+        // The exact tests cost small hulls: worth it when the box leaves many. A point
+        // outside `CH(tip ∪ ring)` is not under the piece; one strictly inside
+        // `CH(ring)` is strictly inside the hull below, so it is no vertex of it.
         if candidates.len() > 16 {
             let cap = cap_planes(&around, set.len());
-            candidates.retain(|&v| cap.iter().all(|h| h.side(&self.pts[v as usize]) <= 0));
+            let within = hull_planes(&around[..ring.len()]);
+            let p = |v: u32| &self.pts[v as usize];
+            candidates.retain(|&v| {
+                cap.iter().all(|h| h.side(p(v)) <= 0)
+                    && (within.is_empty() || within.iter().any(|h| h.side(p(v)) >= 0))
+            });
         }
         let mut local: Vec<u32> = ring.to_vec();
         local.extend(candidates);
@@ -609,14 +616,19 @@ enum Place {
 /// `v`), oriented out: the cap lies in that hull (module docs). None (no constraint) for
 /// larger sets or a flat hull.
 fn cap_planes(around: &[Point3], removed: usize) -> Vec<Plane> {
-    if removed != 1 {
-        return Vec::new();
+    match removed {
+        1 => hull_planes(around),
+        _ => Vec::new(),
     }
-    let hull = Hull3::new(around);
+}
+
+/// The planes of the facets of `CH(pts)`, the inside negative (none when it is flat).
+fn hull_planes(pts: &[Point3]) -> Vec<Plane> {
+    let hull = Hull3::new(pts);
     if hull.dimension < 3 {
         return Vec::new();
     }
-    let p = |k: u32| &around[k as usize];
+    let p = |k: u32| &pts[k as usize];
     hull.facet_planes
         .iter()
         .map(|f| Plane::new(p(f[0]), p(f[1]), p(f[2])))
