@@ -19,24 +19,30 @@
 //!    owner, and its points to the owner of their coordinates (coincident and unused
 //!    vertices);
 //! 4. each rank checks its parts' faces and edges (the owner's layer of ghosts is one
-//!    more part) and sends what they decide to rank 0, with the boundary faces' vertices
-//!    and tetrahedra (their corners only with `convex`, for the hull test; else the
-//!    place of each face's first vertex) and the box of its boundary faces;
-//! 5. rank 0 puts them in the merged check's order and, where the embedding checks are
-//!    due, sends every rank one vertex of every boundary component and a grid over the
-//!    boundary's box (about one cell per face, each cell owned by a rank);
-//! 6. every rank runs the cone tests of the vertices it owns and the nesting test of
-//!    its pieces (to rank 0), and sends each of its boundary faces, with its corners, to
-//!    the owners of the cells its box meets;
+//!    more part) and sends what they decide to rank 0, with the count of its boundary
+//!    faces, their box and their components (faces joined across edges: each one's
+//!    first face, the first vertex of it and its place); the boundary faces themselves
+//!    only with `convex`, for the hull test. Each boundary edge goes with its component
+//!    to the edge's owner (a hash of it);
+//! 5. each edge owner sends rank 0 the pairs of components that share an edge; rank 0
+//!    puts the problems in the merged check's order and, where the embedding checks are
+//!    due, sends every rank a grid over the boundary's box (about one cell per face,
+//!    each cell owned by a rank);
+//! 6. every rank runs the cone tests of the vertices it owns (to rank 0) and sends each
+//!    of its boundary faces, with its corners, to the owners of the cells its box meets;
+//!    rank 0 joins the components and sends every rank one vertex of each component of
+//!    the whole boundary (the first vertex of its first face, as the merged check picks
+//!    it);
 //! 7. each rank tests the faces it received pairwise and keeps the pairs whose boxes'
 //!    intersection starts in a cell it owns (so each pair is decided once, by a rank
-//!    that has both faces), the first 100 in the merged check's order to rank 0, which
-//!    merges them and finishes.
+//!    that has both faces), and looks for those vertices in its pieces' tetrahedra (the
+//!    nesting test); the first 100 pairs in the merged check's order and the hits go to
+//!    rank 0, which merges them and finishes.
 //!
 //! Memory per rank: its pieces, its parts (each piece's tetrahedra again, compacted),
-//! its layer (the ghosts) and the boundary faces of its cells; rank 0 also holds the
-//! boundary's vertices and tetrahedra (16 bytes a face, and up to 28 more for the place
-//! of its first vertex; every corner with `convex`). A vertex number in the
+//! its layer (the ghosts), the boundary faces of its cells and the boundary edges it
+//! owns; rank 0 also holds each rank's components and the pairs that join them (every
+//! boundary face with its corners with `convex`). A vertex number in the
 //! problems is its place among all pieces' points (piece 0's first), as `tetrakit check`
 //! numbers a `.pvtu`'s vertices.
 
@@ -81,8 +87,12 @@ pub struct RankCheck {
     boundary: Vec<([u32; 3], u32, [Point3; 3])>,
     /// This rank's boundary faces (those its parts decide), with their corners.
     mine_boundary: Vec<Face>,
-    /// Rank 0: what the cone and nesting tests found on every rank (round 6).
-    embedded: Vec<Embedded>,
+    /// Rank 0: the components of every rank's boundary faces (round 5), and the pairs
+    /// of them that share an edge (rounds 5 and 6).
+    components: Vec<Vec<Component>>,
+    joined: Vec<(ComponentId, ComponentId)>,
+    /// Rank 0: what the cone tests found on every rank (round 6).
+    overlaps: Vec<Problem>,
     /// The cells of the self-intersection test, when it runs.
     grid: Option<Grid>,
     reps: Vec<(u32, u32, Point3)>,
@@ -165,6 +175,10 @@ struct Spread {
 #[derive(Default, Serialize, Deserialize)]
 struct Gathered {
     faces: Vec<PartFaces>,
+    /// How many boundary faces this rank's parts decide.
+    boundary_faces: u32,
+    /// The components of those faces joined across their edges (not with `convex`).
+    components: Vec<Component>,
     /// The box of this rank's boundary faces.
     bbox: Option<(Point3, Point3)>,
     coincident: Vec<(Point3, Problem)>,
@@ -177,9 +191,39 @@ struct Gathered {
 #[derive(Default, Serialize, Deserialize)]
 struct Decision {
     embed: bool,
-    reps: Vec<(Point3, u32)>,
     /// The cells the boundary's self-intersection test is spread over.
     grid: Option<Grid>,
+}
+
+/// A component of one rank's boundary faces (joined across edges): its first face in
+/// the merged check's order, that face's first vertex and tetrahedron, and the vertex's
+/// place (a nesting test's representative, when the component is first in its
+/// component of the whole boundary).
+#[derive(Clone, Copy, Serialize, Deserialize)]
+struct Component {
+    key: [u32; 3],
+    v: u32,
+    tet: u32,
+    at: Point3,
+}
+
+/// A rank's component: the rank, and the component's number there.
+type ComponentId = (u32, u32);
+
+/// Round 4's messages: to rank 0 what this rank's parts decided, and to the owner of
+/// each boundary edge (a hash of it) the components of this rank that have it.
+#[derive(Default, Serialize, Deserialize)]
+struct Fourth {
+    gathered: Option<Gathered>,
+    edges: Vec<([u32; 2], ComponentId)>,
+}
+
+/// Round 5's messages: rank 0's decision to every rank, and to rank 0 the components
+/// an edge owner found sharing an edge.
+#[derive(Default, Serialize, Deserialize)]
+struct Fifth {
+    decision: Option<Decision>,
+    joined: Vec<(ComponentId, ComponentId)>,
 }
 
 /// A boundary face: its vertices (outward), its tetrahedron, its corners.
@@ -204,12 +248,22 @@ impl Face {
     }
 }
 
-/// Round 6's messages: to rank 0 what the cone and nesting tests found, to the owners
-/// of the cells a boundary face's box meets, the face.
+/// Round 6's messages: to rank 0 what the cone tests found, from rank 0 the nesting
+/// test's representatives, to the owners of the cells a boundary face's box meets, the
+/// face.
 #[derive(Default, Serialize, Deserialize)]
 struct Sixth {
-    embedded: Option<Embedded>,
+    overlaps: Vec<Problem>,
+    reps: Vec<(Point3, u32)>,
     faces: Vec<Face>,
+}
+
+/// Round 7's messages, to rank 0: the improper pairs this rank decides and where the
+/// representatives lie in its parts.
+#[derive(Default, Serialize, Deserialize)]
+struct Seventh {
+    pairs: Vec<(FaceId, FaceId)>,
+    hits: Vec<Option<(u32, [u32; 4])>>,
 }
 
 /// A uniform grid over the boundary's box, about one cell per face: each cell is owned
@@ -263,12 +317,6 @@ impl Grid {
         owners.dedup();
         owners
     }
-}
-
-#[derive(Default, Serialize, Deserialize)]
-struct Embedded {
-    overlaps: Vec<Problem>,
-    hits: Vec<Option<(u32, [u32; 4])>>,
 }
 
 fn encode<T: Serialize>(x: &T) -> Vec<u8> {
@@ -639,11 +687,18 @@ impl RankCheck {
         self.on_boundary = (faces.iter_mut())
             .map(|f| std::mem::take(&mut f.on_boundary))
             .collect();
+        let boundary_faces = faces.iter().map(|f| f.boundary.len() as u32).sum();
         self.keep_boundary(&mut faces);
         let bbox = (self.mine_boundary.iter().map(Face::bbox)).reduce(box_union);
+        let (components, edges) = match self.opts.convex {
+            true => (Vec::new(), Vec::new()),
+            false => self.components_and_edges(),
+        };
         let (coincident, unused) = places(points);
         let g = Gathered {
             faces,
+            boundary_faces,
+            components,
             bbox,
             coincident,
             unused: if self.opts.convex { unused } else { Vec::new() },
@@ -651,12 +706,47 @@ impl RankCheck {
             vertices: self.vertices,
             reoriented: self.reoriented,
         };
-        self.send_to_rank0(&g)
+        let mut out: Vec<Fourth> = (0..self.size).map(|_| Fourth::default()).collect();
+        for (e, c) in edges {
+            out[owner_of(&[e[0] as u64, e[1] as u64, 0], self.size)]
+                .edges
+                .push((e, c));
+        }
+        out[0].gathered = Some(g);
+        let out = out.iter().map(encode).collect();
+        self.sent(out)
     }
 
-    /// This rank's boundary faces kept with their corners; rank 0 gets, beside their
-    /// vertices, the corners of each face's first vertex only (a component's
-    /// representative is one), all of them with `convex` (the hull test needs them).
+    /// The components of this rank's boundary faces joined across edges (the faces put
+    /// in the merged check's order first), and each face's edges with its component,
+    /// each pair once.
+    fn components_and_edges(&mut self) -> (Vec<Component>, Vec<([u32; 2], ComponentId)>) {
+        self.mine_boundary.sort_by_key(Face::key);
+        let keys: Vec<[u32; 3]> = self.mine_boundary.iter().map(Face::key).collect();
+        let (of, firsts) = mesh::face_components(&keys);
+        let components = (firsts.iter())
+            .map(|&i| {
+                let f = &self.mine_boundary[i];
+                let (v, tet, at) = (f.v[0], f.tet, f.at[0]);
+                Component {
+                    key: keys[i],
+                    v,
+                    tet,
+                    at,
+                }
+            })
+            .collect();
+        let rank = self.rank as u32;
+        let mut edges: Vec<([u32; 2], ComponentId)> = (keys.iter().zip(&of))
+            .flat_map(|(k, &c)| [[k[0], k[1]], [k[0], k[2]], [k[1], k[2]]].map(|e| (e, (rank, c))))
+            .collect();
+        edges.sort_unstable();
+        edges.dedup();
+        (components, edges)
+    }
+
+    /// This rank's boundary faces kept with their corners; rank 0 gets them only with
+    /// `convex` (the hull test needs them all).
     fn keep_boundary(&mut self, faces: &mut [PartFaces]) {
         for f in faces.iter_mut() {
             let at = |v: u32| {
@@ -670,23 +760,37 @@ impl RankCheck {
             });
             self.mine_boundary.extend(kept);
             if !self.opts.convex {
-                let mut first: Vec<u32> = f.boundary.iter().map(|b| b.0[0]).collect();
-                first.sort_unstable();
-                f.places.retain(|p| first.binary_search(&p.0).is_ok());
+                f.boundary = Vec::new();
+                f.places = Vec::new();
             }
         }
     }
 
-    /// Round 5, rank 0: the report so far in the merged check's order, and whether (and
-    /// where) the embedding checks run.
+    /// Round 5: the components sharing the edges this rank owns, to rank 0; rank 0:
+    /// the report so far in the merged check's order, and whether (and where) the
+    /// embedding checks run.
     fn decide(&mut self, inbox: &[&[u8]]) -> Vec<Vec<u8>> {
-        if self.rank != 0 {
-            return self.sent(vec![Vec::new(); self.size]);
-        }
-        let mut all = Gathered::default();
+        let (mut edges, mut gathered) = (Vec::new(), Vec::new());
         for b in inbox {
-            let g: Gathered = decode(b);
+            let f: Fourth = decode(b);
+            edges.extend(f.edges);
+            gathered.extend(f.gathered);
+        }
+        let joined = joined(edges);
+        if self.rank != 0 {
+            let mut out = vec![Vec::new(); self.size];
+            out[0] = encode(&Fifth {
+                decision: None,
+                joined,
+            });
+            return self.sent(out);
+        }
+        self.joined = joined;
+        let mut all = Gathered::default();
+        for g in gathered {
             all.faces.extend(g.faces);
+            all.boundary_faces += g.boundary_faces;
+            self.components.push(g.components);
             all.coincident.extend(g.coincident);
             all.unused.extend(g.unused);
             all.mismatches.extend(g.mismatches);
@@ -701,6 +805,7 @@ impl RankCheck {
             .flat_map(|f| f.places.iter().copied())
             .collect();
         let (mut report, boundary) = mesh::assemble_faces(std::mem::take(&mut all.faces));
+        report.boundary_faces = all.boundary_faces as usize;
         all.coincident
             .sort_by(|a, b| lex_cmp(&a.0, &b.0).then(a.1.vertices[1].cmp(&b.1.vertices[1])));
         for (_, p) in std::mem::take(&mut all.coincident) {
@@ -719,21 +824,19 @@ impl RankCheck {
                 report.push(p);
             }
         } else if report.is_valid() {
-            let faces: Vec<([u32; 3], u32)> = boundary.iter().map(|f| (f.v, f.tet)).collect();
-            let reps = mesh::boundary_components(&faces);
-            if reps.len() > 1 {
-                self.reps = reps.iter().map(|&(v, t)| (v, t, corners[&v])).collect();
-            }
             self.embedding = true;
             decision = Decision {
                 embed: true,
-                reps: self.reps.iter().map(|&(v, _, x)| (x, v)).collect(),
-                grid: all.bbox.map(|b| Grid::new(b, boundary.len())),
+                grid: (all.bbox).map(|b| Grid::new(b, all.boundary_faces as usize)),
             };
         }
         self.report = report;
         self.gathered = all;
-        let out = vec![encode(&decision); self.size];
+        let fifth = Fifth {
+            decision: Some(decision),
+            joined: Vec::new(),
+        };
+        let out = vec![encode(&fifth); self.size];
         self.sent(out)
     }
 
@@ -758,15 +861,30 @@ impl RankCheck {
         relabeled(found, |k| points[k as usize].1)
     }
 
-    /// Round 6: the cone tests of this rank's vertices and its pieces' nesting test.
+    /// Round 6: the cone tests of this rank's vertices (to rank 0), its boundary faces
+    /// to the owners of their cells; rank 0 also sends every rank the nesting test's
+    /// representatives.
     fn embed(&mut self, inbox: &[&[u8]]) -> Vec<Vec<u8>> {
-        let decision: Decision = decode(inbox[0]);
+        let mut decision = Decision::default();
+        for b in inbox {
+            let f: Fifth = decode(b);
+            decision = f.decision.unwrap_or(decision);
+            self.joined.extend(f.joined);
+        }
         let mut out: Vec<Sixth> = (0..self.size).map(|_| Sixth::default()).collect();
-        out[0].embedded = Some(self.cones_and_nesting(&decision));
-        if let Some(grid) = decision.grid.filter(|_| decision.embed) {
-            for f in std::mem::take(&mut self.mine_boundary) {
-                for r in grid.owners(&f.bbox(), self.size) {
-                    out[r].faces.push(f);
+        if decision.embed {
+            for (part, on) in self.parts.iter().zip(&self.on_boundary) {
+                out[0].overlaps.extend(part.vertex_overlaps(on));
+            }
+            if self.rank == 0 {
+                let reps = self.representatives();
+                out.iter_mut().for_each(|o| o.reps.clone_from(&reps));
+            }
+            if let Some(grid) = decision.grid {
+                for f in std::mem::take(&mut self.mine_boundary) {
+                    for r in grid.owners(&f.bbox(), self.size) {
+                        out[r].faces.push(f);
+                    }
                 }
             }
         }
@@ -775,39 +893,61 @@ impl RankCheck {
         self.sent(out)
     }
 
-    /// The cone tests of this rank's vertices and its pieces' nesting test.
-    fn cones_and_nesting(&self, decision: &Decision) -> Embedded {
-        let mut e = Embedded::default();
-        if !decision.embed {
-            return e;
+    /// Rank 0: one vertex of each component of the whole boundary (the first vertex of
+    /// its first face in the merged check's order), in the order of those faces, as
+    /// `mesh::boundary_components` picks them; none when the boundary is one component.
+    /// The components are the ranks' own, joined where an edge owner found two sharing
+    /// an edge.
+    fn representatives(&mut self) -> Vec<(Point3, u32)> {
+        let all: Vec<&Component> = self.components.iter().flatten().collect();
+        let mut offsets = vec![0u32];
+        for c in &self.components {
+            offsets.push(offsets.last().copied().unwrap_or(0) + c.len() as u32);
         }
-        for (part, on) in self.parts.iter().zip(&self.on_boundary) {
-            e.overlaps.extend(part.vertex_overlaps(on));
+        let id = |(r, c): ComponentId| offsets[r as usize] + c;
+        let mut parent = crate::partition::singletons(all.len());
+        for &(a, b) in &self.joined {
+            crate::partition::union(&mut parent, id(a), id(b));
         }
-        e.hits = vec![None; decision.reps.len()];
-        if !decision.reps.is_empty() {
-            for part in self.parts.iter().filter(|p| p.reports_tets) {
-                mesh::first_hits(&mut e.hits, part.containing(&decision.reps));
+        let mut first: Vec<Option<usize>> = vec![None; all.len()];
+        for i in 0..all.len() {
+            let root = crate::partition::find(&mut parent, i as u32) as usize;
+            if first[root].is_none_or(|j| all[i].key < all[j].key) {
+                first[root] = Some(i);
             }
         }
-        e
+        let mut reps: Vec<&Component> = first.iter().flatten().map(|&i| all[i]).collect();
+        reps.sort_by_key(|c| c.key);
+        if reps.len() > 1 {
+            self.reps = reps.iter().map(|c| (c.v, c.tet, c.at)).collect();
+        }
+        self.reps.iter().map(|&(v, _, x)| (x, v)).collect()
     }
 
     /// Round 7: the boundary faces of the cells this rank owns, tested pairwise (each
-    /// pair where its boxes' intersection starts); the first pairs, in the merged
-    /// check's order, to rank 0.
+    /// pair where its boxes' intersection starts), the first pairs in the merged check's
+    /// order; and where the representatives lie in this rank's parts; to rank 0.
     fn pairs(&mut self, inbox: &[&[u8]]) -> Vec<Vec<u8>> {
-        let mut faces: Vec<Face> = Vec::new();
-        for b in inbox {
+        let (mut faces, mut reps) = (Vec::new(), Vec::new());
+        for (r, b) in inbox.iter().enumerate() {
             let sixth: Sixth = decode(b);
-            self.embedded.extend(sixth.embedded);
+            self.overlaps.extend(sixth.overlaps);
+            if r == 0 {
+                reps = sixth.reps;
+            }
             faces.extend(sixth.faces);
         }
-        let found = match self.grid {
+        let pairs = match self.grid {
             Some(grid) => self.pairs_in(grid, faces),
             None => Vec::new(),
         };
-        self.send_to_rank0(&found)
+        let mut hits = vec![None; reps.len()];
+        if !reps.is_empty() {
+            for part in self.parts.iter().filter(|p| p.reports_tets) {
+                mesh::first_hits(&mut hits, part.containing(&reps));
+            }
+        }
+        self.send_to_rank0(&Seventh { pairs, hits })
     }
 
     /// Among `faces` (some twice), the improper pairs this rank decides, ordered by
@@ -844,21 +984,18 @@ impl RankCheck {
             return;
         }
         let mut report = std::mem::take(&mut self.report);
-        let mut overlaps = Vec::new();
-        let mut hits = vec![None; self.reps.len()];
-        for e in std::mem::take(&mut self.embedded) {
-            overlaps.extend(e.overlaps);
-            mesh::first_hits(&mut hits, e.hits);
-        }
+        let mut overlaps = std::mem::take(&mut self.overlaps);
         overlaps.sort_by_key(|p| p.vertices[0]);
         for p in overlaps {
             report.push(p);
         }
+        let (mut pairs, mut hits) = (Vec::new(), vec![None; self.reps.len()]);
+        for b in inbox {
+            let s: Seventh = decode(b);
+            pairs.extend(s.pairs);
+            mesh::first_hits(&mut hits, s.hits);
+        }
         if self.embedding {
-            let mut pairs: Vec<(FaceId, FaceId)> = Vec::new();
-            for b in inbox {
-                pairs.extend(decode::<Vec<(FaceId, FaceId)>>(b));
-            }
             pairs.sort_by_key(|(a, b)| (sorted(a.0), sorted(b.0)));
             pairs.truncate(mesh::SELF_INTERSECTIONS);
             for (a, b) in pairs {
@@ -980,6 +1117,27 @@ impl RankCheck {
 fn box_union(a: (Point3, Point3), b: (Point3, Point3)) -> (Point3, Point3) {
     let lo = std::array::from_fn(|i| a.0[i].min(b.0[i]));
     (lo, std::array::from_fn(|i| a.1[i].max(b.1[i])))
+}
+
+/// Pairs of components that share an edge, among `edges` (an edge owner's): enough of
+/// them to join every set that shares edges (a spanning forest: fewer pairs than
+/// components).
+fn joined(mut edges: Vec<([u32; 2], ComponentId)>) -> Vec<(ComponentId, ComponentId)> {
+    edges.sort_unstable();
+    let mut ids: Vec<ComponentId> = edges.iter().map(|e| e.1).collect();
+    ids.sort_unstable();
+    ids.dedup();
+    let index = |c: &ComponentId| ids.binary_search(c).unwrap_or(0) as u32;
+    let mut parent = crate::partition::singletons(ids.len());
+    let mut out = Vec::new();
+    for run in edges.chunk_by(|a, b| a.0 == b.0) {
+        for e in &run[1..] {
+            if crate::partition::union(&mut parent, index(&run[0].1), index(&e.1)) {
+                out.push((run[0].1, e.1));
+            }
+        }
+    }
+    out
 }
 
 /// A boundary face as a problem names it: its vertices (outward) and its tetrahedron.

@@ -754,3 +754,53 @@ fn crossing_boundaries_are_found_across_ranks() {
     );
     let _ = std::fs::remove_dir_all(&d);
 }
+
+/// A small Kuhn grid inside one tetrahedron of a larger one, the tetrahedra of both
+/// spread over the pieces at random, so that the inner grid's boundary is cut across
+/// ranks: its pieces on each rank are joined into one component (by the edges they
+/// share), so the check names one nested piece, at the vertex `tetrakit check` names,
+/// with 1 to 5 ranks.
+#[test]
+fn a_nested_mesh_cut_across_ranks_is_one_component() {
+    use tetrakit::distributed::check_in_ranks;
+    let d = dir("nested");
+    let mut rng = Rng::new(91);
+    let outer = tetrakit::generate::kuhn(2);
+    let (mut points, mut tets) = (outer.points.clone(), outer.tets.clone());
+    let host = tets[5].map(|v| points[v as usize]);
+    let centre: Point3 = std::array::from_fn(|i| host.iter().map(|c| c[i]).sum::<f64>() / 4.0);
+    let inner = tetrakit::generate::kuhn(2);
+    let n = points.len() as u32;
+    points.extend(
+        inner
+            .points
+            .iter()
+            .map(|p| std::array::from_fn(|i| centre[i] + (p[i] - 1.0) / 64.0)),
+    );
+    tets.extend(inner.tets.iter().map(|t| t.map(|v| v + n)));
+    let mut split = 0;
+    for round in 0..24 {
+        let k = 2 + round % 5;
+        let piece_of: Vec<u32> = tets.iter().map(|_| rng.below(k as usize) as u32).collect();
+        let path = d.join(format!("n{round}.pvtu"));
+        written(&path, &points, &tets, &piece_of, round % 2 == 0);
+        let want = cli_check(&path, CheckOptions::default());
+        let nested: Vec<_> = (want.problems.iter())
+            .filter(|p| p.detail.contains("separate piece"))
+            .collect();
+        assert_eq!(nested.len(), 1, "round {round}: {:?}", want.problems);
+        for size in [1, 2, 3, 5] {
+            let (got, _) = check_in_ranks(&path, size, CheckOptions::default());
+            let got = got.unwrap();
+            assert_eq!(got.problems, want.problems, "round {round}, {size} ranks");
+        }
+        let inner_pieces: std::collections::BTreeSet<u32> =
+            piece_of[outer.tets.len()..].iter().copied().collect();
+        split += usize::from(inner_pieces.len() > 1);
+    }
+    assert!(
+        split >= 20,
+        "the inner grid was cut across pieces {split} times"
+    );
+    let _ = std::fs::remove_dir_all(&d);
+}

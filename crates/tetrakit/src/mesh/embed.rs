@@ -255,11 +255,23 @@ pub(crate) fn nested_problem(v: u32, own: u32, t: u32, tet: &[u32; 4]) -> Proble
 }
 
 /// One `(vertex, tet)` per connected component of the boundary surface (faces joined
-/// across edges): a vertex of the component's first face and that face's tetrahedron.
+/// across edges), in the order of the components' first faces: the first vertex of the
+/// component's first face and that face's tetrahedron.
 pub(crate) fn boundary_components(faces: &[([u32; 3], u32)]) -> Vec<(u32, u32)> {
+    let vertices: Vec<[u32; 3]> = faces.iter().map(|f| f.0).collect();
+    let (_, firsts) = face_components(&vertices);
+    firsts
+        .into_iter()
+        .map(|i| (faces[i].0[0], faces[i].1))
+        .collect()
+}
+
+/// The components of faces joined across edges: each face's component, numbered in the
+/// order of their first faces, and each component's first face.
+pub(crate) fn face_components(faces: &[[u32; 3]]) -> (Vec<u32>, Vec<usize>) {
     let mut parent = partition::singletons(faces.len());
     let mut by_edge: std::collections::HashMap<(u32, u32), u32> = std::collections::HashMap::new();
-    for (i, (f, _)) in faces.iter().enumerate() {
+    for (i, f) in faces.iter().enumerate() {
         for k in 0..3 {
             let (a, b) = (f[k].min(f[(k + 1) % 3]), f[k].max(f[(k + 1) % 3]));
             if let Some(&j) = by_edge.get(&(a, b)) {
@@ -269,8 +281,15 @@ pub(crate) fn boundary_components(faces: &[([u32; 3], u32)]) -> Vec<(u32, u32)> 
             }
         }
     }
-    (0..faces.len())
-        .filter(|&i| partition::find(&mut parent, i as u32) == i as u32)
-        .map(|i| (faces[i].0[0], faces[i].1))
-        .collect()
+    let mut number = vec![u32::MAX; faces.len()];
+    let (mut of, mut firsts) = (Vec::with_capacity(faces.len()), Vec::new());
+    for i in 0..faces.len() {
+        let root = partition::find(&mut parent, i as u32) as usize;
+        if number[root] == u32::MAX {
+            number[root] = firsts.len() as u32;
+            firsts.push(i);
+        }
+        of.push(number[root]);
+    }
+    (of, firsts)
 }

@@ -22,9 +22,7 @@ pub use certify::{
 };
 pub(crate) use check::outcome;
 pub use check::{CheckOptions, CheckOutcome, check};
-pub(crate) use embed::{
-    SELF_INTERSECTIONS, boundary_components, nested_problem, self_intersection,
-};
+pub(crate) use embed::{SELF_INTERSECTIONS, face_components, nested_problem, self_intersection};
 pub use partitioned::check_pieces;
 pub(crate) use partitioned::{Part, PartFaces, assemble_faces, first_hits};
 pub use report::{Problem, ProblemKind, Report};
