@@ -5,9 +5,10 @@
 Each rank reads only its files of the ``.pvtu`` (file ``f`` on rank ``f mod K``; each
 ``Piece`` in a file is a piece, numbered as ``tetrakit check`` numbers them) and
 checks them in Rust with the GIL released; the ranks exchange interface points by key,
-the tetrahedra around interface vertices (ghosts), and the boundary faces (to the owners
-of the grid cells they meet, for the self-intersection test), with mpi4py's
-``alltoall`` (seven rounds). Rank 0 prints what ``tetrakit check MESH.pvtu`` prints, the
+the tetrahedra around interface vertices (ghosts), the boundary faces (to the owners
+of the grid cells they meet, for the self-intersection test) and the boundary edges (to
+their owners, who join the ranks' boundary components), with mpi4py's ``alltoall``
+(seven rounds); no rank holds more of the boundary than its own share. Rank 0 prints what ``tetrakit check MESH.pvtu`` prints, the
 same text or JSON, problem for problem, and every rank exits with its exit code: 0 valid,
 1 not, 2 bad input (one line naming the file and the line or piece). Ranks with no piece
 take part. ``--output P.pvtu`` writes every piece with its problem fields for ParaView,
