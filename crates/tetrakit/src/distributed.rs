@@ -771,10 +771,10 @@ impl RankCheck {
     /// embedding checks run.
     fn decide(&mut self, inbox: &[&[u8]]) -> Vec<Vec<u8>> {
         let (mut edges, mut gathered) = (Vec::new(), Vec::new());
-        for b in inbox {
+        for (r, b) in inbox.iter().enumerate() {
             let f: Fourth = decode(b);
             edges.extend(f.edges);
-            gathered.extend(f.gathered);
+            gathered.extend(f.gathered.map(|g| (r, g)));
         }
         let joined = joined(edges);
         if self.rank != 0 {
@@ -787,10 +787,11 @@ impl RankCheck {
         }
         self.joined = joined;
         let mut all = Gathered::default();
-        for g in gathered {
+        self.components = vec![Vec::new(); self.size];
+        for (r, g) in gathered {
             all.faces.extend(g.faces);
             all.boundary_faces += g.boundary_faces;
-            self.components.push(g.components);
+            self.components[r] = g.components;
             all.coincident.extend(g.coincident);
             all.unused.extend(g.unused);
             all.mismatches.extend(g.mismatches);

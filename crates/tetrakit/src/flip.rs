@@ -159,19 +159,13 @@ impl Few {
     }
 }
 
-/// The four faces (sorted) of each of at most three tetrahedra.
-trait MapFaces {
-    fn map_faces(&self, tets: &[[u32; 4]]) -> [[[u32; 3]; 4]; 3];
-}
-
-impl MapFaces for [u32] {
-    fn map_faces(&self, tets: &[[u32; 4]]) -> [[[u32; 3]; 4]; 3] {
-        let mut out = [[[0; 3]; 4]; 3];
-        for (slot, &t) in out.iter_mut().zip(self) {
-            *slot = [0, 1, 2, 3].map(|k| face(&tets[t as usize], k));
-        }
-        out
+/// The four faces (sorted) of each of the tetrahedra `ids` (at most three).
+fn faces_of(ids: &[u32], tets: &[[u32; 4]]) -> [[[u32; 3]; 4]; 3] {
+    let mut out = [[[0; 3]; 4]; 3];
+    for (slot, &t) in out.iter_mut().zip(ids) {
+        *slot = [0, 1, 2, 3].map(|k| face(&tets[t as usize], k));
     }
+    out
 }
 
 /// Tetrahedra with their neighbours: `nb[t][k]` is the tetrahedron across the face of
@@ -303,7 +297,7 @@ impl<'a> Mesh<'a> {
             self.alive[id as usize] = true;
             ids.push(id);
         }
-        let faces = ids.get().map_faces(&self.tets);
+        let faces = faces_of(ids.get(), &self.tets);
         for (i, &id) in ids.get().iter().enumerate() {
             for (k, f) in faces[i].iter().enumerate() {
                 let twin = (0..ids.len).find(|&j| j != i && faces[j].contains(f));
