@@ -462,7 +462,12 @@ impl<'a> Surface<'a> {
         // `CH(ring)` is strictly inside the hull below, so it is no vertex of it.
         if candidates.len() > 16 {
             let cap = cap_planes(&around, set.len());
-            let within = hull_planes(&around[..ring.len()]);
+            // Worth its hull only when the candidates outnumber the ring (thousands
+            // under a star spanning the shell, on arcs; not on a prism's cap polygon).
+            let within = match candidates.len() > ring.len() {
+                true => hull_planes(&around[..ring.len()]),
+                false => Vec::new(),
+            };
             let p = |v: u32| &self.pts[v as usize];
             candidates.retain(|&v| {
                 cap.iter().all(|h| h.side(p(v)) <= 0)
