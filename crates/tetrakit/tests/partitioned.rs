@@ -704,6 +704,20 @@ fn the_first_bad_piece_is_the_one_named() {
     let _ = std::fs::remove_dir_all(&d);
 }
 
+/// The tetrahedra of `a` and of `b`, `b`'s points moved by `place`, as one mesh.
+fn both(
+    a: &tetrakit::mesh::Tetrahedralization,
+    b: &tetrakit::mesh::Tetrahedralization,
+    place: impl Fn(&Point3) -> Point3,
+) -> (Vec<Point3>, Vec<[u32; 4]>) {
+    let n = a.points.len() as u32;
+    let mut points = a.points.clone();
+    points.extend(b.points.iter().map(place));
+    let mut tets = a.tets.clone();
+    tets.extend(b.tets.iter().map(|t| t.map(|v| v + n)));
+    (points, tets)
+}
+
 /// Two Kuhn grids pushed into each other (each valid, their boundaries crossing), cut
 /// into pieces: under ranks the boundary's self-intersection test is spread over a grid
 /// of cells, each pair decided by one rank, and the problems are the merged check's,
@@ -718,15 +732,7 @@ fn crossing_boundaries_are_found_across_ranks() {
         let a = tetrakit::generate::kuhn(3 + (round as usize % 4));
         let b = tetrakit::generate::kuhn(3 + (round as usize / 4 % 3));
         let shift: Point3 = std::array::from_fn(|_| 0.3 + 2.0 * rng.unit());
-        let n = a.points.len() as u32;
-        let mut points = a.points.clone();
-        points.extend(
-            b.points
-                .iter()
-                .map(|p| std::array::from_fn(|i| p[i] + shift[i])),
-        );
-        let mut tets = a.tets.clone();
-        tets.extend(b.tets.iter().map(|t| t.map(|v| v + n)));
+        let (points, tets) = both(&a, &b, |p| std::array::from_fn(|i| p[i] + shift[i]));
         let k = 2 + (round % 4) as u32;
         let [slabs, random] = partitions(&points, &tets, k, &mut rng);
         for (how, piece_of) in [slabs, random].iter().enumerate() {
@@ -766,18 +772,11 @@ fn a_nested_mesh_cut_across_ranks_is_one_component() {
     let d = dir("nested");
     let mut rng = Rng::new(91);
     let outer = tetrakit::generate::kuhn(2);
-    let (mut points, mut tets) = (outer.points.clone(), outer.tets.clone());
-    let host = tets[5].map(|v| points[v as usize]);
+    let host = outer.tets[5].map(|v| outer.points[v as usize]);
     let centre: Point3 = std::array::from_fn(|i| host.iter().map(|c| c[i]).sum::<f64>() / 4.0);
-    let inner = tetrakit::generate::kuhn(2);
-    let n = points.len() as u32;
-    points.extend(
-        inner
-            .points
-            .iter()
-            .map(|p| std::array::from_fn(|i| centre[i] + (p[i] - 1.0) / 64.0)),
-    );
-    tets.extend(inner.tets.iter().map(|t| t.map(|v| v + n)));
+    let (points, tets) = both(&outer, &outer, |p| {
+        std::array::from_fn(|i| centre[i] + (p[i] - 1.0) / 64.0)
+    });
     let mut split = 0;
     for round in 0..24 {
         let k = 2 + round % 5;
