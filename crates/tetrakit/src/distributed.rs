@@ -237,9 +237,7 @@ struct Face {
 impl Face {
     /// Its place in the merged check's boundary order (its vertices sorted).
     fn key(&self) -> [u32; 3] {
-        let mut k = self.v;
-        k.sort_unstable();
-        k
+        sorted(self.v)
     }
 
     fn bbox(&self) -> (Point3, Point3) {
