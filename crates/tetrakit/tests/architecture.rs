@@ -62,7 +62,7 @@ fn allowed(top: &str) -> Vec<&'static str> {
         "distributed" => &["io"],
         "constrain" => &["detect", "exact", "polyhedra"],
         "shell" => &["exact", "flip"],
-        "dualpath" => &["flipgraph"],
+        "dualpath" => &["flipgraph", "exact"],
         "reduce" => &["planar", "exact"],
         "polyhedra" => &["exact"],
         _ => &[],

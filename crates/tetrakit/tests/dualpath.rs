@@ -50,10 +50,13 @@ fn every_family_gets_a_path() {
     assert_eq!(found, 120);
 }
 
-/// Two points inside every facet leave no apex eligible: UNDECIDED, with nothing
-/// claimed; so is a budget of nothing; a point inside the hull is refused.
+/// Each route where the one before it is turned off or cannot go: a cone decided by
+/// SAT with no depth-first budget; the enumeration with the cones off; SAT over every
+/// tetrahedralization where no apex is eligible (two points inside every facet); a time
+/// limit already passed leaves it UNDECIDED, with nothing claimed; a point inside the
+/// hull is refused.
 #[test]
-fn what_the_method_cannot_take() {
+fn each_route_answers_where_the_last_cannot() {
     let mut cube: Vec<Point3> = (0..8)
         .map(|i| {
             [
@@ -65,16 +68,15 @@ fn what_the_method_cannot_take() {
         .collect();
     let ctl = Control::new();
     let opts = PathOptions::default();
-    let none = PathOptions {
-        budget: 0,
-        enumerate_up_to: 0,
-        ..PathOptions::default()
+    let no_budget = PathOptions { budget: 0, ..opts };
+    let o = hamiltonian(&cube, &no_budget, &ctl).unwrap();
+    assert_eq!((o.verdict, o.found_by), (Verdict::Yes, Some("cone")));
+    check(&cube, &o.tets);
+    // The cones off, the enumeration finds one among the cube's 74 and stops there.
+    let enumerate = PathOptions {
+        cones: false,
+        ..opts
     };
-    let o = hamiltonian(&cube, &none, &ctl).unwrap();
-    assert_eq!((o.verdict, o.apexes_tried), (Verdict::Undecided, 8));
-    // The cones out of budget, the enumeration finds one among the cube's 74 and stops
-    // there.
-    let enumerate = PathOptions { budget: 0, ..opts };
     let o = hamiltonian(&cube, &enumerate, &ctl).unwrap();
     assert_eq!((o.verdict, o.found_by), (Verdict::Yes, Some("enumeration")));
     let e = o.enumerated.unwrap();
@@ -95,15 +97,51 @@ fn what_the_method_cannot_take() {
     }
     let o = hamiltonian(&cube, &opts, &ctl).unwrap();
     assert_eq!(
-        (o.verdict, o.apexes, o.ordinary_tetrahedra),
-        (Verdict::Undecided, 0, None)
+        (o.verdict, o.found_by, o.apexes, o.ordinary_tetrahedra),
+        (Verdict::Yes, Some("sat"), 0, None)
     );
-    assert!(o.tets.is_empty() && !o.certified);
+    check(&cube, &o.tets);
+    let past = Control::new().with_time_limit(std::time::Duration::ZERO);
+    let o = hamiltonian(&cube, &opts, &past).unwrap();
+    assert_eq!(o.verdict, Verdict::Undecided);
+    assert!(o.tets.is_empty() && !o.certified && o.witness.is_none());
     cube.push([1.0, 1.0, 1.0]);
     assert_eq!(
         hamiltonian(&cube, &opts, &ctl),
         Err(PathError::Inside { index: 20 })
     );
+}
+
+/// SAT over every tetrahedralization at once (the cones and the enumeration off): on
+/// spheres, cylinders and lattice hulls of 5 to 30 points, a path, certified and checked
+/// here. A NO here would answer the thesis's open question for that set.
+#[test]
+fn sat_over_every_tetrahedralization_finds_a_path() {
+    let only = PathOptions {
+        cones: false,
+        enumerate_up_to: 0,
+        sat_up_to: 30,
+        ..PathOptions::default()
+    };
+    let ctl = Control::new();
+    for dist in [
+        Distribution3::Convex,
+        Distribution3::Cylinder,
+        Distribution3::LatticeHull,
+    ] {
+        for seed in 0..10u64 {
+            let n = 5 + (seed as usize * 11) % 26;
+            let pts = points3d(dist, n, seed);
+            let o = hamiltonian(&pts, &only, &ctl).unwrap();
+            assert_eq!(
+                (o.verdict, o.found_by),
+                (Verdict::Yes, Some("sat")),
+                "{dist:?} n = {n} seed {seed}: {:?}",
+                o.witness
+            );
+            check(&pts, &o.tets);
+        }
+    }
 }
 
 /// Every tetrahedralization enumerated, each one's dual searched completely (the cones

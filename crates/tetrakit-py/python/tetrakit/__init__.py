@@ -521,6 +521,8 @@ class HamiltonianResult:
     steps: int
     certified: bool
     tets: np.ndarray = field(repr=False)
+    cuts: int = 0
+    cones_refuted: int = 0
     found_by: Optional[str] = None
     enumerated: Optional[dict] = None
     witness: Optional[dict] = None
@@ -531,11 +533,12 @@ def hamiltonian(points, time_limit: Optional[float] = None) -> HamiltonianResult
     (every point a vertex), its tetrahedra ordered so that each shares a triangle with the
     next: a Hamiltonian path of the dual graph (thesis ch. 6), certified.
 
-    ``verdict`` is ``"yes"`` (``found_by`` ``"cone"``, or ``"enumeration"`` when no cone
-    had a path and every tetrahedralization of a set of at most 12 points was searched);
-    ``"no"`` with a ``witness`` when all of them were enumerated and none has a path
-    (whether every convex polytope has one is open); ``"undecided"`` when the search
-    budget, the enumeration's limit or ``time_limit`` cut it.
+    ``verdict`` is ``"yes"`` (``found_by`` ``"cone"``; when every cone is refuted,
+    ``"enumeration"`` for at most 12 points, every tetrahedralization searched, or
+    ``"sat"`` for at most 30, SAT over all of them at once); ``"no"`` with a ``witness``
+    when none has a path (whether every convex polytope has one is open);
+    ``"undecided"`` when the enumeration's limit or ``time_limit`` cut it, or the set is
+    too large for both.
 
     >>> import numpy as np, tetrakit
     >>> cube = np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)], dtype=float)

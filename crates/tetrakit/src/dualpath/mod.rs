@@ -8,30 +8,40 @@
 //! tetrahedra joining `v` to those triangles tile the polytope, and two of them share a
 //! triangle exactly when their base triangles share an edge. So a Hamiltonian path in the
 //! dual graph of the base — a triangulated disk, the surface minus `v`'s star — orders
-//! the cone. The path is searched depth-first (`search`) within a budget, apex after
-//! apex, those whose cone has the fewest tetrahedra first.
+//! the cone. The path is searched depth-first (`search`) within a budget, then decided
+//! by SAT ([`crate::exact::path`]: a path, or a proof that this cone has none, counted
+//! in `cones_refuted`), apex after apex, those whose cone has the fewest tetrahedra
+//! first. Cones can fail: a vertex with three neighbours of degree 3 has a base whose
+//! dual has three leaves (on a Kleetope every original vertex does), and Chin, Ding and
+//! Wang, and Escalona, Fabila-Monroy and Urrutia built polytopes of 92 and 84 points
+//! where every cone fails.
 //!
 //! An apex is *eligible* when every point on a facet at `v` also lies on a facet away
 //! from `v`: a point inside a facet at `v`, or on an edge through `v`, would be left out
 //! of every cone tetrahedron. When every point is a vertex of the hull, every vertex is
 //! eligible (the facets round a vertex `q` near `v` cannot all contain the edge `qv`).
 //!
-//! **Then every tetrahedralization.** When no cone gives a path and the set is small
-//! ([`PathOptions::enumerate_up_to`], 12 points), every tetrahedralization that uses
-//! every point is enumerated ([`crate::flipgraph::tetrahedralizations`], exact, each
-//! once) and each one's dual graph searched *completely* (`search::exact_path`: the same
-//! depth-first search without a budget, from a leaf or from every node; its pruning never
-//! drops a path). The first with a path is a YES (`found_by: "enumeration"`); none, with
-//! the enumeration complete, is a NO: no tetrahedralization of these points has a
+//! **Then every tetrahedralization.** When every cone is refuted (or none is eligible)
+//! and the set is small ([`PathOptions::enumerate_up_to`], 12 points), every
+//! tetrahedralization that uses every point is enumerated
+//! ([`crate::flipgraph::tetrahedralizations`], exact, each once) and each one's dual
+//! graph searched *completely* (`search::exact_path`: the same depth-first search
+//! without a budget, from a leaf or from every node; its pruning never drops a path).
+//! The first with a path is a YES (`found_by: "enumeration"`); none, with the
+//! enumeration complete, is a NO: no tetrahedralization of these points has a
 //! Hamiltonian dual path. That NO would answer the open question for that set; its
 //! witness is the count, which TOPCOM's `points2nallfinetriangs` checks, and each
-//! tetrahedralization can be listed again by `tetrakit flips --output`.
+//! tetrahedralization can be listed again by `tetrakit flips --output`. Up to
+//! [`PathOptions::sat_up_to`] points (30) the question goes to SAT over every
+//! tetrahedralization at once ([`crate::exact::hamiltonian_tetrahedralization`]: the
+//! exact solver's formula with path clauses and lazy cuts; `found_by: "sat"`, or a NO
+//! when it is unsatisfiable).
 //!
 //! **Certified**: the tetrahedra pass [`mesh::certify_hull`] (every point a vertex, the
 //! hull covered once, face to face) and [`mesh::verify_dual_path`] (each shares a
-//! triangle with the next). When no apex gives a path within the budget, or none is
-//! eligible, and the set is too large to enumerate (or the enumeration's limit or the
-//! time limit cuts it), the answer is UNDECIDED: whether every convex polytope has such a
+//! triangle with the next). When every cone is refuted, or none is eligible, and the set
+//! is too large for both exact routes (or the enumeration's limit or the time limit
+//! cuts it), the answer is UNDECIDED: whether every convex polytope has such a
 //! tetrahedralization is the open question.
 //!
 //! ```
@@ -46,6 +56,8 @@ mod search;
 
 use crate::bug::Bug;
 use crate::control::{Control, Verdict};
+use crate::exact::PathFound;
+use crate::exact::path::graph_path;
 use crate::flipgraph::FlipError;
 use crate::geom::{Hull3, Point3, SetDefect, orient3d, solid_set, triangulate_coplanar};
 use crate::mesh;
@@ -56,7 +68,8 @@ use std::fmt;
 /// What [`hamiltonian`] is asked.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct PathOptions {
-    /// Search steps per apex.
+    /// Depth-first search steps per apex; past them the apex's cone is decided by SAT
+    /// (exact: a path, or a proof that its cone has none).
     pub budget: u64,
     /// Try the cones first (off: the enumeration alone, for experiments and tests).
     pub cones: bool,
@@ -65,7 +78,14 @@ pub struct PathOptions {
     pub enumerate_up_to: usize,
     /// The enumeration gives up (UNDECIDED) past this many tetrahedralizations.
     pub enumerate_limit: usize,
+    /// When neither the cones nor the enumeration decided, a set of at most this many
+    /// points is decided by SAT over every tetrahedralization at once
+    /// ([`crate::exact::hamiltonian_tetrahedralization`]).
+    pub sat_up_to: usize,
 }
+
+/// [`PathOptions::sat_up_to`]'s default.
+pub const SAT_UP_TO: usize = 30;
 
 impl Default for PathOptions {
     fn default() -> Self {
@@ -74,6 +94,7 @@ impl Default for PathOptions {
             cones: true,
             enumerate_up_to: 12,
             enumerate_limit: 2_000_000,
+            sat_up_to: SAT_UP_TO,
         }
     }
 }
@@ -90,6 +111,8 @@ pub enum PathError {
     },
     /// The enumeration of every tetrahedralization failed (a bug if it ever happens).
     Enumeration(FlipError),
+    /// The SAT solver over every tetrahedralization could not run.
+    Exact(crate::exact::ExactError),
     /// The tetrahedra failed the verifier (a bug if it ever happens): its problem.
     Uncertified(mesh::Problem),
     /// Two consecutive tetrahedra of the path share no triangle (a bug if it ever
@@ -111,6 +134,7 @@ impl fmt::Display for PathError {
             ),
             PathError::Internal(bug) => bug.fmt(f),
             PathError::Enumeration(e) => e.fmt(f),
+            PathError::Exact(e) => e.fmt(f),
         }
     }
 }
@@ -122,6 +146,7 @@ impl std::error::Error for PathError {
             PathError::Uncertified(p) => Some(p),
             PathError::Internal(bug) => Some(bug),
             PathError::Enumeration(e) => Some(e),
+            PathError::Exact(e) => Some(e),
             PathError::Inside { .. } => None,
         }
     }
@@ -130,8 +155,9 @@ impl std::error::Error for PathError {
 /// A tetrahedralization with a Hamiltonian dual path ([`hamiltonian`]).
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct HamiltonianOutcome {
-    /// YES with the tetrahedra in path order; UNDECIDED when no apex gave a path within
-    /// the budget or the time limit (or none is eligible).
+    /// YES with the tetrahedra in path order; NO with its [`NoPath`] witness;
+    /// UNDECIDED when every cone is refuted (or none is eligible) and the set is too
+    /// large for the exact routes, or a limit cut them.
     pub verdict: Verdict,
     /// Points (all vertices of the tetrahedralization).
     pub vertices: usize,
@@ -148,10 +174,14 @@ pub struct HamiltonianOutcome {
     pub apexes_tried: usize,
     /// Search steps over all apexes.
     pub steps: u64,
+    /// Cuts the SAT search added over all apexes (see [`PathOptions::budget`]).
+    pub cuts: u64,
+    /// Apexes whose cone has no Hamiltonian dual path, proven by SAT.
+    pub cones_refuted: usize,
     /// The tetrahedra passed [`mesh::certify_hull`] and [`mesh::verify_dual_path`].
     pub certified: bool,
-    /// How the tetrahedralization was found: `"cone"` or `"enumeration"` (`None` when
-    /// none was).
+    /// How the tetrahedralization was found: `"cone"`, `"enumeration"` or `"sat"`
+    /// (`None` when none was).
     pub found_by: Option<&'static str>,
     /// When every tetrahedralization was enumerated: how many, and whether all were.
     pub enumerated: Option<Enumerated>,
@@ -179,8 +209,9 @@ pub struct Enumerated {
 pub struct NoPath {
     /// `"no_hamiltonian_tetrahedralization"`.
     pub kind: &'static str,
-    /// The tetrahedralizations, all of them.
-    pub tetrahedralizations: usize,
+    /// The tetrahedralizations, all of them, when they were enumerated (`None` for a NO
+    /// by SAT).
+    pub tetrahedralizations: Option<usize>,
     /// A sentence for a person.
     pub detail: String,
 }
@@ -224,35 +255,65 @@ pub fn hamiltonian(
         apexes: apexes.len(),
         apexes_tried: 0,
         steps: 0,
+        cuts: 0,
+        cones_refuted: 0,
         certified: false,
         found_by: None,
         enumerated: None,
         witness: None,
         tets: Vec::new(),
     };
-    for &(_, v) in apexes.iter().filter(|_| opts.cones) {
+    if opts.cones {
+        by_cones(points, &hull, &facets, &apexes, opts, ctl, &mut o)?;
+    }
+    let open = |o: &HamiltonianOutcome| o.verdict == Verdict::Undecided && !ctl.is_stopped();
+    if open(&o) && points.len() <= opts.enumerate_up_to {
+        by_enumeration(points, opts, ctl, &mut o)?;
+    }
+    if open(&o) && o.enumerated.is_none() && points.len() <= opts.sat_up_to {
+        by_sat(points, ctl, &mut o)?;
+    }
+    Ok(o)
+}
+
+/// The cones from `apexes` in turn: each base's dual graph searched depth-first within
+/// the budget, then decided by SAT ([`sat::graph_path`]); the first path is the YES.
+fn by_cones(
+    points: &[Point3],
+    hull: &Hull3,
+    facets: &[Vec<[u32; 3]>],
+    apexes: &[(usize, u32)],
+    opts: &PathOptions,
+    ctl: &Control,
+    o: &mut HamiltonianOutcome,
+) -> Result<(), PathError> {
+    for &(_, v) in apexes {
         if ctl.is_stopped() {
             break;
         }
         o.apexes_tried += 1;
-        let tris = base(&hull, &facets, v);
-        let Some(order) = search::hamiltonian_path(&dual(&tris), opts.budget, ctl, &mut o.steps)
-        else {
-            continue;
+        let tris = base(hull, facets, v);
+        let adj = dual(&tris);
+        let order = match search::hamiltonian_path(&adj, opts.budget, ctl, &mut o.steps) {
+            Some(order) => order,
+            None => match graph_path(&adj, ctl, &mut o.cuts) {
+                PathFound::Path(order) => order,
+                PathFound::None => {
+                    o.cones_refuted += 1;
+                    continue;
+                }
+                PathFound::Stopped => break,
+            },
         };
         let tets: Vec<[u32; 4]> = order
             .iter()
             .map(|&i| cone(points, v, tris[i as usize]))
             .collect();
-        accept(points, tets, "cone", &mut o)?;
+        accept(points, tets, "cone", o)?;
         o.apex = Some(v);
         break;
     }
-    if o.verdict == Verdict::Undecided && !ctl.is_stopped() && points.len() <= opts.enumerate_up_to
-    {
-        by_enumeration(points, opts, ctl, &mut o)?;
-    }
-    Ok(o)
+    Ok(())
 }
 
 /// The YES of `tets` in path order, found by `how`, once certified.
@@ -311,13 +372,36 @@ fn by_enumeration(
         o.verdict = Verdict::No;
         o.witness = Some(NoPath {
             kind: "no_hamiltonian_tetrahedralization",
-            tetrahedralizations: count,
+            tetrahedralizations: Some(count),
             detail: format!(
                 "none of the {count} tetrahedralizations that use every point has a Hamiltonian dual path (each dual graph searched completely)"
             ),
         });
     }
     Ok(())
+}
+
+/// SAT over every tetrahedralization at once: a path is the YES; unsatisfiable clauses,
+/// the NO.
+fn by_sat(points: &[Point3], ctl: &Control, o: &mut HamiltonianOutcome) -> Result<(), PathError> {
+    let found = crate::exact::hamiltonian_tetrahedralization(points, ctl, &mut o.cuts)
+        .map_err(PathError::Exact)?;
+    match found {
+        PathFound::Path(tets) => accept(points, tets, "sat", o),
+        PathFound::None => {
+            o.verdict = Verdict::No;
+            o.witness = Some(NoPath {
+                kind: "no_hamiltonian_tetrahedralization",
+                tetrahedralizations: None,
+                detail: format!(
+                    "no tetrahedralization that uses every point has a Hamiltonian dual path: the SAT formula over every tetrahedralization, with its path clauses and {} cuts, is unsatisfiable",
+                    o.cuts
+                ),
+            });
+            Ok(())
+        }
+        PathFound::Stopped => Ok(()),
+    }
 }
 
 /// The dual graph of a tetrahedralization: tetrahedra joined when they share a triangle.
@@ -402,5 +486,43 @@ fn cone(points: &[Point3], v: u32, [a, b, c]: [u32; 3]) -> [u32; 4] {
         [a, b, c, v]
     } else {
         [a, c, b, v]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::generate::{Distribution3, points3d};
+
+    /// On the bases of every cone of small random polytopes, SAT and the complete
+    /// depth-first search agree, paths and none alike (some cones have none).
+    #[test]
+    fn sat_and_the_complete_search_agree_on_cones() {
+        let (ctl, mut steps, mut cuts) = (Control::new(), 0, 0);
+        let mut counts = [0; 2];
+        for seed in 0..90u64 {
+            let dist = [
+                Distribution3::Convex,
+                Distribution3::LatticeHull,
+                Distribution3::Cylinder,
+            ][seed as usize % 3];
+            let pts = points3d(dist, 6 + seed as usize % 19, seed);
+            let hull = Hull3::new(&pts);
+            let facets = facet_triangles(&pts, &hull);
+            for v in (0..pts.len() as u32).filter(|&v| eligible(&hull, v, pts.len())) {
+                let adj = dual(&base(&hull, &facets, v));
+                let complete = search::exact_path(&adj, &ctl, &mut steps).expect("no limit");
+                match graph_path(&adj, &ctl, &mut cuts) {
+                    PathFound::Path(p) => {
+                        assert!(complete.is_some(), "{adj:?}");
+                        assert!(crate::exact::path::tests::is_path(&adj, &p), "{adj:?}");
+                    }
+                    PathFound::None => assert!(complete.is_none(), "{adj:?}"),
+                    PathFound::Stopped => panic!("no limit"),
+                }
+                counts[usize::from(complete.is_some())] += 1;
+            }
+        }
+        assert!(counts[0] > 50 && counts[1] > 500, "{counts:?}");
     }
 }

@@ -195,36 +195,7 @@ impl<'a> Search<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// Is `p` a path through every node of `adj`?
-    fn is_path(adj: &[Vec<u32>], p: &[u32]) -> bool {
-        let mut seen = vec![false; adj.len()];
-        p.len() == adj.len()
-            && p.iter()
-                .all(|&v| !std::mem::replace(&mut seen[v as usize], true))
-            && p.windows(2).all(|w| adj[w[0] as usize].contains(&w[1]))
-    }
-
-    /// Every order of the nodes, tried: whether some is a path.
-    fn brute_force(adj: &[Vec<u32>]) -> bool {
-        fn go(adj: &[Vec<u32>], path: &mut Vec<u32>, used: &mut [bool]) -> bool {
-            if path.len() == adj.len() {
-                return true;
-            }
-            for v in 0..adj.len() as u32 {
-                let joins = path.last().is_none_or(|&u| adj[u as usize].contains(&v));
-                if !used[v as usize] && joins {
-                    (used[v as usize], _) = (true, path.push(v));
-                    if go(adj, path, used) {
-                        return true;
-                    }
-                    (used[v as usize], _) = (false, path.pop());
-                }
-            }
-            false
-        }
-        go(adj, &mut Vec::new(), &mut vec![false; adj.len()])
-    }
+    use crate::exact::path::tests::{brute_force, is_path, random_graph};
 
     /// The complete search agrees with trying every order, on 3000 random graphs of at
     /// most 8 nodes and degree at most 4 (a dual graph's), paths and none alike.
@@ -234,17 +205,7 @@ mod tests {
         let (ctl, mut steps) = (Control::new(), 0);
         let mut counts = [0; 2];
         for _ in 0..3000 {
-            let n = 1 + rng.below(8);
-            let mut adj = vec![Vec::new(); n];
-            for a in 0..n as u32 {
-                for b in a + 1..n as u32 {
-                    let room = adj[a as usize].len() < 4 && adj[b as usize].len() < 4;
-                    if room && rng.below(3) == 0 {
-                        adj[a as usize].push(b);
-                        adj[b as usize].push(a);
-                    }
-                }
-            }
+            let adj = random_graph(&mut rng, 8);
             let found = exact_path(&adj, &ctl, &mut steps).expect("never stopped");
             assert_eq!(found.is_some(), brute_force(&adj), "{adj:?}");
             if let Some(p) = found {

@@ -66,6 +66,7 @@ mod certify;
 mod core;
 mod encode;
 mod outcome;
+pub(crate) mod path;
 mod proof;
 mod separate;
 
@@ -74,6 +75,7 @@ pub use core::{FaceCore, SmallestCore, face_core, smallest_core};
 pub use encode::{Domain, Edges, MAX_CANDIDATES};
 
 pub use outcome::{TetraOptions, TetraOutcome, Witness, WitnessKind, tetrahedralize};
+pub use path::{PathFound, hamiltonian_tetrahedralization};
 pub use proof::{Proof, prove_infeasible};
 
 use crate::control::Control;

@@ -229,14 +229,17 @@ pub fn hamiltonian_text(o: &HamiltonianOutcome, seconds: f64) -> String {
         ),
         (Verdict::Yes, None, _) => writeln!(
             s,
-            "YES: {} tetrahedra in a Hamiltonian dual path (each shares a triangle with the next), found among every tetrahedralization (no cone has one); {ordinary}",
-            o.tetrahedra
+            "YES: {} tetrahedra in a Hamiltonian dual path (each shares a triangle with the next), found by {} over every tetrahedralization ({} of {} cones refuted); {ordinary}",
+            o.tetrahedra,
+            o.found_by.unwrap_or("search"),
+            o.cones_refuted,
+            o.apexes
         ),
         (Verdict::No, _, Some(w)) => writeln!(s, "NO: {}; {ordinary}", w.detail),
         _ => writeln!(
             s,
-            "UNDECIDED: no Hamiltonian dual path found by the cone method ({} of {} eligible apexes tried, {} search steps){enumerated}; {ordinary}",
-            o.apexes_tried, o.apexes, o.steps
+            "UNDECIDED: no Hamiltonian dual path found ({} of {} eligible apexes tried, {} of them refuted by SAT; {} search steps, {} cuts){enumerated}; {ordinary}",
+            o.apexes_tried, o.apexes, o.cones_refuted, o.steps, o.cuts
         ),
     };
     if o.certified {
