@@ -9,6 +9,11 @@
                                        lattice hulls with many coplanar facets): every one
                                        where no path is found, and the cost over an
                                        ordinary cone
+  python3 benches/ch6.py hamiltonian-large
+                                       the same past 100 vertices (spheres of 300 to
+                                       3000 points, one each, a 300 s limit; SIZES),
+                                       and
+                                       Kleetopes, where many cones have no path
   python3 benches/ch6.py triangulated  convex polyhedra with triangulated facets: how
                                        often NO happens, by family and size; the smallest
                                        NOs; which witnesses the NOs have
@@ -136,18 +141,71 @@ def hamiltonian():
                 r["extra"].append(o["tetrahedra"] - o["ordinary_tetrahedra"])
                 r["ratio"].append(o["tetrahedra"] / o["ordinary_tetrahedra"])
                 r["apexes"].append(o["apexes_tried"])
+                r.setdefault("refuted", []).append(o["cones_refuted"])
             else:
                 r["failed"].append(f"{fam} n={n} seed={seed} ({o['apexes']} eligible apexes)")
     print("| family | polytopes | path found | extra tetrahedra over an ordinary cone (median, max) "
-          "| ratio (mean) | apexes tried (median, max) | median s | max s |")
-    print("|---|---|---|---|---|---|---|---|")
+          "| ratio (mean) | apexes tried (median, max) | with a cone refuted | median s | max s |")
+    print("|---|---|---|---|---|---|---|---|---|")
     for fam, r in rows.items():
         med = statistics.median
         print(f"| {fam} | {r['n']} | {r['yes']} | {med(r['extra'])}, {max(r['extra'])} "
               f"| {statistics.mean(r['ratio']):.4f} | {med(r['apexes'])}, {max(r['apexes'])} "
+              f"| {sum(1 for k in r.get('refuted', []) if k)} "
               f"| {med(r['secs']):.3f} | {max(r['secs']):.3f} |")
         for f in r["failed"]:
             print(f"NO PATH FOUND: {f}")
+
+
+def kleetope(points, h):
+    """The points with one more over each facet's centroid, `h` out along its normal (a
+    small `h` keeps every point a vertex); facets found by brute force, in floating point:
+    only the input is made this way, tetrakit decides on it exactly."""
+    import itertools
+    import numpy as np
+    P = np.array(points, dtype=float)
+    out = [list(p) for p in P]
+    for i, j, k in itertools.combinations(range(len(P)), 3):
+        nrm = np.cross(P[j] - P[i], P[k] - P[i])
+        d = (P - P[i]) @ nrm
+        for sign in (1, -1):
+            if np.all(sign * d <= 1e-12):
+                out.append(list((P[i] + P[j] + P[k]) / 3 + h * sign * nrm / np.linalg.norm(nrm)))
+    return out
+
+
+def hamiltonian_large():
+    limit = int(os.environ.get("LIMIT", 300))
+    print("| polytope | n | verdict | found by | apexes tried | cones refuted | steps | cuts "
+          "| tetrahedra (ordinary cone) | s |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    sets = []
+    for n in map(int, os.environ.get("SIZES", "300 1000 1500 2000 3000").split()):
+        f = WORK / f"sphere-{n}.xyz"
+        tk("generate", "points3d", "--dist", "convex", "--n", n, "--seed", 1, "-o", f, code=(0,))
+        sets.append(("sphere", f))
+    phi = (1 + 5 ** 0.5) / 2
+    solids = {
+        "tetrahedron": [[1, 1, 1], [1, -1, -1], [-1, 1, -1], [-1, -1, 1]],
+        "octahedron": [[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]],
+        "icosahedron": [p for a in (-1, 1) for b in (-phi, phi) for p in ([0, a, b], [a, b, 0], [b, 0, a])],
+    }
+    for name, solid in solids.items():
+        for level, hs in ((1, [0.1]), (2, [0.1, 0.001])):
+            pts = solid
+            for h in hs:
+                pts = kleetope(pts, h)
+            f = WORK / f"klee-{name}-{level}.xyz"
+            f.write_text("".join(f"{float(x)!r} {float(y)!r} {float(z)!r}\n" for x, y, z in pts))
+            sets.append((f"Kleetope{'²' if level == 2 else ''} of the {name}", f))
+    for name, f in sets:
+        start = time.perf_counter()
+        out = tk("tetrahedralize", f, "--hamiltonian", "--json", "--time-limit", limit)
+        took = time.perf_counter() - start
+        o = json.loads(out.stdout)
+        print(f"| {name} | {o['vertices']} | {o['verdict']} | {o['found_by']} | {o['apexes_tried']} "
+              f"| {o['cones_refuted']} | {o['steps']} | {o['cuts']} "
+              f"| {o['tetrahedra']} ({o['ordinary_tetrahedra']}) | {took:.2f} |", flush=True)
 
 
 def triangulated():
@@ -187,4 +245,5 @@ def triangulated():
 
 
 if __name__ == "__main__":
-    {"flips": flips, "hamiltonian": hamiltonian, "triangulated": triangulated}[sys.argv[1] if len(sys.argv) > 1 else "flips"]()
+    {"flips": flips, "hamiltonian": hamiltonian, "hamiltonian-large": hamiltonian_large,
+     "triangulated": triangulated}[sys.argv[1] if len(sys.argv) > 1 else "flips"]()

@@ -9,7 +9,7 @@
 //! triangle exactly when their base triangles share an edge. So a Hamiltonian path in the
 //! dual graph of the base — a triangulated disk, the surface minus `v`'s star — orders
 //! the cone. The path is searched depth-first (`search`) within a budget, then decided
-//! by SAT ([`crate::exact::path`]: a path, or a proof that this cone has none, counted
+//! by SAT (`exact::path`: a path, or a proof that this cone has none, counted
 //! in `cones_refuted`), apex after apex, those whose cone has the fewest tetrahedra
 //! first. Cones can fail: a vertex with three neighbours of degree 3 has a base whose
 //! dual has three leaves (on a Kleetope every original vertex does), and Chin, Ding and
@@ -524,5 +524,52 @@ mod tests {
             }
         }
         assert!(counts[0] > 50 && counts[1] > 500, "{counts:?}");
+    }
+
+    /// Every cut SAT adds over tetrahedralizations holds for every tetrahedralization
+    /// with a Hamiltonian dual path (one path each, from the complete search): if it
+    /// holds all of the cut's tetrahedra, its path crosses one of the cut's faces. On
+    /// small random sets, every tetrahedralization enumerated.
+    #[test]
+    fn every_cut_keeps_every_hamiltonian_tetrahedralization() {
+        let (ctl, mut steps, mut cuts, mut checked) = (Control::new(), 0, 0, 0);
+        for seed in 0..40u64 {
+            let dist = [Distribution3::Convex, Distribution3::LatticeHull][seed as usize % 2];
+            let pts = points3d(dist, 7 + seed as usize % 3, seed);
+            crate::exact::path::tests::take_cuts();
+            let found = crate::exact::hamiltonian_tetrahedralization(&pts, &ctl, &mut cuts);
+            assert!(matches!(found, Ok(PathFound::Path(_))));
+            let filed = crate::exact::path::tests::take_cuts();
+            let mut each = |tets: Vec<[u32; 4]>| {
+                let Some(Some(order)) = search::exact_path(&tet_dual(&tets), &ctl, &mut steps)
+                else {
+                    return true;
+                };
+                let sorted = |t: [u32; 4]| {
+                    let mut s = t;
+                    s.sort_unstable();
+                    s
+                };
+                let held: std::collections::HashSet<[u32; 4]> =
+                    tets.iter().map(|&t| sorted(t)).collect();
+                let crossed: std::collections::HashSet<[u32; 3]> = (order.windows(2))
+                    .map(|w| {
+                        let (a, b) = (tets[w[0] as usize], tets[w[1] as usize]);
+                        let f: Vec<u32> = a.into_iter().filter(|v| b.contains(v)).collect();
+                        mesh::sorted_face([f[0], f[1], f[2]])
+                    })
+                    .collect();
+                for (s, faces) in &filed {
+                    if s.iter().all(|t| held.contains(t)) {
+                        assert!(faces.iter().any(|f| crossed.contains(f)), "{pts:?}");
+                        checked += 1;
+                    }
+                }
+                true
+            };
+            crate::flipgraph::for_each_tetrahedralization(&pts, usize::MAX, &ctl, &mut each)
+                .unwrap();
+        }
+        assert!(checked > 200, "{checked} cuts checked");
     }
 }

@@ -28,10 +28,10 @@ use super::{ExactError, Formula};
 use crate::control::{Control, SatSolver};
 use crate::geom::{Point3, orient3d};
 use crate::mesh::sorted_face;
+use rustc_hash::FxHashMap as HashMap;
 use rustsat::instances::{BasicVarManager, ManageVars};
 use rustsat::solvers::{Solve, SolverResult};
 use rustsat::types::{Clause, Lit, TernaryVal};
-use std::collections::HashMap;
 
 /// What a search for a Hamiltonian path found.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -91,7 +91,18 @@ pub(crate) fn graph_path(adj: &[Vec<u32>], ctl: &Control, cuts: &mut u64) -> Pat
 /// A tetrahedralization of the hull of `points` using every point, with its tetrahedra
 /// (positively oriented) in an order where each shares a triangle with the next, by SAT
 /// over every tetrahedralization at once (see the module docs); `cuts` counts the cuts
-/// added. Not certified here: the caller certifies what it prints.
+/// added. Not certified here: the caller certifies what it prints
+/// ([`crate::dualpath::hamiltonian`] does).
+///
+/// ```
+/// use tetrakit::control::Control;
+/// use tetrakit::exact::{PathFound, hamiltonian_tetrahedralization};
+/// let cube: Vec<[f64; 3]> = (0..8).map(|i| [(i & 1) as f64, (i >> 1 & 1) as f64, (i >> 2) as f64]).collect();
+/// let mut cuts = 0;
+/// let PathFound::Path(tets) = hamiltonian_tetrahedralization(&cube, &Control::new(), &mut cuts).unwrap() else { panic!() };
+/// assert!(tetrakit::mesh::certify_hull(&cube, &tets).is_ok());
+/// assert!(tets.windows(2).all(|w| w[1].iter().filter(|v| w[0].contains(v)).count() == 3));
+/// ```
 pub fn hamiltonian_tetrahedralization(
     points: &[Point3],
     ctl: &Control,
@@ -109,24 +120,11 @@ pub fn hamiltonian_tetrahedralization(
     } = f;
     let mut solver = crate::control::sat_solver(ctl);
     solver.add_cnf(cnf).expect("batsat accepts clauses");
-    // A path variable per inner triangle: it joins the chosen candidates on its sides.
-    let mut crossing: HashMap<[u32; 3], Lit> = HashMap::new();
-    for (key, tri) in &cand.triangles {
-        if tri.on_hull || tri.pos.is_empty() || tri.neg.is_empty() {
-            continue;
-        }
-        let y = vars.new_lit();
-        for side in [&tri.pos, &tri.neg] {
-            let mut c: Vec<Lit> = side.iter().map(|&t| tet_lits[t as usize]).collect();
-            c.push(!y);
-            add(&mut solver, &c);
-        }
-        crossing.insert(*key, y);
-    }
-    let faces = |t: [u32; 4]| FACES.map(|f| sorted_face(f.map(|i| t[i])));
+    let crossing = crossings(&cand, &tet_lits, &mut solver, &mut vars);
     let incident: Vec<Vec<Lit>> = (cand.tets.iter())
         .map(|&t| {
-            faces(t)
+            let faces = faces(t);
+            faces
                 .iter()
                 .filter_map(|f| crossing.get(f).copied())
                 .collect()
@@ -138,44 +136,7 @@ pub fn hamiltonian_tetrahedralization(
         let chosen: Vec<u32> = (0..tet_lits.len() as u32)
             .filter(|&t| is_true(solver, tet_lits[t as usize]))
             .collect();
-        let mut by_face: HashMap<[u32; 3], Vec<u32>> = HashMap::new();
-        for (i, &t) in chosen.iter().enumerate() {
-            for f in faces(cand.tets[t as usize]) {
-                by_face.entry(f).or_default().push(i as u32);
-            }
-        }
-        let used: Vec<[u32; 2]> = (by_face.iter())
-            .filter(|(f, _)| crossing.get(*f).is_some_and(|&y| is_true(solver, y)))
-            .filter_map(|(_, ts)| match ts[..] {
-                [a, b] => Some([a, b]),
-                _ => None,
-            })
-            .collect();
-        let (label, parts) = components(chosen.len(), &used);
-        if parts == 1 {
-            return Model::Path(
-                walk(chosen.len(), &used)
-                    .iter()
-                    .map(|&i| chosen[i as usize])
-                    .collect(),
-            );
-        }
-        let mut cut: Vec<Vec<Lit>> = vec![Vec::new(); parts];
-        for (f, ts) in &by_face {
-            if let ([a], Some(&y)) = (&ts[..], crossing.get(f)) {
-                cut[label[*a as usize] as usize].push(y);
-            } else if let [a, b] = ts[..] {
-                let (la, lb) = (label[a as usize], label[b as usize]);
-                if la != lb {
-                    cut[la as usize].push(crossing[f]);
-                    cut[lb as usize].push(crossing[f]);
-                }
-            }
-        }
-        for (i, &t) in chosen.iter().enumerate() {
-            cut[label[i] as usize].push(!tet_lits[t as usize]);
-        }
-        Model::Cuts(cut)
+        read_tetrahedra(solver, &chosen, (&cand.tets, &tet_lits), &crossing)
     });
     Ok(match found {
         PathFound::Path(order) => PathFound::Path(
@@ -187,6 +148,83 @@ pub fn hamiltonian_tetrahedralization(
         PathFound::None => PathFound::None,
         PathFound::Stopped => PathFound::Stopped,
     })
+}
+
+/// A path variable per inner triangle (in a fixed order, so that every run gives the
+/// same answer), implying a chosen candidate on each side.
+fn crossings(
+    cand: &super::Candidates,
+    tet_lits: &[Lit],
+    solver: &mut SatSolver,
+    vars: &mut BasicVarManager,
+) -> HashMap<[u32; 3], Lit> {
+    let mut inner: Vec<(&[u32; 3], &super::encode::TriangleUse)> = (cand.triangles.iter())
+        .filter(|(_, tri)| !tri.on_hull && !tri.pos.is_empty() && !tri.neg.is_empty())
+        .collect();
+    inner.sort_unstable_by_key(|&(key, _)| *key);
+    let mut crossing = HashMap::default();
+    for (key, tri) in inner {
+        let y = vars.new_lit();
+        for side in [&tri.pos, &tri.neg] {
+            let mut c: Vec<Lit> = side.iter().map(|&t| tet_lits[t as usize]).collect();
+            c.push(!y);
+            add(solver, &c);
+        }
+        crossing.insert(*key, y);
+    }
+    crossing
+}
+
+/// One model over tetrahedralizations read as a graph on the `chosen` candidates,
+/// joined where the path crosses the face two of them share: a path (of candidates),
+/// or each component's cut: one of its members is not chosen, or the path crosses a face
+/// it shares with a chosen tetrahedron outside it.
+fn read_tetrahedra(
+    solver: &SatSolver,
+    chosen: &[u32],
+    (tets, tet_lits): (&[[u32; 4]], &[Lit]),
+    crossing: &HashMap<[u32; 3], Lit>,
+) -> Model<u32> {
+    let mut by_face: HashMap<[u32; 3], Vec<u32>> = HashMap::default();
+    for (i, &t) in chosen.iter().enumerate() {
+        for f in faces(tets[t as usize]) {
+            by_face.entry(f).or_default().push(i as u32);
+        }
+    }
+    let shared = || {
+        (by_face.iter()).filter_map(|(f, ts)| match ts[..] {
+            [a, b] => Some((crossing[f], [a, b])),
+            _ => None,
+        })
+    };
+    let used: Vec<[u32; 2]> = shared()
+        .filter(|&(y, _)| is_true(solver, y))
+        .map(|(_, ab)| ab)
+        .collect();
+    let (label, parts) = components(chosen.len(), &used);
+    if parts == 1 {
+        let order = walk(chosen.len(), &used);
+        return Model::Path(order.iter().map(|&i| chosen[i as usize]).collect());
+    }
+    let mut cut: Vec<Vec<Lit>> = vec![Vec::new(); parts];
+    for (i, &t) in chosen.iter().enumerate() {
+        cut[label[i] as usize].push(!tet_lits[t as usize]);
+    }
+    for (y, [a, b]) in shared() {
+        let (la, lb) = (label[a as usize], label[b as usize]);
+        if la != lb {
+            cut[la as usize].push(y);
+            cut[lb as usize].push(y);
+        }
+    }
+    #[cfg(test)]
+    tests::record(&cut, (tets, tet_lits), crossing);
+    Model::Cuts(cut)
+}
+
+/// The faces of a tetrahedron, as sorted triples.
+fn faces(t: [u32; 4]) -> [[u32; 3]; 4] {
+    FACES.map(|f| sorted_face(f.map(|i| t[i])))
 }
 
 /// The faces of a tetrahedron `[a, b, c, d]`, by position.
@@ -357,6 +395,43 @@ pub(crate) fn at_most_two(lits: &[Lit], vars: &mut BasicVarManager, add: &mut im
 pub(crate) mod tests {
     use super::*;
     use crate::rng::Rng;
+    use std::cell::RefCell;
+
+    /// A cut in geometric terms: its tetrahedra `S` (sorted) and the faces that leave it.
+    pub(crate) type Cut = (Vec<[u32; 4]>, Vec<[u32; 3]>);
+
+    thread_local! {
+        static CUTS: RefCell<Vec<Cut>> = const { RefCell::new(Vec::new()) };
+    }
+
+    /// Files the cut clauses of one model (called by `read_tetrahedra`), read back into
+    /// the tetrahedra whose literals they negate and the faces whose crossing they ask.
+    pub(super) fn record(
+        cut: &[Vec<Lit>],
+        (tets, tet_lits): (&[[u32; 4]], &[Lit]),
+        crossing: &HashMap<[u32; 3], Lit>,
+    ) {
+        let tet_of: HashMap<Lit, [u32; 4]> = (tet_lits.iter().zip(tets))
+            .map(|(&x, &t)| {
+                let mut s = t;
+                s.sort_unstable();
+                (!x, s)
+            })
+            .collect();
+        let face_of: HashMap<Lit, [u32; 3]> = crossing.iter().map(|(&f, &y)| (y, f)).collect();
+        CUTS.with(|c| {
+            c.borrow_mut().extend(cut.iter().map(|clause| {
+                let s = clause.iter().filter_map(|l| tet_of.get(l).copied());
+                let f = clause.iter().filter_map(|l| face_of.get(l).copied());
+                (s.collect(), f.collect())
+            }))
+        });
+    }
+
+    /// The cuts filed on this thread since the last call.
+    pub(crate) fn take_cuts() -> Vec<Cut> {
+        CUTS.with(|c| std::mem::take(&mut *c.borrow_mut()))
+    }
 
     /// Is `p` a path through every node of `adj`?
     pub(crate) fn is_path(adj: &[Vec<u32>], p: &[u32]) -> bool {
