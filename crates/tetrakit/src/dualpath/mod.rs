@@ -12,9 +12,10 @@
 //! by SAT (`exact::path`: a path, or a proof that this cone has none, counted
 //! in `cones_refuted`), apex after apex, those whose cone has the fewest tetrahedra
 //! first. Cones can fail: a vertex with three neighbours of degree 3 has a base whose
-//! dual has three leaves (on a Kleetope every original vertex does), and Chin, Ding and
-//! Wang, and Escalona, Fabila-Monroy and Urrutia built polytopes of 92 and 84 points
-//! where every cone fails.
+//! dual has three leaves (on a Kleetope every original vertex does). Chin, Ding and
+//! Wang report a convex polyhedron of 92 vertices on which pulling gives no such path,
+//! and Escalona, Fabila-Monroy and Urrutia a set of 84 points with no Hamiltonian
+//! tetrahedralization whose tetrahedra all share a vertex.
 //!
 //! An apex is *eligible* when every point on a facet at `v` also lies on a facet away
 //! from `v`: a point inside a facet at `v`, or on an edge through `v`, would be left out
@@ -174,7 +175,8 @@ pub struct HamiltonianOutcome {
     pub apexes_tried: usize,
     /// Search steps over all apexes.
     pub steps: u64,
-    /// Cuts the SAT search added over all apexes (see [`PathOptions::budget`]).
+    /// Cuts the SAT searches added: the cones' (past [`PathOptions::budget`]) and, when
+    /// it ran, the search over every tetrahedralization's.
     pub cuts: u64,
     /// Apexes whose cone has no Hamiltonian dual path, proven by SAT.
     pub cones_refuted: usize,
