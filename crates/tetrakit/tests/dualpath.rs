@@ -28,14 +28,17 @@ fn check(pts: &[Point3], tets: &[[u32; 4]]) {
     assert!(report.problems.is_empty(), "{:?}", report.problems.first());
 }
 
+/// The convex polytopes the tests draw from.
+const FAMILIES: [Distribution3; 3] = [
+    Distribution3::Convex,
+    Distribution3::Cylinder,
+    Distribution3::LatticeHull,
+];
+
 #[test]
 fn every_family_gets_a_path() {
     let mut found = 0;
-    for dist in [
-        Distribution3::Convex,
-        Distribution3::Cylinder,
-        Distribution3::LatticeHull,
-    ] {
+    for dist in FAMILIES {
         for seed in 0..40u64 {
             let n = 6 + (seed as usize * 7) % 55;
             let pts = points3d(dist, n, seed);
@@ -124,11 +127,7 @@ fn sat_over_every_tetrahedralization_finds_a_path() {
         ..PathOptions::default()
     };
     let ctl = Control::new();
-    for dist in [
-        Distribution3::Convex,
-        Distribution3::Cylinder,
-        Distribution3::LatticeHull,
-    ] {
+    for dist in FAMILIES {
         for seed in 0..10u64 {
             let n = 5 + (seed as usize * 11) % 26;
             let pts = points3d(dist, n, seed);
@@ -157,11 +156,7 @@ fn the_enumeration_finds_a_path_where_the_cones_are_not_asked() {
     };
     let ctl = Control::new();
     let mut sets: Vec<Vec<Point3>> = Vec::new();
-    for dist in [
-        Distribution3::Convex,
-        Distribution3::Cylinder,
-        Distribution3::LatticeHull,
-    ] {
+    for dist in FAMILIES {
         for seed in 0..12u64 {
             sets.push(points3d(dist, 5 + (seed as usize % 5), seed));
         }

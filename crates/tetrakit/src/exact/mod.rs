@@ -492,14 +492,7 @@ fn search(
     if stats.obstacle.is_some() {
         return Ok((Outcome::Infeasible, stats));
     }
-    let mut solver = crate::control::sat_solver(ctl);
-    let Formula {
-        cand,
-        cnf,
-        mut vars,
-        tet_lits,
-    } = f;
-    solver.add_cnf(cnf).expect("batsat accepts clauses");
+    let (cand, mut solver, mut vars, tet_lits) = f.into_solver(ctl);
     let edge_lits: Vec<Lit> = cand
         .interior_edges
         .iter()
@@ -608,6 +601,14 @@ struct Formula {
 }
 
 impl Formula {
+    /// The candidates, a solver (stopped by `ctl`) holding the formula, its variables
+    /// and the candidates' literals.
+    fn into_solver(self, ctl: &Control) -> (Candidates, Solver, BasicVarManager, Vec<Lit>) {
+        let mut solver = crate::control::sat_solver(ctl);
+        solver.add_cnf(self.cnf).expect("batsat accepts clauses");
+        (self.cand, solver, self.vars, self.tet_lits)
+    }
+
     /// `None` when `ctl` stopped the enumeration.
     fn new(domain: Domain, edges: Edges, ctl: &Control) -> Result<Option<Formula>, ExactError> {
         check_size(domain, edges)?;

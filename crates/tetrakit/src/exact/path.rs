@@ -112,14 +112,7 @@ pub fn hamiltonian_tetrahedralization(
     let Some(f) = Formula::new(domain, super::Edges::default(), ctl)? else {
         return Ok(PathFound::Stopped);
     };
-    let Formula {
-        cand,
-        cnf,
-        mut vars,
-        tet_lits,
-    } = f;
-    let mut solver = crate::control::sat_solver(ctl);
-    solver.add_cnf(cnf).expect("batsat accepts clauses");
+    let (cand, mut solver, mut vars, tet_lits) = f.into_solver(ctl);
     let crossing = crossings(&cand, &tet_lits, &mut solver, &mut vars);
     let incident: Vec<Vec<Lit>> = (cand.tets.iter())
         .map(|&t| {
