@@ -177,8 +177,8 @@ struct TetrahedralizeArgs {
     unique: bool,
     /// For a convex polytope's points: a tetrahedralization whose tetrahedra can be
     /// ordered so that each shares a triangle with the next (a Hamiltonian path of the
-    /// dual graph, thesis ch. 6); --output writes them in that order. Exit 3 when none is
-    /// found.
+    /// dual graph, thesis ch. 6); --output writes them in that order. Exit 1 with a
+    /// witness when no tetrahedralization has one (every one searched), 3 when undecided.
     #[arg(long, conflicts_with_all = ["minimal", "unique", "proof"])]
     hamiltonian: bool,
     /// Give up after this many seconds (exit 3 with the best bounds).

@@ -131,9 +131,10 @@ pub fn hamiltonian(
     let run = Run::new(time_limit, 0, 1);
     let o = tetrakit::dualpath::hamiltonian(&input.points, &PathOptions::default(), &run.ctl)
         .map_err(|e| match e {
-            PathError::Uncertified(_) | PathError::Internal(_) | PathError::Enumeration(_) => {
-                CliError::new(e)
-            }
+            PathError::Uncertified(_)
+            | PathError::Internal(_)
+            | PathError::Enumeration(_)
+            | PathError::Exact(_) => CliError::new(e),
             PathError::Inside { index } => {
                 let line = input.point_lines.get(index as usize).copied().unwrap_or(0);
                 let what = tetrakit::numbering::renumber_text(&e.to_string(), input.index_base);
