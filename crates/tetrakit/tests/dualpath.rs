@@ -189,3 +189,25 @@ fn the_enumeration_finds_a_path_where_the_cones_are_not_asked() {
         assert_eq!(count.unwrap(), (None, all.len()));
     }
 }
+
+/// The octahedron's Kleetope (a pyramid on each facet): each octahedron vertex has
+/// three neighbours of degree 3, so its cone's base has three leaves and no path; SAT
+/// proves it for all six, and a cone from a pyramid's apex has one.
+#[test]
+fn a_kleetope_refutes_the_cones_of_its_original_vertices() {
+    let mut klee: Vec<Point3> = (0..6)
+        .map(|i| {
+            let mut p = [0.0; 3];
+            p[i % 3] = if i < 3 { 1.0 } else { -1.0 };
+            p
+        })
+        .collect();
+    klee.extend((0..8).map(|s| [0, 1, 2].map(|k| if s >> k & 1 == 1 { 0.4 } else { -0.4 })));
+    let o = hamiltonian(&klee, &PathOptions::default(), &Control::new()).unwrap();
+    assert_eq!(
+        (o.verdict, o.found_by, o.cones_refuted),
+        (Verdict::Yes, Some("cone"), 6)
+    );
+    assert!(o.apex.is_some_and(|v| v >= 6), "{:?}", o.apex);
+    check(&klee, &o.tets);
+}
