@@ -211,3 +211,31 @@ fn a_kleetope_refutes_the_cones_of_its_original_vertices() {
     assert!(o.apex.is_some_and(|v| v >= 6), "{:?}", o.apex);
     check(&klee, &o.tets);
 }
+
+/// Four points: one tetrahedron, a path of one, by every route.
+#[test]
+fn one_tetrahedron_is_a_path_by_every_route() {
+    let tet: Vec<Point3> = vec![
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [0.0, 0.0, 1.0],
+    ];
+    let defaults = PathOptions::default();
+    let routes = [
+        defaults,
+        PathOptions {
+            cones: false,
+            ..defaults
+        },
+        PathOptions {
+            cones: false,
+            enumerate_up_to: 0,
+            ..defaults
+        },
+    ];
+    for opts in routes {
+        let o = hamiltonian(&tet, &opts, &Control::new()).unwrap();
+        assert_eq!((o.verdict, o.tets.len()), (Verdict::Yes, 1), "{opts:?}");
+    }
+}

@@ -12,7 +12,9 @@
 //!
 //! **Clauses.** Every (chosen) node has exactly two of its edges and its end literal
 //! (an inner node two edges, an end one); at most two ends and at least one. A model is
-//! then one path and any number of cycles, disjoint, covering every (chosen) node.
+//! then one path and any number of cycles, disjoint, covering every (chosen) node. A
+//! path of one node (a graph of one node; four points, whose one tetrahedralization is
+//! one tetrahedron) is answered before any clause.
 //!
 //! **Cuts, added lazily.** For each component `S` of a model other than the whole,
 //! some edge leaving `S` is on the path (or, over tetrahedralizations, some member of
@@ -108,6 +110,11 @@ pub fn hamiltonian_tetrahedralization(
     ctl: &Control,
     cuts: &mut u64,
 ) -> Result<PathFound<[u32; 4]>, ExactError> {
+    if points.len() == 4 && crate::geom::affine_dimension(points) == 3 {
+        // The one tetrahedralization is one tetrahedron: a path of one node, which the
+        // degree clauses (two ends, or two edges) do not describe.
+        return Ok(PathFound::Path(vec![oriented(points, [0, 1, 2, 3])]));
+    }
     let domain = super::Domain::Points(points);
     let Some(f) = Formula::new(domain, super::Edges::default(), ctl)? else {
         return Ok(PathFound::Stopped);
