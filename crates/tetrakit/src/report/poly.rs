@@ -221,17 +221,24 @@ pub fn hamiltonian_text(o: &HamiltonianOutcome, seconds: f64) -> String {
         ),
         None => String::new(),
     };
+    let refuted = match o.cones_refuted {
+        0 => String::new(),
+        k => format!(" ({k} cones before it proven by SAT to have none)"),
+    };
     let _ = match (o.verdict, o.apex, &o.witness) {
         (Verdict::Yes, Some(v), _) => writeln!(
             s,
-            "YES: {} tetrahedra in a Hamiltonian dual path (each shares a triangle with the next), a cone from vertex {v}; {ordinary}",
+            "YES: {} tetrahedra in a Hamiltonian dual path (each shares a triangle with the next), a cone from vertex {v}{refuted}; {ordinary}",
             o.tetrahedra
         ),
         (Verdict::Yes, None, _) => writeln!(
             s,
-            "YES: {} tetrahedra in a Hamiltonian dual path (each shares a triangle with the next), found by {} over every tetrahedralization ({} of {} cones refuted); {ordinary}",
+            "YES: {} tetrahedra in a Hamiltonian dual path (each shares a triangle with the next), found {} over every tetrahedralization ({} of {} cones refuted); {ordinary}",
             o.tetrahedra,
-            o.found_by.unwrap_or("search"),
+            match o.found_by {
+                Some("sat") => "by SAT",
+                _ => "by enumeration",
+            },
             o.cones_refuted,
             o.apexes
         ),
