@@ -464,9 +464,10 @@ impl<'a> Surface<'a> {
             let cap = cap_planes(&around, set.len());
             // Worth its hull only when the candidates outnumber the ring (thousands
             // under a star spanning the shell, on arcs; not on a prism's cap polygon).
-            let within = match candidates.len() > ring.len() {
-                true => hull_planes(&around[..ring.len()]),
-                false => Vec::new(),
+            let within = if candidates.len() > ring.len() {
+                hull_planes(&around[..ring.len()])
+            } else {
+                Vec::new()
             };
             let p = |v: u32| &self.pts[v as usize];
             candidates.retain(|&v| {
