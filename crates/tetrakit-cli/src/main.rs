@@ -358,8 +358,8 @@ enum ShellMethod {
     /// Greedy bigcaps (§4.2–4.3).
     Bigcap,
     /// BIGCAP-REMOVE: Lemma 4.1 checked exactly first (exit 1 with a witness where it
-    /// fails), then Steps 1–3 and 5 (S-bigcaps over the chains of P_a; Step 3a greedy,
-    /// Step 6 left to caps), refused S-bigcaps repaired.
+    /// fails), then Steps 1–7 (S-bigcaps over the chains of P_a, Step 3a by exact search
+    /// within a budget, Step 6's chains of P_b), refused S-bigcaps repaired.
     Thesis,
 }
 

@@ -98,7 +98,7 @@ impl Hull3 {
         self.facet_planes.len()
     }
 
-    /// Facets containing point `i` (empty for interior points).
+    /// Facets containing point `i`, sorted (empty for interior points).
     pub fn facets_of(&self, i: usize) -> &[u32] {
         if self.facet_start.is_empty() {
             return &[];
@@ -114,11 +114,15 @@ impl Hull3 {
     /// A facet containing all three points, if any: then triangle `abc` lies on the hull
     /// boundary.
     pub fn common_facet(&self, a: usize, b: usize, c: usize) -> Option<u32> {
-        let (fb, fc) = (self.facets_of(b), self.facets_of(c));
-        self.facets_of(a)
+        // Each list is sorted: the shortest is scanned, the others searched (a corner of
+        // a fan, such as a bent arc's end, is on tens of thousands of facets).
+        let mut lists = [self.facets_of(a), self.facets_of(b), self.facets_of(c)];
+        lists.sort_unstable_by_key(|l| l.len());
+        let [short, x, y] = lists;
+        short
             .iter()
             .copied()
-            .find(|f| fb.contains(f) && fc.contains(f))
+            .find(|f| x.binary_search(f).is_ok() && y.binary_search(f).is_ok())
     }
 
     /// Points lying on each edge of the polytope, sorted along the edge: consecutive
@@ -301,36 +305,74 @@ impl FacetGrid {
             let scale: f64 = (0..3)
                 .map(|k| hi[k].abs().max(lo[k].abs()))
                 .fold(0.0, f64::max);
-            let pad =
-                1e-6 * nn * (scale + 1.0) + 1e-6 * nn * size.iter().fold(0.0f64, |m, s| m.max(*s));
+            // The rounding of `n` is about `ε |u| |w|`, which a thin triangle's `|n|` need
+            // not dominate: the pad covers both.
+            let uw = u.iter().fold(0.0f64, |m, x| m.max(x.abs()))
+                * w.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+            let pad = 1e-6
+                * (nn + 1e-4 * uw)
+                * (scale + 1.0 + size.iter().fold(0.0f64, |m, s| m.max(*s)));
             // The same (monotone) cell formula as `candidates`, so a point inside the box
             // is in a cell of this range.
             let cell_of = |x: f64, k: usize| (((x - lo[k]) * inv[k]) as usize).min(res - 1);
             let (blo, bhi) = boxes[fi];
             let range: [std::ops::RangeInclusive<usize>; 3] =
                 std::array::from_fn(|k| cell_of(blo[k], k)..=cell_of(bhi[k], k));
-            let cells_in_box = range[0].clone().flat_map(|x| {
-                let r2 = range[2].clone();
-                range[1]
-                    .clone()
-                    .flat_map(move |y| r2.clone().map(move |z| [x, y, z]))
-            });
-            for idx in cells_in_box {
-                let cell = (idx[0] * res + idx[1]) * res + idx[2];
-                let list = &mut per_cell[cell];
-                // Signed distances (times |n|) of the cell's corners from the plane.
-                let (mut dmin, mut dmax) = (0.0f64, 0.0f64);
-                for k in 0..3 {
-                    // The cell, widened far beyond the rounding of the cell index computed
-                    // for a point (a point may be filed one ulp across a cell boundary).
-                    let margin = 1e-6 * size[k] + 1e-9 * scale;
-                    let c0 = lo[k] + idx[k] as f64 * size[k] - a[k] - margin;
-                    let c1 = c0 + size[k] + 2.0 * margin;
-                    dmin += (n[k] * c0).min(n[k] * c1);
-                    dmax += (n[k] * c0).max(n[k] * c1);
+            // The cells of each column along the normal's largest axis `d` that the
+            // plane can meet (widened by a cell and the pad), not the whole box: a long
+            // facet's box is most of the grid.
+            let d = (0..3)
+                .max_by(|&x, &y| n[x].abs().total_cmp(&n[y].abs()))
+                .unwrap_or(2);
+            let (i, j) = ((d + 1) % 3, (d + 2) % 3);
+            let widened = |k: usize, c: usize| {
+                let margin = 1e-6 * size[k] + 1e-9 * scale;
+                let c0 = lo[k] + c as f64 * size[k] - margin;
+                (c0, c0 + size[k] + 2.0 * margin)
+            };
+            let column = |x: usize, y: usize| -> std::ops::RangeInclusive<usize> {
+                if n[d] == 0.0 {
+                    return range[d].clone();
                 }
-                if dmin <= pad && dmax >= -pad {
-                    list.push(fi as u32);
+                let ((x0, x1), (y0, y1)) = (widened(i, x), widened(j, y));
+                let heights = [(x0, y0), (x0, y1), (x1, y0), (x1, y1)]
+                    .map(|(u, v)| a[d] - (n[i] * (u - a[i]) + n[j] * (v - a[j])) / n[d]);
+                let slack = size[d] + 1e-9 * scale + pad / n[d].abs();
+                if heights.iter().any(|h| h.is_nan()) {
+                    return range[d].clone();
+                }
+                // Below the grid a cell index is 0, above it `res − 1` (saturating).
+                let from = cell_of(
+                    heights.iter().fold(f64::INFINITY, |m, &h| m.min(h)) - slack,
+                    d,
+                );
+                let to = cell_of(
+                    heights.iter().fold(f64::NEG_INFINITY, |m, &h| m.max(h)) + slack,
+                    d,
+                );
+                from.max(*range[d].start())..=to.min(*range[d].end())
+            };
+            for x in range[i].clone() {
+                for y in range[j].clone() {
+                    for z in column(x, y) {
+                        let mut idx = [0; 3];
+                        (idx[i], idx[j], idx[d]) = (x, y, z);
+                        let cell = (idx[0] * res + idx[1]) * res + idx[2];
+                        // Signed distances (times |n|) of the cell's corners from the plane.
+                        let (mut dmin, mut dmax) = (0.0f64, 0.0f64);
+                        for k in 0..3 {
+                            // The cell, widened far beyond the rounding of the cell index
+                            // computed for a point (a point may be filed one ulp across a
+                            // cell boundary).
+                            let (c0, c1) = widened(k, idx[k]);
+                            let (c0, c1) = (c0 - a[k], c1 - a[k]);
+                            dmin += (n[k] * c0).min(n[k] * c1);
+                            dmax += (n[k] * c0).max(n[k] * c1);
+                        }
+                        if dmin <= pad && dmax >= -pad {
+                            per_cell[cell].push(fi as u32);
+                        }
+                    }
                 }
             }
         }
@@ -762,6 +804,17 @@ mod tests {
                     })
                     .collect();
                 assert_eq!(h.facets_of(i), &exact[..], "point {i} {x:?}");
+            }
+            // The common facet of three points is the least facet on all three.
+            let on: Vec<usize> = (0..set.len()).filter(|&i| h.on_boundary(i)).collect();
+            for _ in 0..3000 {
+                let [a, b, c] = [0; 3].map(|_| on[rng.below(on.len())]);
+                let least = h
+                    .facets_of(a)
+                    .iter()
+                    .copied()
+                    .find(|f| h.facets_of(b).contains(f) && h.facets_of(c).contains(f));
+                assert_eq!(h.common_facet(a, b, c), least, "{a} {b} {c}");
             }
         }
     }

@@ -24,7 +24,7 @@
 //! the theorem's claim fails the ledger says so with the heaviest vertex (Bern disks,
 //! where minimum-degree caps are `Θ(n log n)`, and twisted prisms at n = 10^5).
 
-use crate::geom::{Hull3, Point3, orient3d};
+use crate::geom::Hull3;
 use rustc_hash::FxHashSet as HashSet;
 use std::ops::Range;
 
@@ -80,8 +80,6 @@ pub(super) struct Removal<'r> {
     pub records: &'r [Record],
     /// `P`, to tell its edges.
     pub outer: &'r Hull3,
-    /// The shell's points.
-    pub points: &'r [Point3],
     /// The surface it ended with: `∂Q`.
     pub last: &'r [[u32; 3]],
     /// The vertices on `∂P` at the start.
@@ -96,25 +94,24 @@ pub(super) fn ledger(r: Removal) -> Ledger {
         .flat_map(|t| [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])])
         .map(|(a, b)| (a.min(b), a.max(b)))
         .collect();
-    // `ab` is on ∂P when one end lies in the plane of a facet at the other: tested from
-    // the end with fewer facets (a tip on a long arc has thousands).
+    // `ab` is on ∂P when both ends are on one facet of `P` (the facet lists are exact
+    // and sorted; the shorter is searched in the longer: a tip on a long arc is on
+    // thousands).
     let on_p = |a: u32, b: u32| {
         let (fa, fb) = (r.outer.facets_of(a as usize), r.outer.facets_of(b as usize));
-        let (other, facets) = if fa.len() <= fb.len() {
-            (b, fa)
+        let (short, long) = if fa.len() <= fb.len() {
+            (fa, fb)
         } else {
-            (a, fb)
+            (fb, fa)
         };
-        let p = |v: u32| &r.points[v as usize];
-        facets.iter().any(|&f| {
-            let [x, y, z] = r.outer.facet_planes[f as usize];
-            orient3d(p(x), p(y), p(z), p(other)) == 0
-        })
+        short.iter().any(|f| long.binary_search(f).is_ok())
     };
-    let mut charged: HashSet<(u32, u32)> = HashSet::default();
+    // Each edge is decided once: charged the first time it is met, unless it is on `∂P`
+    // or `∂Q`.
+    let mut met: HashSet<(u32, u32)> = HashSet::default();
     let mut take = |a: u32, b: u32| {
         let e = (a.min(b), a.max(b));
-        !on_q.contains(&e) && !on_p(a, b) && charged.insert(e)
+        met.insert(e) && !on_q.contains(&e) && !on_p(a, b)
     };
     let (tets, mut on_surface) = (r.tets, r.on_surface);
     let mut w = vec![0; on_surface.len()];

@@ -22,7 +22,7 @@
 //!   The lemma is false as stated: on 260 of 300 random small shells some tip's bigcap
 //!   is simple and not star-shaped from it, and [`lemma41::counterexample`] has 10
 //!   points. Where it fails the answer is the witness. Where it holds, BIGCAP-REMOVE's
-//!   Steps 1–3 and 5 run on the evolving hull (`Q_a`, `P_a`, `V_a^P`, the chains `C_a`,
+//!   Steps 1–7 run on the evolving hull (`Q_a`, `P_a`, `V_a^P`, the chains `C_a`,
 //!   `U_v^S` exact past `Q`, Step 3a's fewest tips by exact search within a budget,
 //!   Step 6's chains of `P_b` chord by chord), and an S-bigcap the surface refuses (not star-shaped from
 //!   its tip: Lemma 4.1 failing later in the run) is **repaired**, grown from its tip
@@ -492,7 +492,6 @@ fn ledger_of(shell: &Shell, r: &removal::Removed, surface: &Surface) -> Ledger {
         tets: &r.tets,
         records: &r.records,
         outer: &shell.hull,
-        points: &shell.points,
         last: &surface.triangles(),
         on_surface: on_p,
     })

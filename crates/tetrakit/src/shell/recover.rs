@@ -20,15 +20,10 @@ use crate::geom::{
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use spade::{ConstrainedDelaunayTriangulation, Triangulation};
 
-/// Q's edges, by vertex (`edges[v]` are the vertices joined to `v` by an edge of `Q`),
-/// and a point strictly inside `Q` (for the rays of [`super::hidden::Hidden`]).
+/// Q's edges, by vertex (`edges[v]` are the vertices joined to `v` by an edge of `Q`).
 #[derive(Debug, Default)]
 pub(super) struct QEdges {
     edges: HashMap<u32, Vec<u32>>,
-    /// The float centroid of Q's vertices when it is strictly inside `Q` (checked
-    /// exactly against every facet; not so only for a sliver thinner than the
-    /// coordinates resolve).
-    pub(super) centre: Option<Point3>,
 }
 
 impl QEdges {
@@ -36,13 +31,6 @@ impl QEdges {
     pub(super) fn new(pts: &[Point3], inner: &[u32]) -> QEdges {
         let coords: Vec<Point3> = inner.iter().map(|&v| pts[v as usize]).collect();
         let hull = crate::geom::Hull3::new(&coords);
-        let n = coords.len() as f64;
-        let c: Point3 = std::array::from_fn(|k| coords.iter().map(|p| p[k]).sum::<f64>() / n);
-        let strictly = hull.dimension == 3
-            && hull.triangles.iter().all(|t| {
-                let [a, b, d] = t.map(|k| &coords[k as usize]);
-                orient3d(a, b, d, &c) < 0
-            });
         // Every point is a corner of Q, so its edges are the triangle edges between two
         // facets.
         let mut by_vertex: HashMap<u32, Vec<u32>> = HashMap::default();
@@ -56,10 +44,7 @@ impl QEdges {
                 by_vertex.entry(b).or_default().push(a);
             }
         }
-        QEdges {
-            edges: by_vertex,
-            centre: strictly.then_some(c),
-        }
+        QEdges { edges: by_vertex }
     }
 
     /// Recovers in `tris` every edge of `Q` whose ends are both corners of `tris` and lie

@@ -5,11 +5,9 @@
 //! **Removing a vertex `v`** (a cap, §4.1). Let `L` be the link of `v` (its neighbours,
 //! a cycle) and `H' = CH(V(P̄) − v ∪ V(Q))` the new hull. The cap `P̄ − H'` lies in
 //! `CH(v ∪ L)`, so the only points that can appear on its bottom are `L` and the hidden
-//! inner vertices `C` in that region (a superset: those filed under the star's
-//! triangles, see [`Hidden`](super::hidden), inside the closed `CH(v ∪ L)`, tested
-//! exactly after its bounding box; on the bent arcs of BENCHMARKS.md this halves the
-//! points `K` is built on). Let
-//! `K = CH(L ∪ C) ⊆ H'`. Every facet of `H'` that `v` sees is a face of `K` (its
+//! inner vertices `C` in that region (in practice those in the closed `CH(v ∪ L)` and
+//! not strictly inside `CH(L)`, found in a tree of boxes, see [`Hidden`](super::hidden);
+//! any superset of inner vertices would do). Let `K = CH(L ∪ C) ⊆ H'`. Every facet of `H'` that `v` sees is a face of `K` (its
 //! vertices are in `L ∪ C`), and conversely a facet of `K` that `v` sees strictly lies on
 //! `∂H'` (a point of `K` that `v` sees is not in the interior of `H'`, else the segment
 //! from `v` would meet `∂H'` first, on a visible facet of `K`). So the bottom is the disk
@@ -29,7 +27,7 @@
 //! and is reported, and the caller tries another tip. The final mesh is certified anyway
 //! ([`crate::mesh::certify_shell`]).
 
-use super::hidden::Hidden;
+use super::hidden::{Hidden, Region};
 use super::recover::QEdges;
 use crate::geom::{Hull3, Plane, Point3, bounding_box, orient2d_drop, orient3d, projection_axis};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
@@ -45,6 +43,8 @@ pub(super) struct Surface<'a> {
     edge: HashMap<(u32, u32), u32>,
     /// Triangles by vertex (dead ones are dropped lazily).
     incident: Vec<Vec<u32>>,
+    /// The live triangles at each vertex (its degree), kept as triangles come and go.
+    live: Vec<u32>,
     /// Inner vertices not yet on the surface.
     pub(super) hidden: Hidden,
     /// `P` itself, to tell the surface's facets on `∂P` from those inside it.
@@ -109,18 +109,14 @@ impl<'a> Surface<'a> {
     /// it), with the inner vertices `hidden` below it.
     ///
     /// `on_outer` are the inner vertices that lie on `∂P` (on a facet or an edge of the
-    /// outer hull): they are vertices of the surface from the start. Refused when no
-    /// floating-point point lies strictly inside `Q` (a sliver thinner than the
-    /// coordinates resolve), which the rays of [`Hidden`] need.
+    /// outer hull): they are vertices of the surface from the start. Refused when a
+    /// facet of `P` cannot be triangulated with the inner vertices and edges on it.
     pub(super) fn new(
         pts: &'a [Point3],
         outer_hull: &'a Hull3,
         (hidden, on_outer): (&[u32], &[u32]),
         q_edges: &'a QEdges,
     ) -> Result<Surface<'a>, Refused> {
-        let centre = q_edges
-            .centre
-            .ok_or(Refused("no float point strictly inside Q"))?;
         let tris = q_edges
             .facet_triangles(pts, outer_hull, on_outer)
             .ok_or(Refused("a facet of P with inner vertices or edges on it"))?;
@@ -130,7 +126,8 @@ impl<'a> Surface<'a> {
             alive: Vec::new(),
             edge: HashMap::default(),
             incident: vec![Vec::new(); pts.len()],
-            hidden: Hidden::new(pts.len(), hidden, centre),
+            live: vec![0; pts.len()],
+            hidden: Hidden::new(pts, hidden),
             outer_hull,
             q_edges,
         };
@@ -140,51 +137,7 @@ impl<'a> Surface<'a> {
         for t in tris {
             s.add(t);
         }
-        // Nearby vertices one after the other, so that each walk starts close.
-        let mut order: Vec<u32> = hidden
-            .iter()
-            .copied()
-            .filter(|&v| s.hidden.is_hidden(v))
-            .collect();
-        order.sort_by_cached_key(|&v| direction_key(&pts[v as usize], &centre));
-        let mut at = 0;
-        for v in order {
-            let t = s.locate(v, at);
-            at = t.unwrap_or(at);
-            s.hidden.file(v, t);
-        }
         Ok(s)
-    }
-
-    /// The live triangle whose closed cone from the centre holds `v` (the surface
-    /// triangle the ray from the centre through `v` crosses), by a walk from `start`
-    /// across the edges `v` lies beyond (in a random order, so that it cannot cycle
-    /// forever), then by a scan of every triangle; `None` if none does (never, for a
-    /// vertex strictly inside the current hull).
-    fn locate(&self, v: u32, start: u32) -> Option<u32> {
-        let (c, x) = (&self.hidden.centre, &self.pts[v as usize]);
-        let p = |u: u32| &self.pts[u as usize];
-        let beyond = |t: [u32; 3], k: usize| orient3d(c, p(t[k]), p(t[(k + 1) % 3]), x) < 0;
-        let mut seed = (v as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
-        let mut t = start;
-        for _ in 0..4 * self.tris.len() + 64 {
-            if !self.alive[t as usize] {
-                break;
-            }
-            let tri = self.tris[t as usize];
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            let first = (seed % 3) as usize;
-            let across = (0..3).map(|j| (first + j) % 3).find(|&k| beyond(tri, k));
-            match across.and_then(|k| self.edge.get(&(tri[(k + 1) % 3], tri[k]))) {
-                Some(&n) => t = n,
-                None if across.is_none() => return Some(t),
-                None => break,
-            }
-        }
-        (0..self.tris.len() as u32)
-            .find(|&t| self.alive[t as usize] && (0..3).all(|k| !beyond(self.tris[t as usize], k)))
     }
 
     fn add(&mut self, t: [u32; 3]) {
@@ -194,6 +147,7 @@ impl<'a> Surface<'a> {
         for i in 0..3 {
             self.edge.insert((t[i], t[(i + 1) % 3]), id);
             self.incident[t[i] as usize].push(id);
+            self.live[t[i] as usize] += 1;
         }
     }
 
@@ -201,6 +155,7 @@ impl<'a> Surface<'a> {
         let t = self.tris[id as usize];
         self.alive[id as usize] = false;
         for i in 0..3 {
+            self.live[t[i] as usize] -= 1;
             let e = (t[i], t[(i + 1) % 3]);
             if self.edge.get(&e) == Some(&id) {
                 self.edge.remove(&e);
@@ -279,8 +234,8 @@ impl<'a> Surface<'a> {
     }
 
     /// The number of live triangles at `v` (its degree on the surface).
-    pub(super) fn degree(&mut self, v: u32) -> usize {
-        self.star(v).len()
+    pub(super) fn degree(&self, v: u32) -> usize {
+        self.live[v as usize] as usize
     }
 
     /// The neighbours of `v` on the surface.
@@ -350,7 +305,7 @@ impl<'a> Surface<'a> {
                 "the removed set surrounds a vertex it does not remove",
             ));
         }
-        let bottom = self.bottom(tip, (set, &region), &ring, &boundary)?;
+        let bottom = self.bottom(tip, set, &ring, &boundary)?;
         Ok(Cut { region, bottom })
     }
 
@@ -411,28 +366,47 @@ impl<'a> Surface<'a> {
             bottom,
             tets,
         } = piece;
-        let moved = self.hidden.take(&region);
         for t in region {
             self.kill(t);
         }
-        let first = self.tris.len() as u32;
         for t in bottom {
             for v in t {
                 self.hidden.expose(v);
             }
             self.add(t);
         }
-        // Each walk starts where the last ended: the moved vertices were filed in a
-        // spatial order, and stay in it.
-        let mut at = first.min(self.tris.len() as u32 - 1);
-        for v in moved {
-            if self.hidden.is_hidden(v) {
-                let t = self.locate(v, at);
-                at = t.unwrap_or(at);
-                self.hidden.file(v, t);
-            }
-        }
         tets
+    }
+
+    /// The hidden inner vertices that can be on the bottom of removing the last
+    /// `removed` points of `around` (the ring, then the removed set): those in the
+    /// region of [`Hidden::within`]. The exact planes cost small hulls, about what as
+    /// many candidates cost the bottom's hull, so they are built only when the box
+    /// alone holds more than the ring (and 16): `CH(tip ∪ ring)`'s first, then, when the
+    /// candidates still outnumber the ring (thousands under a star spanning the shell,
+    /// on arcs; not on a prism's cap polygon), `CH(ring)`'s.
+    fn candidates(&self, around: &[Point3], removed: usize) -> Vec<u32> {
+        let (lo, hi) = bounding_box(around);
+        let ring = around.len() - removed;
+        let mut region = Region {
+            lo,
+            hi,
+            within: &[],
+            ring: &[],
+        };
+        if let Some(c) = self.hidden.within(self.pts, &region, ring.max(16)) {
+            return c;
+        }
+        let cap = cap_planes(around, removed);
+        region.within = &cap;
+        if let Some(c) = self.hidden.within(self.pts, &region, ring) {
+            return c;
+        }
+        let inside = hull_planes(&around[..ring]);
+        region.ring = &inside;
+        self.hidden
+            .within(self.pts, &region, usize::MAX)
+            .unwrap_or_default()
     }
 
     /// The new surface inside the region bounded by `boundary` (directed as in the
@@ -441,7 +415,7 @@ impl<'a> Surface<'a> {
     fn bottom(
         &self,
         tip: u32,
-        (set, region): (&[u32], &[u32]),
+        set: &[u32],
         ring: &[u32],
         boundary: &[(u32, u32)],
     ) -> Result<Vec<[u32; 3]>, Refused> {
@@ -450,31 +424,7 @@ impl<'a> Surface<'a> {
             .chain(set)
             .map(|&v| self.pts[v as usize])
             .collect();
-        let (lo, hi) = bounding_box(&around);
-        let in_box = |v: &u32| {
-            let x = &self.pts[*v as usize];
-            (0..3).all(|k| lo[k] <= x[k] && x[k] <= hi[k])
-        };
-        let mut candidates: Vec<u32> = self.hidden.under(region);
-        candidates.retain(in_box);
-        // The exact tests cost small hulls: worth it when the box leaves many. A point
-        // outside `CH(tip ∪ ring)` is not under the piece; one strictly inside
-        // `CH(ring)` is strictly inside the hull below, so it is no vertex of it.
-        if candidates.len() > 16 {
-            let cap = cap_planes(&around, set.len());
-            // Worth its hull only when the candidates outnumber the ring (thousands
-            // under a star spanning the shell, on arcs; not on a prism's cap polygon).
-            let within = if candidates.len() > ring.len() {
-                hull_planes(&around[..ring.len()])
-            } else {
-                Vec::new()
-            };
-            let p = |v: u32| &self.pts[v as usize];
-            candidates.retain(|&v| {
-                cap.iter().all(|h| h.side(p(v)) <= 0)
-                    && (within.is_empty() || within.iter().any(|h| h.side(p(v)) >= 0))
-            });
-        }
+        let candidates = self.candidates(&around, set.len());
         let mut local: Vec<u32> = ring.to_vec();
         local.extend(candidates);
         let coords: Vec<Point3> = local.iter().map(|&v| self.pts[v as usize]).collect();
@@ -665,18 +615,4 @@ fn locate(pts: &[Point3], t: &[u32; 3], x: &Point3) -> Option<Place> {
         1 => sides.iter().position(|&s| s == 0).map(Place::Edge),
         _ => None, // a corner: already a vertex
     }
-}
-
-/// A key along a Z-order curve of the direction of `p` from `c` (10 bits a coordinate of
-/// the direction scaled to the unit cube): sorting by it puts points whose rays cross
-/// nearby surface triangles one after the other.
-fn direction_key(p: &Point3, c: &Point3) -> u64 {
-    let d: Point3 = std::array::from_fn(|k| p[k] - c[k]);
-    let m = d.iter().fold(f64::MIN_POSITIVE, |m, x| m.max(x.abs()));
-    let q = d.map(|x| ((x / m + 1.0) * 511.5) as u64 & 1023);
-    (0..10).fold(0, |key, bit| {
-        key | (((q[0] >> bit) & 1) << (3 * bit))
-            | (((q[1] >> bit) & 1) << (3 * bit + 1))
-            | (((q[2] >> bit) & 1) << (3 * bit + 2))
-    })
 }
