@@ -8,7 +8,8 @@
 # (medians) and peak memory; tetrakit's time includes reading and its certificate.
 # Then the families of benches/shell_families.py (FAMILIES, NAME:N each): thin twisted
 # and coaxial prisms, bent arcs, lattice spheres with Q = P/2, circles on a cube's facets,
-# a dome on a dome's floor. Bigcaps get BIGCAP_TIMEOUT seconds per run ("-" past it).
+# a dome on a dome's floor, an eighth of a ball in a box's corner. Bigcaps get
+# BIGCAP_TIMEOUT seconds per run ("-" past it).
 # The last column is the largest weight of §4.4's ledger on the cap removal (JSON
 # `weights.max`; Theorem 4.2 claims at most 8 for BIGCAP-REMOVE).
 # Usage: bash benches/shell.sh      (env: SIZES, BERN, FAMILIES, RUNS)   Needs root for apt-get.
@@ -16,7 +17,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 SIZES=${SIZES:-"1000 10000 100000"}
 BERN=${BERN:-"1000:250 4000:1000 10000:2500"}
-FAMILIES=${FAMILIES:-"twisted:10000 coaxial:10000 arcs:10000 lattice:10000 circles:1000 dome:10000"}
+FAMILIES=${FAMILIES:-"twisted:10000 coaxial:10000 arcs:10000 lattice:10000 circles:1000 dome:10000 corner:10000"}
 BIGCAP_TIMEOUT=${BIGCAP_TIMEOUT:-60}
 RUNS=${RUNS:-3}
 WORK=${WORK:-/tmp/tetrakit-bench-shell}
@@ -86,6 +87,6 @@ for f in $FAMILIES; do
   name=${f%:*}; n=${f#*:}
   o="$WORK/fo$name$n.xyz"; i="$WORK/fi$name$n.xyz"
   python3 benches/shell_families.py "$name" "$n" "$o" "$i"
-  hole="0 0 0"; [ "$name" = dome ] && hole="0 0 0.25"
+  hole="0 0 0"; [ "$name" = dome ] && hole="0 0 0.25"; [ "$name" = corner ] && hole="0.25 0.25 0.25"
   row "$name" "$o" "$i" "f$name$n" "$hole"
 done

@@ -14,6 +14,10 @@ OUTER.xyz and INNER.xyz with about N vertices in all.
             every vertex of Q on a facet of P
   dome      a dome over the square floor z = 0 and a smaller one on the same floor: Q's
             bottom facet inside P's
+  corner    a box with Q in its corner: an eighth of a ball about the box's corner, its
+            three flat facets (quarter disks, their arcs of points exact on the planes)
+            inside three facets of P, Q's vertex at the corner shared (boxes in boxes,
+            with every vertex but P's eight on Q)
 Coordinates are exact dyadic or integer values where the family needs exact contact.
 Usage: shell_families.py FAMILY N OUTER.xyz INNER.xyz"""
 import math
@@ -85,6 +89,24 @@ def dome(n, rng):
     return outer, inner
 
 
+def corner(n, rng):
+    outer = [(x, y, z) for x in (0.0, 2.0) for y in (0.0, 2.0) for z in (0.0, 2.0)]
+    arc = max(3, n // 16)
+    inner = [(0.0, 0.0, 0.0)]
+    for axis in range(3):
+        for j in range(1, arc + 1):
+            a = 0.5 * math.pi * j / (arc + 1)
+            p = [math.cos(a), math.sin(a)]
+            p.insert(axis, 0.0)
+            inner.append(tuple(p))
+    while len(inner) < n - len(outer):
+        p = [abs(rng.gauss(0, 1)) for _ in range(3)]
+        r = math.sqrt(sum(x * x for x in p))
+        if r > 1e-3 and min(p) > 1e-3 * r:
+            inner.append(tuple(x / r for x in p))
+    return outer, inner
+
+
 def arcs(n):
     m = n // 4
     eps = 0.05
@@ -109,6 +131,8 @@ def family(name, n):
         return circles(n)
     if name == "dome":
         return dome(n, rng)
+    if name == "corner":
+        return corner(n, rng)
     sys.exit("unknown family %r" % name)
 
 
