@@ -73,6 +73,17 @@ impl Tri {
 impl Hull3 {
     /// Computes the hull of `points` exactly. Duplicate points are allowed.
     pub fn new(points: &[Point3]) -> Hull3 {
+        let mut h = Hull3::facets_only(points);
+        if h.dimension == 3 {
+            h.assign_points(points);
+        }
+        h
+    }
+
+    /// The hull's triangles and facets, without telling each point which facets it lies
+    /// on ([`Hull3::facets_of`] is empty for every point): what a caller that needs only
+    /// the facet planes pays (the assignment is most of a small hull's cost).
+    pub fn facets_only(points: &[Point3]) -> Hull3 {
         let Some((seed, dimension)) = initial_simplex(points) else {
             return Hull3 {
                 dimension: affine_dimension(points),
@@ -89,7 +100,6 @@ impl Hull3 {
             ..Default::default()
         };
         h.build_facets(points, &neighbours);
-        h.assign_points(points);
         h
     }
 

@@ -405,15 +405,41 @@ impl Plane {
     /// on the positive side (`side` = 1), `-1` when every point is strictly negative, `0`
     /// when the floating-point filter does not certify either (a box meeting the plane
     /// always gets 0). Where it answers it is exact: a box is the convex hull of its
-    /// corners, and each corner's sign is certified by the rounding bound of [`Plane::side`]'s
-    /// filter; no exact stage runs.
+    /// corners, and each corner's sign is certified by the rounding bound of
+    /// [`Plane::side`]'s filter; no exact stage runs. When the sign of every component of
+    /// the normal is certain (each float component far above its rounding, about
+    /// `4ε` of its two products), the corners where the side is least and greatest are
+    /// known and only those two are tested.
     pub fn box_side(&self, lo: &Point3, hi: &Point3) -> i8 {
+        let (b, c) = (&self.db, &self.dc);
+        let m = [
+            b[1] * c[2],
+            b[2] * c[1],
+            b[2] * c[0],
+            b[0] * c[2],
+            b[0] * c[1],
+            b[1] * c[0],
+        ];
+        let n = [m[0] - m[1], m[2] - m[3], m[4] - m[5]];
+        let sure = (0..3).all(|k| n[k].abs() > 1e-12 * (m[2 * k].abs() + m[2 * k + 1].abs()));
+        let side = |x: &Point3| {
+            let dx = [x[0] - self.a[0], x[1] - self.a[1], x[2] - self.a[2]];
+            filtered_det(&dx, b, c)
+        };
+        if sure {
+            let least: Point3 = std::array::from_fn(|k| if n[k] > 0.0 { lo[k] } else { hi[k] });
+            let most: Point3 = std::array::from_fn(|k| if n[k] > 0.0 { hi[k] } else { lo[k] });
+            return match (side(&least), side(&most)) {
+                (Some(1), _) => 1,
+                (_, Some(-1)) => -1,
+                _ => 0,
+            };
+        }
         let mut sign = 0;
         for corner in 0..8 {
             let x: Point3 =
                 std::array::from_fn(|k| if corner >> k & 1 == 0 { lo[k] } else { hi[k] });
-            let dx = [x[0] - self.a[0], x[1] - self.a[1], x[2] - self.a[2]];
-            match filtered_det(&dx, &self.db, &self.dc) {
+            match side(&x) {
                 Some(s) if sign == 0 || s == sign => sign = s,
                 _ => return 0,
             }

@@ -7,7 +7,7 @@
 //! ([`super::surface`]). Every inner vertex lies in `H'`, so `C` may hold more than it
 //! needs: any region that contains the bottom's inner vertices will do. A query keeps
 //! the hidden vertices in the closed box of `U ∪ L`, on the inner side of every plane it
-//! is given (the facets of `CH(tip ∪ L)`, which holds a cap), and not strictly inside
+//! is given (the facets of `CH(U ∪ L)`, which holds the removed region), and not strictly inside
 //! `CH(L)` (such a point is strictly inside `CH(L ∪ C)`, no vertex of it and on no face).
 //! Whole boxes of the tree are passed over when [`Plane::box_side`] certifies them
 //! outside, so the work is the boxes along the region's boundary and what it holds, not
@@ -128,9 +128,17 @@ impl Region<'_> {
         lo: &Point3,
         hi: &Point3,
         active: Active,
-        arena: &mut Vec<u32>,
+        (arena, pruner): (&mut Vec<u32>, &mut usize),
     ) -> Option<Active> {
         if (0..3).any(|k| hi[k] < self.lo[k] || self.hi[k] < lo[k]) {
+            return None;
+        }
+        // The plane that last passed a box over often passes its neighbour too.
+        if self
+            .within
+            .get(*pruner)
+            .is_some_and(|h| h.box_side(lo, hi) == 1)
+        {
             return None;
         }
         let start = arena.len() as u32;
@@ -139,6 +147,7 @@ impl Region<'_> {
             match self.within[k as usize].box_side(lo, hi) {
                 1 => {
                     arena.truncate(start as usize);
+                    *pruner = k as usize;
                     return None;
                 }
                 -1 => {}
@@ -240,7 +249,7 @@ impl Hidden {
     /// The hidden vertices in `region`, at most `limit` of them (`None`: more).
     pub(super) fn within(&self, pts: &[Point3], region: &Region, limit: usize) -> Option<Vec<u32>> {
         let mut out = Vec::new();
-        let mut arena = Vec::new();
+        let (mut arena, mut pruner) = (Vec::new(), usize::MAX);
         let mut stack = vec![(0usize, region.all(&mut arena))];
         while let Some((i, active)) = stack.pop() {
             let Some(node) = self.tree.nodes.get(i) else {
@@ -249,7 +258,8 @@ impl Hidden {
             if self.live[i] == 0 {
                 continue;
             }
-            let Some(active) = region.narrow(&node.lo, &node.hi, active, &mut arena) else {
+            let narrowed = region.narrow(&node.lo, &node.hi, active, (&mut arena, &mut pruner));
+            let Some(active) = narrowed else {
                 continue;
             };
             match node.halves {

@@ -346,7 +346,7 @@ pub(super) struct Blocker {
 
 impl Blocker {
     pub(super) fn new(points: &[Point3]) -> Blocker {
-        let hull = Hull3::new(points);
+        let hull = Hull3::facets_only(points);
         let planes = hull
             .facet_planes
             .iter()

@@ -30,7 +30,7 @@ impl QEdges {
     /// The edges of the polytope `Q` whose vertices are `inner` (indices into `pts`).
     pub(super) fn new(pts: &[Point3], inner: &[u32]) -> QEdges {
         let coords: Vec<Point3> = inner.iter().map(|&v| pts[v as usize]).collect();
-        let hull = crate::geom::Hull3::new(&coords);
+        let hull = crate::geom::Hull3::facets_only(&coords);
         // Every point is a corner of Q, so its edges are the triangle edges between two
         // facets.
         let mut by_vertex: HashMap<u32, Vec<u32>> = HashMap::default();

@@ -19,8 +19,12 @@
 //!
 //! **Removing several at once** (a bigcap, §4.2): the same with `v`'s star replaced by
 //! the union of the stars of a connected vertex set `U` whose removal leaves a disk
-//! visible from `v`; see [`Surface::plan`]. Its candidates `C` are only cut to the
-//! bounding box of `U ∪ L`.
+//! visible from `v`; see [`Surface::plan`]. The removed region `P̄ − H'` lies in
+//! `CH(U ∪ L)` here too: a point `x` of it is strictly beyond some plane `h` with `H'`
+//! on the other side, so the vertices of `P̄` beyond `h` are in `U`; `P̄`'s part beyond
+//! `h` is the hull of those vertices and of the points where `h` cuts `P̄`'s edges
+//! leaving them, edges whose other ends are in `U` or its ring `L` (every neighbour of
+//! `U` is); so its candidates are cut to `CH(U ∪ L)` as a cap's are.
 //!
 //! Every step is checked (the bottom is a disk bounded by the link, every bottom triangle
 //! seen from the tip or coplanar with it): a removal that fails a check changes nothing
@@ -382,7 +386,7 @@ impl<'a> Surface<'a> {
     /// `removed` points of `around` (the ring, then the removed set): those in the
     /// region of [`Hidden::within`]. The exact planes cost small hulls, about what as
     /// many candidates cost the bottom's hull, so they are built only when the box
-    /// alone holds more than the ring (and 16): `CH(tip ∪ ring)`'s first, then, when the
+    /// alone holds more than the ring (and 16): `CH(U ∪ ring)`'s first, then, when the
     /// candidates still outnumber the ring (thousands under a star spanning the shell,
     /// on arcs; not on a prism's cap polygon), `CH(ring)`'s.
     fn candidates(&self, around: &[Point3], removed: usize) -> Vec<u32> {
@@ -397,7 +401,7 @@ impl<'a> Surface<'a> {
         if let Some(c) = self.hidden.within(self.pts, &region, ring.max(16)) {
             return c;
         }
-        let cap = cap_planes(around, removed);
+        let cap = hull_planes(around);
         region.within = &cap;
         if let Some(c) = self.hidden.within(self.pts, &region, ring) {
             return c;
@@ -568,19 +572,9 @@ enum Place {
     Edge(usize),
 }
 
-/// The facet planes of `CH(v ∪ L)` when one vertex `v` is removed (`around` = `L`, then
-/// `v`), oriented out: the cap lies in that hull (module docs). None (no constraint) for
-/// larger sets or a flat hull.
-fn cap_planes(around: &[Point3], removed: usize) -> Vec<Plane> {
-    match removed {
-        1 => hull_planes(around),
-        _ => Vec::new(),
-    }
-}
-
 /// The planes of the facets of `CH(pts)`, the inside negative (none when it is flat).
 fn hull_planes(pts: &[Point3]) -> Vec<Plane> {
-    let hull = Hull3::new(pts);
+    let hull = Hull3::facets_only(pts);
     if hull.dimension < 3 {
         return Vec::new();
     }
