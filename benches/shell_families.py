@@ -7,7 +7,8 @@ OUTER.xyz and INNER.xyz with about N vertices in all.
   coaxial   two aligned K-gon prisms, the inner one 0.95 in radius and height (parallel
             facets, a small gap)
   arcs      two slightly bent perpendicular arcs (z = +1 and z = -1) around a small sphere
-            (every tip sees a long chain of the other arc: quadratic caps)
+            (every tip sees a long chain of the other arc: every surface triangle spans
+            the shell)
   lattice   the integer points on a sphere x^2 + y^2 + z^2 = R^2, Q = P/2 (cospherical,
             many coplanar facets, Q's facets parallel to P's)
   circles   the cube [-1, 1]^3 and, on each face, a circle of points: Q is their hull,

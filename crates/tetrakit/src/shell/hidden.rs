@@ -7,8 +7,9 @@
 //! ([`super::surface`]). Every inner vertex lies in `H'`, so `C` may hold more than it
 //! needs: any region that contains the bottom's inner vertices will do. A query keeps
 //! the hidden vertices in the closed box of `U ∪ L`, on the inner side of every plane it
-//! is given (the facets of `CH(U ∪ L)`, which holds the removed region), and not strictly inside
-//! `CH(L)` (such a point is strictly inside `CH(L ∪ C)`, no vertex of it and on no face).
+//! is given (the facets of `CH(U ∪ L)`, which holds the removed region), and not
+//! strictly inside `CH(L)` (such a point is strictly inside `CH(L ∪ C)`, no vertex of it
+//! and on no face).
 //! Whole boxes of the tree are passed over when [`Plane::box_side`] certifies them
 //! outside, so the work is the boxes along the region's boundary and what it holds, not
 //! what a removal's triangles cover: on the bent arcs of BENCHMARKS.md every surface
