@@ -214,14 +214,7 @@ impl Frame {
     #[inline]
     pub fn plane(&self, da: &Dir, db: &Dir) -> ApexPlane {
         let (a, b) = (&da.d, &db.d);
-        let m = [
-            a[1] * b[2],
-            a[2] * b[1],
-            a[2] * b[0],
-            a[0] * b[2],
-            a[0] * b[1],
-            a[1] * b[0],
-        ];
+        let m = products(a, b);
         let inexact = da.hi == i32::MIN || db.hi == i32::MIN;
         ApexPlane {
             n: [m[0] - m[1], m[2] - m[3], m[4] - m[5]],
@@ -339,15 +332,24 @@ impl Frame {
     }
 }
 
+/// The six products of the cross product `b × c`, in pairs: component `k` is
+/// `m[2k] − m[2k + 1]`.
+#[inline]
+fn products(b: &Point3, c: &Point3) -> [f64; 6] {
+    [
+        b[1] * c[2],
+        b[2] * c[1],
+        b[2] * c[0],
+        b[0] * c[2],
+        b[0] * c[1],
+        b[1] * c[0],
+    ]
+}
+
 /// The float determinant `det[da, db, dc]` and its permanent (for the error bound).
 #[inline]
 fn det_perm(da: &Point3, db: &Point3, dc: &Point3) -> (f64, f64) {
-    let m0 = db[1] * dc[2];
-    let m1 = db[2] * dc[1];
-    let m2 = db[2] * dc[0];
-    let m3 = db[0] * dc[2];
-    let m4 = db[0] * dc[1];
-    let m5 = db[1] * dc[0];
+    let [m0, m1, m2, m3, m4, m5] = products(db, dc);
     let det = da[0] * (m0 - m1) + da[1] * (m2 - m3) + da[2] * (m4 - m5);
     let perm = da[0].abs() * (m0.abs() + m1.abs())
         + da[1].abs() * (m2.abs() + m3.abs())
@@ -412,14 +414,7 @@ impl Plane {
     /// known and only those two are tested.
     pub fn box_side(&self, lo: &Point3, hi: &Point3) -> i8 {
         let (b, c) = (&self.db, &self.dc);
-        let m = [
-            b[1] * c[2],
-            b[2] * c[1],
-            b[2] * c[0],
-            b[0] * c[2],
-            b[0] * c[1],
-            b[1] * c[0],
-        ];
+        let m = products(b, c);
         let n = [m[0] - m[1], m[2] - m[3], m[4] - m[5]];
         let sure = (0..3).all(|k| n[k].abs() > 1e-12 * (m[2 * k].abs() + m[2 * k + 1].abs()));
         let side = |x: &Point3| {
