@@ -94,17 +94,11 @@ pub(super) fn ledger(r: Removal) -> Ledger {
         .flat_map(|t| [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])])
         .map(|(a, b)| (a.min(b), a.max(b)))
         .collect();
-    // `ab` is on ∂P when both ends are on one facet of `P` (the facet lists are exact
-    // and sorted; the shorter is searched in the longer: a tip on a long arc is on
-    // thousands).
+    // `ab` is on ∂P when both ends are on one facet of `P` (the facet lists are exact).
     let on_p = |a: u32, b: u32| {
-        let (fa, fb) = (r.outer.facets_of(a as usize), r.outer.facets_of(b as usize));
-        let (short, long) = if fa.len() <= fb.len() {
-            (fa, fb)
-        } else {
-            (fb, fa)
-        };
-        short.iter().any(|f| long.binary_search(f).is_ok())
+        r.outer
+            .common_facet(a as usize, b as usize, b as usize)
+            .is_some()
     };
     // Each edge is decided once: charged the first time it is met, unless it is on `∂P`
     // or `∂Q`.
