@@ -19,10 +19,21 @@ use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 use tetrakit::rng::Rng;
 
+/// This run's scratch directory: new and empty, so no earlier run's files (left by a
+/// process that had the same id) can be in the way.
+fn scratch() -> &'static std::path::Path {
+    static DIR: std::sync::OnceLock<tempfile::TempDir> = std::sync::OnceLock::new();
+    DIR.get_or_init(|| {
+        tempfile::Builder::new()
+            .prefix("tetrakit-fuzz-")
+            .tempdir()
+            .unwrap()
+    })
+    .path()
+}
+
 fn dir() -> PathBuf {
-    let d = std::env::temp_dir().join(format!("tetrakit-fuzz-{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    scratch().to_path_buf()
 }
 
 /// The most memory (peak resident bytes) a run on an input of `bytes` may take: the

@@ -56,9 +56,11 @@ fn every_command_of_the_guide_runs_as_shown() {
     let guide = std::fs::read_to_string(docs().join("guide.md")).unwrap();
     let steps = steps(&guide);
     assert!(steps.len() >= 30, "{} steps", steps.len());
-    let work = std::env::temp_dir().join(format!("tetrakit-guide-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&work);
-    std::fs::create_dir_all(&work).unwrap();
+    let scratch = tempfile::Builder::new()
+        .prefix("tetrakit-guide-")
+        .tempdir()
+        .unwrap();
+    let work = scratch.path().to_path_buf();
     let bin = Path::new(env!("CARGO_BIN_EXE_tetrakit")).parent().unwrap();
     let path = format!(
         "{}:{}",

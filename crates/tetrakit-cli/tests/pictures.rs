@@ -6,8 +6,21 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+/// This run's scratch directory: new and empty, so no earlier run's files (left by a
+/// process that had the same id) can be in the way.
+fn scratch() -> &'static std::path::Path {
+    static DIR: std::sync::OnceLock<tempfile::TempDir> = std::sync::OnceLock::new();
+    DIR.get_or_init(|| {
+        tempfile::Builder::new()
+            .prefix("tetrakit-pic-")
+            .tempdir()
+            .unwrap()
+    })
+    .path()
+}
+
 fn dir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("tetrakit-pic-{}-{name}", std::process::id()));
+    let d = scratch().join(name);
     std::fs::create_dir_all(&d).unwrap();
     d
 }

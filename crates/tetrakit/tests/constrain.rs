@@ -316,8 +316,11 @@ fn verified_by_rate(
     tag: &str,
     write: impl FnOnce(&mut std::fs::File, std::fs::File) -> Result<Proof, String>,
 ) {
-    let dir = std::env::temp_dir().join("tetrakit-constrain-proofs");
-    std::fs::create_dir_all(&dir).unwrap();
+    let scratch = tempfile::Builder::new()
+        .prefix("tetrakit-proofs-")
+        .tempdir()
+        .unwrap();
+    let dir = scratch.path();
     let (cnf, drat) = (
         dir.join(format!("{tag}.cnf")),
         dir.join(format!("{tag}.drat")),
@@ -570,8 +573,11 @@ fn schonhardt_twisted_both_ways() {
     let (out, _) =
         exact::minimal_tetrahedralization(Domain::Polyhedron(&bad), &opts, &ctl).unwrap();
     assert_eq!(out, exact::Outcome::Infeasible);
-    let dir = std::env::temp_dir().join("tetrakit-constrain-proofs");
-    std::fs::create_dir_all(&dir).unwrap();
+    let scratch = tempfile::Builder::new()
+        .prefix("tetrakit-proofs-")
+        .tempdir()
+        .unwrap();
+    let dir = scratch.path();
     let (cnf, drat) = (dir.join("schonhardt.cnf"), dir.join("schonhardt.drat"));
     let mut f = std::fs::File::create(&cnf).unwrap();
     let p = std::fs::File::create(&drat).unwrap();

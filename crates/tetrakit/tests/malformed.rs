@@ -52,10 +52,21 @@ fn write(name: &str, text: &str) -> std::path::PathBuf {
 }
 
 /// The path of `name` in this run's directory.
+/// This run's scratch directory: new and empty, so no earlier run's files (left by a
+/// process that had the same id) can be in the way.
+fn scratch() -> &'static std::path::Path {
+    static DIR: std::sync::OnceLock<tempfile::TempDir> = std::sync::OnceLock::new();
+    DIR.get_or_init(|| {
+        tempfile::Builder::new()
+            .prefix("tetrakit-malformed-")
+            .tempdir()
+            .unwrap()
+    })
+    .path()
+}
+
 fn dir_file(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("tetrakit-malformed-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir.join(name)
+    scratch().join(name)
 }
 
 /// A valid file with one token replaced, one line dropped or duplicated, or text appended.

@@ -9,11 +9,21 @@ use tetrakit::io::{ReadOptions, read_input_with, write_pieces};
 use tetrakit::mesh::{CheckOptions, check};
 use tetrakit::rng::Rng;
 
+/// This run's scratch directory: new and empty, so no earlier run's files (left by a
+/// process that had the same id) can be in the way.
+fn scratch() -> &'static std::path::Path {
+    static DIR: std::sync::OnceLock<tempfile::TempDir> = std::sync::OnceLock::new();
+    DIR.get_or_init(|| {
+        tempfile::Builder::new()
+            .prefix("tetrakit-partitioned-")
+            .tempdir()
+            .unwrap()
+    })
+    .path()
+}
+
 fn dir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!(
-        "tetrakit-partitioned-{name}-{}",
-        std::process::id()
-    ));
+    let d = scratch().join(name);
     std::fs::create_dir_all(&d).unwrap();
     d
 }

@@ -107,9 +107,8 @@ proptest! {
     /// Writing and reading a mesh gives back the same bits.
     #[test]
     fn io_round_trip_is_exact(pts in prop::collection::vec(prop::array::uniform3(-1e6f64..1e6), 4..20)) {
-        let dir = std::env::temp_dir().join(format!("tetrakit-prop-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        let path = dir.join("p.ele");
+        let dir = tempfile::Builder::new().prefix("tetrakit-prop-").tempdir().unwrap();
+        let path = dir.path().join("p.ele");
         tetrakit::io::write_mesh(&path, &pts, &[[0, 1, 2, 3]], 1).unwrap();
         let back = tetrakit::io::read_input(&path);
         // Random reals can coincide only with probability zero; compare bits.

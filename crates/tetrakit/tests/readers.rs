@@ -8,10 +8,21 @@ use std::path::PathBuf;
 use tetrakit::io::{InputError, ReadOptions, read_input, read_input_with};
 use tetrakit::mesh::{ProblemKind, verify};
 
+/// This run's scratch directory: new and empty, so no earlier run's files (left by a
+/// process that had the same id) can be in the way.
+fn scratch() -> &'static std::path::Path {
+    static DIR: std::sync::OnceLock<tempfile::TempDir> = std::sync::OnceLock::new();
+    DIR.get_or_init(|| {
+        tempfile::Builder::new()
+            .prefix("tetrakit-readers-")
+            .tempdir()
+            .unwrap()
+    })
+    .path()
+}
+
 fn dir_file(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("tetrakit-readers-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir.join(name)
+    scratch().join(name)
 }
 
 fn write(name: &str, bytes: impl AsRef<[u8]>) -> PathBuf {

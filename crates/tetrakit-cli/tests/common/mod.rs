@@ -9,8 +9,21 @@ pub fn bin() -> Command {
     Command::new(env!("CARGO_BIN_EXE_tetrakit"))
 }
 
+/// This run's scratch directory: new and empty, so no earlier run's files (left by a
+/// process that had the same id) can be in the way.
+fn scratch() -> &'static std::path::Path {
+    static DIR: std::sync::OnceLock<tempfile::TempDir> = std::sync::OnceLock::new();
+    DIR.get_or_init(|| {
+        tempfile::Builder::new()
+            .prefix("tetrakit-cli-")
+            .tempdir()
+            .unwrap()
+    })
+    .path()
+}
+
 pub fn dir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("tetrakit-cli-{}-{name}", std::process::id()));
+    let d = scratch().join(name);
     std::fs::create_dir_all(&d).unwrap();
     d
 }

@@ -2,10 +2,21 @@
 
 use super::*;
 
+/// This run's scratch directory: new and empty, so no earlier run's files (left by a
+/// process that had the same id) can be in the way.
+fn scratch() -> &'static std::path::Path {
+    static DIR: std::sync::OnceLock<tempfile::TempDir> = std::sync::OnceLock::new();
+    DIR.get_or_init(|| {
+        tempfile::Builder::new()
+            .prefix("tetrakit-io-")
+            .tempdir()
+            .unwrap()
+    })
+    .path()
+}
+
 fn tmp(name: &str, content: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("tetrakit-io-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let p = dir.join(name);
+    let p = scratch().join(name);
     std::fs::write(&p, content).unwrap();
     p
 }
@@ -160,8 +171,7 @@ fn written_files_read_back_exactly() {
         [0.0, 1e-30, 0.0],
         [0.0, 0.0, 7.0],
     ];
-    let dir = std::env::temp_dir().join(format!("tetrakit-io-rt-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = scratch();
     write_mesh(&dir.join("m.ele"), &pts, &[[0, 1, 2, 3]], 1).unwrap();
     let back = read_input(&dir.join("m.ele")).unwrap();
     assert_eq!(back.points, pts);
