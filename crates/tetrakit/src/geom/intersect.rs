@@ -4,7 +4,7 @@
 
 use super::expansion;
 use super::predicates::{
-    Point3, collinear3, drop_axis, orient2d, orient3d, projection_axis, strictly_between,
+    Point2, Point3, collinear3, drop_axis, orient2d, orient3d, projection_axis, strictly_between,
 };
 
 /// How the relative interiors of two segments meet (they are not allowed to in a
@@ -156,6 +156,70 @@ pub fn segment_meets_open_triangle(
         (_, 0) => coplanar_point_in_open_triangle(q, a, b, c),
         _ if op * oq < 0 => line_through_open_triangle(p, q, a, b, c),
         _ => false,
+    }
+}
+
+/// True when the closed segment `pq` meets the closed triangle `abc` (`p = q` is a
+/// point; `abc` must not be collinear). Every contact counts: an end on the triangle, the
+/// segment along an edge, a segment in the triangle's plane touching a corner.
+///
+/// In the plane of the triangle the two are disjoint exactly when a line strictly
+/// separates them, and such a line can be taken along an edge of the triangle or along
+/// the segment (the edges of their Minkowski difference); across it, the line `pq`
+/// passes through the closed triangle when the three signs `orient3d(p, q, x, y)` over
+/// its edges `xy` are not of both strict signs.
+///
+/// ```
+/// use tetrakit::geom::segment_meets_closed_triangle;
+/// let t = [[0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [0.0, 2.0, 0.0]];
+/// let meets = |p, q| segment_meets_closed_triangle(&p, &q, &t[0], &t[1], &t[2]);
+/// assert!(meets([1.0, 1.0, -1.0], [1.0, 1.0, 1.0]), "through the edge x + y = 2");
+/// assert!(!meets([1.5, 1.5, -1.0], [1.5, 1.5, 1.0]));
+/// assert!(meets([2.0, 0.0, 0.0], [3.0, 0.0, 0.0]), "a corner, in the plane");
+/// assert!(!meets([2.0, 0.5, 0.0], [3.0, 0.0, 0.0]));
+/// ```
+pub fn segment_meets_closed_triangle(
+    p: &Point3,
+    q: &Point3,
+    a: &Point3,
+    b: &Point3,
+    c: &Point3,
+) -> bool {
+    let (op, oq) = (orient3d(a, b, c, p), orient3d(a, b, c, q));
+    if op * oq > 0 {
+        return false;
+    }
+    let Some(axis) = projection_axis(a, b, c) else {
+        debug_assert!(false, "a collinear triangle");
+        return false;
+    };
+    let [p2, q2, a2, b2, c2] = [p, q, a, b, c].map(|x| drop_axis(x, axis));
+    let s = orient2d(&a2, &b2, &c2);
+    let in_closed = |x: &Point2| {
+        orient2d(&a2, &b2, x) * s >= 0
+            && orient2d(&b2, &c2, x) * s >= 0
+            && orient2d(&c2, &a2, x) * s >= 0
+    };
+    match (op, oq) {
+        (0, 0) => {
+            let edges = [(a2, b2), (b2, c2), (c2, a2)];
+            let beyond_an_edge = edges
+                .iter()
+                .any(|(u, w)| orient2d(u, w, &p2) * s < 0 && orient2d(u, w, &q2) * s < 0);
+            let o = [a2, b2, c2].map(|x| orient2d(&p2, &q2, &x));
+            let beyond_the_segment = o.iter().all(|&x| x > 0) || o.iter().all(|&x| x < 0);
+            !beyond_an_edge && !beyond_the_segment
+        }
+        (0, _) => in_closed(&p2),
+        (_, 0) => in_closed(&q2),
+        _ => {
+            let e = [
+                orient3d(p, q, a, b),
+                orient3d(p, q, b, c),
+                orient3d(p, q, c, a),
+            ];
+            e.iter().all(|&k| k >= 0) || e.iter().all(|&k| k <= 0)
+        }
     }
 }
 

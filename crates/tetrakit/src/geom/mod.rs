@@ -20,14 +20,14 @@ mod radical;
 pub(crate) use anchor::anchor;
 pub use coplanar::triangulate_coplanar;
 pub use expansion::{Expansion, orient3d_value};
-pub(crate) use expansion::{det3, parallel, vector};
+pub(crate) use expansion::{det3, vector};
 pub(crate) use grid::Grid2;
 pub use hull2::Hull2;
 pub use hull3::{Hull3, affine_dimension, placing};
 pub use intersect::{
     SegmentMeet, cones_overlap, coplanar_triangles_overlap, point_in_closed_tetrahedron,
-    point_in_segment_interior, segment_meets_tet_improperly, segments_meet, tetrahedra_overlap,
-    triangles_meet_improperly,
+    point_in_segment_interior, segment_meets_closed_triangle, segment_meets_tet_improperly,
+    segments_meet, tetrahedra_overlap, triangles_meet_improperly,
 };
 pub(crate) use intersect::{
     segment_meets_open_tetrahedron, segment_meets_open_triangle, segment_punctures_triangle,

@@ -103,6 +103,7 @@
 //! assert!(mesh.tets.len() <= 9 * 16 - 6);
 //! ```
 
+mod blocker;
 pub mod generate;
 mod hidden;
 mod improve;

@@ -6,13 +6,14 @@
 mod thesis;
 
 use super::Method;
+use super::blocker::Blocker;
 use super::ledger::Record;
-use super::lemma41::Blocker;
 use super::surface::{self, Surface};
 use crate::control::{Control, Stopped};
 use rustc_hash::FxHashSet as HashSet;
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
+use thesis::Sight;
 pub use thesis::ThesisSteps;
 
 /// The most vertices one bigcap removes (each added vertex costs a local hull).
@@ -204,7 +205,12 @@ pub(super) fn run(
         Method::Thesis => {
             let pts = r.surface.points();
             let q: Vec<_> = inner.iter().map(|&v| pts[v as usize]).collect();
-            Some(thesis::run(&mut r, inner, &Blocker::new(&q), ctl)?)
+            Some(thesis::run(
+                &mut r,
+                inner,
+                &Sight::new(Blocker::new(&q)),
+                ctl,
+            )?)
         }
         _ => None,
     };

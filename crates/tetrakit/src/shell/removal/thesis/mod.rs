@@ -31,13 +31,15 @@
 //! nothing ends in a Step-1 cap, and what no piece removes is left to Bern's loop and
 //! then to placing.
 
+mod sight;
 mod step_3a;
 mod step_6;
+
+pub(super) use sight::Sight;
 
 use super::Removal;
 use crate::control::{Control, Stopped};
 use crate::geom::Point3;
-use crate::shell::lemma41::Blocker;
 use rustc_hash::FxHashSet as HashSet;
 use serde::Serialize;
 
@@ -76,7 +78,7 @@ pub(super) enum Taken {
 
 /// Removes `v`'s `S_a(v)`-bigcap, or the repaired one where the surface refuses it;
 /// `None` when `v` is gone or even its cap is refused.
-fn s_bigcap(r: &mut Removal, v: u32, round: &Round, q: &Blocker) -> Option<Taken> {
+fn s_bigcap(r: &mut Removal, v: u32, round: &Round, q: &Sight) -> Option<Taken> {
     if !r.left.contains(&v) {
         return None;
     }
@@ -95,7 +97,7 @@ fn s_bigcap(r: &mut Removal, v: u32, round: &Round, q: &Blocker) -> Option<Taken
 pub(super) fn run(
     r: &mut Removal,
     inner: &[u32],
-    q: &Blocker,
+    q: &Sight,
     ctl: &Control,
 ) -> Result<ThesisSteps, Stopped> {
     let mut steps = ThesisSteps::default();
@@ -208,16 +210,13 @@ impl Round {
     /// and none whose segment to `v` meets `Q` (whatever the surface, as `Q` stays). So
     /// every vertex of `P_a` is a tip or such a vertex of one. For at most
     /// [`STEP_3A_LARGEST`] vertices, by trying every set of tips.
-    fn fewest_tips(&self, points: &[Point3], q: &Blocker) -> usize {
+    fn fewest_tips(&self, points: &[Point3], q: &Sight) -> usize {
         let p_a: Vec<u32> = self.p_a.iter().copied().collect();
         let k = p_a.len();
         let reach: Vec<u32> = (p_a.iter())
             .map(|&v| {
                 let s = self.s_a(v);
-                let seen = |u: u32| {
-                    u == v
-                        || (!s.contains(&u) && q.misses(&[points[u as usize], points[v as usize]]))
-                };
+                let seen = |u: u32| u == v || (!s.contains(&u) && q.sees(points, v, u));
                 (0..k).filter(|&i| seen(p_a[i])).map(|i| 1 << i).sum()
             })
             .collect();
@@ -261,9 +260,8 @@ impl Round {
 
 /// `U_v^S`: the tip and the outer vertices `u ∉ s` left on the surface that `v` sees
 /// with every surface triangle at `u` (past the closed `Q`).
-fn u_v(r: &mut Removal, v: u32, s: &HashSet<u32>, q: &Blocker) -> Vec<u32> {
+fn u_v(r: &mut Removal, v: u32, s: &HashSet<u32>, q: &Sight) -> Vec<u32> {
     let pts = r.surface.points();
-    let pv = pts[v as usize];
     let mut candidates: Vec<u32> = r
         .left
         .iter()
@@ -273,19 +271,9 @@ fn u_v(r: &mut Removal, v: u32, s: &HashSet<u32>, q: &Blocker) -> Vec<u32> {
     candidates.sort_unstable();
     let mut set = vec![v];
     for u in candidates {
-        if !q.misses(&[pts[u as usize], pv]) {
-            continue;
-        }
-        let seen = r.surface.star(u).into_iter().all(|t| {
-            let cone: Vec<Point3> = r
-                .surface
-                .triangle(t)
-                .iter()
-                .map(|&x| pts[x as usize])
-                .chain([pv])
-                .collect();
-            q.misses(&cone)
-        });
+        let seen = q.sees(pts, v, u)
+            && (r.surface.star(u).into_iter())
+                .all(|t| q.sees_triangle(pts, v, r.surface.triangle(t)));
         if seen {
             set.push(u);
         }

@@ -16,10 +16,9 @@
 //! decides the order by the tie-break; on contact shells, where the lower bound stays
 //! far below `|P_a|`, its budget runs out and the round takes every tip.
 
-use super::{Round, Taken, s_bigcap};
+use super::{Round, Sight, Taken, s_bigcap};
 use crate::control::{Control, Stopped};
 use crate::shell::ledger::Record;
-use crate::shell::lemma41::Blocker;
 use crate::shell::removal::Removal;
 use crate::shell::surface::Surface;
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
@@ -52,7 +51,7 @@ const STEP_3A_LARGEST: usize = 12;
 fn minimum<'a>(
     r: &mut Removal<'_, 'a>,
     round: &Round,
-    q: &Blocker,
+    q: &Sight,
     ctl: &Control,
 ) -> Result<(Choice<'a>, bool), Stopped> {
     let order = round.tips(r);
@@ -122,7 +121,7 @@ fn trial<'a>(
     r: &Removal<'_, 'a>,
     tips: &[u32],
     round: &Round,
-    q: &Blocker,
+    q: &Sight,
     ctl: &Control,
 ) -> Result<Trial<'a>, Stopped> {
     let mut surface = r.surface.clone();
@@ -187,7 +186,7 @@ pub(super) struct Step3 {
 pub(super) fn step_3(
     r: &mut Removal,
     round: &Round,
-    q: &Blocker,
+    q: &Sight,
     ctl: &Control,
 ) -> Result<Step3, Stopped> {
     let (choice, decided) = minimum(r, round, q, ctl)?;
@@ -208,7 +207,7 @@ pub(super) fn step_3(
 /// Step 3a's search state.
 struct Search<'r> {
     round: &'r Round,
-    q: &'r Blocker,
+    q: &'r Sight,
     /// The tips of `P_a`, those of `P_a − V_a^P` first.
     order: &'r [u32],
     /// What the orders tried cost so far (see [`STEP_3A_WORK`]).
@@ -296,7 +295,7 @@ mod tests {
     fn some_order_within(
         r: &Removal,
         round: &Round,
-        q: &Blocker,
+        q: &Sight,
         tips: &[u32],
         depth: usize,
     ) -> bool {
@@ -358,7 +357,7 @@ mod tests {
                 .iter()
                 .map(|&v| shell.points[v as usize])
                 .collect();
-            let q = Blocker::new(&q_points);
+            let q = Sight::new(crate::shell::blocker::Blocker::new(&q_points));
             let mut r = Removal::new(&mut surface, shell.outer.iter().copied().collect());
             let ctl = Control::new();
             while !r.left.is_empty() {

@@ -15,9 +15,8 @@
 //! chord is any surface edge between two vertices of the chain (the thesis takes those
 //! in the disk the chain bounds, where Lemma 4.7 puts no vertex).
 
-use super::{Round, ThesisSteps, grown, u_v};
+use super::{Round, Sight, ThesisSteps, grown, u_v};
 use crate::control::{Control, Stopped};
-use crate::shell::lemma41::Blocker;
 use crate::shell::removal::Removal;
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use std::cmp::Reverse;
@@ -27,7 +26,7 @@ pub(super) fn run(
     r: &mut Removal,
     old: &Round,
     views: &[u32],
-    (inner, q): (&[u32], &Blocker),
+    (inner, q): (&[u32], &Sight),
     (steps, ctl): (&mut ThesisSteps, &Control),
 ) -> Result<(), Stopped> {
     let region: HashSet<u32> = (views.iter().copied())
@@ -114,16 +113,16 @@ fn faces_q(r: &mut Removal, y_1: u32, y_k: u32, old: &Round, new: &Round) -> boo
 
 /// `y` sees every vertex of `stretch` past `Q` (what holds whatever the surface, so
 /// before `U_y^{S_b}` is computed).
-fn sees_stretch(r: &Removal, y: u32, stretch: &[u32], q: &Blocker) -> bool {
+fn sees_stretch(r: &Removal, y: u32, stretch: &[u32], q: &Sight) -> bool {
     let p = r.surface.points();
-    (stretch.iter()).all(|&s| s == y || q.misses(&[p[s as usize], p[y as usize]]))
+    (stretch.iter()).all(|&s| s == y || q.sees(p, y, s))
 }
 
 /// Step 6b and 6c on one chain; the `S_b`-bigcaps removed.
 fn by_chords(
     r: &mut Removal,
     mut chain: Vec<u32>,
-    (p_b, q): (&HashSet<u32>, &Blocker),
+    (p_b, q): (&HashSet<u32>, &Sight),
     ctl: &Control,
 ) -> Result<usize, Stopped> {
     let mut removed = 0;
