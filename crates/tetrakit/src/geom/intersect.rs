@@ -160,8 +160,9 @@ pub fn segment_meets_open_triangle(
 }
 
 /// True when the closed segment `pq` meets the closed triangle `abc` (`p = q` is a
-/// point; `abc` must not be collinear). Every contact counts: an end on the triangle, the
-/// segment along an edge, a segment in the triangle's plane touching a corner.
+/// point; a collinear `abc` is the segment it spans). Every contact counts: an end on
+/// the triangle, the segment along an edge, a segment in the triangle's plane touching a
+/// corner.
 ///
 /// In the plane of the triangle the two are disjoint exactly when a line strictly
 /// separates them, and such a line can be taken along an edge of the triangle or along
@@ -177,6 +178,10 @@ pub fn segment_meets_open_triangle(
 /// assert!(!meets([1.5, 1.5, -1.0], [1.5, 1.5, 1.0]));
 /// assert!(meets([2.0, 0.0, 0.0], [3.0, 0.0, 0.0]), "a corner, in the plane");
 /// assert!(!meets([2.0, 0.5, 0.0], [3.0, 0.0, 0.0]));
+/// let (o, x) = ([0.0, 0.0, 0.0], [2.0, 0.0, 0.0]);
+/// let flat = |p, q| segment_meets_closed_triangle(&p, &q, &o, &x, &[1.0, 0.0, 0.0]);
+/// assert!(flat([1.5, -1.0, 0.0], [1.5, 1.0, 0.0]), "across a collinear triangle");
+/// assert!(!flat([2.5, -1.0, 0.0], [2.5, 1.0, 0.0]));
 /// ```
 pub fn segment_meets_closed_triangle(
     p: &Point3,
@@ -190,8 +195,9 @@ pub fn segment_meets_closed_triangle(
         return false;
     }
     let Some(axis) = projection_axis(a, b, c) else {
-        debug_assert!(false, "a collinear triangle");
-        return false;
+        // A collinear triangle is the union of its sides.
+        let sides = [(a, b), (b, c), (c, a)];
+        return (sides.iter()).any(|(x, y)| closed_segments_meet(p, q, x, y));
     };
     let [p2, q2, a2, b2, c2] = [p, q, a, b, c].map(|x| drop_axis(x, axis));
     let s = orient2d(&a2, &b2, &c2);
@@ -221,6 +227,17 @@ pub fn segment_meets_closed_triangle(
             e.iter().all(|&k| k >= 0) || e.iter().all(|&k| k <= 0)
         }
     }
+}
+
+/// True when the closed segments `pq` and `ab` share a point (either may be a point).
+fn closed_segments_meet(p: &Point3, q: &Point3, a: &Point3, b: &Point3) -> bool {
+    let on =
+        |x: &Point3, u: &Point3, w: &Point3| x == u || x == w || point_in_segment_interior(x, u, w);
+    on(p, a, b)
+        || on(q, a, b)
+        || on(a, p, q)
+        || on(b, p, q)
+        || segments_meet(p, q, a, b) == Some(SegmentMeet::Cross)
 }
 
 /// True when the closed segment `pq` meets the interior of the tetrahedron `t`
