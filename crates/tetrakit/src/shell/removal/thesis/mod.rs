@@ -78,11 +78,11 @@ pub(super) enum Taken {
 
 /// Removes `v`'s `S_a(v)`-bigcap, or the repaired one where the surface refuses it;
 /// `None` when `v` is gone or even its cap is refused.
-fn s_bigcap(r: &mut Removal, v: u32, round: &Round, q: &Sight) -> Option<Taken> {
+fn s_bigcap(r: &mut Removal, v: u32, round: &Round, sight: &Sight) -> Option<Taken> {
     if !r.left.contains(&v) {
         return None;
     }
-    let set = u_v(r, v, &round.s_a(v), q);
+    let set = u_v(r, v, &round.s_a(v), sight);
     if r.piece(v, &set) {
         Some(Taken::Whole)
     } else if grown(r, v, &set) {
@@ -97,7 +97,7 @@ fn s_bigcap(r: &mut Removal, v: u32, round: &Round, q: &Sight) -> Option<Taken> 
 pub(super) fn run(
     r: &mut Removal,
     inner: &[u32],
-    q: &Sight,
+    sight: &Sight,
     ctl: &Control,
 ) -> Result<ThesisSteps, Stopped> {
     let mut steps = ThesisSteps::default();
@@ -113,7 +113,7 @@ pub(super) fn run(
         }
         steps.rounds += 1;
         let before = r.left.len();
-        let step_3 = step_3a::step_3(r, &round, q, ctl)?;
+        let step_3 = step_3a::step_3(r, &round, sight, ctl)?;
         if step_3.decided {
             steps.step_3a_exact += 1;
             steps.largest_p_a_searched = steps.largest_p_a_searched.max(round.p_a.len());
@@ -126,7 +126,7 @@ pub(super) fn run(
                 Taken::Repaired => steps.repaired += 1,
             }
         }
-        step_6::run(r, &round, &step_3.views, (inner, q), (&mut steps, ctl))?;
+        step_6::run(r, &round, &step_3.views, (inner, sight), (&mut steps, ctl))?;
         if r.left.len() == before {
             if !step_1(r) {
                 break;
@@ -210,13 +210,13 @@ impl Round {
     /// and none whose segment to `v` meets `Q` (whatever the surface, as `Q` stays). So
     /// every vertex of `P_a` is a tip or such a vertex of one. For at most
     /// [`STEP_3A_LARGEST`] vertices, by trying every set of tips.
-    fn fewest_tips(&self, points: &[Point3], q: &Sight) -> usize {
+    fn fewest_tips(&self, points: &[Point3], sight: &Sight) -> usize {
         let p_a: Vec<u32> = self.p_a.iter().copied().collect();
         let k = p_a.len();
         let reach: Vec<u32> = (p_a.iter())
             .map(|&v| {
                 let s = self.s_a(v);
-                let seen = |u: u32| u == v || (!s.contains(&u) && q.sees(points, v, u));
+                let seen = |u: u32| u == v || (!s.contains(&u) && sight.sees(points, v, u));
                 (0..k).filter(|&i| seen(p_a[i])).map(|i| 1 << i).sum()
             })
             .collect();
@@ -260,7 +260,7 @@ impl Round {
 
 /// `U_v^S`: the tip and the outer vertices `u ∉ s` left on the surface that `v` sees
 /// with every surface triangle at `u` (past the closed `Q`).
-fn u_v(r: &mut Removal, v: u32, s: &HashSet<u32>, q: &Sight) -> Vec<u32> {
+fn u_v(r: &mut Removal, v: u32, s: &HashSet<u32>, sight: &Sight) -> Vec<u32> {
     let pts = r.surface.points();
     let mut candidates: Vec<u32> = r
         .left
@@ -271,9 +271,9 @@ fn u_v(r: &mut Removal, v: u32, s: &HashSet<u32>, q: &Sight) -> Vec<u32> {
     candidates.sort_unstable();
     let mut set = vec![v];
     for u in candidates {
-        let seen = q.sees(pts, v, u)
+        let seen = sight.sees(pts, v, u)
             && (r.surface.star(u).into_iter())
-                .all(|t| q.sees_triangle(pts, v, r.surface.triangle(t)));
+                .all(|t| sight.sees_triangle(pts, v, r.surface.triangle(t)));
         if seen {
             set.push(u);
         }

@@ -51,19 +51,19 @@ const STEP_3A_LARGEST: usize = 12;
 fn minimum<'a>(
     r: &mut Removal<'_, 'a>,
     round: &Round,
-    q: &Sight,
+    sight: &Sight,
     ctl: &Control,
 ) -> Result<(Choice<'a>, bool), Stopped> {
     let order = round.tips(r);
     if order.len() > STEP_3A_LARGEST {
         return Ok((Choice::EveryTip, false));
     }
-    let every = trial(r, &order, round, q, ctl)?;
+    let every = trial(r, &order, round, sight, ctl)?;
     let mut search = Search {
         round,
-        q,
+        sight,
         order: &order,
-        work: order.len() * r.left.len() * q.len(),
+        work: order.len() * r.left.len() * sight.len(),
         best: None,
         seen: HashMap::default(),
     };
@@ -72,7 +72,7 @@ fn minimum<'a>(
     }
     let most = every.tips.len();
     search.best = Some((every.tips.clone(), every.tets.len()));
-    for depth in round.fewest_tips(r.surface.points(), q)..=most {
+    for depth in round.fewest_tips(r.surface.points(), sight)..=most {
         search.seen.clear();
         search.visit(r.surface, &r.left, &mut Vec::new(), (depth, 0), ctl)?;
         let found = search.best.as_ref().is_some_and(|b| b.0.len() <= depth);
@@ -121,7 +121,7 @@ fn trial<'a>(
     r: &Removal<'_, 'a>,
     tips: &[u32],
     round: &Round,
-    q: &Sight,
+    sight: &Sight,
     ctl: &Control,
 ) -> Result<Trial<'a>, Stopped> {
     let mut surface = r.surface.clone();
@@ -129,7 +129,7 @@ fn trial<'a>(
     let (mut used, mut taken, mut views) = (Vec::new(), Vec::new(), Vec::new());
     for &v in tips {
         ctl.check()?;
-        if let Some(t) = s_bigcap(&mut sim, v, round, q) {
+        if let Some(t) = s_bigcap(&mut sim, v, round, sight) {
             used.push(v);
             taken.push(t);
             views.extend(sim.surface.seen_from(v));
@@ -186,16 +186,16 @@ pub(super) struct Step3 {
 pub(super) fn step_3(
     r: &mut Removal,
     round: &Round,
-    q: &Sight,
+    sight: &Sight,
     ctl: &Control,
 ) -> Result<Step3, Stopped> {
-    let (choice, decided) = minimum(r, round, q, ctl)?;
+    let (choice, decided) = minimum(r, round, sight, ctl)?;
     let t = match choice {
         Choice::Tried(t) => *t,
-        Choice::Order(tips) => trial(r, &tips, round, q, ctl)?,
+        Choice::Order(tips) => trial(r, &tips, round, sight, ctl)?,
         Choice::EveryTip => {
             let tips = round.tips(r);
-            trial(r, &tips, round, q, ctl)?
+            trial(r, &tips, round, sight, ctl)?
         }
     };
     Ok(Step3 {
@@ -207,7 +207,7 @@ pub(super) fn step_3(
 /// Step 3a's search state.
 struct Search<'r> {
     round: &'r Round,
-    q: &'r Sight,
+    sight: &'r Sight,
     /// The tips of `P_a`, those of `P_a − V_a^P` first.
     order: &'r [u32],
     /// What the orders tried cost so far (see [`STEP_3A_WORK`]).
@@ -264,14 +264,14 @@ impl Search<'_> {
             if !left.contains(&v) || (in_v_a && !self.round.v_a.contains(&v)) {
                 continue;
             }
-            self.work += left.len() * self.q.len();
+            self.work += left.len() * self.sight.len();
             if self.work > STEP_3A_WORK {
                 return Ok(());
             }
             ctl.check()?;
             let mut copy = surface.clone();
             let mut r = Removal::new(&mut copy, left.clone());
-            if s_bigcap(&mut r, v, self.round, self.q).is_some() {
+            if s_bigcap(&mut r, v, self.round, self.sight).is_some() {
                 let (added, after) = (r.tets.len(), r.left);
                 tips.push(v);
                 self.visit(&copy, &after, tips, (depth, tets + added), ctl)?;
@@ -295,7 +295,7 @@ mod tests {
     fn some_order_within(
         r: &Removal,
         round: &Round,
-        q: &Sight,
+        sight: &Sight,
         tips: &[u32],
         depth: usize,
     ) -> bool {
@@ -303,7 +303,7 @@ mod tests {
         let mut sim = Removal::new(&mut copy, r.left.clone());
         let taken = tips
             .iter()
-            .all(|&v| s_bigcap(&mut sim, v, round, q).is_some());
+            .all(|&v| s_bigcap(&mut sim, v, round, sight).is_some());
         if !taken {
             return false;
         }
@@ -316,7 +316,7 @@ mod tests {
         let in_v_a = tips.last().is_some_and(|t| round.v_a.contains(t));
         round.p_a.iter().any(|&v| {
             let allowed = sim.left.contains(&v) && (!in_v_a || round.v_a.contains(&v));
-            allowed && some_order_within(r, round, q, &[tips, &[v]].concat(), depth)
+            allowed && some_order_within(r, round, sight, &[tips, &[v]].concat(), depth)
         })
     }
 
@@ -357,7 +357,7 @@ mod tests {
                 .iter()
                 .map(|&v| shell.points[v as usize])
                 .collect();
-            let q = Sight::new(crate::shell::blocker::Blocker::new(&q_points));
+            let sight = Sight::new(crate::shell::blocker::Blocker::new(&q_points));
             let mut r = Removal::new(&mut surface, shell.outer.iter().copied().collect());
             let ctl = Control::new();
             while !r.left.is_empty() {
@@ -369,25 +369,25 @@ mod tests {
                     continue;
                 }
                 let order = round.tips(&mut r);
-                let every = trial(&r, &order, &round, &q, &ctl).unwrap();
-                let tips = match minimum(&mut r, &round, &q, &ctl).unwrap() {
+                let every = trial(&r, &order, &round, &sight, &ctl).unwrap();
+                let tips = match minimum(&mut r, &round, &sight, &ctl).unwrap() {
                     (Choice::Order(tips), true) => tips,
                     (Choice::Tried(t), true) => t.tips,
                     _ => break,
                 };
                 decided += 1;
                 assert!(
-                    some_order_within(&r, &round, &q, &tips, tips.len()),
+                    some_order_within(&r, &round, &sight, &tips, tips.len()),
                     "shell {k}"
                 );
                 shorter += usize::from(tips.len() < every.tips.len());
-                assert!(tips.len() >= round.fewest_tips(r.surface.points(), &q));
+                assert!(tips.len() >= round.fewest_tips(r.surface.points(), &sight));
                 assert!(
-                    tips.len() == 1 || !some_order_within(&r, &round, &q, &[], tips.len() - 1),
+                    tips.len() == 1 || !some_order_within(&r, &round, &sight, &[], tips.len() - 1),
                     "shell {k}: an order of fewer than {} tips",
                     tips.len()
                 );
-                let taken = trial(&r, &tips, &round, &q, &ctl).unwrap();
+                let taken = trial(&r, &tips, &round, &sight, &ctl).unwrap();
                 adopt(&mut r, taken);
             }
         }

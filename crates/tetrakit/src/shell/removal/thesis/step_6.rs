@@ -26,7 +26,7 @@ pub(super) fn run(
     r: &mut Removal,
     old: &Round,
     views: &[u32],
-    (inner, q): (&[u32], &Sight),
+    (inner, sight): (&[u32], &Sight),
     (steps, ctl): (&mut ThesisSteps, &Control),
 ) -> Result<(), Stopped> {
     let region: HashSet<u32> = (views.iter().copied())
@@ -40,7 +40,7 @@ pub(super) fn run(
     for cycle in &cycles {
         for chain in chains(r, cycle, old, &new) {
             steps.step_6_chains += 1;
-            steps.step_6_bigcaps += by_chords(r, chain, (&p_b, q), ctl)?;
+            steps.step_6_bigcaps += by_chords(r, chain, (&p_b, sight), ctl)?;
         }
     }
     Ok(())
@@ -113,16 +113,16 @@ fn faces_q(r: &mut Removal, y_1: u32, y_k: u32, old: &Round, new: &Round) -> boo
 
 /// `y` sees every vertex of `stretch` past `Q` (what holds whatever the surface, so
 /// before `U_y^{S_b}` is computed).
-fn sees_stretch(r: &Removal, y: u32, stretch: &[u32], q: &Sight) -> bool {
+fn sees_stretch(r: &Removal, y: u32, stretch: &[u32], sight: &Sight) -> bool {
     let p = r.surface.points();
-    (stretch.iter()).all(|&s| s == y || q.sees(p, y, s))
+    (stretch.iter()).all(|&s| s == y || sight.sees(p, y, s))
 }
 
 /// Step 6b and 6c on one chain; the `S_b`-bigcaps removed.
 fn by_chords(
     r: &mut Removal,
     mut chain: Vec<u32>,
-    (p_b, q): (&HashSet<u32>, &Sight),
+    (p_b, sight): (&HashSet<u32>, &Sight),
     ctl: &Control,
 ) -> Result<usize, Stopped> {
     let mut removed = 0;
@@ -144,12 +144,12 @@ fn by_chords(
         for (i, j) in chords {
             let stretch = &chain[i + 1..j];
             for &y in stretch {
-                if !sees_stretch(r, y, stretch, q) {
+                if !sees_stretch(r, y, stretch, sight) {
                     continue;
                 }
                 let all = match seen.get(&y) {
                     Some(all) => all.clone(),
-                    None => u_v(r, y, &HashSet::default(), q),
+                    None => u_v(r, y, &HashSet::default(), sight),
                 };
                 seen.insert(y, all.clone());
                 // S_b = P_b − stretch.
