@@ -20,6 +20,11 @@ use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
 const NONE: u32 = u32::MAX;
 
+/// New triangles an orphaned conflict point is tested against in order before the search
+/// starts where the last orphan's ended (`Builder::insert`). Small cones, the common case,
+/// keep the plain first-seen choice and so the same hulls as before.
+const FIRST_SCANNED: usize = 32;
+
 /// The convex hull of a point set in 3D.
 ///
 /// ```
@@ -653,10 +658,23 @@ impl<'a> Builder<'a> {
         }
         self.owner[p as usize] = NONE;
         let new = self.cone(p, &mut s);
+        // Each orphan goes to the first new triangle it sees among the first
+        // `FIRST_SCANNED`, else to the next one it sees from the last found on: orphans of
+        // one old triangle come together and mostly see the same new one (on cocircular
+        // prisms a scan of all from the first made a hull of 10^4 points take seconds:
+        // thousands of new triangles per insertion).
+        let mut last = 0;
         for &q in s.orphans.iter().filter(|&&q| q != p) {
             self.owner[q as usize] = NONE;
-            if let Some(&u) = new.iter().find(|&&u| self.sees(u, q)) {
-                self.file(u, q);
+            let sees = |u: &usize| self.sees(*u, q);
+            let found = (new.iter().take(FIRST_SCANNED).position(sees)).or_else(|| {
+                let (head, tail) = new.split_at(last);
+                let k = tail.iter().chain(head).position(sees)?;
+                Some((last + k) % new.len())
+            });
+            if let Some(k) = found {
+                last = k;
+                self.file(new[k], q);
             }
         }
         s.orphans.clear();
@@ -754,10 +772,15 @@ mod tests {
             (s % 7) as f64
         };
         let pts: Vec<Point3> = (0..200).map(|_| [rnd(), rnd(), rnd()]).collect();
-        let h = Hull3::new(&pts);
+        assert_is_hull(&pts, &Hull3::new(&pts));
+    }
+
+    /// Every point on the inner side of every facet plane, on the boundary exactly when
+    /// on a facet plane, and the triangles a closed surface.
+    fn assert_is_hull(pts: &[Point3], h: &Hull3) {
         for f in &h.facet_planes {
             let p = |i: u32| &pts[i as usize];
-            for x in &pts {
+            for x in pts {
                 assert!(orient3d(p(f[0]), p(f[1]), p(f[2]), x) <= 0);
             }
         }
@@ -776,6 +799,24 @@ mod tests {
             .flat_map(|t| (0..3).map(move |i| (t[i], t[(i + 1) % 3])))
             .collect();
         assert!(e.iter().all(|&(a, b)| e.contains(&(b, a))));
+    }
+
+    /// Two cocircular polygons in parallel planes and a point beyond one of them (a
+    /// bottom of the coaxial prisms of BENCHMARKS.md): insertions whose cones have
+    /// thousands of triangles, where orphans are filed from the last one found.
+    #[test]
+    fn cocircular_prisms_with_an_apex() {
+        let circle = |k: usize, of: usize, z: f64| {
+            (0..k).map(move |i| {
+                let a = std::f64::consts::TAU * i as f64 / of as f64;
+                [0.95 * a.cos(), 0.95 * a.sin(), z]
+            })
+        };
+        let mut pts: Vec<Point3> = circle(1500, 2000, -0.95)
+            .chain(circle(800, 2000, 0.95))
+            .collect();
+        pts.push([1.0, 0.0, -1.0]);
+        assert_is_hull(&pts, &Hull3::new(&pts));
     }
 
     /// The facet grid must never hide a facet from a point on it: compare with the
