@@ -14,27 +14,12 @@
 //! `TETRAKIT_FUZZ_RUNS` sets the mutations per base file (default 120, about 2,000 runs);
 //! `TETRAKIT_FUZZ_BIN` runs another binary (an older build, to see what it would catch).
 
-use std::path::{Path, PathBuf};
+mod common;
+
+use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 use tetrakit::rng::Rng;
-
-/// This run's scratch directory: new and empty, so no earlier run's files (left by a
-/// process that had the same id) can be in the way.
-fn scratch() -> &'static std::path::Path {
-    static DIR: std::sync::OnceLock<tempfile::TempDir> = std::sync::OnceLock::new();
-    DIR.get_or_init(|| {
-        tempfile::Builder::new()
-            .prefix("tetrakit-fuzz-")
-            .tempdir()
-            .unwrap()
-    })
-    .path()
-}
-
-fn dir() -> PathBuf {
-    scratch().to_path_buf()
-}
 
 /// The most memory (peak resident bytes) a run on an input of `bytes` may take: the
 /// program itself, and a stated multiple of the input: `.vtu` blocks may inflate up to
@@ -493,18 +478,18 @@ fn mutated_inputs_keep_the_cli_contract() {
         .ok()
         .and_then(|v| v.parse().ok())
         .unwrap_or(120);
-    let src = dir().join("src");
+    let src = common::dir("fuzz").join("src");
     std::fs::create_dir_all(&src).unwrap();
     let bases = bases(&src);
     let limit = Duration::from_secs(30);
     let mut checked = 0;
-    let read_meshes = dir().join("read");
+    let read_meshes = common::dir("fuzz").join("read");
     std::fs::create_dir_all(&read_meshes).unwrap();
     for (b, base) in bases.iter().enumerate() {
         let text = std::fs::read(src.join(base.target)).unwrap();
         for k in 0..runs {
             let seed = 1000 * b as u64 + k as u64;
-            let case = dir().join(format!("c{seed}"));
+            let case = common::dir("fuzz").join(format!("c{seed}"));
             std::fs::create_dir_all(&case).unwrap();
             for (name, t) in &base.files {
                 std::fs::write(case.join(name), t).unwrap();

@@ -3,27 +3,10 @@
 //! picture is checked to show what its caption names: the colours of the marks the
 //! caption lists are found, by pixel, in the panels that are said to show them.
 
-use std::path::{Path, PathBuf};
+mod common;
+
+use std::path::Path;
 use std::process::Command;
-
-/// This run's scratch directory: new and empty, so no earlier run's files (left by a
-/// process that had the same id) can be in the way.
-fn scratch() -> &'static std::path::Path {
-    static DIR: std::sync::OnceLock<tempfile::TempDir> = std::sync::OnceLock::new();
-    DIR.get_or_init(|| {
-        tempfile::Builder::new()
-            .prefix("tetrakit-pic-")
-            .tempdir()
-            .unwrap()
-    })
-    .path()
-}
-
-fn dir(name: &str) -> PathBuf {
-    let d = scratch().join(name);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
 
 /// Runs the binary, which must succeed, and returns its stdout.
 fn run(args: &[&str]) -> Vec<u8> {
@@ -128,7 +111,7 @@ const BLACK: [u8; 3] = [0x11, 0x11, 0x11];
 
 #[test]
 fn the_keil_picture_shows_its_caption() {
-    let d = dir("keil");
+    let d = common::dir("keil");
     let svg = d.join("k.svg");
     let v = tetrakit(&[
         "keil",
@@ -174,7 +157,7 @@ fn the_keil_picture_shows_its_caption() {
 
 #[test]
 fn the_keil_picture_of_a_too_small_construction_says_so() {
-    let d = dir("keil-small");
+    let d = common::dir("keil-small");
     let svg = d.join("k.svg");
     let v = tetrakit(&[
         "keil",
@@ -198,7 +181,7 @@ fn the_keil_picture_of_a_too_small_construction_says_so() {
 
 #[test]
 fn edge_pictures_show_edges_and_sites() {
-    let d = dir("edges");
+    let d = common::dir("edges");
     let pts = d.join("p.xyz");
     run(&[
         "generate",

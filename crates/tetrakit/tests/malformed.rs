@@ -1,6 +1,8 @@
 //! Bad input never panics: arbitrary and mutated files given to every reader yield either
 //! an input or an `InputError` naming the file, and `detect` on whatever parses answers.
 
+mod common;
+
 use proptest::prelude::*;
 use tetrakit::control::Control;
 use tetrakit::io::read_input;
@@ -52,21 +54,8 @@ fn write(name: &str, text: &str) -> std::path::PathBuf {
 }
 
 /// The path of `name` in this run's directory.
-/// This run's scratch directory: new and empty, so no earlier run's files (left by a
-/// process that had the same id) can be in the way.
-fn scratch() -> &'static std::path::Path {
-    static DIR: std::sync::OnceLock<tempfile::TempDir> = std::sync::OnceLock::new();
-    DIR.get_or_init(|| {
-        tempfile::Builder::new()
-            .prefix("tetrakit-malformed-")
-            .tempdir()
-            .unwrap()
-    })
-    .path()
-}
-
 fn dir_file(name: &str) -> std::path::PathBuf {
-    scratch().join(name)
+    common::scratch().join(name)
 }
 
 /// A valid file with one token replaced, one line dropped or duplicated, or text appended.

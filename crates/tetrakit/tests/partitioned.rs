@@ -3,27 +3,16 @@
 //! cut into pieces in several ways (slabs, random labels), interface vertices written
 //! once per piece.
 
+mod common;
+
 use std::path::{Path, PathBuf};
 use tetrakit::geom::Point3;
 use tetrakit::io::{ReadOptions, read_input_with, write_pieces};
 use tetrakit::mesh::{CheckOptions, check};
 use tetrakit::rng::Rng;
 
-/// This run's scratch directory: new and empty, so no earlier run's files (left by a
-/// process that had the same id) can be in the way.
-fn scratch() -> &'static std::path::Path {
-    static DIR: std::sync::OnceLock<tempfile::TempDir> = std::sync::OnceLock::new();
-    DIR.get_or_init(|| {
-        tempfile::Builder::new()
-            .prefix("tetrakit-partitioned-")
-            .tempdir()
-            .unwrap()
-    })
-    .path()
-}
-
 fn dir(name: &str) -> PathBuf {
-    let d = scratch().join(name);
+    let d = common::scratch().join(name);
     std::fs::create_dir_all(&d).unwrap();
     d
 }

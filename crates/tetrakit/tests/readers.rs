@@ -2,27 +2,16 @@
 //! that may not size an allocation, declared counts that must match the data, what Gmsh
 //! and VTK really write, and one-line messages.
 
+mod common;
+
 use base64::Engine;
 use std::io::Write;
 use std::path::PathBuf;
 use tetrakit::io::{InputError, ReadOptions, read_input, read_input_with};
 use tetrakit::mesh::{ProblemKind, verify};
 
-/// This run's scratch directory: new and empty, so no earlier run's files (left by a
-/// process that had the same id) can be in the way.
-fn scratch() -> &'static std::path::Path {
-    static DIR: std::sync::OnceLock<tempfile::TempDir> = std::sync::OnceLock::new();
-    DIR.get_or_init(|| {
-        tempfile::Builder::new()
-            .prefix("tetrakit-readers-")
-            .tempdir()
-            .unwrap()
-    })
-    .path()
-}
-
 fn dir_file(name: &str) -> PathBuf {
-    scratch().join(name)
+    common::scratch().join(name)
 }
 
 fn write(name: &str, bytes: impl AsRef<[u8]>) -> PathBuf {
