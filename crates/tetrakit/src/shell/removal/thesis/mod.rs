@@ -13,7 +13,7 @@
 //!   stay as long as possible); each removes its `S_a(v)`-bigcap: `U_v^S`, the outer
 //!   vertices `u ∉ V(S)` on the surface that `v` sees together with every surface
 //!   triangle at `u` (the segment, and the cone from `v` over each triangle, miss the
-//!   closed `Q`: exact, by separating planes).
+//!   closed `Q`: exact, [`sight`]).
 //! - **Step 3a** by exact search ([`step_3a`]): the fewest tips whose S-bigcaps, in
 //!   order, remove every vertex of `P_a`, ties broken by the fewest tetrahedra, within a
 //!   deterministic budget; a round it cannot decide takes every tip (Lemma 4.4's order).

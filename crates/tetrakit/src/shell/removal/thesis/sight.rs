@@ -7,8 +7,8 @@
 //! cone from a tip `v` over a surface triangle `abc` shares its segments and triangles
 //! with the cones over the triangles around it, and its base `abc` and the base's edges
 //! with every tip's cone over `abc`; so the segments and triangles are tested by vertex
-//! indices and remembered (the memory is cleared when it passes [`REMEMBERED`] entries,
-//! so it stays linear).
+//! indices and remembered (each memory is cleared when it passes [`REMEMBERED`] entries,
+//! so it stays bounded).
 
 use crate::geom::Point3;
 use crate::shell::blocker::Blocker;
