@@ -667,10 +667,12 @@ impl<'a> Builder<'a> {
         for &q in s.orphans.iter().filter(|&&q| q != p) {
             self.owner[q as usize] = NONE;
             let sees = |u: &usize| self.sees(*u, q);
-            let found = (new.iter().take(FIRST_SCANNED).position(sees)).or_else(|| {
-                let (head, tail) = new.split_at(last);
-                let k = tail.iter().chain(head).position(sees)?;
-                Some((last + k) % new.len())
+            let first = FIRST_SCANNED.min(new.len());
+            let found = (new[..first].iter().position(sees)).or_else(|| {
+                // The first `first` are known not to see `q`: search the others only.
+                let start = last.max(first);
+                let k = (new[start..].iter().chain(&new[first..start])).position(sees)?;
+                Some(first + (start - first + k) % (new.len() - first))
             });
             if let Some(k) = found {
                 last = k;
