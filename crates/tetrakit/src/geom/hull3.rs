@@ -25,6 +25,9 @@ const NONE: u32 = u32::MAX;
 /// keep the plain first-seen choice and so the same hulls as before.
 const FIRST_SCANNED: usize = 32;
 
+/// Below this many points [`FacetGrid`] is one cell (its resolution would be 1).
+const SMALL_GRID: usize = 64;
+
 /// The convex hull of a point set in 3D.
 ///
 /// ```
@@ -60,7 +63,10 @@ struct Tri {
     alive: bool,
     /// The last insertion that looked at this triangle ([`Builder::insert`]).
     seen: u32,
-    conflicts: Vec<u32>,
+    /// The first and last points of its conflict list ([`NONE`]: empty), linked on
+    /// through [`Builder::next`]: no allocation per triangle.
+    first: u32,
+    last: u32,
 }
 
 impl Tri {
@@ -70,7 +76,8 @@ impl Tri {
             nb,
             alive: true,
             seen: 0,
-            conflicts: Vec::new(),
+            first: NONE,
+            last: NONE,
         }
     }
 }
@@ -202,73 +209,102 @@ impl Hull3 {
                 }
             }
         }
-        let mut id = HashMap::default();
+        let mut id = vec![NONE; n];
         self.triangle_facet = (0..n)
             .map(|t| {
                 let r = partition::find(&mut parent, t as u32) as usize;
-                let next = id.len() as u32;
-                *id.entry(r).or_insert_with(|| {
+                if id[r] == NONE {
+                    id[r] = self.facet_planes.len() as u32;
                     self.facet_planes.push(self.triangles[r]);
-                    next
-                })
+                }
+                id[r]
             })
             .collect();
     }
 
-    /// The facets of the triangles at each point, sorted (empty for points that are no
-    /// triangle's corner).
-    fn incident_facets(&self, n: usize) -> Vec<Vec<u32>> {
-        let mut incident = vec![Vec::new(); n];
+    /// The facets of the triangles at each point, sorted and without repeats (empty for
+    /// points that are no triangle's corner), as `(start, list)`: point `i`'s are
+    /// `list[start[i]..start[i + 1]]`.
+    fn incident_facets(&self, n: usize) -> (Vec<u32>, Vec<u32>) {
+        let mut start = vec![0u32; n + 1];
+        for &v in self.triangles.iter().flatten() {
+            start[v as usize + 1] += 1;
+        }
+        for i in 0..n {
+            start[i + 1] += start[i];
+        }
+        let mut fill = start.clone();
+        let mut list = vec![0u32; start[n] as usize];
         for (t, &f) in self.triangles.iter().zip(&self.triangle_facet) {
             for &v in t {
-                incident[v as usize].push(f);
+                list[fill[v as usize] as usize] = f;
+                fill[v as usize] += 1;
             }
         }
-        for l in &mut incident {
-            l.sort_unstable();
-            l.dedup();
+        // Sort and deduplicate each point's run, compacting the list.
+        let mut kept = 0;
+        for i in 0..n {
+            let (a, b) = (start[i] as usize, start[i + 1] as usize);
+            list[a..b].sort_unstable();
+            start[i] = kept as u32;
+            for k in a..b {
+                if k == a || list[k] != list[k - 1] {
+                    list[kept] = list[k];
+                    kept += 1;
+                }
+            }
         }
-        incident
+        start[n] = kept as u32;
+        list.truncate(kept);
+        (start, list)
     }
 
     fn assign_points(&mut self, pts: &[Point3]) {
-        let planes: Vec<Plane> = self
-            .facet_planes
-            .iter()
-            .map(|f| {
-                Plane::new(
-                    &pts[f[0] as usize],
-                    &pts[f[1] as usize],
-                    &pts[f[2] as usize],
-                )
-            })
-            .collect();
-        let incident = self.incident_facets(pts.len());
-        let grid = FacetGrid::new(pts, self);
-        let on = |(i, x): (usize, &Point3)| -> Vec<u32> {
+        let (start, incident) = self.incident_facets(pts.len());
+        // The planes and the grid only for points that are not corners (few on a small
+        // hull, none on most).
+        let lookup = std::sync::OnceLock::new();
+        let on = |i: usize, x: &Point3, out: &mut Vec<u32>| {
             // A corner of three facets is a corner of each facet it lies on, so the
             // triangles at it name them all; any other point is looked up.
-            if incident[i].len() >= 3 {
-                return incident[i].clone();
+            let at = &incident[start[i] as usize..start[i + 1] as usize];
+            if at.len() >= 3 {
+                out.extend_from_slice(at);
+                return;
             }
-            grid.candidates(x)
-                .iter()
-                .copied()
-                .filter(|&f| planes[f as usize].side(x) == 0)
-                .collect()
+            let (planes, grid): &(Vec<Plane>, FacetGrid) = lookup.get_or_init(|| {
+                let p = |k: u32| &pts[k as usize];
+                let planes = (self.facet_planes.iter())
+                    .map(|f| Plane::new(p(f[0]), p(f[1]), p(f[2])))
+                    .collect();
+                (planes, FacetGrid::new(pts, self))
+            });
+            let on_plane = |f: &u32| planes[*f as usize].side(x) == 0;
+            out.extend(grid.candidates(x).iter().filter(|f| on_plane(f)));
         };
+        let mut facet_start = Vec::with_capacity(pts.len() + 1);
+        let mut facet_list = Vec::with_capacity(incident.len());
+        facet_start.push(0);
         // Small hulls (the shell's local ones, thousands a second) stay on this thread.
-        let lists: Vec<Vec<u32>> = if pts.len() < 4096 {
-            pts.iter().enumerate().map(on).collect()
+        if pts.len() < 4096 {
+            for (i, x) in pts.iter().enumerate() {
+                on(i, x, &mut facet_list);
+                facet_start.push(facet_list.len() as u32);
+            }
         } else {
-            pts.par_iter().enumerate().map(on).collect()
-        };
-        self.facet_start = Vec::with_capacity(pts.len() + 1);
-        self.facet_start.push(0);
-        for l in &lists {
-            self.facet_list.extend_from_slice(l);
-            self.facet_start.push(self.facet_list.len() as u32);
+            let lists: Vec<Vec<u32>> = (pts.par_iter().enumerate())
+                .map(|(i, x)| {
+                    let mut l = Vec::new();
+                    on(i, x, &mut l);
+                    l
+                })
+                .collect();
+            for l in &lists {
+                facet_list.extend_from_slice(l);
+                facet_start.push(facet_list.len() as u32);
+            }
         }
+        (self.facet_start, self.facet_list) = (facet_start, facet_list);
     }
 }
 
@@ -288,6 +324,17 @@ impl FacetGrid {
     fn new(pts: &[Point3], hull: &Hull3) -> Self {
         let facets = &hull.facet_planes;
         let (lo, hi) = super::predicates::bounding_box(pts);
+        if pts.len() < SMALL_GRID {
+            // One cell holding every facet: what the grid below would make, without its
+            // planes and boxes (a small hull's lookups are few).
+            return FacetGrid {
+                lo,
+                inv: [0.0; 3],
+                res: 1,
+                start: vec![0, facets.len() as u32],
+                list: (0..facets.len() as u32).collect(),
+            };
+        }
         // A point on a facet's plane lies in the facet (the plane supports the hull), so
         // only the cells of the facet's bounding box can hold it.
         let mut boxes = vec![([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]); facets.len()];
@@ -509,6 +556,8 @@ struct Builder<'a> {
     tris: Vec<Tri>,
     /// The triangle whose conflict list holds each point ([`NONE`]: none).
     owner: Vec<u32>,
+    /// The point after each one in its conflict list ([`NONE`]: the last).
+    next: Vec<u32>,
     /// The points [`Builder::run`] may insert (all when `None`).
     eligible: Option<Vec<bool>>,
     /// The tetrahedra each insertion makes with the triangles it sees, when recording.
@@ -525,7 +574,8 @@ struct Scratch {
     /// `(a, b, outer triangle, its edge index)` for each horizon edge `ab`.
     horizon: Vec<(u32, u32, usize, usize)>,
     orphans: Vec<u32>,
-    by_start: HashMap<u32, usize>,
+    /// `(a, new triangle)` for each horizon edge `ab`, sorted.
+    by_start: Vec<(u32, usize)>,
 }
 
 impl<'a> Builder<'a> {
@@ -543,6 +593,7 @@ impl<'a> Builder<'a> {
             pts,
             tris: Vec::new(),
             owner: vec![NONE; pts.len()],
+            next: vec![NONE; pts.len()],
             eligible: None,
             tets: None,
             round: 0,
@@ -552,8 +603,22 @@ impl<'a> Builder<'a> {
 
     /// Files `q` in the conflict list of triangle `t`.
     fn file(&mut self, t: usize, q: u32) {
-        self.tris[t].conflicts.push(q);
+        let tri = &mut self.tris[t];
+        match tri.last {
+            NONE => tri.first = q,
+            l => self.next[l as usize] = q,
+        }
+        tri.last = q;
+        self.next[q as usize] = NONE;
         self.owner[q as usize] = t as u32;
+    }
+
+    /// The conflict list of `t`, in filing order.
+    fn conflicts(&self, t: usize) -> impl Iterator<Item = u32> + '_ {
+        let first = Some(self.tris[t].first).filter(|&q| q != NONE);
+        std::iter::successors(first, |&q| {
+            Some(self.next[q as usize]).filter(|&n| n != NONE)
+        })
     }
 
     /// Starts from the simplex `s`; the points of `candidates` outside it go in the
@@ -566,16 +631,11 @@ impl<'a> Builder<'a> {
         for v in [[b, c, d], [a, d, c], [a, b, d], [a, c, b]] {
             self.tris.push(Tri::new(v, [NONE; 3]));
         }
-        let mut edges = HashMap::default();
-        for t in 0..4 {
-            for i in 0..3 {
-                edges.insert(edge_of(&self.tris[t].v, i), (t, i));
-            }
-        }
         for t in 0..4 {
             for i in 0..3 {
                 let [x, y] = edge_of(&self.tris[t].v, i);
-                self.tris[t].nb[i] = edges[&[y, x]].0 as u32;
+                let twin = (0..4).find(|&u| (0..3).any(|j| edge_of(&self.tris[u].v, j) == [y, x]));
+                self.tris[t].nb[i] = twin.expect("a tetrahedron's faces pair up") as u32;
             }
         }
         for q in candidates {
@@ -617,10 +677,7 @@ impl<'a> Builder<'a> {
             }
             let Some(p) = self.furthest(t) else { continue };
             let new = self.insert(t, p);
-            work.extend(
-                new.into_iter()
-                    .filter(|&u| !self.tris[u].conflicts.is_empty()),
-            );
+            work.extend(new.into_iter().filter(|&u| self.tris[u].first != NONE));
         }
     }
 
@@ -629,17 +686,12 @@ impl<'a> Builder<'a> {
     fn furthest(&self, t: usize) -> Option<u32> {
         let v = self.tris[t].v;
         let plane = Plane::new(self.p(v[0]), self.p(v[1]), self.p(v[2]));
-        let eligible = |q: &&u32| self.eligible.as_ref().is_none_or(|e| e[**q as usize]);
-        self.tris[t]
-            .conflicts
-            .iter()
-            .filter(eligible)
-            .max_by(|&&a, &&b| {
-                plane
-                    .estimate(self.p(a))
-                    .total_cmp(&plane.estimate(self.p(b)))
-            })
-            .copied()
+        let eligible = |q: &u32| self.eligible.as_ref().is_none_or(|e| e[*q as usize]);
+        self.conflicts(t).filter(eligible).max_by(|&a, &b| {
+            plane
+                .estimate(self.p(a))
+                .total_cmp(&plane.estimate(self.p(b)))
+        })
     }
 
     /// Adds `p` (strictly beyond triangle `t0`); returns the new triangles.
@@ -648,9 +700,10 @@ impl<'a> Builder<'a> {
         let mut s = std::mem::take(&mut self.scratch);
         self.horizon(t0, p, &mut s);
         for &t in &s.visible {
+            s.orphans.extend(self.conflicts(t));
             let tri = &mut self.tris[t];
             tri.alive = false;
-            s.orphans.append(&mut tri.conflicts);
+            (tri.first, tri.last) = (NONE, NONE);
             if let Some(tets) = &mut self.tets {
                 let [a, b, c] = tri.v;
                 tets.push([a, b, c, p]);
@@ -720,12 +773,14 @@ impl<'a> Builder<'a> {
             let id = self.tris.len();
             self.tris.push(Tri::new([a, b, p], [n as u32, NONE, NONE]));
             self.tris[n].nb[j] = id as u32;
-            s.by_start.insert(a, id);
+            s.by_start.push((a, id));
             new.push(id);
         }
+        s.by_start.sort_unstable();
         for &id in &new {
             let b = self.tris[id].v[1];
-            let next = s.by_start[&b];
+            let k = s.by_start.partition_point(|&(a, _)| a < b);
+            let next = s.by_start[k].1;
             self.tris[id].nb[1] = next as u32;
             self.tris[next].nb[2] = id as u32;
         }
@@ -847,8 +902,21 @@ mod tests {
         }
         pts.extend((0..3000).map(|_| [rng.unit() * 0.3, rng.unit() * 0.3, rng.unit() * 0.3]));
         pts.push([0.0, 0.0, 0.0]);
-        for set in [&pts[..4000], &pts[4000..]] {
+        // Small sets too (one grid cell, corners named by their triangles): grid points,
+        // repeats and points inside edges and facets included.
+        let small: Vec<Vec<Point3>> = (0..300)
+            .map(|k| {
+                (0..5 + k % 60)
+                    .map(|_| [0; 3].map(|_| rng.below(4) as f64))
+                    .collect()
+            })
+            .collect();
+        let sets = [&pts[..4000], &pts[4000..]];
+        for set in sets.into_iter().chain(small.iter().map(|s| &s[..])) {
             let h = Hull3::new(set);
+            if h.dimension < 3 {
+                continue;
+            }
             for (i, x) in set.iter().enumerate() {
                 let exact: Vec<u32> = (0..h.facet_planes.len() as u32)
                     .filter(|&f| {
@@ -860,7 +928,7 @@ mod tests {
             }
             // The common facet of three points is the least facet on all three.
             let on: Vec<usize> = (0..set.len()).filter(|&i| h.on_boundary(i)).collect();
-            for _ in 0..3000 {
+            for _ in 0..if set.len() < 64 { 30 } else { 3000 } {
                 let [a, b, c] = [0; 3].map(|_| on[rng.below(on.len())]);
                 let least = h
                     .facets_of(a)

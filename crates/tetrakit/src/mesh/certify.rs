@@ -6,7 +6,8 @@
 
 use super::report::{Problem, ProblemKind};
 use super::shell_degree::{OuterFace, check_inner_degree, check_outer_degree, used_vertices};
-use super::{Polyhedron, rotated_face, sorted_face, verify, verify_faces};
+use super::verify::BoundaryFace;
+use super::{Polyhedron, Report, rotated_face, sorted_face, verify, verify_faces};
 use crate::geom::point_key;
 use crate::geom::{Hull3, Point3, orient2d_drop, projection_axis};
 use crate::numbering::ids;
@@ -116,103 +117,157 @@ pub fn certify_boundary(
 /// assert!(certify_shell(&pts, &[[8, 9, 10, 11]], &[8, 9, 10, 11]).is_err());
 /// ```
 pub fn certify_shell(points: &[Point3], tets: &[[u32; 4]], inner: &[u32]) -> Result<(), Problem> {
-    let (report, boundary) = verify_faces(points, tets);
-    first_problem(report.problems)?;
-    let used = used_vertices(points, tets)?;
-    let outer_hull = Hull3::new(points);
-    let inner_points: Vec<Point3> = inner.iter().map(|&i| points[i as usize]).collect();
-    let inner_hull = Hull3::new(&inner_points);
-    if outer_hull.dimension < 3 || inner_hull.dimension < 3 {
-        return Err(shell_problem(
-            Vec::new(),
-            "the outer or inner hull is flat".into(),
-        ));
-    }
-    let mut local = vec![u32::MAX; points.len()];
-    for (k, &i) in inner.iter().enumerate() {
-        local[i as usize] = k as u32;
-    }
-    let on_inner = |v: u32| {
-        let l = local[v as usize];
-        l != u32::MAX && inner_hull.on_boundary(l as usize)
-    };
-    let on_outer = |v: u32| outer_hull.on_boundary(v as usize);
-    if let Some(&v) = tets
-        .iter()
-        .flatten()
-        .find(|&&v| !on_outer(v) && !on_inner(v))
-    {
-        return Err(Problem::new(
-            ProblemKind::SteinerPoint,
-            Vec::new(),
-            vec![v],
-            format!("vertex #{v} lies on neither the outer nor the inner surface"),
-        ));
-    }
-    // A triangle in a facet's plane faces the same way as the facet's plane triple when
-    // the two have the same orientation seen along an axis the plane is not parallel to.
-    let same_way = |pts: &[Point3], plane: [u32; 3], f: [&Point3; 3]| -> bool {
-        let q = |k: usize| &pts[plane[k] as usize];
-        projection_axis(q(0), q(1), q(2)).is_some_and(|axis| {
-            orient2d_drop(q(0), q(1), q(2), axis) == orient2d_drop(f[0], f[1], f[2], axis)
-        })
-    };
-    let outer_facet = |f: &[u32; 3]| -> Option<u32> {
-        let facet = outer_hull.common_facet(f[0] as usize, f[1] as usize, f[2] as usize)?;
-        let tri = f.map(|v| &points[v as usize]);
-        same_way(points, outer_hull.facet_planes[facet as usize], tri).then_some(facet)
-    };
-    let inner_side = |f: &[u32; 3]| -> bool {
-        if !f.iter().all(|&v| on_inner(v)) {
-            return false;
+    let (hulls, faces) = rayon::join(
+        || ShellHulls::new(points, inner),
+        || verify_faces(points, tets),
+    );
+    hulls.certify(tets, faces)
+}
+
+/// The two hulls [`certify_shell`] measures a mesh against, computed from the points
+/// alone: a mesher can build them while it meshes (they are most of the certificate's
+/// time), and they owe nothing to the mesh or to how it was made.
+///
+/// ```
+/// use tetrakit::mesh::ShellHulls;
+/// let mut pts: Vec<[f64; 3]> =
+///     (0..8).map(|i| [(i & 1) as f64 * 4.0, ((i >> 1) & 1) as f64 * 4.0, (i >> 2) as f64 * 4.0]).collect();
+/// pts.extend([[1.0, 1.0, 1.0], [2.0, 1.0, 1.0], [1.0, 2.0, 1.0], [1.0, 1.0, 2.0]]);
+/// let hulls = ShellHulls::new(&pts, &[8, 9, 10, 11]);
+/// // The small tetrahedron alone is not the region between the two hulls.
+/// assert!(hulls.certify_shell(&[[8, 9, 10, 11]]).is_err());
+/// ```
+pub struct ShellHulls<'a> {
+    points: &'a [Point3],
+    inner: &'a [u32],
+    inner_points: Vec<Point3>,
+    outer_hull: Hull3,
+    inner_hull: Hull3,
+}
+
+impl<'a> ShellHulls<'a> {
+    /// The hulls of `points` and of `points[inner]`, built side by side.
+    pub fn new(points: &'a [Point3], inner: &'a [u32]) -> Self {
+        let inner_points: Vec<Point3> = inner.iter().map(|&i| points[i as usize]).collect();
+        let (outer_hull, inner_hull) =
+            rayon::join(|| Hull3::new(points), || Hull3::new(&inner_points));
+        ShellHulls {
+            points,
+            inner,
+            inner_points,
+            outer_hull,
+            inner_hull,
         }
-        let l = f.map(|v| local[v as usize] as usize);
-        let facet = inner_hull.common_facet(l[0], l[1], l[2]);
-        // Facing into Q: the reversed triangle faces out of it.
-        let reversed = [f[0], f[2], f[1]].map(|v| &points[v as usize]);
-        facet
-            .is_some_and(|g| same_way(&inner_points, inner_hull.facet_planes[g as usize], reversed))
-    };
-    let sides: Vec<Side> = boundary
-        .par_iter()
-        .map(|f| match outer_facet(&f.v) {
-            Some(facet) => Side::Outer(OuterFace {
-                v: f.v,
-                facet,
-                tet: f.tet,
-            }),
-            None if inner_side(&f.v) => {
-                let [a, b, c] = f.v.map(|v| v as usize);
-                Side::Inner {
-                    off_p: outer_hull.common_facet(a, b, c).is_none(),
-                }
-            }
-            None => Side::Neither,
-        })
-        .collect();
-    if let Some(k) = sides.iter().position(|s| matches!(s, Side::Neither)) {
-        let f = &boundary[k].v;
-        return Err(shell_problem(
-            f.to_vec(),
-            format!(
-                "boundary triangle {} lies neither in a facet of the outer hull facing out nor in a facet of the inner hull facing in",
-                ids(f)
-            ),
-        ));
     }
-    let off_p = sides
-        .iter()
-        .any(|s| matches!(s, Side::Inner { off_p: true }));
-    let outer_faces: Vec<OuterFace> = sides
-        .into_iter()
-        .filter_map(|s| match s {
-            Side::Outer(f) => Some(f),
-            _ => None,
-        })
-        .collect();
-    let in_q: HashSet<[u64; 3]> = inner_points.iter().map(point_key).collect();
-    let components = check_outer_degree(points, &outer_hull, inner, &in_q, &used, &outer_faces)?;
-    check_inner_degree(components, tets.len(), off_p)
+
+    /// [`certify_shell`] of `tets` against these hulls.
+    pub fn certify_shell(&self, tets: &[[u32; 4]]) -> Result<(), Problem> {
+        self.certify(tets, verify_faces(self.points, tets))
+    }
+
+    fn certify(
+        &self,
+        tets: &[[u32; 4]],
+        (report, boundary): (Report, Vec<BoundaryFace>),
+    ) -> Result<(), Problem> {
+        let (points, inner) = (self.points, self.inner);
+        let (outer_hull, inner_hull) = (&self.outer_hull, &self.inner_hull);
+        let inner_points = &self.inner_points;
+        first_problem(report.problems)?;
+        let used = used_vertices(points, tets)?;
+        if outer_hull.dimension < 3 || inner_hull.dimension < 3 {
+            return Err(shell_problem(
+                Vec::new(),
+                "the outer or inner hull is flat".into(),
+            ));
+        }
+        let mut local = vec![u32::MAX; points.len()];
+        for (k, &i) in inner.iter().enumerate() {
+            local[i as usize] = k as u32;
+        }
+        let on_inner = |v: u32| {
+            let l = local[v as usize];
+            l != u32::MAX && inner_hull.on_boundary(l as usize)
+        };
+        let on_outer = |v: u32| outer_hull.on_boundary(v as usize);
+        if let Some(&v) = tets
+            .iter()
+            .flatten()
+            .find(|&&v| !on_outer(v) && !on_inner(v))
+        {
+            return Err(Problem::new(
+                ProblemKind::SteinerPoint,
+                Vec::new(),
+                vec![v],
+                format!("vertex #{v} lies on neither the outer nor the inner surface"),
+            ));
+        }
+        // A triangle in a facet's plane faces the same way as the facet's plane triple when
+        // the two have the same orientation seen along an axis the plane is not parallel to.
+        let same_way = |pts: &[Point3], plane: [u32; 3], f: [&Point3; 3]| -> bool {
+            let q = |k: usize| &pts[plane[k] as usize];
+            projection_axis(q(0), q(1), q(2)).is_some_and(|axis| {
+                orient2d_drop(q(0), q(1), q(2), axis) == orient2d_drop(f[0], f[1], f[2], axis)
+            })
+        };
+        let outer_facet = |f: &[u32; 3]| -> Option<u32> {
+            let facet = outer_hull.common_facet(f[0] as usize, f[1] as usize, f[2] as usize)?;
+            let tri = f.map(|v| &points[v as usize]);
+            same_way(points, outer_hull.facet_planes[facet as usize], tri).then_some(facet)
+        };
+        let inner_side = |f: &[u32; 3]| -> bool {
+            if !f.iter().all(|&v| on_inner(v)) {
+                return false;
+            }
+            let l = f.map(|v| local[v as usize] as usize);
+            let facet = inner_hull.common_facet(l[0], l[1], l[2]);
+            // Facing into Q: the reversed triangle faces out of it.
+            let reversed = [f[0], f[2], f[1]].map(|v| &points[v as usize]);
+            facet.is_some_and(|g| {
+                same_way(inner_points, inner_hull.facet_planes[g as usize], reversed)
+            })
+        };
+        let sides: Vec<Side> = boundary
+            .par_iter()
+            .map(|f| match outer_facet(&f.v) {
+                Some(facet) => Side::Outer(OuterFace {
+                    v: f.v,
+                    facet,
+                    tet: f.tet,
+                }),
+                None if inner_side(&f.v) => {
+                    let [a, b, c] = f.v.map(|v| v as usize);
+                    Side::Inner {
+                        off_p: outer_hull.common_facet(a, b, c).is_none(),
+                    }
+                }
+                None => Side::Neither,
+            })
+            .collect();
+        if let Some(k) = sides.iter().position(|s| matches!(s, Side::Neither)) {
+            let f = &boundary[k].v;
+            return Err(shell_problem(
+                f.to_vec(),
+                format!(
+                    "boundary triangle {} lies neither in a facet of the outer hull facing out nor in a facet of the inner hull facing in",
+                    ids(f)
+                ),
+            ));
+        }
+        let off_p = sides
+            .iter()
+            .any(|s| matches!(s, Side::Inner { off_p: true }));
+        let outer_faces: Vec<OuterFace> = sides
+            .into_iter()
+            .filter_map(|s| match s {
+                Side::Outer(f) => Some(f),
+                _ => None,
+            })
+            .collect();
+        let in_q: HashSet<[u64; 3]> = inner_points.iter().map(point_key).collect();
+        let components = check_outer_degree(points, outer_hull, inner, &in_q, &used, &outer_faces)?;
+        check_inner_degree(components, tets.len(), off_p)
+    }
 }
 
 /// Where a boundary triangle lies.

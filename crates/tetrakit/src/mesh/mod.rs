@@ -18,7 +18,7 @@ mod verify_planar;
 pub use crate::control::Verdict;
 pub(crate) use certify::boundary_faces;
 pub use certify::{
-    certify_boundary, certify_hull, certify_polyhedron, certify_shell, verify_dual_path,
+    ShellHulls, certify_boundary, certify_hull, certify_polyhedron, certify_shell, verify_dual_path,
 };
 pub(crate) use check::outcome;
 pub use check::{CheckOptions, CheckOutcome, check};

@@ -276,10 +276,11 @@ impl Shell {
     /// assert!(matches!(Shell::new(&tet, &out), Err(ShellError::InnerOutside { index: 3, .. })));
     /// ```
     pub fn new(outer: &[Point3], inner: &[Point3]) -> Result<Shell, ShellError> {
+        let (outer_e, inner_e) = rayon::join(|| extreme_points(outer), || extreme_points(inner));
         let (outer_v, outer_ignored) =
-            extreme_points(outer).map_err(|dimension| ShellError::OuterFlat { dimension })?;
+            outer_e.map_err(|dimension| ShellError::OuterFlat { dimension })?;
         let (inner_v, inner_ignored) =
-            extreme_points(inner).map_err(|dimension| ShellError::InnerFlat { dimension })?;
+            inner_e.map_err(|dimension| ShellError::InnerFlat { dimension })?;
         let mut points: Vec<Point3> = outer_v.iter().map(|&i| outer[i as usize]).collect();
         let index: HashMap<[u64; 3], u32> = points
             .iter()

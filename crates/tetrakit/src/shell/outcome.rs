@@ -172,7 +172,12 @@ pub fn shell(s: &Shell, opts: ShellOptions, ctl: &Control) -> Result<ShellOutcom
     if opts.optimum && n > crate::exact::MAX_VERTICES {
         return Err(ShellError::TooLargeForOptimum { n });
     }
-    let (mut mesh, done, method) = match within_bound(s, opts, o.bound, ctl) {
+    // The certificate's hulls owe nothing to the mesh: built beside it.
+    let (meshed, hulls) = rayon::join(
+        || within_bound(s, opts, o.bound, ctl),
+        || crate::mesh::ShellHulls::new(&s.points, &s.inner),
+    );
+    let (mut mesh, done, method) = match meshed {
         Ok(m) => m,
         Err(ShellError::Stopped(_)) => return Ok(o),
         Err(e) => return Err(e),
@@ -191,7 +196,9 @@ pub fn shell(s: &Shell, opts: ShellOptions, ctl: &Control) -> Result<ShellOutcom
             interior = None;
         }
     }
-    crate::mesh::certify_shell(&s.points, &mesh.tets, &s.inner).map_err(ShellError::Uncertified)?;
+    hulls
+        .certify_shell(&mesh.tets)
+        .map_err(ShellError::Uncertified)?;
     o.verdict = Verdict::Yes;
     o.method = method.name();
     o.within_bound = Some(mesh.tets.len() <= o.bound);
