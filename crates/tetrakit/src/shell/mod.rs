@@ -154,6 +154,9 @@ pub struct Shell {
     pub touching: Vec<u32>,
     /// `P` as the hull of `points`.
     hull: Hull3,
+    /// The edges of `Q`, which the surface keeps on `P`'s facets and recovers in flat
+    /// bottoms.
+    q_edges: recover::QEdges,
 }
 
 /// Why a shell cannot be built or tetrahedralized.
@@ -241,9 +244,9 @@ impl From<Stopped> for ShellError {
     }
 }
 
-/// The extreme points of `pts` (in input order, repeats dropped) and the others, or the
-/// hull's dimension when it is flat.
-fn extreme_points(pts: &[Point3]) -> Result<(Vec<u32>, Vec<u32>), usize> {
+/// The extreme points of `pts` (in input order, repeats dropped), the others, and their
+/// hull; or the hull's dimension when it is flat.
+fn extreme_points(pts: &[Point3]) -> Result<(Vec<u32>, Vec<u32>, Hull3), usize> {
     let hull = Hull3::new(pts);
     if hull.dimension < 3 {
         return Err(hull.dimension);
@@ -253,14 +256,18 @@ fn extreme_points(pts: &[Point3]) -> Result<(Vec<u32>, Vec<u32>), usize> {
     for (i, p) in pts.iter().enumerate() {
         // A corner of a 3-polytope lies on three facets or more; a point inside an edge
         // on two, inside a facet on one.
-        let corner = hull.facets_of(i).len() >= 3 && seen.insert(point_key(p));
+        let corner = is_corner(&hull, i) && seen.insert(point_key(p));
         if corner {
             vertices.push(i as u32)
         } else {
             others.push(i as u32)
         }
     }
-    Ok((vertices, others))
+    Ok((vertices, others, hull))
+}
+
+fn is_corner(hull: &Hull3, i: usize) -> bool {
+    hull.facets_of(i).len() >= 3
 }
 
 impl Shell {
@@ -277,9 +284,9 @@ impl Shell {
     /// ```
     pub fn new(outer: &[Point3], inner: &[Point3]) -> Result<Shell, ShellError> {
         let (outer_e, inner_e) = rayon::join(|| extreme_points(outer), || extreme_points(inner));
-        let (outer_v, outer_ignored) =
+        let (outer_v, outer_ignored, _) =
             outer_e.map_err(|dimension| ShellError::OuterFlat { dimension })?;
-        let (inner_v, inner_ignored) =
+        let (inner_v, inner_ignored, inner_hull) =
             inner_e.map_err(|dimension| ShellError::InnerFlat { dimension })?;
         let mut points: Vec<Point3> = outer_v.iter().map(|&i| outer[i as usize]).collect();
         let index: HashMap<[u64; 3], u32> = points
@@ -298,6 +305,14 @@ impl Shell {
         // Q ⊆ P exactly when every corner of CH(P ∪ Q) is a vertex of P: a corner of the
         // union that is an inner vertex not shared with P lies outside P.
         let union = Hull3::new(&points);
+        let corners: HashMap<[u64; 3], u32> = (inner_v.iter().zip(&inner_idx))
+            .map(|(&i, &k)| (point_key(&inner[i as usize]), k))
+            .collect();
+        let corner = |i: u32| -> Option<u32> {
+            let key = point_key(&inner[i as usize]);
+            (is_corner(&inner_hull, i as usize)).then(|| corners.get(&key).copied())?
+        };
+        let q_edges = recover::QEdges::from_hull(&inner_hull, corner);
         let n_outer = outer_v.len() as u32;
         let corner = |c: u32| union.facets_of(c as usize).len() >= 3;
         if let Some(c) = (n_outer..points.len() as u32).find(|&c| corner(c)) {
@@ -320,6 +335,7 @@ impl Shell {
             inner_ignored,
             touching,
             hull: union,
+            q_edges,
         })
     }
 
@@ -433,7 +449,6 @@ pub fn tetrahedralize(
         .copied()
         .filter(|&v| v as usize >= shell.outer.len())
         .collect();
-    let q_edges = recover::QEdges::new(&shell.points, &shell.inner);
     let removable: Vec<u32> = {
         let inner: HashSet<u32> = shell.inner.iter().copied().collect();
         shell
@@ -447,7 +462,7 @@ pub fn tetrahedralize(
         &shell.points,
         &shell.hull,
         (&hidden, &shell.touching),
-        &q_edges,
+        &shell.q_edges,
     );
     let mut thesis = None;
     let order: Vec<Vec<u32>> = match surface {

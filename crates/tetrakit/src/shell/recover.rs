@@ -21,28 +21,40 @@ use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use spade::{ConstrainedDelaunayTriangulation, Triangulation};
 
 /// Q's edges, by vertex (`edges[v]` are the vertices joined to `v` by an edge of `Q`).
-#[derive(Debug, Default)]
+#[derive(Clone, Debug, Default)]
 pub(super) struct QEdges {
     edges: HashMap<u32, Vec<u32>>,
 }
 
 impl QEdges {
-    /// The edges of the polytope `Q` whose vertices are `inner` (indices into `pts`).
-    pub(super) fn new(pts: &[Point3], inner: &[u32]) -> QEdges {
-        let coords: Vec<Point3> = inner.iter().map(|&v| pts[v as usize]).collect();
-        let hull = crate::geom::Hull3::facets_only(&coords);
-        // Every point is a corner of Q, so its edges are the triangle edges between two
-        // facets.
-        let mut by_vertex: HashMap<u32, Vec<u32>> = HashMap::default();
+    /// The edges of the polytope `Q` from `hull`, the hull of its input points:
+    /// `corner(i)` is the shell index of input point `i` when it is a corner of `Q` (a
+    /// repeat of a corner included), `None` otherwise. A polytope edge is the line where
+    /// two facets meet; the hull's triangles may have points inside it as corners, so each
+    /// edge is followed from a corner through those to the corner at its other end.
+    pub(super) fn from_hull(hull: &Hull3, corner: impl Fn(u32) -> Option<u32>) -> QEdges {
         let facet: HashMap<(u32, u32), u32> = (hull.triangles.iter().zip(&hull.triangle_facet))
             .flat_map(|(t, &f)| (0..3).map(move |k| ((t[k], t[(k + 1) % 3]), f)))
             .collect();
+        // The triangle edges between two facets, by input point.
+        let mut along: HashMap<u32, Vec<u32>> = HashMap::default();
         for (&(a, b), &f) in &facet {
             if a < b && facet.get(&(b, a)).is_some_and(|&g| g != f) {
-                let (a, b) = (inner[a as usize], inner[b as usize]);
-                by_vertex.entry(a).or_default().push(b);
-                by_vertex.entry(b).or_default().push(a);
+                along.entry(a).or_default().push(b);
+                along.entry(b).or_default().push(a);
             }
+        }
+        let mut by_vertex: HashMap<u32, Vec<u32>> = HashMap::default();
+        for (&a, next) in &along {
+            let Some(sa) = corner(a) else { continue };
+            for &first in next {
+                if let Some(sb) = edge_end(&along, &corner, a, first) {
+                    by_vertex.entry(sa).or_default().push(sb);
+                }
+            }
+        }
+        for ws in by_vertex.values_mut() {
+            ws.sort_unstable();
         }
         QEdges { edges: by_vertex }
     }
@@ -163,6 +175,28 @@ impl QEdges {
         });
         tris.collect()
     }
+}
+
+/// The corner of `Q` at the end of the edge that leaves corner `a` through the point
+/// `first` (`along`: the hull's triangle edges between two facets; `corner` as in
+/// [`QEdges::from_hull`]).
+fn edge_end(
+    along: &HashMap<u32, Vec<u32>>,
+    corner: &impl Fn(u32) -> Option<u32>,
+    a: u32,
+    first: u32,
+) -> Option<u32> {
+    let (mut prev, mut at) = (a, first);
+    // A point inside an edge of Q has the edge's two pieces there and no more: the walk
+    // goes along the edge, through fewer points than there are.
+    for _ in 0..along.len() {
+        if let Some(s) = corner(at) {
+            return Some(s);
+        }
+        let &n = along.get(&at)?.iter().find(|&&n| n != prev)?;
+        (prev, at) = (at, n);
+    }
+    None
 }
 
 /// A triangulated surface piece with its directed edges and the triangles at each vertex,
@@ -333,4 +367,53 @@ fn recover_edge(
 /// The corner of triangle `t` other than `c` and `d` (`t` has the directed edge `cd`).
 fn apex(t: [u32; 3], c: u32, d: u32) -> u32 {
     t.into_iter().find(|&v| v != c && v != d).unwrap_or(c)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geom::point_key;
+
+    /// Q's edges read off a hull of its input points (points inside edges and facets,
+    /// repeats) equal the pairs of corners that share two facets.
+    #[test]
+    fn edges_from_a_hull_are_the_pairs_of_corners_on_two_facets() {
+        let mut rng = crate::rng::Rng::new(41);
+        let mut checked = 0;
+        for k in 0..400 {
+            let side = 2 + k % 4;
+            let pts: Vec<Point3> = (0..6 + k % 40)
+                .map(|_| [0; 3].map(|_| rng.below(side) as f64))
+                .collect();
+            let hull = Hull3::new(&pts);
+            if hull.dimension < 3 {
+                continue;
+            }
+            // Corners by their first occurrence, named by that index.
+            let mut first: HashMap<[u64; 3], u32> = HashMap::default();
+            for (i, p) in pts.iter().enumerate() {
+                if hull.facets_of(i).len() >= 3 {
+                    first.entry(point_key(p)).or_insert(i as u32);
+                }
+            }
+            let corner = |i: u32| {
+                let at = hull.facets_of(i as usize).len() >= 3;
+                at.then(|| first[&point_key(&pts[i as usize])])
+            };
+            let q = QEdges::from_hull(&hull, corner);
+            let mut want: HashMap<u32, Vec<u32>> = HashMap::default();
+            for (&a, &b) in first.values().flat_map(|a| first.values().map(move |b| (a, b))) {
+                let (fa, fb) = (hull.facets_of(a as usize), hull.facets_of(b as usize));
+                if a != b && fa.iter().filter(|f| fb.contains(f)).count() >= 2 {
+                    want.entry(a).or_default().push(b);
+                }
+            }
+            for ws in want.values_mut() {
+                ws.sort_unstable();
+            }
+            assert_eq!(q.edges, want, "set {k}: {pts:?}");
+            checked += 1;
+        }
+        assert!(checked > 300, "{checked}");
+    }
 }

@@ -287,7 +287,7 @@ mod tests {
     use super::super::step_1;
     use super::*;
     use crate::geom::Point3;
-    use crate::shell::{Shell, recover::QEdges};
+    use crate::shell::Shell;
 
     /// Every order of at most `depth` tips of `p_a` (those outside `V_a^P` first),
     /// replayed from scratch, with no bound and nothing remembered: true when one
@@ -343,12 +343,11 @@ mod tests {
             let hidden: Vec<u32> = (shell.inner.iter().copied())
                 .filter(|&v| v as usize >= shell.outer.len())
                 .collect();
-            let q_edges = QEdges::new(&shell.points, &shell.inner);
             let Ok(mut surface) = Surface::new(
                 &shell.points,
                 &shell.hull,
                 (&hidden, &shell.touching),
-                &q_edges,
+                &shell.q_edges,
             ) else {
                 continue;
             };
