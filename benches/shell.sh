@@ -5,7 +5,8 @@
 # tetrahedralization of the same two surfaces (the PLC of tetrakit's boundary triangles,
 # a hole inside the inner sphere; `-pQ`, and `-pYQ` which keeps the surfaces unsplit),
 # in the same run, alternating. Reports tetrahedra per vertex, Steiner points, seconds
-# (medians) and peak memory; tetrakit's time includes reading and its certificate.
+# (medians; tetrakit on every core and, with RAYON_NUM_THREADS=1, on one: TetGen uses
+# one) and peak memory; tetrakit's time includes reading and its certificate.
 # Then the families of benches/shell_families.py (FAMILIES, NAME:N each): thin twisted
 # and coaxial prisms, bent arcs, lattice spheres with Q = P/2, circles on a cube's facets,
 # a dome on a dome's floor, an eighth of a ball in a box's corner. Bigcaps get
@@ -39,10 +40,12 @@ row() {
   "$TK" shell "$o" "$i" --json -o "$WORK/s$key.ele" >"$WORK/s.json"
   # shellcheck disable=SC2086
   python3 benches/shell_poly.py "$WORK/s$key.ele" "$WORK/p$key.poly" $hole
-  tk=(); tb=(); tg=(); ty=()
+  tk=(); t1=(); tb=(); tg=(); ty=()
   for _ in $(seq "$RUNS"); do
     /usr/bin/time -f "%e %M" -o "$WORK/t1" "$TK" shell "$o" "$i" --json >"$WORK/s.json"
     tk+=("$(elapsed "$WORK/t1")"); tkm=$(peak "$WORK/t1")
+    RAYON_NUM_THREADS=1 /usr/bin/time -f "%e %M" -o "$WORK/t5" "$TK" shell "$o" "$i" --json >/dev/null
+    t1+=("$(elapsed "$WORK/t5")")
     if /usr/bin/time -f "%e %M" -o "$WORK/t4" timeout "$BIGCAP_TIMEOUT" "$TK" shell "$o" "$i" --method bigcap --json >"$WORK/b.json"; then
       tb+=("$(elapsed "$WORK/t4")")
     else
@@ -58,19 +61,19 @@ row() {
   wm=$(python3 -c 'import json,sys;w=json.load(open(sys.argv[1])).get("weights");print(w["max"] if w else "-")' "$WORK/s.json")
   tb_s=$(printf '%s\n' "${tb[@]}" | median)
   [ "$tb_s" = "-" ] && tb_s=nan
-  tk_s=$(printf '%s\n' "${tk[@]}" | median); tg_s=$(printf '%s\n' "${tg[@]}" | median); ty_s=$(printf '%s\n' "${ty[@]}" | median)
+  tk_s=$(printf '%s\n' "${tk[@]}" | median); t1_s=$(printf '%s\n' "${t1[@]}" | median); tg_s=$(printf '%s\n' "${tg[@]}" | median); ty_s=$(printf '%s\n' "${ty[@]}" | median)
   tetgen -pQ "$WORK/p$key.poly" >/dev/null || true
   g_t=$(head -1 "$WORK/p$key.1.ele" | awk '{print $1}'); g_n=$(head -1 "$WORK/p$key.1.node" | awk '{print $1}')
   tetgen -pYQ "$WORK/p$key.poly" >/dev/null || true
   y_t=$(head -1 "$WORK/p$key.1.ele" | awk '{print $1}'); y_n=$(head -1 "$WORK/p$key.1.node" | awk '{print $1}')
-  awk -v l="$label" -v n="$nn" -v t0="$t0" -v t="$t" -v a="$tk_s" -v am="$tkm" -v bt="$bt" -v bs="$tb_s" -v gt="$g_t" -v gn="$g_n" -v b="$tg_s" -v bm="$tgm" \
+  awk -v l="$label" -v n="$nn" -v t0="$t0" -v t="$t" -v a="$tk_s" -v a1="$t1_s" -v am="$tkm" -v bt="$bt" -v bs="$tb_s" -v gt="$g_t" -v gn="$g_n" -v b="$tg_s" -v bm="$tgm" \
       -v yt="$y_t" -v yn="$y_n" -v c="$ty_s" -v wm="$wm" 'BEGIN {
-    printf "| %s | %d | %.2f | %.2f | %.2f | %d | %.2f | %.2f | %.2f | %d | %.2f | %d | %.2f | %d | %.2f | %.2f | %s |\n",
-      l, n, t0 / n, t / n, a, am, bt / n, bs, gt / n, gn - n, b, bm, yt / n, yn - n, c, a / b, wm }'
+    printf "| %s | %d | %.2f | %.2f | %.2f | %.2f | %d | %.2f | %.2f | %.2f | %d | %.2f | %d | %.2f | %d | %.2f | %.2f | %.2f | %s |\n",
+      l, n, t0 / n, t / n, a, a1, am, bt / n, bs, gt / n, gn - n, b, bm, yt / n, yn - n, c, a / b, a1 / b, wm }'
 }
 
-echo "| shells | n | cap t/n removals | cap t/n flipped | cap s | cap MB | bigcap t/n flipped | bigcap s | TetGen -pQ t/n | Steiner | s | MB | TetGen -pYQ t/n | Steiner | s | ratio s (cap / -pQ) | cap largest weight (§4.4) |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+echo "| shells | n | cap t/n removals | cap t/n flipped | cap s | cap s, 1 thread | cap MB | bigcap t/n flipped | bigcap s | TetGen -pQ t/n | Steiner | s | MB | TetGen -pYQ t/n | Steiner | s | ratio s (cap / -pQ) | ratio, 1 thread | cap largest weight (§4.4) |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 for n in $SIZES; do
   o="$WORK/o$n.xyz"; i="$WORK/i$n.xyz"
   "$TK" generate nested --n-outer $((n / 2)) --n-inner $((n / 2)) --gap 0.2 --seed 1 \

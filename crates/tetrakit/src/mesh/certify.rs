@@ -170,31 +170,21 @@ impl<'a> ShellHulls<'a> {
         tets: &[[u32; 4]],
         (report, boundary): (Report, Vec<BoundaryFace>),
     ) -> Result<(), Problem> {
-        let (points, inner) = (self.points, self.inner);
-        let (outer_hull, inner_hull) = (&self.outer_hull, &self.inner_hull);
-        let inner_points = &self.inner_points;
         first_problem(report.problems)?;
-        let used = used_vertices(points, tets)?;
-        if outer_hull.dimension < 3 || inner_hull.dimension < 3 {
+        let used = used_vertices(self.points, tets)?;
+        if self.outer_hull.dimension < 3 || self.inner_hull.dimension < 3 {
             return Err(shell_problem(
                 Vec::new(),
                 "the outer or inner hull is flat".into(),
             ));
         }
-        let mut local = vec![u32::MAX; points.len()];
-        for (k, &i) in inner.iter().enumerate() {
+        let mut local = vec![u32::MAX; self.points.len()];
+        for (k, &i) in self.inner.iter().enumerate() {
             local[i as usize] = k as u32;
         }
-        let on_inner = |v: u32| {
-            let l = local[v as usize];
-            l != u32::MAX && inner_hull.on_boundary(l as usize)
-        };
-        let on_outer = |v: u32| outer_hull.on_boundary(v as usize);
-        if let Some(&v) = tets
-            .iter()
-            .flatten()
-            .find(|&&v| !on_outer(v) && !on_inner(v))
-        {
+        let on_surface =
+            |v: u32| self.outer_hull.on_boundary(v as usize) || self.on_inner(&local, v);
+        if let Some(&v) = tets.iter().flatten().find(|&&v| !on_surface(v)) {
             return Err(Problem::new(
                 ProblemKind::SteinerPoint,
                 Vec::new(),
@@ -202,48 +192,7 @@ impl<'a> ShellHulls<'a> {
                 format!("vertex #{v} lies on neither the outer nor the inner surface"),
             ));
         }
-        // A triangle in a facet's plane faces the same way as the facet's plane triple when
-        // the two have the same orientation seen along an axis the plane is not parallel to.
-        let same_way = |pts: &[Point3], plane: [u32; 3], f: [&Point3; 3]| -> bool {
-            let q = |k: usize| &pts[plane[k] as usize];
-            projection_axis(q(0), q(1), q(2)).is_some_and(|axis| {
-                orient2d_drop(q(0), q(1), q(2), axis) == orient2d_drop(f[0], f[1], f[2], axis)
-            })
-        };
-        let outer_facet = |f: &[u32; 3]| -> Option<u32> {
-            let facet = outer_hull.common_facet(f[0] as usize, f[1] as usize, f[2] as usize)?;
-            let tri = f.map(|v| &points[v as usize]);
-            same_way(points, outer_hull.facet_planes[facet as usize], tri).then_some(facet)
-        };
-        let inner_side = |f: &[u32; 3]| -> bool {
-            if !f.iter().all(|&v| on_inner(v)) {
-                return false;
-            }
-            let l = f.map(|v| local[v as usize] as usize);
-            let facet = inner_hull.common_facet(l[0], l[1], l[2]);
-            // Facing into Q: the reversed triangle faces out of it.
-            let reversed = [f[0], f[2], f[1]].map(|v| &points[v as usize]);
-            facet.is_some_and(|g| {
-                same_way(inner_points, inner_hull.facet_planes[g as usize], reversed)
-            })
-        };
-        let sides: Vec<Side> = boundary
-            .par_iter()
-            .map(|f| match outer_facet(&f.v) {
-                Some(facet) => Side::Outer(OuterFace {
-                    v: f.v,
-                    facet,
-                    tet: f.tet,
-                }),
-                None if inner_side(&f.v) => {
-                    let [a, b, c] = f.v.map(|v| v as usize);
-                    Side::Inner {
-                        off_p: outer_hull.common_facet(a, b, c).is_none(),
-                    }
-                }
-                None => Side::Neither,
-            })
-            .collect();
+        let sides: Vec<Side> = boundary.par_iter().map(|f| self.side(&local, f)).collect();
         if let Some(k) = sides.iter().position(|s| matches!(s, Side::Neither)) {
             let f = &boundary[k].v;
             return Err(shell_problem(
@@ -264,10 +213,65 @@ impl<'a> ShellHulls<'a> {
                 _ => None,
             })
             .collect();
-        let in_q: HashSet<[u64; 3]> = inner_points.iter().map(point_key).collect();
-        let components = check_outer_degree(points, outer_hull, inner, &in_q, &used, &outer_faces)?;
+        let in_q: HashSet<[u64; 3]> = self.inner_points.iter().map(point_key).collect();
+        let components = check_outer_degree(
+            self.points,
+            &self.outer_hull,
+            self.inner,
+            &in_q,
+            &used,
+            &outer_faces,
+        )?;
         check_inner_degree(components, tets.len(), off_p)
     }
+
+    /// Vertex `v` is on `∂Q` (`local`: each point's index among the inner ones).
+    fn on_inner(&self, local: &[u32], v: u32) -> bool {
+        let l = local[v as usize];
+        l != u32::MAX && self.inner_hull.on_boundary(l as usize)
+    }
+
+    /// Where the boundary triangle `f` lies: in a facet of `P` facing out, in a facet of
+    /// `Q` facing in, or neither.
+    fn side(&self, local: &[u32], f: &BoundaryFace) -> Side {
+        let (points, outer, inner) = (self.points, &self.outer_hull, &self.inner_hull);
+        let [a, b, c] = f.v.map(|v| v as usize);
+        let tri = f.v.map(|v| &points[v as usize]);
+        let outer_facet = outer.common_facet(a, b, c);
+        if let Some(facet) = outer_facet
+            && same_way(points, outer.facet_planes[facet as usize], tri)
+        {
+            return Side::Outer(OuterFace {
+                v: f.v,
+                facet,
+                tet: f.tet,
+            });
+        }
+        if !f.v.iter().all(|&v| self.on_inner(local, v)) {
+            return Side::Neither;
+        }
+        let l = f.v.map(|v| local[v as usize] as usize);
+        // Facing into Q: the reversed triangle faces out of it.
+        let reversed = [tri[0], tri[2], tri[1]];
+        match inner.common_facet(l[0], l[1], l[2]) {
+            Some(g) if same_way(&self.inner_points, inner.facet_planes[g as usize], reversed) => {
+                Side::Inner {
+                    off_p: outer_facet.is_none(),
+                }
+            }
+            _ => Side::Neither,
+        }
+    }
+}
+
+/// A triangle in a facet's plane faces the same way as the facet's plane triple `plane`
+/// (indices into `pts`) when the two have the same orientation seen along an axis the
+/// plane is not parallel to.
+fn same_way(pts: &[Point3], plane: [u32; 3], f: [&Point3; 3]) -> bool {
+    let q = |k: usize| &pts[plane[k] as usize];
+    projection_axis(q(0), q(1), q(2)).is_some_and(|axis| {
+        orient2d_drop(q(0), q(1), q(2), axis) == orient2d_drop(f[0], f[1], f[2], axis)
+    })
 }
 
 /// Where a boundary triangle lies.

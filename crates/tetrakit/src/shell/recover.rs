@@ -402,7 +402,10 @@ mod tests {
             };
             let q = QEdges::from_hull(&hull, corner);
             let mut want: HashMap<u32, Vec<u32>> = HashMap::default();
-            for (&a, &b) in first.values().flat_map(|a| first.values().map(move |b| (a, b))) {
+            for (&a, &b) in first
+                .values()
+                .flat_map(|a| first.values().map(move |b| (a, b)))
+            {
                 let (fa, fb) = (hull.facets_of(a as usize), hull.facets_of(b as usize));
                 if a != b && fa.iter().filter(|f| fb.contains(f)).count() >= 2 {
                     want.entry(a).or_default().push(b);
