@@ -62,7 +62,8 @@ fn blame(e: ShellError, outer: &Input, inner: &Input) -> CliError {
 
 pub fn shell(a: ShellArgs) -> CmdResult {
     let start = Instant::now();
-    let (outer_in, inner_in) = (points(a.outer)?, points(a.inner)?);
+    let (outer_in, inner_in) = rayon::join(|| points(a.outer), || points(a.inner));
+    let (outer_in, inner_in) = (outer_in?, inner_in?);
     let shell = Shell::new(&outer_in.points, &inner_in.points)
         .map_err(|e| blame(e, &outer_in, &inner_in))?;
     let run = Run::new(a.time_limit, shell.outer.len(), 20_000);
