@@ -254,8 +254,7 @@ fn extreme_points(pts: &[Point3]) -> Result<(Vec<u32>, Vec<u32>, Hull3), usize> 
     let mut seen = HashSet::default();
     let (mut vertices, mut others) = (Vec::new(), Vec::new());
     for (i, p) in pts.iter().enumerate() {
-        // A corner of a 3-polytope lies on three facets or more; a point inside an edge
-        // on two, inside a facet on one.
+        // A point inside an edge lies on two facets, inside a facet on one.
         let corner = is_corner(&hull, i) && seen.insert(point_key(p));
         if corner {
             vertices.push(i as u32)
@@ -266,6 +265,25 @@ fn extreme_points(pts: &[Point3]) -> Result<(Vec<u32>, Vec<u32>, Hull3), usize> 
     Ok((vertices, others, hull))
 }
 
+/// Q's edges from `hull`, the hull of the inner input points `inner`, whose corners
+/// `corners` have the shell indices `shell_index`.
+fn q_edges(
+    inner: &[Point3],
+    hull: &Hull3,
+    corners: &[u32],
+    shell_index: &[u32],
+) -> recover::QEdges {
+    let by_place: HashMap<[u64; 3], u32> = (corners.iter().zip(shell_index))
+        .map(|(&i, &k)| (point_key(&inner[i as usize]), k))
+        .collect();
+    // A repeat of a corner is named as the corner.
+    recover::QEdges::from_hull(hull, |i| match is_corner(hull, i as usize) {
+        true => by_place.get(&point_key(&inner[i as usize])).copied(),
+        false => None,
+    })
+}
+
+/// Point `i` is a corner of the 3-polytope `hull` (on three of its facets or more).
 fn is_corner(hull: &Hull3, i: usize) -> bool {
     hull.facets_of(i).len() >= 3
 }
@@ -305,16 +323,8 @@ impl Shell {
         // Q ⊆ P exactly when every corner of CH(P ∪ Q) is a vertex of P: a corner of the
         // union that is an inner vertex not shared with P lies outside P.
         let union = Hull3::new(&points);
-        let corners: HashMap<[u64; 3], u32> = (inner_v.iter().zip(&inner_idx))
-            .map(|(&i, &k)| (point_key(&inner[i as usize]), k))
-            .collect();
-        let corner = |i: u32| -> Option<u32> {
-            let key = point_key(&inner[i as usize]);
-            (is_corner(&inner_hull, i as usize)).then(|| corners.get(&key).copied())?
-        };
-        let q_edges = recover::QEdges::from_hull(&inner_hull, corner);
         let n_outer = outer_v.len() as u32;
-        let corner = |c: u32| union.facets_of(c as usize).len() >= 3;
+        let corner = |c: u32| is_corner(&union, c as usize);
         if let Some(c) = (n_outer..points.len() as u32).find(|&c| corner(c)) {
             let k = inner_idx.iter().position(|&x| x == c).unwrap_or(0);
             return Err(ShellError::InnerOutside {
@@ -325,6 +335,7 @@ impl Shell {
         let touching = (n_outer..points.len() as u32)
             .filter(|&c| union.on_boundary(c as usize))
             .collect();
+        let q_edges = q_edges(inner, &inner_hull, &inner_v, &inner_idx);
         Ok(Shell {
             points,
             outer: (0..n_outer).collect(),
