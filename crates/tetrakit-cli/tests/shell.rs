@@ -194,8 +194,10 @@ fn shell_bad_input_and_time_limit() {
     }
 }
 
-/// A Bern disk: the removals exceed 9n − 6, the flips (on by default) bring the mesh
-/// within it and say so in JSON; `--no-flips` leaves the removals' mesh and `flips` null.
+/// A Bern disk: the removals exceed 9n − 6. With flips (the default) the removal is
+/// abandoned past 5 tetrahedra per vertex for the Delaunay tetrahedralization outside
+/// Q, within the bound, and JSON and text say so; `--no-flips` leaves the removals' mesh,
+/// above the bound, with `flips` null and the weights of §4.4.
 #[test]
 fn shell_flips_on_a_bern_disk() {
     let d = dir("bern");
@@ -215,33 +217,37 @@ fn shell_flips_on_a_bern_disk() {
     assert!(g.status.success(), "{}", String::from_utf8_lossy(&g.stderr));
     let v = json(&run(&["shell", s(&o), s(&i), "--json"]));
     assert_eq!(v["verdict"], "yes");
-    let (t, before, bound) = (
-        v["tetrahedra"].as_u64(),
-        v["tetrahedra_before_flips"].as_u64(),
-        v["bound"].as_u64(),
+    assert_eq!(
+        (&v["finished_by"], &v["weights"]),
+        (&"delaunay".into(), &serde_json::Value::Null),
+        "{v}"
     );
-    assert!(before > bound && t <= bound, "{v}");
-    assert!(v["flips"]["delaunay"].is_object(), "{v}");
+    let (t, bound) = (v["tetrahedra"].as_u64(), v["bound"].as_u64());
+    assert!(t <= bound && v["within_bound"] == true, "{v}");
+    let out = run(&["shell", s(&o), s(&i)]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("the Delaunay tetrahedralization of its vertices outside Q"),
+        "{text}"
+    );
+    let raw = json(&run(&["shell", s(&o), s(&i), "--json", "--no-flips"]));
+    let before = raw["tetrahedra"].as_u64();
+    assert!(before > bound && raw["flips"].is_null(), "{raw}");
     // The weights of §4.4 sum to the removal's interior edges (Lemma 4.9), and Theorem
     // 4.2's claim fails on this removal: the text says so too.
-    let w = &v["weights"];
+    let w = &raw["weights"];
     assert_eq!(
         w["edges"]
             .as_u64()
-            .map(|e| e + v["n"].as_u64().unwrap() - 6),
+            .map(|e| e + raw["n"].as_u64().unwrap() - 6),
         before,
-        "{v}"
+        "{raw}"
     );
     assert!(
         w["max"].as_u64() > Some(8) && w["at_most_8"] == false,
-        "{v}"
+        "{raw}"
     );
-    let out = run(&["shell", s(&o), s(&i)]);
+    let out = run(&["shell", s(&o), s(&i), "--no-flips"]);
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(text.contains("ABOVE Theorem 4.2's 8"), "{text}");
-    let raw = json(&run(&["shell", s(&o), s(&i), "--json", "--no-flips"]));
-    assert_eq!(
-        (raw["tetrahedra"].as_u64(), raw["flips"].is_null()),
-        (before, true)
-    );
 }

@@ -8,6 +8,7 @@
 
 mod anchor;
 mod coplanar;
+mod delaunay3;
 mod expansion;
 mod grid;
 mod hull2;
@@ -19,6 +20,7 @@ mod radical;
 
 pub(crate) use anchor::anchor;
 pub use coplanar::triangulate_coplanar;
+pub use delaunay3::{Delaunay3, DelaunayError};
 pub use expansion::{Expansion, orient3d_value};
 pub(crate) use expansion::{det3, vector};
 pub(crate) use grid::Grid2;

@@ -1,6 +1,6 @@
 //! The text of a `shell` outcome.
 
-use crate::shell::ShellOutcome;
+use crate::shell::{Finish, REMOVAL_BUDGET, ShellOutcome};
 use std::fmt::Write;
 
 /// The lines a person reads for `o`, found in `seconds`.
@@ -61,11 +61,20 @@ pub fn shell_text(o: &ShellOutcome, seconds: f64) -> String {
         }
         None => {}
     }
-    if o.finished_by == Some(crate::shell::Finish::Placing) {
-        let _ = writeln!(
-            s,
-            "  the removal left outer vertices no piece could take: the shell was placed instead (Q, then the outer vertices in the reverse of the removal's order)"
-        );
+    match o.finished_by {
+        Some(Finish::Placing) => {
+            let _ = writeln!(
+                s,
+                "  the removal left outer vertices no piece could take: the shell was placed instead (Q, then the outer vertices in the reverse of the removal's order)"
+            );
+        }
+        Some(Finish::Delaunay) => {
+            let _ = writeln!(
+                s,
+                "  the removal passed {REMOVAL_BUDGET} tetrahedra per vertex: the shell is the Delaunay tetrahedralization of its vertices outside Q (Q is a union of its tetrahedra, checked exactly)"
+            );
+        }
+        _ => {}
     }
     if o.within_bound == Some(false) {
         let _ = writeln!(
@@ -82,9 +91,13 @@ pub fn shell_text(o: &ShellOutcome, seconds: f64) -> String {
             Some(_) => " (Delaunay flips, then 3-2 flips)",
             None => " (3-2 flips)",
         };
+        let made = match o.finished_by {
+            Some(Finish::Delaunay) => "the Delaunay tetrahedralization had",
+            _ => "the removals made",
+        };
         let _ = writeln!(
             s,
-            "  the removals made {before}; flips inside the shell took it to {flipped}{how}"
+            "  {made} {before}; flips inside the shell took it to {flipped}{how}"
         );
     }
     if let Some(w) = &o.weights {

@@ -192,14 +192,15 @@ impl<'s, 'a> Removal<'s, 'a> {
 /// is tried again once the surface has changed, and where every cap is refused, a tip
 /// with a neighbour; what is still refused then is [`Removed::left`]. For
 /// [`Method::Thesis`], BIGCAP-REMOVE's rounds ([`thesis`]) first, `inner` being `Q`'s
-/// vertices; Bern's order takes what they leave.
+/// vertices; Bern's order takes what they leave. `None` when the tetrahedra made pass
+/// `budget` (the removal is then abandoned).
 pub(super) fn run(
     surface: &mut Surface,
     removable: &[u32],
     inner: &[u32],
-    method: Method,
+    (method, budget): (Method, usize),
     ctl: &Control,
-) -> Result<Removed, Stopped> {
+) -> Result<Option<Removed>, Stopped> {
     let mut r = Removal::new(surface, removable.iter().copied().collect());
     let thesis = match method {
         Method::Thesis => {
@@ -244,6 +245,9 @@ pub(super) fn run(
             Method::Cap | Method::Thesis => r.cap(v),
             Method::Bigcap => r.bigcap(v),
         };
+        if r.tets.len() > budget {
+            return Ok(None);
+        }
         if done {
             ctl.items((total - r.left.len()) as u64, total as u64);
         } else {
@@ -252,11 +256,11 @@ pub(super) fn run(
     }
     let mut left: Vec<u32> = r.left.into_iter().collect();
     left.sort_unstable();
-    Ok(Removed {
+    Ok(Some(Removed {
         tets: r.tets,
         records: r.records,
         order: r.order,
         left,
         thesis,
-    })
+    }))
 }
