@@ -30,7 +30,6 @@
 
 use super::{Point3, insphere, orient3d};
 use crate::rng::Rng;
-use rustc_hash::FxHashMap as HashMap;
 
 /// The infinite vertex, and "no tetrahedron" in the neighbour lists.
 const INF: u32 = u32::MAX;
@@ -145,8 +144,10 @@ struct Builder<'p> {
     stack: Vec<u32>,
     cavity: Vec<u32>,
     boundary: Vec<(u32, usize)>,
-    /// The cone's faces through the new point still waiting for their second cell.
-    open: HashMap<u64, (u32, usize)>,
+    /// The cone's faces through the new point, by name, with their cell and index.
+    open: Vec<(u64, u32)>,
+    /// A cone's faces did not pair up (a bug).
+    lost: bool,
 }
 
 impl<'p> Builder<'p> {
@@ -181,7 +182,8 @@ impl<'p> Builder<'p> {
             stack: Vec::new(),
             cavity: Vec::new(),
             boundary: Vec::new(),
-            open: HashMap::default(),
+            open: Vec::new(),
+            lost: false,
         };
         let mut ids = vec![b.add(first)];
         for k in 0..4 {
@@ -294,32 +296,33 @@ impl<'p> Builder<'p> {
         self.glue_cone(&made, e);
         self.free.extend(self.cavity.iter().copied());
         self.last = made[0];
-        match self.open.is_empty() {
-            true => Ok(()),
-            false => Err(DelaunayError::Lost),
+        match self.lost {
+            false => Ok(()),
+            true => Err(DelaunayError::Lost),
         }
     }
 
     /// Glues the cone's cells to each other: across the faces through `e`, each named
-    /// by its two other vertices.
+    /// by its two other vertices (sorted by that name, the two cells of a face meet).
     fn glue_cone(&mut self, made: &[u32], e: u32) {
-        // Every face through `e` has two cells in the cone, so `open` ends empty (and is
-        // not cleared: that would cost its capacity, grown once by a large cavity).
+        self.open.clear();
         for &id in made {
             let c = self.cells[id as usize];
             for k in (0..4).filter(|&k| c[k] != e) {
                 let others = (0..4).filter(|&i| i != k && c[i] != e).map(|i| c[i] as u64);
                 let (lo, hi) = others.fold((u64::MAX, 0), |(lo, hi), v| (lo.min(v), hi.max(v)));
-                match self.open.remove(&(lo << 32 | hi)) {
-                    Some((t, j)) => {
-                        self.nbr[id as usize][k] = t;
-                        self.nbr[t as usize][j] = id;
-                    }
-                    None => {
-                        self.open.insert(lo << 32 | hi, (id, k));
-                    }
-                }
+                self.open.push((lo << 32 | hi, id << 2 | k as u32));
             }
+        }
+        self.open.sort_unstable();
+        for w in self.open.chunks_exact(2) {
+            let ((f, s), (g, t)) = (w[0], w[1]);
+            if f != g {
+                self.lost = true;
+                return;
+            }
+            self.nbr[(s >> 2) as usize][(s & 3) as usize] = t >> 2;
+            self.nbr[(t >> 2) as usize][(t & 3) as usize] = s >> 2;
         }
     }
 
