@@ -144,8 +144,8 @@ struct Builder<'p> {
     stack: Vec<u32>,
     cavity: Vec<u32>,
     boundary: Vec<(u32, usize)>,
-    /// The cone's faces through the new point, by name, with their cell and index.
-    open: Vec<(u64, u32)>,
+    /// Faces being glued, by name (their sorted vertices), with their cell and index.
+    open: Vec<(u128, u32)>,
     /// A cone's faces did not pair up (a bug).
     lost: bool,
 }
@@ -192,7 +192,7 @@ impl<'p> Builder<'p> {
             inf.swap((k + 1) % 4, (k + 2) % 4);
             ids.push(b.add(inf));
         }
-        b.glue(&ids);
+        b.glue(&ids, None);
         Ok((b, first))
     }
 
@@ -211,27 +211,6 @@ impl<'p> Builder<'p> {
                 self.seen.push(0);
                 self.conflict.push(false);
                 (self.cells.len() - 1) as u32
-            }
-        }
-    }
-
-    /// Makes the cells `ids` neighbours wherever two of them share a face.
-    fn glue(&mut self, ids: &[u32]) {
-        let mut faces = Vec::new();
-        for &id in ids {
-            let c = self.cells[id as usize];
-            for k in 0..4 {
-                let mut f = [c[(k + 1) % 4], c[(k + 2) % 4], c[(k + 3) % 4]];
-                f.sort_unstable();
-                faces.push((f, id, k));
-            }
-        }
-        faces.sort_unstable_by_key(|&(f, _, _)| f);
-        for w in faces.windows(2) {
-            let ((f, s, i), (g, t, j)) = (w[0], w[1]);
-            if f == g {
-                self.nbr[s as usize][i] = t;
-                self.nbr[t as usize][j] = s;
             }
         }
     }
@@ -293,7 +272,7 @@ impl<'p> Builder<'p> {
             made.push(id);
         }
         self.boundary = boundary;
-        self.glue_cone(&made, e);
+        self.glue(&made, Some(e));
         self.free.extend(self.cavity.iter().copied());
         self.last = made[0];
         match self.lost {
@@ -302,16 +281,18 @@ impl<'p> Builder<'p> {
         }
     }
 
-    /// Glues the cone's cells to each other: across the faces through `e`, each named
-    /// by its two other vertices (sorted by that name, the two cells of a face meet).
-    fn glue_cone(&mut self, made: &[u32], e: u32) {
+    /// Makes the cells `ids` neighbours across the faces two of them share, leaving out
+    /// the faces opposite `apart` (a cone's base, glued to the cavity's outside). Every
+    /// other face must pair up; `lost` records when one does not (a bug).
+    fn glue(&mut self, ids: &[u32], apart: Option<u32>) {
         self.open.clear();
-        for &id in made {
+        for &id in ids {
             let c = self.cells[id as usize];
-            for k in (0..4).filter(|&k| c[k] != e) {
-                let others = (0..4).filter(|&i| i != k && c[i] != e).map(|i| c[i] as u64);
-                let (lo, hi) = others.fold((u64::MAX, 0), |(lo, hi), v| (lo.min(v), hi.max(v)));
-                self.open.push((lo << 32 | hi, id << 2 | k as u32));
+            for k in (0..4).filter(|&k| Some(c[k]) != apart) {
+                let mut f = [c[(k + 1) % 4], c[(k + 2) % 4], c[(k + 3) % 4]];
+                f.sort_unstable();
+                let name = f.iter().fold(0u128, |n, &v| n << 32 | v as u128);
+                self.open.push((name, id << 2 | k as u32));
             }
         }
         self.open.sort_unstable();

@@ -16,7 +16,7 @@ use crate::geom::Delaunay3;
 
 /// The Delaunay tetrahedra of the shell's vertices outside `Q`, when `Q` is a union of
 /// Delaunay tetrahedra (see the module docs); `None` otherwise.
-pub(crate) fn delaunay_shell(s: &Shell) -> Option<Vec<[u32; 4]>> {
+pub(super) fn delaunay_shell(s: &Shell) -> Option<Vec<[u32; 4]>> {
     let d = Delaunay3::new(&s.points).ok()?;
     // Each vertex of Q by its index among the inner input points.
     let mut source = vec![u32::MAX; s.points.len()];
