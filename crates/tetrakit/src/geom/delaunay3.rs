@@ -30,6 +30,7 @@
 
 use super::{Point3, insphere, orient3d};
 use crate::rng::Rng;
+use rustc_hash::FxHashMap as HashMap;
 
 /// The infinite vertex, and "no tetrahedron" in the neighbour lists.
 const INF: u32 = u32::MAX;
@@ -144,10 +145,8 @@ struct Builder<'p> {
     stack: Vec<u32>,
     cavity: Vec<u32>,
     boundary: Vec<(u32, usize)>,
-    /// Faces being glued, by name (their sorted vertices), with their cell and index.
-    open: Vec<(u128, u32)>,
-    /// A cone's faces did not pair up (a bug).
-    lost: bool,
+    /// A cone's faces through its apex still waiting for their second cell.
+    open: HashMap<u64, (u32, usize)>,
 }
 
 impl<'p> Builder<'p> {
@@ -182,17 +181,29 @@ impl<'p> Builder<'p> {
             stack: Vec::new(),
             cavity: Vec::new(),
             boundary: Vec::new(),
-            open: Vec::new(),
-            lost: false,
+            open: HashMap::default(),
         };
-        let mut ids = vec![b.add(first)];
+        // Infinite cell `k` holds the face opposite `first[k]`, across from the finite
+        // cell; two infinite cells share the face through `INF` without either's vertex.
+        let finite = b.add(first);
+        let inf: Vec<u32> = (0..4)
+            .map(|k| {
+                let mut cell = first;
+                cell[k] = INF;
+                cell.swap((k + 1) % 4, (k + 2) % 4);
+                b.add(cell)
+            })
+            .collect();
         for k in 0..4 {
-            let mut inf = first;
-            inf[k] = INF;
-            inf.swap((k + 1) % 4, (k + 2) % 4);
-            ids.push(b.add(inf));
+            b.nbr[finite as usize][k] = inf[k];
+            let cell = b.cells[inf[k] as usize];
+            for (i, &v) in cell.iter().enumerate() {
+                b.nbr[inf[k] as usize][i] = match first.iter().position(|&x| x == v) {
+                    Some(j) => inf[j],
+                    None => finite,
+                };
+            }
         }
-        b.glue(&ids, None);
         Ok((b, first))
     }
 
@@ -272,38 +283,35 @@ impl<'p> Builder<'p> {
             made.push(id);
         }
         self.boundary = boundary;
-        self.glue(&made, Some(e));
+        self.glue_cone(&made, e);
         self.free.extend(self.cavity.iter().copied());
         self.last = made[0];
-        match self.lost {
-            false => Ok(()),
-            true => Err(DelaunayError::Lost),
+        match self.open.is_empty() {
+            true => Ok(()),
+            false => Err(DelaunayError::Lost),
         }
     }
 
-    /// Makes the cells `ids` neighbours across the faces two of them share, leaving out
-    /// the faces opposite `apart` (a cone's base, glued to the cavity's outside). Every
-    /// other face must pair up; `lost` records when one does not (a bug).
-    fn glue(&mut self, ids: &[u32], apart: Option<u32>) {
-        self.open.clear();
-        for &id in ids {
+    /// Glues the cone's cells to each other across the faces through `e`, each named by
+    /// its two other vertices. Every such face has two cells in the cone, so `open` ends
+    /// empty (it is not cleared: that would cost its capacity, grown once by a large
+    /// cavity); when it does not, `fill` reports a bug.
+    fn glue_cone(&mut self, made: &[u32], e: u32) {
+        for &id in made {
             let c = self.cells[id as usize];
-            for k in (0..4).filter(|&k| Some(c[k]) != apart) {
-                let mut f = [c[(k + 1) % 4], c[(k + 2) % 4], c[(k + 3) % 4]];
-                f.sort_unstable();
-                let name = f.iter().fold(0u128, |n, &v| n << 32 | v as u128);
-                self.open.push((name, id << 2 | k as u32));
+            for k in (0..4).filter(|&k| c[k] != e) {
+                let others = (0..4).filter(|&i| i != k && c[i] != e).map(|i| c[i] as u64);
+                let (lo, hi) = others.fold((u64::MAX, 0), |(lo, hi), v| (lo.min(v), hi.max(v)));
+                match self.open.remove(&(lo << 32 | hi)) {
+                    Some((t, j)) => {
+                        self.nbr[id as usize][k] = t;
+                        self.nbr[t as usize][j] = id;
+                    }
+                    None => {
+                        self.open.insert(lo << 32 | hi, (id, k));
+                    }
+                }
             }
-        }
-        self.open.sort_unstable();
-        for w in self.open.chunks_exact(2) {
-            let ((f, s), (g, t)) = (w[0], w[1]);
-            if f != g {
-                self.lost = true;
-                return;
-            }
-            self.nbr[(s >> 2) as usize][(s & 3) as usize] = t >> 2;
-            self.nbr[(t >> 2) as usize][(t & 3) as usize] = s >> 2;
         }
     }
 
