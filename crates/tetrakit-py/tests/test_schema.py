@@ -150,6 +150,22 @@ def test_shell_json_follows_the_schema(tmp_path, flips, method, limit):
     assert {k: cli[k] for k in shared} == {k: fields(result, s)[k] for k in shared if k in cli}
 
 
+def test_shell_on_a_bern_disk_ends_by_delaunay_in_both(tmp_path):
+    o, i = tmp_path / "o.xyz", tmp_path / "i.xyz"
+    gen = subprocess.run([str(EXE), "generate", "bern-disk", "--ridge", "1200", "--ring", "300",
+                          "--outer-output", str(o), "--inner-output", str(i)],
+                         capture_output=True, text=True)
+    assert gen.returncode == 0, gen.stderr
+    s = schema("shell")
+    result = tetrakit.shell(np.loadtxt(o), np.loadtxt(i))
+    jsonschema.validate(fields(result, s), s)
+    out = subprocess.run([str(EXE), "shell", str(o), str(i), "--json"], capture_output=True, text=True)
+    cli = json.loads(out.stdout)
+    jsonschema.validate(cli, s)
+    assert cli["finished_by"] == result.finished_by == "delaunay"
+    assert cli.get("weights") is None and result.weights is None and cli["within_bound"] and cli["tetrahedra"] == result.tetrahedra
+
+
 def test_shell_optimum_json_follows_the_schema(tmp_path):
     outer, inner = sphere(9, 3.0, 4), sphere(6, 0.5, 5)
     s = schema("shell")
