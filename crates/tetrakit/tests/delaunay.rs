@@ -41,14 +41,27 @@ fn check(pts: &[Point3], d: &Delaunay3, brute: bool) {
             }
         }
     }
-    // Every hull face is counted once: faces = (4 t + hull) / 2.
+    // The faces with no neighbour are exactly those of one tetrahedron (the hull).
     let hull = d
         .neighbours
         .iter()
         .flatten()
         .filter(|&&n| n == u32::MAX)
         .count();
-    assert_eq!((4 * d.tets.len() + hull) % 2, 0);
+    let mut faces: Vec<[u32; 3]> = Vec::new();
+    for t in &d.tets {
+        for k in 0..4 {
+            let mut f = [t[(k + 1) % 4], t[(k + 2) % 4], t[(k + 3) % 4]];
+            f.sort_unstable();
+            faces.push(f);
+        }
+    }
+    faces.sort_unstable();
+    let once = faces
+        .chunk_by(|a, b| a == b)
+        .filter(|run| run.len() == 1)
+        .count();
+    assert_eq!(hull, once);
 }
 
 /// Distinct points of `pts`, in their first order.

@@ -80,7 +80,7 @@ impl Delaunay3 {
     /// ```
     pub fn new(points: &[Point3]) -> Result<Delaunay3, DelaunayError> {
         let order = brio(points);
-        let (mut b, simplex) = Builder::start(points, &order)?;
+        let (mut b, simplex) = Builder::start(points)?;
         for &i in &order {
             if !simplex.contains(&i) {
                 b.insert(i)?;
@@ -150,19 +150,13 @@ struct Builder<'p> {
 }
 
 impl<'p> Builder<'p> {
-    /// The first tetrahedron, of the first four affinely independent points in `order`,
-    /// with its four infinite neighbours.
-    fn start(pts: &'p [Point3], order: &[u32]) -> Result<(Self, [u32; 4]), DelaunayError> {
+    /// The first tetrahedron ([`initial_simplex`](super::hull3::initial_simplex)'s, of
+    /// points far apart), with its four infinite neighbours.
+    fn start(pts: &'p [Point3]) -> Result<(Self, [u32; 4]), DelaunayError> {
+        let ([a, b, c, d], _) = (super::hull3::initial_simplex(pts))
+            .filter(|&(_, dimension)| dimension == 3)
+            .ok_or(DelaunayError::Flat)?;
         let p = |i: u32| &pts[i as usize];
-        let mut it = order.iter().copied();
-        let a = it.next().ok_or(DelaunayError::Flat)?;
-        let b = it.find(|&b| p(b) != p(a)).ok_or(DelaunayError::Flat)?;
-        let c = it
-            .find(|&c| !super::collinear3(p(a), p(b), p(c)))
-            .ok_or(DelaunayError::Flat)?;
-        let d = it
-            .find(|&d| orient3d(p(a), p(b), p(c), p(d)) != 0)
-            .ok_or(DelaunayError::Flat)?;
         let first = match orient3d(p(a), p(b), p(c), p(d)) > 0 {
             true => [a, b, c, d],
             false => [b, a, c, d],

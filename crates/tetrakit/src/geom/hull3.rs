@@ -540,7 +540,7 @@ pub fn placing(points: &[Point3], first: &[u32], then: &[u32]) -> Option<Vec<[u3
 }
 
 /// Four affinely independent points, or `None` when the set is flat.
-fn initial_simplex(pts: &[Point3]) -> Option<([u32; 4], usize)> {
+pub(super) fn initial_simplex(pts: &[Point3]) -> Option<([u32; 4], usize)> {
     let lo = (0..pts.len()).min_by(|&i, &j| lex_cmp(&pts[i], &pts[j]))?;
     let hi = (0..pts.len()).max_by(|&i, &j| lex_cmp(&pts[i], &pts[j]))?;
     if pts[lo] == pts[hi] {
