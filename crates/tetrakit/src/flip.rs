@@ -197,6 +197,12 @@ fn face(t: &[u32; 4], k: usize) -> [u32; 3] {
     sorted(f)
 }
 
+/// `f` and `low` as one integer ordered as the pair `(f, low)` (`low` below 2^32).
+fn face_key(f: [u32; 3], low: usize) -> u128 {
+    let [a, b, c] = f.map(u128::from);
+    (a << 96) | (b << 64) | (c << 32) | low as u128
+}
+
 impl<'a> Mesh<'a> {
     fn new(pts: &'a [Point3], tets: &[[u32; 4]]) -> Self {
         let mut m = Mesh {
@@ -207,14 +213,17 @@ impl<'a> Mesh<'a> {
             free: Vec::new(),
         };
         m.tets = tets.iter().map(|&t| m.oriented(t)).collect();
-        let mut faces: Vec<([u32; 3], u32, u8)> = (m.tets.iter().enumerate())
-            .flat_map(|(t, tet)| (0..4).map(move |k| (face(tet, k), t as u32, k as u8)))
+        // Each face as one integer, `(face, 4t + k)` in its low 32 bits: sorting
+        // integers is several times faster than sorting tuples.
+        let mut faces: Vec<u128> = (m.tets.iter().enumerate())
+            .flat_map(|(t, tet)| (0..4).map(move |k| face_key(face(tet, k), 4 * t + k)))
             .collect();
         faces.sort_unstable();
+        let slot = |x: u128| ((x as u32 / 4) as usize, (x as u32 % 4) as usize);
         for w in faces.windows(2) {
-            if w[0].0 == w[1].0 {
-                m.nb[w[0].1 as usize][w[0].2 as usize] = w[1].1;
-                m.nb[w[1].1 as usize][w[1].2 as usize] = w[0].1;
+            if w[0] >> 32 == w[1] >> 32 {
+                let ((t, k), (u, j)) = (slot(w[0]), slot(w[1]));
+                (m.nb[t][k], m.nb[u][j]) = (u as u32, t as u32);
             }
         }
         m
@@ -412,13 +421,16 @@ impl<'a> Mesh<'a> {
 
     /// Every edge of a live tetrahedron, once, with a tetrahedron on it.
     fn edges(&self) -> Vec<([u32; 2], u32)> {
-        let mut e: Vec<([u32; 2], u32)> = (0..self.tets.len() as u32)
+        // As integers `(a, b, id)`, sorted (see `Mesh::new`), each edge once.
+        let mut e: Vec<u128> = (0..self.tets.len() as u32)
             .filter(|&id| self.alive[id as usize])
             .flat_map(|id| self.tet_edges(id))
+            .map(|([a, b], id)| face_key([0, a, b], id as usize))
             .collect();
         e.sort_unstable();
-        e.dedup_by_key(|x| x.0);
-        e
+        e.dedup_by_key(|x| *x >> 32);
+        let edge = |x: u128| ([(x >> 64) as u32, (x >> 32) as u32], x as u32);
+        e.into_iter().map(edge).collect()
     }
 }
 

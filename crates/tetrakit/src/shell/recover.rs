@@ -17,7 +17,7 @@
 use crate::geom::{
     Hull3, Point3, bounding_box, drop_axis, orient2d_drop, orient3d, projection_axis,
 };
-use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
+use rustc_hash::FxHashMap as HashMap;
 use spade::{ConstrainedDelaunayTriangulation, Triangulation};
 
 /// Q's edges, by vertex (`edges[v]` are the vertices joined to `v` by an edge of `Q`).
@@ -60,12 +60,12 @@ impl QEdges {
     }
 
     /// Recovers in `tris` every edge of `Q` whose ends are both corners of `tris` and lie
-    /// in the plane of one of its facets; `walls` are never flipped.
+    /// in the plane of one of its facets; `walls` (sorted) are never flipped.
     pub(super) fn recover(
         &self,
         pts: &[Point3],
         tris: &mut [[u32; 3]],
-        walls: &HashSet<(u32, u32)>,
+        walls: &[(u32, u32)],
     ) -> Result<(), &'static str> {
         if self.edges.is_empty() {
             return Ok(());
@@ -296,12 +296,17 @@ impl<'t> Mesh<'t> {
 /// The most flips one edge may take (far beyond what a facet's triangulation needs).
 const FLIP_LIMIT: usize = 100_000;
 
+/// `e` is one of the sorted `walls`.
+fn is_wall(walls: &[(u32, u32)], e: (u32, u32)) -> bool {
+    walls.binary_search(&e).is_ok()
+}
+
 /// Recovers the edge `ab` in the facet of the mesh that holds both ends, if there is one.
 fn recover_edge(
     pts: &[Point3],
     mesh: &mut Mesh,
     [a, b]: [u32; 2],
-    walls: &HashSet<(u32, u32)>,
+    walls: &[(u32, u32)],
 ) -> Result<(), &'static str> {
     let p = |v: u32| &pts[v as usize];
     let Some(patch) = mesh.patch(pts, a, b).map(<[usize]>::to_vec) else {
@@ -332,7 +337,7 @@ fn recover_edge(
                 let t = mesh.tris[i];
                 (0..3).map(move |k| (t[k], t[(k + 1) % 3], i))
             })
-            .filter(|&(c, d, _)| c < d && !walls.contains(&(c, d)) && !walls.contains(&(d, c)))
+            .filter(|&(c, d, _)| c < d && !is_wall(walls, (c, d)) && !is_wall(walls, (d, c)))
             .filter_map(|(c, d, i)| mesh.edge.get(&(d, c)).map(|&j| (c, d, i, j)))
             .filter(|&(_, _, _, j)| patch.binary_search(&j).is_ok())
             .filter(|&(c, d, _, _)| crosses(c, d))

@@ -34,7 +34,7 @@
 use super::hidden::{Hidden, Region};
 use super::recover::QEdges;
 use crate::geom::{Hull3, Plane, Point3, bounding_box, orient2d_drop, orient3d, projection_axis};
-use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
+use rustc_hash::FxHashMap as HashMap;
 
 /// The triangulated surface of the current hull (cloned by Step 3a's search, which tries
 /// orders of removal on copies).
@@ -80,16 +80,18 @@ impl Piece {
     }
 }
 
-/// True when the directed edges form one cycle (each vertex starts one edge, and the walk
-/// from any edge comes back after all of them).
+/// True when the directed edges (sorted) form one cycle: each vertex starts one edge,
+/// and the walk from the first comes back after all of them.
 fn one_cycle(edges: &[(u32, u32)]) -> bool {
-    let next: HashMap<u32, u32> = edges.iter().copied().collect();
     let Some(&(start, _)) = edges.first() else {
         return false;
     };
+    if edges.windows(2).any(|w| w[0].0 == w[1].0) {
+        return false;
+    }
     let (mut v, mut steps) = (start, 0);
     loop {
-        let Some(&w) = next.get(&v) else {
+        let Some(w) = starting_at(edges, v) else {
             return false;
         };
         v = w;
@@ -98,7 +100,13 @@ fn one_cycle(edges: &[(u32, u32)]) -> bool {
             break;
         }
     }
-    next.len() == edges.len() && v == start && steps == edges.len()
+    v == start && steps == edges.len()
+}
+
+/// The end of the edge that starts at `v` among `edges` (sorted), if one does.
+fn starting_at(edges: &[(u32, u32)], v: u32) -> Option<u32> {
+    let k = edges.partition_point(|e| e.0 < v);
+    edges.get(k).filter(|e| e.0 == v).map(|e| e.1)
 }
 
 /// Why a removal was not made (the surface is unchanged). The reason is read in a
@@ -267,28 +275,28 @@ impl<'a> Surface<'a> {
     /// The region removing `set` takes off the surface and the bottom it leaves (`tip`
     /// decides a flat bottom's side), checked to be a disk that surrounds no vertex.
     pub(super) fn cut(&mut self, tip: u32, set: &[u32]) -> Result<Cut, Refused> {
-        let removed: HashSet<u32> = set.iter().copied().collect();
+        // Sorted vectors, not hash sets: most sets are one vertex with a star of six.
+        let mut removed = set.to_vec();
+        removed.sort_unstable();
+        let is_removed = |v: &u32| removed.binary_search(v).is_ok();
         let mut region: Vec<u32> = set.iter().flat_map(|&u| self.star(u)).collect();
         region.sort_unstable();
         region.dedup();
-        // The boundary of the union of the stars, as directed edges of its triangles.
-        let mut inside: HashSet<(u32, u32)> = HashSet::default();
-        for &t in &region {
-            let tri = self.tris[t as usize];
-            for i in 0..3 {
-                inside.insert((tri[i], tri[(i + 1) % 3]));
-            }
-        }
-        let mut boundary: Vec<(u32, u32)> = inside
-            .iter()
-            .filter(|&&(a, b)| !inside.contains(&(b, a)))
+        // The boundary of the union of the stars: the directed edges of its triangles
+        // whose reverse is not one of them.
+        let mut inside: Vec<(u32, u32)> = (region.iter())
+            .flat_map(|&t| {
+                let tri = self.tris[t as usize];
+                (0..3).map(move |i| (tri[i], tri[(i + 1) % 3]))
+            })
+            .collect();
+        inside.sort_unstable();
+        inside.dedup();
+        let boundary: Vec<(u32, u32)> = (inside.iter())
+            .filter(|&&(a, b)| inside.binary_search(&(b, a)).is_err())
             .copied()
             .collect();
-        boundary.sort_unstable(); // the same hull, whatever the hash order
-        if boundary
-            .iter()
-            .any(|(a, b)| removed.contains(a) || removed.contains(b))
-        {
+        if boundary.iter().any(|(a, b)| is_removed(a) || is_removed(b)) {
             return Err(Refused(
                 "a removed vertex is on the boundary of the removed region",
             ));
@@ -299,12 +307,9 @@ impl<'a> Surface<'a> {
         }
         // Every vertex of the region is removed or on its boundary: a vertex the set
         // surrounds would leave the surface unremoved.
-        let on_ring: HashSet<u32> = ring.iter().copied().collect();
+        let on_ring = |v: &u32| starting_at(&boundary, *v).is_some();
         let enclosed = region.iter().flat_map(|&t| self.tris[t as usize]);
-        if enclosed
-            .clone()
-            .any(|v| !removed.contains(&v) && !on_ring.contains(&v))
-        {
+        if enclosed.clone().any(|v| !is_removed(&v) && !on_ring(&v)) {
             return Err(Refused(
                 "the removed set surrounds a vertex it does not remove",
             ));
@@ -465,34 +470,38 @@ impl<'a> Surface<'a> {
         // vertices there, or a later piece would meet them mid-face (and a ring vertex
         // on an edge of the hull would leave its ring edges out). On the far side of the
         // hull they stay hidden.
-        let corners: HashSet<u32> = tris.iter().flatten().copied().collect();
+        let mut corners: Vec<u32> = tris.iter().flatten().copied().collect();
+        corners.sort_unstable();
         let flat: Vec<u32> = on_hull
             .into_iter()
-            .filter(|v| !corners.contains(v))
+            .filter(|v| corners.binary_search(v).is_err())
             .collect();
         let mut tris = tris;
         if refine(self.pts, &mut tris, &flat)? != flat.len() {
             return Err(Refused("a point on the hull is on none of its triangles"));
         }
-        let walls: HashSet<(u32, u32)> = boundary.iter().copied().collect();
+        // `boundary` is sorted: the walls are looked up in it.
+        let walls = boundary;
         // Every facet a triangle: an edge of Q in a facet is one of its edges already.
         let simplicial = hull.dimension == 3 && hull.facet_count() == hull.triangles.len();
         if !simplicial || !flat.is_empty() {
             self.q_edges
-                .recover(self.pts, &mut tris, &walls)
+                .recover(self.pts, &mut tris, walls)
                 .map_err(Refused)?;
         }
-        let by_edge: HashMap<(u32, u32), usize> = tris
-            .iter()
-            .enumerate()
+        let mut by_edge: Vec<((u32, u32), usize)> = (tris.iter().enumerate())
             .flat_map(|(i, t)| (0..3).map(move |k| ((t[k], t[(k + 1) % 3]), i)))
             .collect();
+        by_edge.sort_unstable();
+        // The triangle with the directed edge `e` (the last one, should two have it).
+        let with_edge = |e: (u32, u32)| {
+            let k = by_edge.partition_point(|x| x.0 <= e);
+            (k > 0 && by_edge[k - 1].0 == e).then(|| by_edge[k - 1].1)
+        };
         let mut seen = vec![false; tris.len()];
         let mut stack = Vec::new();
-        for e in boundary {
-            let &t = by_edge
-                .get(e)
-                .ok_or(Refused("a link edge is not an edge of the bottom"))?;
+        for &e in boundary {
+            let t = with_edge(e).ok_or(Refused("a link edge is not an edge of the bottom"))?;
             stack.push(t);
         }
         let mut out = Vec::new();
@@ -504,12 +513,10 @@ impl<'a> Surface<'a> {
             out.push(tri);
             for k in 0..3 {
                 let (a, b) = (tri[k], tri[(k + 1) % 3]);
-                if walls.contains(&(a, b)) {
+                if walls.binary_search(&(a, b)).is_ok() {
                     continue;
                 }
-                let &u = by_edge
-                    .get(&(b, a))
-                    .ok_or(Refused("the bottom is not closed"))?;
+                let u = with_edge((b, a)).ok_or(Refused("the bottom is not closed"))?;
                 stack.push(u);
             }
         }
