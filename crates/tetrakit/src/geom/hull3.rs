@@ -53,6 +53,9 @@ pub struct Hull3 {
     /// For each facet, three non-collinear points on it, oriented so that every point `x`
     /// has `orient3d(p0, p1, p2, x) <= 0`.
     pub facet_planes: Vec<[u32; 3]>,
+    /// `neighbours[t][i]`: the triangle across edge `i` of triangle `t` (from its corner
+    /// `i` to corner `i + 1`).
+    neighbours: Vec<[u32; 3]>,
     facet_start: Vec<u32>,
     facet_list: Vec<u32>,
 }
@@ -112,7 +115,14 @@ impl Hull3 {
             ..Default::default()
         };
         h.build_facets(points, &neighbours);
+        h.neighbours = neighbours;
         h
+    }
+
+    /// The triangle across edge `i` of triangle `t` (the edge from its corner `i` to
+    /// corner `i + 1`, taken the other way there).
+    pub fn neighbour(&self, t: usize, i: usize) -> usize {
+        self.neighbours[t][i] as usize
     }
 
     /// Number of facets (maximal coplanar polygons).
@@ -856,6 +866,14 @@ mod tests {
             .flat_map(|t| (0..3).map(move |i| (t[i], t[(i + 1) % 3])))
             .collect();
         assert!(e.iter().all(|&(a, b)| e.contains(&(b, a))));
+        // Each triangle's neighbour across an edge has that edge reversed.
+        for (t, tri) in h.triangles.iter().enumerate() {
+            for i in 0..3 {
+                let [a, b] = edge_of(tri, i);
+                let u = h.triangles[h.neighbour(t, i)];
+                assert!((0..3).any(|j| edge_of(&u, j) == [b, a]), "{t} {i}");
+            }
+        }
     }
 
     /// Two cocircular polygons in parallel planes and a point beyond one of them (a

@@ -286,14 +286,23 @@ fn q_edges(
     corners: &[u32],
     shell_index: &[u32],
 ) -> recover::QEdges {
-    let by_place: HashMap<[u64; 3], u32> = (corners.iter().zip(shell_index))
-        .map(|(&i, &k)| (point_key(&inner[i as usize]), k))
-        .collect();
+    let mut named = vec![None; inner.len()];
+    for (&i, &k) in corners.iter().zip(shell_index) {
+        named[i as usize] = Some(k);
+    }
     // A repeat of a corner is named as the corner.
-    recover::QEdges::from_hull(hull, |i| match is_corner(hull, i as usize) {
-        true => by_place.get(&point_key(&inner[i as usize])).copied(),
-        false => None,
-    })
+    let repeats: Vec<usize> = (0..inner.len())
+        .filter(|&i| named[i].is_none() && is_corner(hull, i))
+        .collect();
+    if !repeats.is_empty() {
+        let by_place: HashMap<[u64; 3], u32> = (corners.iter().zip(shell_index))
+            .map(|(&i, &k)| (point_key(&inner[i as usize]), k))
+            .collect();
+        for i in repeats {
+            named[i] = by_place.get(&point_key(&inner[i])).copied();
+        }
+    }
+    recover::QEdges::from_hull(hull, |i| named[i as usize])
 }
 
 /// Point `i` is a corner of the 3-polytope `hull` (on three of its facets or more).
@@ -335,7 +344,11 @@ impl Shell {
         }
         // Q ⊆ P exactly when every corner of CH(P ∪ Q) is a vertex of P: a corner of the
         // union that is an inner vertex not shared with P lies outside P.
-        let union = Hull3::new(&points);
+        // Q's edges come from Q's hull alone: read off beside the union's hull.
+        let (union, q_edges) = rayon::join(
+            || Hull3::new(&points),
+            || q_edges(inner, &inner_hull, &inner_v, &inner_idx),
+        );
         let n_outer = outer_v.len() as u32;
         let corner = |c: u32| is_corner(&union, c as usize);
         if let Some(c) = (n_outer..points.len() as u32).find(|&c| corner(c)) {
@@ -348,7 +361,6 @@ impl Shell {
         let touching = (n_outer..points.len() as u32)
             .filter(|&c| union.on_boundary(c as usize))
             .collect();
-        let q_edges = q_edges(inner, &inner_hull, &inner_v, &inner_idx);
         Ok(Shell {
             points,
             outer: (0..n_outer).collect(),

@@ -33,21 +33,22 @@ impl QEdges {
     /// two facets meet; the hull's triangles may have points inside it as corners, so each
     /// edge is followed from a corner through those to the corner at its other end.
     pub(super) fn from_hull(hull: &Hull3, corner: impl Fn(u32) -> Option<u32>) -> QEdges {
-        let facet: HashMap<(u32, u32), u32> = (hull.triangles.iter().zip(&hull.triangle_facet))
-            .flat_map(|(t, &f)| (0..3).map(move |k| ((t[k], t[(k + 1) % 3]), f)))
-            .collect();
-        // The triangle edges between two facets, by input point.
-        let mut along: HashMap<u32, Vec<u32>> = HashMap::default();
-        for (&(a, b), &f) in &facet {
-            if a < b && facet.get(&(b, a)).is_some_and(|&g| g != f) {
-                along.entry(a).or_default().push(b);
-                along.entry(b).or_default().push(a);
+        // The triangle edges between two facets, both ways, by input point, sorted.
+        let mut along: Vec<(u32, u32)> = Vec::new();
+        for (t, tri) in hull.triangles.iter().enumerate() {
+            for k in 0..3 {
+                let (a, b) = (tri[k], tri[(k + 1) % 3]);
+                let f = |t: usize| hull.triangle_facet[t];
+                if a < b && f(hull.neighbour(t, k)) != f(t) {
+                    along.extend([(a, b), (b, a)]);
+                }
             }
         }
+        along.sort_unstable();
         let mut by_vertex: HashMap<u32, Vec<u32>> = HashMap::default();
-        for (&a, next) in &along {
-            let Some(sa) = corner(a) else { continue };
-            for &first in next {
+        for run in along.chunk_by(|x, y| x.0 == y.0) {
+            let Some(sa) = corner(run[0].0) else { continue };
+            for &(a, first) in run {
                 if let Some(sb) = edge_end(&along, &corner, a, first) {
                     by_vertex.entry(sa).or_default().push(sb);
                 }
@@ -70,15 +71,20 @@ impl QEdges {
         if self.edges.is_empty() {
             return Ok(());
         }
-        let mut mesh = Mesh::new(pts, tris);
-        let mut wanted: Vec<(u32, u32)> = mesh
-            .incident
-            .keys()
-            .filter_map(|v| self.edges.get(v).map(|ws| (v, ws)))
-            .flat_map(|(&v, ws)| ws.iter().map(move |&w| (v, w)))
-            .filter(|&(v, w)| v < w && mesh.incident.contains_key(&w))
+        let mut corners: Vec<u32> = tris.iter().flatten().copied().collect();
+        corners.sort_unstable();
+        corners.dedup();
+        let here = |w: &u32| corners.binary_search(w).is_ok();
+        let mut wanted: Vec<(u32, u32)> = (corners.iter())
+            .filter_map(|v| self.edges.get(v).map(|ws| (*v, ws)))
+            .flat_map(|(v, ws)| ws.iter().map(move |&w| (v, w)))
+            .filter(|&(v, w)| v < w && here(&w))
             .collect();
+        if wanted.is_empty() {
+            return Ok(()); // most bottoms: no edge of Q has both ends on them
+        }
         wanted.sort_unstable();
+        let mut mesh = Mesh::new(pts, tris);
         for (a, b) in wanted {
             if !mesh.has_edge(a, b) {
                 recover_edge(pts, &mut mesh, [a, b], walls)?;
@@ -178,10 +184,10 @@ impl QEdges {
 }
 
 /// The corner of `Q` at the end of the edge that leaves corner `a` through the point
-/// `first` (`along`: the hull's triangle edges between two facets; `corner` as in
+/// `first` (`along`: the hull's triangle edges between two facets, both ways, sorted; `corner` as in
 /// [`QEdges::from_hull`]).
 fn edge_end(
-    along: &HashMap<u32, Vec<u32>>,
+    along: &[(u32, u32)],
     corner: &impl Fn(u32) -> Option<u32>,
     a: u32,
     first: u32,
@@ -193,7 +199,9 @@ fn edge_end(
         if let Some(s) = corner(at) {
             return Some(s);
         }
-        let &n = along.get(&at)?.iter().find(|&&n| n != prev)?;
+        let from = along.partition_point(|x| x.0 < at);
+        let out = along[from..].iter().take_while(|x| x.0 == at);
+        let n = out.map(|x| x.1).find(|&n| n != prev)?;
         (prev, at) = (at, n);
     }
     None

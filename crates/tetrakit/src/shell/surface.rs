@@ -136,7 +136,8 @@ impl<'a> Surface<'a> {
             pts,
             tris: Vec::new(),
             alive: Vec::new(),
-            edge: HashMap::default(),
+            // A surface of v vertices has 6v − 12 directed edges: no rehash on the way.
+            edge: HashMap::with_capacity_and_hasher(6 * pts.len(), Default::default()),
             incident: vec![Vec::new(); pts.len()],
             live: vec![0; pts.len()],
             hidden: Hidden::new(pts, hidden),
