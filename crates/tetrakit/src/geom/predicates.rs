@@ -62,8 +62,9 @@ fn c3(p: &Point3) -> Coord3D<f64> {
 /// ```
 ///
 /// The floating-point filter is Shewchuk's (error bound (7 + 56u)u of the permanent);
-/// when it cannot decide and two of the points coincide the answer is an exact 0 without
-/// the adaptive stages, which otherwise dominate tests between faces sharing vertices.
+/// when it cannot decide and two of the points coincide, or all four share a coordinate,
+/// the answer is an exact 0 without the adaptive stages, which otherwise dominate tests
+/// between faces sharing vertices and on a box's facets.
 #[inline]
 pub fn orient3d(a: &Point3, b: &Point3, c: &Point3, d: &Point3) -> i8 {
     let (ad, bd, cd) = (
@@ -88,6 +89,11 @@ pub fn orient3d(a: &Point3, b: &Point3, c: &Point3, d: &Point3) -> i8 {
         return 1;
     }
     if a == b || a == c || a == d || b == c || b == d || c == d {
+        return 0;
+    }
+    // Four points in one axis-parallel plane (a box's facet, a lattice circle): an exact
+    // 0, since two floats subtract to exactly 0 only when they are equal.
+    if (0..3).any(|k| ad[k] == 0.0 && bd[k] == 0.0 && cd[k] == 0.0) {
         return 0;
     }
     -sign(robust::orient3d(c3(a), c3(b), c3(c), c3(d)))
@@ -661,6 +667,48 @@ mod tests {
             assert_eq!(f.sign(&b, &c, &d, &f.dir(&b), &f.dir(&c), &f.dir(&d)), s);
             assert_eq!(Plane::new(&a, &b, &c).side(&d), s);
         }
+    }
+
+    #[test]
+    fn orient3d_agrees_with_robust_on_axis_planes() {
+        // Quadruples with a shared coordinate (exact zeros), one point off the plane by
+        // an ulp (the shortcut must not answer there), across the coordinate range.
+        let mut rng = crate::rng::Rng::new(17);
+        let mut zeros = 0;
+        for k in 0..20_000 {
+            let axis = k % 3;
+            let scale = [1e-40, 1e-3, 1.0, 7.0, 1e50][k % 5];
+            let level = (rng.below(9) as f64 - 4.0) * scale / 3.0;
+            let mut q = [[0.0; 3]; 4].map(|_| {
+                let mut p = [0.0; 3].map(|_| (rng.below(2001) as f64 - 1000.0) * scale / 7.0);
+                p[axis] = level;
+                p
+            });
+            // None of the four, or one of them, an ulp off the plane; every other time the
+            // other three nearly collinear (the middle one an ulp off the segment of the
+            // two others), where the filter fails.
+            let off = [None, Some(0), Some(1), Some(2), Some(3)][(k / 5) % 5];
+            if k % 2 == 1 {
+                let [i, j, l] = match off {
+                    Some(o) => [0, 1, 2, 3].map(|x| (o + 1 + x) % 4)[..3]
+                        .try_into()
+                        .unwrap(),
+                    None => [1, 2, 3],
+                };
+                let mid = [0, 1, 2].map(|x| q[i][x] + (q[l][x] - q[i][x]) / 2.0);
+                let along = (axis + 1) % 3;
+                q[j] = mid;
+                q[j][along] = f64::from_bits(mid[along].to_bits() + 1);
+            }
+            if let Some(o) = off {
+                q[o][axis] = f64::from_bits(level.to_bits() + 1);
+            }
+            let want = -sign(robust::orient3d(c3(&q[0]), c3(&q[1]), c3(&q[2]), c3(&q[3])));
+            let got = orient3d(&q[0], &q[1], &q[2], &q[3]);
+            assert_eq!(got, want, "{q:?}");
+            zeros += usize::from(got == 0);
+        }
+        assert!(zeros > 3_000, "{zeros}");
     }
 
     #[test]

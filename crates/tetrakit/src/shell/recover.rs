@@ -80,8 +80,13 @@ impl QEdges {
             .flat_map(|(v, ws)| ws.iter().map(move |&w| (v, w)))
             .filter(|&(v, w)| v < w && here(&w))
             .collect();
-        if wanted.is_empty() {
-            return Ok(()); // most bottoms: no edge of Q has both ends on them
+        // Most bottoms have every such edge already (or none): no mesh to build.
+        let mut present: Vec<(u32, u32)> = (tris.iter())
+            .flat_map(|t| (0..3).map(move |k| (t[k].min(t[(k + 1) % 3]), t[k].max(t[(k + 1) % 3]))))
+            .collect();
+        present.sort_unstable();
+        if wanted.iter().all(|e| present.binary_search(e).is_ok()) {
+            return Ok(());
         }
         wanted.sort_unstable();
         let mut mesh = Mesh::new(pts, tris);

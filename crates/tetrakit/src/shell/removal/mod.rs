@@ -33,7 +33,8 @@ const PAIR_TRIES: usize = 32;
 struct Removal<'s, 'a> {
     surface: &'s mut Surface<'a>,
     left: HashSet<u32>,
-    heap: BinaryHeap<Reverse<(usize, u32)>>,
+    /// `(degree, vertex)` as one integer ([`heap_key`]), least first.
+    heap: BinaryHeap<Reverse<u64>>,
     tets: Vec<[u32; 4]>,
     records: Vec<Record>,
     /// The removed vertices, in the order of removal (a piece's tip first).
@@ -158,8 +159,7 @@ impl<'s, 'a> Removal<'s, 'a> {
         self.order.extend_from_slice(set);
         for u in around {
             if self.left.contains(&u) {
-                let key = (self.surface.degree(u), u);
-                self.heap.push(Reverse(key));
+                self.heap.push(Reverse(heap_key(self.surface.degree(u), u)));
             }
         }
     }
@@ -185,6 +185,11 @@ impl<'s, 'a> Removal<'s, 'a> {
         }
         false
     }
+}
+
+/// `(degree, v)` as one integer ordered like the pair (a degree is below 2^32).
+fn heap_key(degree: usize, v: u32) -> u64 {
+    ((degree as u64) << 32) | u64::from(v)
 }
 
 /// Bern's order: the removable vertex of least degree first (ties by number), degrees
@@ -219,12 +224,12 @@ pub(super) fn run(
     left.sort_unstable();
     r.heap = left
         .into_iter()
-        .map(|v| Reverse((r.surface.degree(v), v)))
+        .map(|v| Reverse(heap_key(r.surface.degree(v), v)))
         .collect();
     let total = removable.len();
     let mut refused: Vec<u32> = Vec::new();
     loop {
-        let Some(Reverse((d, v))) = r.heap.pop() else {
+        let Some(Reverse(key)) = r.heap.pop() else {
             // Some refused tips have been removed since, by a pair.
             refused.retain(|v| r.left.contains(v));
             if refused.is_empty() {
@@ -237,6 +242,7 @@ pub(super) fn run(
             }
             continue;
         };
+        let (d, v) = ((key >> 32) as usize, key as u32);
         if !r.left.contains(&v) || r.surface.degree(v) != d {
             continue;
         }
