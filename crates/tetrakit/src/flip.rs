@@ -197,7 +197,8 @@ fn face(t: &[u32; 4], k: usize) -> [u32; 3] {
     sorted(f)
 }
 
-/// `f` and `low` as one integer ordered as the pair `(f, low)` (`low` below 2^32).
+/// `f` and `low` (a tetrahedron's number, below 2^32 like every index here) as one
+/// integer ordered as the pair `(f, low)`.
 fn face_key(f: [u32; 3], low: usize) -> u128 {
     let [a, b, c] = f.map(u128::from);
     (a << 96) | (b << 64) | (c << 32) | low as u128
@@ -213,16 +214,23 @@ impl<'a> Mesh<'a> {
             free: Vec::new(),
         };
         m.tets = tets.iter().map(|&t| m.oriented(t)).collect();
-        // Each face as one integer, `(face, 4t + k)` in its low 32 bits: sorting
-        // integers is several times faster than sorting tuples.
+        // Each face as one integer, `(face, t)`: sorting integers is several times
+        // faster than sorting tuples.
         let mut faces: Vec<u128> = (m.tets.iter().enumerate())
-            .flat_map(|(t, tet)| (0..4).map(move |k| face_key(face(tet, k), 4 * t + k)))
+            .flat_map(|(t, tet)| (0..4).map(move |k| face_key(face(tet, k), t)))
             .collect();
         faces.sort_unstable();
-        let slot = |x: u128| ((x as u32 / 4) as usize, (x as u32 % 4) as usize);
+        // The tetrahedron of a face and its vertex off the face.
+        let slot = |x: u128, tets: &[[u32; 4]]| {
+            let (t, f) = (
+                x as u32 as usize,
+                [(x >> 96) as u32, (x >> 64) as u32, (x >> 32) as u32],
+            );
+            (t, tets[t].iter().position(|v| !f.contains(v)).unwrap_or(0))
+        };
         for w in faces.windows(2) {
             if w[0] >> 32 == w[1] >> 32 {
-                let ((t, k), (u, j)) = (slot(w[0]), slot(w[1]));
+                let ((t, k), (u, j)) = (slot(w[0], &m.tets), slot(w[1], &m.tets));
                 (m.nb[t][k], m.nb[u][j]) = (u as u32, t as u32);
             }
         }

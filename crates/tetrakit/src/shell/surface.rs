@@ -481,13 +481,11 @@ impl<'a> Surface<'a> {
         if refine(self.pts, &mut tris, &flat)? != flat.len() {
             return Err(Refused("a point on the hull is on none of its triangles"));
         }
-        // `boundary` is sorted: the walls are looked up in it.
-        let walls = boundary;
         // Every facet a triangle: an edge of Q in a facet is one of its edges already.
         let simplicial = hull.dimension == 3 && hull.facet_count() == hull.triangles.len();
         if !simplicial || !flat.is_empty() {
             self.q_edges
-                .recover(self.pts, &mut tris, walls)
+                .recover(self.pts, &mut tris, boundary)
                 .map_err(Refused)?;
         }
         let mut by_edge: Vec<((u32, u32), usize)> = (tris.iter().enumerate())
@@ -514,8 +512,8 @@ impl<'a> Surface<'a> {
             out.push(tri);
             for k in 0..3 {
                 let (a, b) = (tri[k], tri[(k + 1) % 3]);
-                if walls.binary_search(&(a, b)).is_ok() {
-                    continue;
+                if boundary.binary_search(&(a, b)).is_ok() {
+                    continue; // a wall: the bottom ends at the ring
                 }
                 let u = with_edge((b, a)).ok_or(Refused("the bottom is not closed"))?;
                 stack.push(u);
