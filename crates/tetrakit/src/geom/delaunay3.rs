@@ -4,26 +4,26 @@
 //!
 //! **No general position.** Where five points are cospherical (or four coplanar points
 //! on the hull are cocircular) the empty-sphere test is decided by a symbolic
-//! perturbation: point `i` is lifted to `|p_i|² + ε^(N−i)`, so that a point of larger
-//! index is lifted more. The lifted determinant is linear in the perturbations; its sign
-//! at a tie is that of the largest perturbation with a non-zero coefficient:
-//! - the query point `e` itself: raised, it leaves the sphere (outside);
-//! - a vertex `v` of the tetrahedron: raising it tilts the sphere's plane up by `ε` times
-//!   `e`'s barycentric coordinate for `v`, so `e` is inside exactly when that coordinate
-//!   (`orient3d` with `v` replaced by `e`) is positive; when it is zero, the next.
+//! perturbation of the lifting in the order of insertion: the `r`-th point inserted is
+//! lifted to `|p|² + ε^(N−r)`, so a point inserted later is lifted more. In every test
+//! the point being inserted is the newest, so at a tie its own lift, the largest
+//! perturbation, decides: raised, it leaves the sphere. A cell is therefore in conflict
+//! exactly when the new point is strictly inside its sphere, and the cavities of
+//! degenerate insertions are as small as they can be (the integer points on a sphere:
+//! 0.07 s at 10^4 points where a perturbation by input index, which lets an old point's
+//! lift decide, took 0.34 s with cavities of thousands of cells).
 //!
-//! The test always ends at `e`, so every tie is decided, the same way from every
-//! tetrahedron: the result is the regular triangulation of the perturbed lifted points,
-//! one tetrahedralization of the convex hull with every distinct point a vertex (the
-//! lifted points are in convex position), Delaunay for the unperturbed points (a
-//! tetrahedron's sphere has no point strictly inside). It does not depend on the order
-//! of insertion.
+//! The result is the regular triangulation of the perturbed lifted points, one
+//! tetrahedralization of the convex hull with every distinct point a vertex (the lifted
+//! points are in convex position), Delaunay for the unperturbed points (a tetrahedron's
+//! sphere has no point strictly inside). Which one, among several where points are
+//! cospherical, depends on the insertion order, which is fixed (a seeded shuffle).
 //!
 //! A point coplanar with a hull face is in conflict with the infinite cell on that face
-//! exactly when it is with the finite one: inside the face's circumcircle, by the same
-//! perturbed test (the finite tetrahedron's apex has barycentric coordinate zero there,
-//! so its lift does not matter). So a cavity's boundary face is never coplanar with the
-//! new point, and every new tetrahedron is positively oriented.
+//! exactly when it is with the finite one: strictly inside the face's circumcircle, by
+//! the same test (the sphere meets the face's plane in that circle). Likewise two cells
+//! sharing a face agree on a point in its plane, so a cavity's boundary face is never
+//! coplanar with the new point, and every new tetrahedron is positively oriented.
 //!
 //! Repeated points and flat sets have no such tetrahedralization; they are reported, not
 //! dropped ([`DelaunayError`]).
@@ -370,24 +370,12 @@ impl<'p> Builder<'p> {
         self.in_sphere(t, e)
     }
 
-    /// The perturbed in-sphere test of `e` against the finite cell `t`.
+    /// The perturbed in-sphere test of `e` against the finite cell `t`: `e` is the
+    /// newest point, so a tie leaves it outside (see the module docs).
     fn in_sphere(&self, t: u32, e: u32) -> bool {
         let c = self.cells[t as usize];
         let p = |i: u32| &self.pts[i as usize];
-        match insphere(p(c[0]), p(c[1]), p(c[2]), p(c[3]), p(e)) {
-            0 => {}
-            s => return s > 0,
-        }
-        // The largest perturbation first: the highest index.
-        let mut ks = [0, 1, 2, 3];
-        ks.sort_unstable_by_key(|&k| std::cmp::Reverse(c[k]));
-        for k in ks.into_iter().take_while(|&k| c[k] > e) {
-            match self.sees(&c, k, p(e)) {
-                0 => continue,
-                s => return s > 0,
-            }
-        }
-        false
+        insphere(p(c[0]), p(c[1]), p(c[2]), p(c[3]), p(e)) > 0
     }
 
     /// The finite cells, renumbered, with their neighbours.
