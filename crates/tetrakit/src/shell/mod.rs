@@ -305,6 +305,14 @@ fn q_edges(
     recover::QEdges::from_hull(hull, |i| named[i as usize])
 }
 
+/// The entries of `sorted` (sorted by key) whose key is `k`: the lookups of the sorted
+/// edge lists that replace hash maps on the removal's hot path.
+fn with_key<K: Ord + Copy, V>(sorted: &[(K, V)], k: K) -> &[(K, V)] {
+    let from = sorted.partition_point(|x| x.0 < k);
+    let to = from + sorted[from..].partition_point(|x| x.0 <= k);
+    &sorted[from..to]
+}
+
 /// Point `i` is a corner of the 3-polytope `hull` (on three of its facets or more).
 fn is_corner(hull: &Hull3, i: usize) -> bool {
     hull.facets_of(i).len() >= 3

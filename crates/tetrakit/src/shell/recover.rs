@@ -204,9 +204,8 @@ fn edge_end(
         if let Some(s) = corner(at) {
             return Some(s);
         }
-        let from = along.partition_point(|x| x.0 < at);
-        let out = along[from..].iter().take_while(|x| x.0 == at);
-        let n = out.map(|x| x.1).find(|&n| n != prev)?;
+        let mut out = super::with_key(along, at).iter().map(|x| x.1);
+        let n = out.find(|&n| n != prev)?;
         (prev, at) = (at, n);
     }
     None

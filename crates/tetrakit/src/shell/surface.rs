@@ -105,8 +105,7 @@ fn one_cycle(edges: &[(u32, u32)]) -> bool {
 
 /// The end of the edge that starts at `v` among `edges` (sorted), if one does.
 fn starting_at(edges: &[(u32, u32)], v: u32) -> Option<u32> {
-    let k = edges.partition_point(|e| e.0 < v);
-    edges.get(k).filter(|e| e.0 == v).map(|e| e.1)
+    super::with_key(edges, v).first().map(|e| e.1)
 }
 
 /// Why a removal was not made (the surface is unchanged). The reason is read in a
@@ -493,10 +492,7 @@ impl<'a> Surface<'a> {
             .collect();
         by_edge.sort_unstable();
         // The triangle with the directed edge `e` (the last one, should two have it).
-        let with_edge = |e: (u32, u32)| {
-            let k = by_edge.partition_point(|x| x.0 <= e);
-            (k > 0 && by_edge[k - 1].0 == e).then(|| by_edge[k - 1].1)
-        };
+        let with_edge = |e: (u32, u32)| super::with_key(&by_edge, e).last().map(|x| x.1);
         let mut seen = vec![false; tris.len()];
         let mut stack = Vec::new();
         for &e in boundary {
