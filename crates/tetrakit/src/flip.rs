@@ -34,6 +34,7 @@
 
 use crate::control::{Control, Stopped};
 use crate::geom::{Point3, insphere, orient3d};
+use crate::mesh::face_key;
 use std::collections::VecDeque;
 
 const NONE: u32 = u32::MAX;
@@ -195,13 +196,6 @@ fn face(t: &[u32; 4], k: usize) -> [u32; 3] {
         }
     }
     sorted(f)
-}
-
-/// `f` and `low` (a tetrahedron's number, below 2^32 like every index here) as one
-/// integer ordered as the pair `(f, low)`.
-fn face_key(f: [u32; 3], low: usize) -> u128 {
-    let [a, b, c] = f.map(u128::from);
-    (a << 96) | (b << 64) | (c << 32) | low as u128
 }
 
 impl<'a> Mesh<'a> {

@@ -374,6 +374,14 @@ fn bern_disks_within_the_bound_after_flips() {
         if flips {
             assert!(flipped.iter().all(|&f| t <= f), "{t} against {flipped:?}");
             assert_eq!((o.pieces, o.weights.is_none()), (Some(0), true));
+            // The Delaunay route runs beside the removal on a spare core, after it on
+            // one: the same mesh either way.
+            let one = rayon::ThreadPoolBuilder::new()
+                .num_threads(1)
+                .build()
+                .unwrap();
+            let alone = one.install(|| tetrakit::shell::shell(&shell, opts, &Control::new()));
+            assert_eq!(alone.unwrap().tets, o.tets);
         }
     }
 }

@@ -29,6 +29,7 @@
 //! dropped ([`DelaunayError`]).
 
 use super::{Point3, insphere, orient3d};
+use crate::control::Control;
 use crate::rng::Rng;
 use rustc_hash::FxHashMap as HashMap;
 
@@ -61,6 +62,8 @@ pub enum DelaunayError {
     /// A point location walked longer than the number of tetrahedra allows, or a
     /// cavity's boundary was not closed (a bug).
     Lost,
+    /// The run-control stopped it ([`Delaunay3::within`]).
+    Stopped,
 }
 
 impl Delaunay3 {
@@ -79,9 +82,31 @@ impl Delaunay3 {
     /// assert_eq!(Delaunay3::new(&flat), Err(DelaunayError::Flat));
     /// ```
     pub fn new(points: &[Point3]) -> Result<Delaunay3, DelaunayError> {
+        Delaunay3::within(points, &Control::new())
+    }
+
+    /// [`Delaunay3::new`] under a run-control: [`DelaunayError::Stopped`] once `ctl` is
+    /// stopped (asked every 16 insertions).
+    ///
+    /// ```
+    /// use tetrakit::control::Control;
+    /// use tetrakit::geom::{Delaunay3, DelaunayError};
+    /// let pts: Vec<[f64; 3]> = (0..300).map(|i| {
+    ///     let t = i as f64;
+    ///     [t.sin(), (2.0 * t).cos(), (3.0 * t).sin() * t]
+    /// }).collect();
+    /// let ctl = Control::new();
+    /// assert!(Delaunay3::within(&pts, &ctl).is_ok());
+    /// ctl.stop();
+    /// assert_eq!(Delaunay3::within(&pts, &ctl), Err(DelaunayError::Stopped));
+    /// ```
+    pub fn within(points: &[Point3], ctl: &Control) -> Result<Delaunay3, DelaunayError> {
         let order = brio(points);
         let (mut b, simplex) = Builder::start(points)?;
-        for &i in &order {
+        for (k, &i) in order.iter().enumerate() {
+            if k % 16 == 0 && ctl.is_stopped() {
+                return Err(DelaunayError::Stopped);
+            }
             if !simplex.contains(&i) {
                 b.insert(i)?;
             }

@@ -7,7 +7,7 @@
 use super::report::{Problem, ProblemKind};
 use super::shell_degree::{OuterFace, check_inner_degree, check_outer_degree, used_vertices};
 use super::verify::BoundaryFace;
-use super::{Polyhedron, Report, rotated_face, sorted_face, verify, verify_faces};
+use super::{Polyhedron, Report, face_key, rotated_face, sorted_face, verify, verify_faces};
 use crate::geom::point_key;
 use crate::geom::{Hull3, Point3, orient2d_drop, projection_axis};
 use crate::numbering::ids;
@@ -304,20 +304,27 @@ fn first_problem(problems: Vec<Problem>) -> Result<(), Problem> {
 /// sorted. A positively oriented tet (a,b,c,d) has outward faces (a,c,b), (a,b,d),
 /// (a,d,c), (b,c,d).
 pub(crate) fn boundary_faces(tets: &[[u32; 4]]) -> Vec<[u32; 3]> {
-    let mut faces: Vec<([u32; 3], [u32; 3])> = tets
-        .iter()
-        .flat_map(|&[a, b, c, d]| [[a, c, b], [a, b, d], [a, d, c], [b, c, d]])
-        .map(|f| (sorted_face(f), rotated_face(f)))
+    let mut faces: Vec<u128> = (tets.iter().enumerate())
+        .flat_map(|(t, tet)| (0..4).map(move |k| face_key(sorted_face(face(tet, k)), t)))
         .collect();
     faces.sort_unstable();
     let mut boundary = Vec::new();
-    for run in faces.chunk_by(|x, y| x.0 == y.0) {
-        if run.len() == 1 {
-            boundary.push(run[0].1);
+    for run in faces.chunk_by(|x, y| x >> 32 == y >> 32) {
+        if let [x] = run {
+            let tet = &tets[*x as u32 as usize];
+            let f = [(x >> 96) as u32, (x >> 64) as u32, (x >> 32) as u32];
+            let k = tet.iter().position(|v| !f.contains(v)).unwrap_or(0);
+            boundary.push(rotated_face(face(tet, k)));
         }
     }
     boundary.sort_unstable();
     boundary
+}
+
+/// The face of `t` opposite its `k`-th vertex, oriented outward (for `orient3d(t) > 0`).
+fn face(t: &[u32; 4], k: usize) -> [u32; 3] {
+    let [a, b, c, d] = *t;
+    [[b, c, d], [a, d, c], [a, b, d], [a, c, b]][k]
 }
 
 /// Checks that each tetrahedron shares a triangle (three corners) with the next: with

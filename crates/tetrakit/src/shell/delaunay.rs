@@ -12,12 +12,22 @@
 //! is `None`: the removal decides.
 
 use super::Shell;
-use crate::geom::Delaunay3;
+use crate::control::{Control, Stopped};
+use crate::geom::{Delaunay3, DelaunayError};
 
 /// The Delaunay tetrahedra of the shell's vertices outside `Q`, when `Q` is a union of
 /// Delaunay tetrahedra (see the module docs); `None` otherwise.
-pub(super) fn delaunay_shell(s: &Shell) -> Option<Vec<[u32; 4]>> {
-    let d = Delaunay3::new(&s.points).ok()?;
+pub(super) fn delaunay_shell(s: &Shell, ctl: &Control) -> Result<Option<Vec<[u32; 4]>>, Stopped> {
+    let d = match Delaunay3::within(&s.points, ctl) {
+        Ok(d) => d,
+        Err(DelaunayError::Stopped) => return Err(Stopped),
+        Err(_) => return Ok(None),
+    };
+    Ok(union_outside(s, d))
+}
+
+/// The tetrahedra of `d` outside `Q`, when those inside make `Q` (the module docs' test).
+fn union_outside(s: &Shell, d: Delaunay3) -> Option<Vec<[u32; 4]>> {
     // Each vertex of Q by its index among the inner input points.
     let mut source = vec![u32::MAX; s.points.len()];
     for (&k, &i) in s.inner.iter().zip(&s.inner_source) {
@@ -107,7 +117,7 @@ mod tests {
             let inside = |t: &[u32; 4]| t.iter().all(|v| s.inner.contains(v));
             let kept: Vec<[u32; 4]> = d.tets.into_iter().filter(|t| !inside(t)).collect();
             let certified = certify_shell(&s.points, &kept, &s.inner).is_ok();
-            let found = delaunay_shell(&s);
+            let found = delaunay_shell(&s, &Control::new()).unwrap();
             assert_eq!(found.is_some(), certified, "round {round}");
             assert!(found.is_none_or(|t| t == kept));
             (yes, no) = (yes + usize::from(certified), no + usize::from(!certified));

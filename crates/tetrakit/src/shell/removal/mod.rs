@@ -197,13 +197,13 @@ fn heap_key(degree: usize, v: u32) -> u64 {
 /// is tried again once the surface has changed, and where every cap is refused, a tip
 /// with a neighbour; what is still refused then is [`Removed::left`]. For
 /// [`Method::Thesis`], BIGCAP-REMOVE's rounds ([`thesis`]) first, `inner` being `Q`'s
-/// vertices; Bern's order takes what they leave. `None` when the tetrahedra made pass
-/// `budget` (the removal is then abandoned).
+/// vertices; Bern's order takes what they leave. `None` when `go_on`, told the number of
+/// tetrahedra made after each piece, answers `false` (the removal is then abandoned).
 pub(super) fn run(
     surface: &mut Surface,
     removable: &[u32],
     inner: &[u32],
-    (method, budget): (Method, usize),
+    (method, go_on): (Method, &mut dyn FnMut(usize) -> bool),
     ctl: &Control,
 ) -> Result<Option<Removed>, Stopped> {
     let mut r = Removal::new(surface, removable.iter().copied().collect());
@@ -251,7 +251,7 @@ pub(super) fn run(
             Method::Cap | Method::Thesis => r.cap(v),
             Method::Bigcap => r.bigcap(v),
         };
-        if r.tets.len() > budget {
+        if !go_on(r.tets.len()) {
             return Ok(None);
         }
         if done {
