@@ -31,6 +31,18 @@ TK=target/release/tetrakit
 median() { sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
 field() { python3 -c 'import json,sys;print(json.load(open(sys.argv[1]))[sys.argv[2]])' "$1" "$2"; }
 elapsed() { awk '{print $1}' "$1"; }
+# timed OUT CMD...: runs CMD under GNU time for its peak memory, and writes "seconds KB"
+# to OUT with the wall time to the microsecond (GNU time's %e has two decimals, too
+# coarse at n = 10^3). Returns CMD's status.
+timed() {
+  local out=$1 start end rc=0
+  shift
+  start=$(date +%s%N)
+  /usr/bin/time -f "%M" -o "$out.m" "$@" || rc=$?
+  end=$(date +%s%N)
+  echo "$(awk -v d=$((end - start)) 'BEGIN {printf "%.6f", d / 1e9}') $(tail -1 "$out.m")" >"$out"
+  return $rc
+}
 peak() { awk '{print int($2/1024)}' "$1"; }
 
 # One row: the shell OUTER INNER against TetGen on the same surfaces (HOLE: a point
@@ -42,18 +54,18 @@ row() {
   python3 benches/shell_poly.py "$WORK/s$key.ele" "$WORK/p$key.poly" $hole
   tk=(); t1=(); tb=(); tg=(); ty=()
   for _ in $(seq "$RUNS"); do
-    /usr/bin/time -f "%e %M" -o "$WORK/t1" "$TK" shell "$o" "$i" --json >"$WORK/s.json"
+    timed "$WORK/t1" "$TK" shell "$o" "$i" --json >"$WORK/s.json"
     tk+=("$(elapsed "$WORK/t1")"); tkm=$(peak "$WORK/t1")
-    RAYON_NUM_THREADS=1 /usr/bin/time -f "%e %M" -o "$WORK/t5" "$TK" shell "$o" "$i" --json >/dev/null
+    RAYON_NUM_THREADS=1 timed "$WORK/t5" "$TK" shell "$o" "$i" --json >/dev/null
     t1+=("$(elapsed "$WORK/t5")")
-    if /usr/bin/time -f "%e %M" -o "$WORK/t4" timeout "$BIGCAP_TIMEOUT" "$TK" shell "$o" "$i" --method bigcap --json >"$WORK/b.json"; then
+    if timed "$WORK/t4" timeout "$BIGCAP_TIMEOUT" "$TK" shell "$o" "$i" --method bigcap --json >"$WORK/b.json"; then
       tb+=("$(elapsed "$WORK/t4")")
     else
       tb+=("-"); echo '{"tetrahedra": "nan"}' >"$WORK/b.json"
     fi
-    /usr/bin/time -f "%e %M" -o "$WORK/t2" tetgen -pQ "$WORK/p$key.poly" >/dev/null || true
+    timed "$WORK/t2" tetgen -pQ "$WORK/p$key.poly" >/dev/null || true
     tg+=("$(elapsed "$WORK/t2")"); tgm=$(peak "$WORK/t2")
-    /usr/bin/time -f "%e %M" -o "$WORK/t3" tetgen -pYQ "$WORK/p$key.poly" >/dev/null || true
+    timed "$WORK/t3" tetgen -pYQ "$WORK/p$key.poly" >/dev/null || true
     ty+=("$(elapsed "$WORK/t3")")
   done
   t=$(field "$WORK/s.json" tetrahedra); t0=$(field "$WORK/s.json" tetrahedra_before_flips)

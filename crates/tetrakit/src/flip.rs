@@ -35,6 +35,7 @@
 use crate::control::{Control, Stopped};
 use crate::geom::{Point3, insphere, orient3d};
 use crate::mesh::face_key;
+use rayon::slice::ParallelSliceMut;
 use std::collections::VecDeque;
 
 const NONE: u32 = u32::MAX;
@@ -209,11 +210,11 @@ impl<'a> Mesh<'a> {
         };
         m.tets = tets.iter().map(|&t| m.oriented(t)).collect();
         // Each face as one integer, `(face, t)`: sorting integers is several times
-        // faster than sorting tuples.
+        // faster than sorting tuples (all distinct, so the order is one on any core).
         let mut faces: Vec<u128> = (m.tets.iter().enumerate())
             .flat_map(|(t, tet)| (0..4).map(move |k| face_key(face(tet, k), t)))
             .collect();
-        faces.sort_unstable();
+        faces.par_sort_unstable();
         // The tetrahedron of a face and its vertex off the face.
         let slot = |x: u128, tets: &[[u32; 4]]| {
             let (t, f) = (
@@ -429,7 +430,7 @@ impl<'a> Mesh<'a> {
             .flat_map(|id| self.tet_edges(id))
             .map(|([a, b], id)| face_key([0, a, b], id as usize))
             .collect();
-        e.sort_unstable();
+        e.par_sort_unstable();
         e.dedup_by_key(|x| *x >> 32);
         let edge = |x: u128| ([(x >> 64) as u32, (x >> 32) as u32], x as u32);
         e.into_iter().map(edge).collect()

@@ -307,7 +307,7 @@ pub(crate) fn boundary_faces(tets: &[[u32; 4]]) -> Vec<[u32; 3]> {
     let mut faces: Vec<u128> = (tets.iter().enumerate())
         .flat_map(|(t, tet)| (0..4).map(move |k| face_key(sorted_face(face(tet, k)), t)))
         .collect();
-    faces.sort_unstable();
+    faces.par_sort_unstable();
     let mut boundary = Vec::new();
     for run in faces.chunk_by(|x, y| x >> 32 == y >> 32) {
         if let [x] = run {

@@ -139,6 +139,7 @@ pub use outcome::{
     AssumptionWitness, DELAUNAY_START, FileVertex, FlipCounts, Optimum, REMOVAL_BUDGET,
     ShellOptions, ShellOutcome, Weights, shell,
 };
+use rayon::slice::ParallelSliceMut;
 pub use removal::ThesisSteps;
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use serde::Serialize;
@@ -473,7 +474,7 @@ impl ShellMesh {
         // The boundary's edges are among the tetrahedra's: the interior ones are the rest.
         let key = |a: u32, b: u32| u64::from(a.min(b)) << 32 | u64::from(a.max(b));
         let distinct = |mut e: Vec<u64>| {
-            e.sort_unstable();
+            e.par_sort_unstable();
             e.dedup();
             e.len()
         };
