@@ -312,9 +312,10 @@ fn mesh(
 pub const REMOVAL_BUDGET: usize = 5;
 
 /// Tetrahedra per vertex past which [`shell`] starts the Delaunay tetrahedralization on a
-/// spare core, in case the removal passes its budget: the families of `benches/shell.sh`
-/// pass it after three quarters of their vertices or never, Bern disks after half of
-/// theirs (a fifth of the removal's time: its last caps are its largest).
+/// spare core, in case the removal passes its budget. The families of `benches/shell.sh`
+/// pass it after three quarters of their removable vertices (spheres, lattice, dome) or
+/// in their last pieces (prisms, arcs, circles, corner), Bern disks after half of theirs
+/// (a fifth of the removal's time: its last caps are its largest).
 pub const DELAUNAY_START: usize = 1;
 
 /// The Delaunay shell `tets`, improved by 3-2 flips (its faces are Delaunay already).
