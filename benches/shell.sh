@@ -80,7 +80,7 @@ row() {
   y_t=$(head -1 "$WORK/p$key.1.ele" | awk '{print $1}'); y_n=$(head -1 "$WORK/p$key.1.node" | awk '{print $1}')
   awk -v l="$label" -v n="$nn" -v t0="$t0" -v t="$t" -v a="$tk_s" -v a1="$t1_s" -v am="$tkm" -v bt="$bt" -v bs="$tb_s" -v gt="$g_t" -v gn="$g_n" -v b="$tg_s" -v bm="$tgm" \
       -v yt="$y_t" -v yn="$y_n" -v c="$ty_s" -v wm="$wm" 'BEGIN {
-    printf "| %s | %d | %.2f | %.2f | %.2f | %.2f | %d | %.2f | %.2f | %.2f | %d | %.2f | %d | %.2f | %d | %.2f | %.2f | %.2f | %s |\n",
+    printf "| %s | %d | %.2f | %.2f | %.3f | %.3f | %d | %.2f | %.3f | %.2f | %d | %.3f | %d | %.2f | %d | %.3f | %.2f | %.2f | %s |\n",
       l, n, t0 / n, t / n, a, a1, am, bt / n, bs, gt / n, gn - n, b, bm, yt / n, yn - n, c, a / b, a1 / b, wm }'
 }
 

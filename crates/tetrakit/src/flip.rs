@@ -211,9 +211,11 @@ impl<'a> Mesh<'a> {
         m.tets = tets.iter().map(|&t| m.oriented(t)).collect();
         // Each face as one integer, `(face, t)`: sorting integers is several times
         // faster than sorting tuples (all distinct, so the order is one on any core).
-        let mut faces: Vec<u128> = (m.tets.iter().enumerate())
-            .flat_map(|(t, tet)| (0..4).map(move |k| face_key(face(tet, k), t)))
-            .collect();
+        let mut faces: Vec<u128> = Vec::with_capacity(4 * m.tets.len());
+        faces.extend(
+            (m.tets.iter().enumerate())
+                .flat_map(|(t, tet)| (0..4).map(move |k| face_key(face(tet, k), t))),
+        );
         faces.par_sort_unstable();
         // The tetrahedron of a face and its vertex off the face.
         let slot = |x: u128, tets: &[[u32; 4]]| {
@@ -425,11 +427,13 @@ impl<'a> Mesh<'a> {
     /// Every edge of a live tetrahedron, once, with a tetrahedron on it.
     fn edges(&self) -> Vec<([u32; 2], u32)> {
         // As integers `(a, b, id)`, sorted (see `Mesh::new`), each edge once.
-        let mut e: Vec<u128> = (0..self.tets.len() as u32)
-            .filter(|&id| self.alive[id as usize])
-            .flat_map(|id| self.tet_edges(id))
-            .map(|([a, b], id)| face_key([0, a, b], id as usize))
-            .collect();
+        let mut e: Vec<u128> = Vec::with_capacity(6 * self.tets.len());
+        e.extend(
+            (0..self.tets.len() as u32)
+                .filter(|&id| self.alive[id as usize])
+                .flat_map(|id| self.tet_edges(id))
+                .map(|([a, b], id)| face_key([0, a, b], id as usize)),
+        );
         e.par_sort_unstable();
         e.dedup_by_key(|x| *x >> 32);
         let edge = |x: u128| ([(x >> 64) as u32, (x >> 32) as u32], x as u32);

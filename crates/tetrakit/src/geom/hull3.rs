@@ -599,9 +599,16 @@ impl<'a> Builder<'a> {
     }
 
     fn new(pts: &'a [Point3]) -> Builder<'a> {
+        // A small hull (the shell's local ones, thousands a second) makes at most a few
+        // triangles a point: room for them at once, not a vector regrown five times.
+        let room = if pts.len() < SMALL_GRID {
+            8 * pts.len()
+        } else {
+            0
+        };
         Builder {
             pts,
-            tris: Vec::new(),
+            tris: Vec::with_capacity(room),
             owner: vec![NONE; pts.len()],
             next: vec![NONE; pts.len()],
             eligible: None,
