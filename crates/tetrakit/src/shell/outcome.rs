@@ -255,43 +255,20 @@ fn within_bound(
 /// The removals' mesh, improved by flips when asked. With flips, a removal by caps or
 /// bigcaps that passes [`REMOVAL_BUDGET`] tetrahedra per vertex is abandoned for the
 /// Delaunay tetrahedralization when `Q` is a union of its tetrahedra ([`delaunay_shell`]):
-/// the flips would end at that count, and reaching it directly costs a fraction. Once the
-/// removal passes [`DELAUNAY_START`] per vertex, that tetrahedralization is built beside
-/// it on a spare core, and given up as soon as the removal ends within its budget: the
-/// mesh is the same whichever ends first, and on one core it is built after.
+/// the flips would end at that count, and reaching it directly costs a fraction.
 fn mesh(
     s: &Shell,
     opts: ShellOptions,
     ctl: &Control,
 ) -> Result<(super::ShellMesh, Improvement), ShellError> {
     if opts.flips && opts.method != Method::Thesis {
-        let (spare, found) = (ctl.child(), OnceLock::new());
-        let removed = rayon::scope(|sc| {
-            let (spare, found) = (&spare, &found);
-            let mut started = false;
-            let mut go_on = |tets: usize| {
-                if tets > DELAUNAY_START * s.n() && !std::mem::replace(&mut started, true) {
-                    sc.spawn(move |_| _ = found.set(delaunay_shell(s, spare)));
-                }
-                tets <= REMOVAL_BUDGET * s.n()
-            };
-            let removed = tetrahedralize_within(s, (opts.method, &mut go_on), ctl);
-            if !matches!(removed, Ok(None)) {
-                spare.stop();
-            }
-            removed
-        });
-        match removed? {
-            Some(mut mesh) => {
+        match removal_or_delaunay(s, opts.method, ctl)? {
+            Route::Removal(mut mesh) => {
                 let done = improve(&s.points, &mut mesh, ctl)?;
                 return Ok((mesh, done));
             }
-            None => {
-                let delaunay = found.into_inner();
-                if let Some(tets) = delaunay.unwrap_or_else(|| delaunay_shell(s, ctl))? {
-                    return delaunay_mesh(s, tets, ctl);
-                }
-            }
+            Route::Delaunay(Some(tets)) => return delaunay_mesh(s, tets, ctl),
+            Route::Delaunay(None) => {}
         }
     }
     let mut mesh = tetrahedralize(s, opts.method, ctl)?;
@@ -303,6 +280,47 @@ fn mesh(
         },
     };
     Ok((mesh, done))
+}
+
+/// How [`removal_or_delaunay`] ended.
+enum Route {
+    /// The removal, within its budget.
+    Removal(super::ShellMesh),
+    /// The removal passed its budget: the Delaunay shell, `None` when `Q` is not a union
+    /// of Delaunay tetrahedra.
+    Delaunay(Option<Vec<[u32; 4]>>),
+}
+
+/// The removal by `method` within [`REMOVAL_BUDGET`], or the Delaunay shell when it
+/// passes it. Once the removal passes [`DELAUNAY_START`] tetrahedra per vertex, the
+/// Delaunay tetrahedralization is built beside it on a spare core, and given up as soon
+/// as the removal ends within its budget: the answer is the same whichever ends first,
+/// and on one core the Delaunay tetrahedralization is built after the removal.
+fn removal_or_delaunay(s: &Shell, method: Method, ctl: &Control) -> Result<Route, ShellError> {
+    let (spare, found) = (ctl.child(), OnceLock::new());
+    let removed = rayon::scope(|sc| {
+        let (spare, found) = (&spare, &found);
+        let mut started = false;
+        let mut go_on = |tets: usize| {
+            if tets > DELAUNAY_START * s.n() && !std::mem::replace(&mut started, true) {
+                sc.spawn(move |_| _ = found.set(delaunay_shell(s, spare)));
+            }
+            tets <= REMOVAL_BUDGET * s.n()
+        };
+        let removed = tetrahedralize_within(s, (method, &mut go_on), ctl);
+        if !matches!(removed, Ok(None)) {
+            spare.stop();
+        }
+        removed
+    })?;
+    Ok(match removed {
+        Some(mesh) => Route::Removal(mesh),
+        None => Route::Delaunay(
+            found
+                .into_inner()
+                .unwrap_or_else(|| delaunay_shell(s, ctl))?,
+        ),
+    })
 }
 
 /// Tetrahedra per vertex past which [`shell`] abandons a removal for the Delaunay
