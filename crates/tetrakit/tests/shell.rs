@@ -1108,3 +1108,33 @@ fn step_6_removes_chains_on_contact_shells() {
         "{chains} chains, {bigcaps} S_b-bigcaps"
     );
 }
+
+/// Two slightly bent perpendicular arcs around a small sphere (`benches/shell.sh`'s
+/// arcs at n = 400): bigcaps pass their budget there and the Delaunay shell, which
+/// `Q` is a union of, has more than 5 tetrahedra per vertex (the two arcs' Delaunay
+/// edges cross: quadratic). No route may end above that budget when another ends below
+/// it: the caps' mesh is kept.
+#[test]
+fn a_delaunay_shortcut_above_the_budget_is_not_kept() {
+    let m = 100;
+    let t = |j: usize| 2.0 * j as f64 / (m - 1) as f64 - 1.0;
+    let mut outer: Vec<Point3> = (0..m)
+        .map(|j| [t(j), 0.0, 1.0 - 0.05 * t(j) * t(j)])
+        .collect();
+    outer.extend((0..m).map(|j| [0.0, t(j), -1.0 + 0.05 * t(j) * t(j)]));
+    let mut rng = tetrakit::rng::Rng::new(3);
+    let inner = tetrakit::shell::generate::shape_points(Shape::Sphere, 200, 0.1, &mut rng);
+    let shell = Shell::new(&outer, &inner).unwrap();
+    let opts = ShellOptions {
+        method: Method::Bigcap,
+        flips: true,
+        optimum: false,
+    };
+    let o = tetrakit::shell::shell(&shell, opts, &Control::new()).unwrap();
+    let t = o.tetrahedra.unwrap();
+    assert!(
+        t <= tetrakit::shell::REMOVAL_BUDGET * shell.n(),
+        "{t} tetrahedra, {o:?}"
+    );
+    assert_eq!((o.method, o.finished_by), ("cap", Some(Finish::Removal)));
+}

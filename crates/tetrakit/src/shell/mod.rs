@@ -38,8 +38,9 @@
 //! when they end lower ([`crate::flip`]). They keep both surfaces and add no vertex; on
 //! Bern disks they reach TetGen's count (3.0 per vertex), on random spheres the 3-2
 //! flips remove about 6 %. This, not the removal, is what keeps every output we have
-//! found within 9n − 6. When the asked method still ends above it, [`shell`] runs the
-//! other and keeps the smaller mesh, and says in `within_bound` how it ended.
+//! found within 9n − 6. When the asked method still ends above it, or with the flips
+//! above [`REMOVAL_BUDGET`] per vertex (a Delaunay shortcut can, below), [`shell`] runs
+//! the other and keeps the smaller mesh, and says in `within_bound` how it ended.
 //!
 //! **Delaunay** ([`Finish::Delaunay`]): with flips, a removal by caps or bigcaps that
 //! passes [`REMOVAL_BUDGET`] tetrahedra per vertex (Bern disks: 7.9 per vertex at

@@ -223,7 +223,10 @@ pub fn shell(s: &Shell, opts: ShellOptions, ctl: &Control) -> Result<ShellOutcom
 }
 
 /// The mesh of the method asked for, or, when it ends above `bound` (Theorem 4.2's
-/// 9n − 6), the smaller of it and the other method's.
+/// 9n − 6) or, with flips, above [`REMOVAL_BUDGET`] per vertex, the smaller of it and the
+/// other method's. With flips no route should end above that budget, but a Delaunay
+/// shortcut can: bigcaps on two crossing arcs of 10^3 points passed their budget and
+/// took the Delaunay shell, 11 per vertex (8.8 after the flips) where caps make 1.9.
 fn within_bound(
     s: &Shell,
     opts: ShellOptions,
@@ -231,7 +234,11 @@ fn within_bound(
     ctl: &Control,
 ) -> Result<(super::ShellMesh, Improvement, Method), ShellError> {
     let (first, done) = mesh(s, opts, ctl)?;
-    if first.tets.len() <= bound {
+    let enough = match opts.flips {
+        true => bound.min(REMOVAL_BUDGET * s.n()),
+        false => bound,
+    };
+    if first.tets.len() <= enough {
         return Ok((first, done, opts.method));
     }
     let other = match opts.method {
