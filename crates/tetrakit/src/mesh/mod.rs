@@ -33,6 +33,7 @@ pub(crate) use verify::{BoundaryFace, coincident_runs, hull_faces, unused_vertex
 pub use verify_planar::verify_triangulation;
 
 use crate::geom::{Point3, orient3d};
+use rayon::slice::ParallelSliceMut;
 
 /// A set of points and tetrahedra over them (indices into `points`).
 ///
@@ -101,14 +102,20 @@ pub fn reorient(points: &[Point3], tets: &mut [[u32; 4]]) -> usize {
 
 /// The sorted, deduplicated edge set of a list of tetrahedra.
 pub fn edges_of(tets: &[[u32; 4]]) -> Vec<[u32; 2]> {
-    let mut e: Vec<[u32; 2]> = tets
-        .iter()
-        .flat_map(|t| {
-            [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)]
-                .map(|(i, j)| [t[i].min(t[j]), t[i].max(t[j])])
-        })
-        .collect();
-    e.sort_unstable();
+    let pairs = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)];
+    let keys = tets.iter().flat_map(|t| pairs.map(|(i, j)| [t[i], t[j]]));
+    distinct_edges(keys)
+        .into_iter()
+        .map(|k| [(k >> 32) as u32, k as u32])
+        .collect()
+}
+
+/// The distinct undirected edges of `edges`, each `(a, b)` with `a < b` as the integer
+/// `a << 32 | b`, sorted (in parallel: the keys are plain integers, so the order is one).
+pub(crate) fn distinct_edges(edges: impl Iterator<Item = [u32; 2]>) -> Vec<u64> {
+    let key = |[a, b]: [u32; 2]| u64::from(a.min(b)) << 32 | u64::from(a.max(b));
+    let mut e: Vec<u64> = edges.map(key).collect();
+    e.par_sort_unstable();
     e.dedup();
     e
 }

@@ -140,7 +140,6 @@ pub use outcome::{
     AssumptionWitness, DELAUNAY_START, FileVertex, FlipCounts, Optimum, REMOVAL_BUDGET,
     ShellOptions, ShellOutcome, Weights, shell,
 };
-use rayon::slice::ParallelSliceMut;
 pub use removal::ThesisSteps;
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use serde::Serialize;
@@ -473,22 +472,11 @@ impl ShellMesh {
     /// Lemma 4.9: `t = e_i + n − 6` when `P` and `Q` are simplicial and do not touch).
     pub fn interior_edges(&self) -> usize {
         // The boundary's edges are among the tetrahedra's: the interior ones are the rest.
-        let key = |a: u32, b: u32| u64::from(a.min(b)) << 32 | u64::from(a.max(b));
-        let distinct = |mut e: Vec<u64>| {
-            e.par_sort_unstable();
-            e.dedup();
-            e.len()
-        };
-        let boundary = crate::mesh::boundary_faces(&self.tets)
+        let boundary = crate::mesh::boundary_faces(&self.tets);
+        let sides = boundary
             .iter()
-            .flat_map(|f| [key(f[0], f[1]), key(f[1], f[2]), key(f[0], f[2])])
-            .collect();
-        let all = (self.tets.iter())
-            .flat_map(|t| {
-                [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)].map(|(i, j)| key(t[i], t[j]))
-            })
-            .collect();
-        distinct(all) - distinct(boundary)
+            .flat_map(|f| [[f[0], f[1]], [f[1], f[2]], [f[0], f[2]]]);
+        crate::mesh::edges_of(&self.tets).len() - crate::mesh::distinct_edges(sides).len()
     }
 }
 
