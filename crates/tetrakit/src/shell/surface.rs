@@ -55,6 +55,9 @@ pub(super) struct Surface<'a> {
     outer_hull: &'a Hull3,
     /// Q's edges, recovered wherever a facet of the surface holds them.
     q_edges: &'a QEdges,
+    /// The most triangles a cut of several vertices has taken (what bounds its cost).
+    #[cfg(test)]
+    pub(super) largest_cut: usize,
 }
 
 /// What a removal takes off the surface (triangle ids) and the bottom it leaves.
@@ -142,6 +145,8 @@ impl<'a> Surface<'a> {
             hidden: Hidden::new(pts, hidden),
             outer_hull,
             q_edges,
+            #[cfg(test)]
+            largest_cut: 0,
         };
         for &v in on_outer {
             s.hidden.expose(v);
@@ -282,6 +287,10 @@ impl<'a> Surface<'a> {
         let mut region: Vec<u32> = set.iter().flat_map(|&u| self.star(u)).collect();
         region.sort_unstable();
         region.dedup();
+        #[cfg(test)]
+        if set.len() > 1 {
+            self.largest_cut = self.largest_cut.max(region.len());
+        }
         // The boundary of the union of the stars: the directed edges of its triangles
         // whose reverse is not one of them.
         let mut inside: Vec<(u32, u32)> = (region.iter())

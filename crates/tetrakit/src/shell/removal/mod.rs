@@ -23,6 +23,31 @@ const BIGCAP_LIMIT: usize = 32;
 /// thousands of neighbours, trying them all made bigcaps quadratic per tip).
 const BIGCAP_TRIES: usize = BIGCAP_LIMIT + 4;
 
+/// The most triangles (the sum of the degrees) the stars of one bigcap's set may have.
+/// A set's plan costs about as much as its stars; without a bound, the hubs of a prism's
+/// cap polygon (degrees in the thousands, growing with `n`) joined set after set, and
+/// bigcaps on twisted prisms took `n^1.3`.
+const BIGCAP_STAR: usize = 4 * BIGCAP_LIMIT;
+
+/// How far [`Removal::grow`] grows a set.
+struct Bounds {
+    /// The most vertices.
+    vertices: usize,
+    /// The most sets tried.
+    tries: usize,
+    /// The most triangles in the set's stars (the sum of their degrees).
+    star: usize,
+}
+
+impl Bounds {
+    /// No bound.
+    const NONE: Bounds = Bounds {
+        vertices: usize::MAX,
+        tries: usize::MAX,
+        star: usize::MAX,
+    };
+}
+
 /// The most pairs one round of [`Removal::pair`] tries (each costs a local hull; where
 /// the last tips of a prism's cap are refused, trying every pair took two thirds of the
 /// time and found none).
@@ -86,24 +111,31 @@ impl<'s, 'a> Removal<'s, 'a> {
     }
 
     /// Removes a bigcap at `v`: the largest set grown greedily from `{v}` (neighbours of
-    /// the set in increasing number, at most [`BIGCAP_LIMIT`] vertices and
-    /// [`BIGCAP_TRIES`] sets tried) whose piece is still star-shaped from `v` and passes
-    /// every check of [`Surface::plan`]; false when even the cap at `v` is refused.
+    /// the set in increasing number, at most [`BIGCAP_LIMIT`] vertices, [`BIGCAP_TRIES`]
+    /// sets tried and [`BIGCAP_STAR`] triangles in their stars) whose piece is still
+    /// star-shaped from `v` and passes every check of [`Surface::plan`]; false when even
+    /// the cap at `v` is refused.
     fn bigcap(&mut self, v: u32) -> bool {
-        self.grow(v, None, BIGCAP_LIMIT, BIGCAP_TRIES)
+        let bounds = Bounds {
+            vertices: BIGCAP_LIMIT,
+            tries: BIGCAP_TRIES,
+            star: BIGCAP_STAR,
+        };
+        self.grow(v, None, &bounds)
     }
 
     /// Removes the largest set grown greedily from `{v}` over the vertices left (and in
     /// `within`, if given): neighbours of the set in increasing number, each kept while
-    /// [`Surface::plan`] accepts the piece, at most `limit` vertices and `tries` sets
-    /// tried; false when even the cap at `v` is refused.
-    fn grow(&mut self, v: u32, within: Option<&HashSet<u32>>, limit: usize, tries: usize) -> bool {
+    /// [`Surface::plan`] accepts the piece, within `bounds`; false when even the cap at
+    /// `v` is refused.
+    fn grow(&mut self, v: u32, within: Option<&HashSet<u32>>, bounds: &Bounds) -> bool {
         let mut set = vec![v];
         let Ok(mut best) = self.surface.plan(v, &set) else {
             return false;
         };
+        let mut star = self.surface.degree(v);
         let mut tried: HashSet<u32> = set.iter().copied().collect();
-        while tried.len() < tries {
+        while tried.len() < bounds.tries {
             let mut next: Vec<u32> = set
                 .iter()
                 .flat_map(|&u| self.surface.neighbours(u))
@@ -117,18 +149,25 @@ impl<'s, 'a> Removal<'s, 'a> {
             }
             for u in next {
                 tried.insert(u);
-                if set.len() >= limit || tried.len() > tries {
+                if set.len() >= bounds.vertices || tried.len() > bounds.tries {
                     break;
+                }
+                let degree = self.surface.degree(u);
+                if star + degree > bounds.star {
+                    continue;
                 }
                 set.push(u);
                 match self.surface.plan(v, &set) {
-                    Ok(p) => best = p,
+                    Ok(p) => {
+                        best = p;
+                        star += degree;
+                    }
                     Err(_) => {
                         set.pop();
                     }
                 }
             }
-            if set.len() >= limit {
+            if set.len() >= bounds.vertices {
                 break;
             }
         }
@@ -269,4 +308,68 @@ pub(super) fn run(
         left,
         thesis,
     }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geom::Point3;
+    use crate::shell::Shell;
+
+    /// Two `k`-gon prisms, the inner one slightly smaller and turned: every outer vertex
+    /// is on a cap polygon, whose triangulation has vertices of degree about `k`.
+    fn prisms(k: usize) -> (Vec<Point3>, Vec<Point3>) {
+        let prism = |r: f64, h: f64, turn: f64| -> Vec<Point3> {
+            let ring = |z: f64| {
+                (0..k).map(move |j| {
+                    let a = std::f64::consts::TAU * j as f64 / k as f64 + turn;
+                    [r * a.cos(), r * a.sin(), z]
+                })
+            };
+            ring(-h).chain(ring(h)).collect()
+        };
+        (prism(1.0, 1.0, 0.0), prism(0.99, 0.99, 0.01))
+    }
+
+    /// No bigcap tries a set whose stars have more than [`BIGCAP_STAR`] triangles: the
+    /// hubs of the bottoms on a prism's cap polygons (degrees in the hundreds) are left
+    /// out of the sets grown around them, where each try cost a hull of their stars.
+    #[test]
+    fn bigcaps_leave_out_the_hubs() {
+        let (outer, inner) = prisms(400);
+        let shell = Shell::new(&outer, &inner).expect("nested prisms");
+        let hidden: Vec<u32> = (shell.inner.iter().copied())
+            .filter(|&v| v as usize >= shell.outer.len())
+            .collect();
+        let mut surface = Surface::new(
+            &shell.points,
+            &shell.hull,
+            (&hidden, &shell.touching),
+            &shell.q_edges,
+        )
+        .expect("a surface");
+        let mut r = Removal::new(&mut surface, shell.outer.iter().copied().collect());
+        let (mut refused, mut largest_set, mut hub) = (HashSet::default(), 0, 0);
+        while let Some(v) = (r.left.iter().copied())
+            .filter(|v| !refused.contains(v))
+            .min_by_key(|&v| (r.surface.degree(v), v))
+        {
+            let around = r.surface.neighbours(v).into_iter();
+            hub = hub.max(around.map(|u| r.surface.degree(u)).max().unwrap_or(0));
+            let before = r.order.len();
+            if !r.bigcap(v) {
+                refused.insert(v);
+            }
+            largest_set = largest_set.max(r.order.len() - before);
+        }
+        assert!(
+            hub > BIGCAP_STAR && largest_set > 4,
+            "hub {hub}, sets {largest_set}"
+        );
+        let largest_cut = r.surface.largest_cut;
+        assert!(
+            largest_cut <= BIGCAP_STAR,
+            "a cut of {largest_cut} triangles"
+        );
+    }
 }

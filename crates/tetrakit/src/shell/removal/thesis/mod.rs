@@ -286,5 +286,5 @@ fn u_v(r: &mut Removal, v: u32, s: &HashSet<u32>, sight: &Sight) -> Vec<u32> {
 /// `v` is refused.
 fn grown(r: &mut Removal, v: u32, within: &[u32]) -> bool {
     let allowed: HashSet<u32> = within.iter().copied().collect();
-    r.grow(v, Some(&allowed), usize::MAX, usize::MAX)
+    r.grow(v, Some(&allowed), &super::Bounds::NONE)
 }
