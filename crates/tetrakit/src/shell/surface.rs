@@ -36,6 +36,10 @@ use super::recover::QEdges;
 use crate::geom::{Hull3, Plane, Point3, bounding_box, orient2d_drop, orient3d, projection_axis};
 use rustc_hash::FxHashMap as HashMap;
 
+/// How many candidates [`Surface::candidates`] tests against `CH(L)` before it queries
+/// with it.
+const SAMPLE: usize = 64;
+
 /// The triangulated surface of the current hull (cloned by Step 3a's search, which tries
 /// orders of removal on copies).
 #[derive(Clone)]
@@ -400,9 +404,13 @@ impl<'a> Surface<'a> {
     /// `removed` points of `around` (the ring, then the removed set): those in the
     /// region of [`Hidden::within`]. The exact planes cost small hulls, about what as
     /// many candidates cost the bottom's hull, so they are built only when the box
-    /// alone holds more than the ring (and 16): `CH(U ∪ ring)`'s first, then, when the
+    /// alone holds more than the ring (and 16): `CH(U ∪ L)`'s first, then, when the
     /// candidates still outnumber the ring (thousands under a star spanning the shell,
-    /// on arcs; not on a prism's cap polygon), `CH(ring)`'s.
+    /// on arcs; not on a prism's cap polygon), `CH(L)`'s, to leave out the points
+    /// strictly inside it. Those cannot be on the bottom, so keeping them is correct;
+    /// the second query is made only when a sample ([`SAMPLE`] candidates, evenly
+    /// spaced) finds a quarter of them inside: on the curved side of a boxed octant
+    /// ball none is, and the query cost more than the hull they join.
     fn candidates(&self, around: &[Point3], removed: usize) -> Vec<u32> {
         let (lo, hi) = bounding_box(around);
         let ring = around.len() - removed;
@@ -417,10 +425,18 @@ impl<'a> Surface<'a> {
         }
         let cap = hull_planes(around);
         region.within = &cap;
-        if let Some(c) = self.hidden.within(self.pts, &region, ring) {
-            return c;
+        let candidates = (self.hidden.within(self.pts, &region, usize::MAX)).unwrap_or_default();
+        if candidates.len() <= ring {
+            return candidates;
         }
         let inside = hull_planes(&around[..ring]);
+        let step = candidates.len().div_ceil(SAMPLE);
+        let strictly_inside = (candidates.iter().step_by(step))
+            .filter(|&&v| inside.iter().all(|h| h.side(&self.pts[v as usize]) < 0))
+            .count();
+        if 4 * strictly_inside < candidates.len().div_ceil(step) {
+            return candidates;
+        }
         region.ring = &inside;
         self.hidden
             .within(self.pts, &region, usize::MAX)
