@@ -72,13 +72,7 @@ pub fn orient3d(a: &Point3, b: &Point3, c: &Point3, d: &Point3) -> i8 {
         [b[0] - d[0], b[1] - d[1], b[2] - d[2]],
         [c[0] - d[0], c[1] - d[1], c[2] - d[2]],
     );
-    let (bc, cb) = (bd[0] * cd[1], cd[0] * bd[1]);
-    let (ca, ac) = (cd[0] * ad[1], ad[0] * cd[1]);
-    let (ab, ba) = (ad[0] * bd[1], bd[0] * ad[1]);
-    let det = ad[2] * (bc - cb) + bd[2] * (ca - ac) + cd[2] * (ab - ba);
-    let permanent = (bc.abs() + cb.abs()) * ad[2].abs()
-        + (ca.abs() + ac.abs()) * bd[2].abs()
-        + (ab.abs() + ba.abs()) * cd[2].abs();
+    let (det, permanent) = shewchuk_det(&ad, &bd, &cd);
     let u = f64::EPSILON / 2.0;
     let bound = (7.0 + 56.0 * u) * u * permanent;
     // robust::orient3d(a, b, c, d) is this det; ours is its negation.
@@ -96,7 +90,41 @@ pub fn orient3d(a: &Point3, b: &Point3, c: &Point3, d: &Point3) -> i8 {
     if (0..3).any(|k| ad[k] == 0.0 && bd[k] == 0.0 && cd[k] == 0.0) {
         return 0;
     }
+    // Small integers (up to a common power of two), as on lattices and grids: `det`
+    // had no rounding at all (see [`computed_exactly`]), so its sign is the answer.
+    let f = Frame::new(d);
+    if computed_exactly(&f.dir(a), &f.dir(b), &f.dir(c)) {
+        return -sign(det);
+    }
     -sign(robust::orient3d(c3(a), c3(b), c3(c), c3(d)))
+}
+
+/// `det[ad, bd, cd]` in floats, expanded along the last column as in Shewchuk's
+/// `orient3dfast`, and its permanent (for his error bound).
+#[inline]
+fn shewchuk_det(ad: &Point3, bd: &Point3, cd: &Point3) -> (f64, f64) {
+    let (bc, cb) = (bd[0] * cd[1], cd[0] * bd[1]);
+    let (ca, ac) = (cd[0] * ad[1], ad[0] * cd[1]);
+    let (ab, ba) = (ad[0] * bd[1], bd[0] * ad[1]);
+    let det = ad[2] * (bc - cb) + bd[2] * (ca - ac) + cd[2] * (ab - ba);
+    let permanent = (bc.abs() + cb.abs()) * ad[2].abs()
+        + (ca.abs() + ac.abs()) * bd[2].abs()
+        + (ab.abs() + ba.abs()) * cd[2].abs();
+    (det, permanent)
+}
+
+/// True when a 3×3 determinant of these directions, evaluated as a sum of products of
+/// differences of products, is computed without any rounding: the differences were
+/// exact and their nine components span at most 15 bits, so each is `m·2^e` with
+/// `|m| < 2^16` for one `e`; a product of two is below `2^32·2^2e`, their difference
+/// below `2^33·2^2e`, a product of three below `2^49·2^3e` and the sum of three below
+/// `2^51·2^3e`, all multiples of the unit they are counted in: exact in 53 bits.
+#[inline]
+fn computed_exactly(da: &Dir, db: &Dir, dc: &Dir) -> bool {
+    let inexact = da.hi == i32::MIN || db.hi == i32::MIN || dc.hi == i32::MIN;
+    let lo = da.lo.min(db.lo).min(dc.lo);
+    let hi = da.hi.max(db.hi).max(dc.hi);
+    !inexact && (lo == i32::MAX || hi - lo <= 15)
 }
 
 /// Bound on the rounding error of the fast determinant in [`Frame`], relative to its
@@ -194,10 +222,7 @@ impl Frame {
         if det < -bound {
             return -1;
         }
-        let inexact = da.hi == i32::MIN || db.hi == i32::MIN || dc.hi == i32::MIN;
-        let lo = da.lo.min(db.lo).min(dc.lo);
-        let hi = da.hi.max(db.hi).max(dc.hi);
-        if !inexact && (lo == i32::MAX || hi - lo <= 15) {
+        if computed_exactly(da, db, dc) {
             // Every operation of det_perm was exact.
             return sign(det);
         }
@@ -709,6 +734,38 @@ mod tests {
             zeros += usize::from(got == 0);
         }
         assert!(zeros > 3_000, "{zeros}");
+    }
+
+    #[test]
+    fn determinants_computed_exactly_are_exact() {
+        // Integers of 4 to 19 bits (spans on both sides of the 15-bit bound) times a power
+        // of two: wherever `computed_exactly` says so, both float evaluations equal the
+        // determinant in 128-bit integers (counted in units of the power of two).
+        let mut rng = crate::rng::Rng::new(23);
+        let mut accepted = [0; 2];
+        for k in 0..40_000 {
+            let bits = 4 + (k % 16) as u32;
+            let e = [0, -1, -30, 40][(k / 16) % 4];
+            let mut int = || rng.below(1 << bits) as i64 - (1 << (bits - 1));
+            let rows = [0; 3].map(|_| [int(), int(), int()]);
+            let [a, b, c] = rows.map(|r| r.map(|x| x as f64 * 2f64.powi(e)));
+            let f = Frame::new(&[0.0; 3]);
+            if !computed_exactly(&f.dir(&a), &f.dir(&b), &f.dir(&c)) {
+                accepted[1] += 1;
+                continue;
+            }
+            accepted[0] += 1;
+            let m = rows.map(|r| r.map(i128::from));
+            let exact = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+                - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+                + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+            let unit = 2f64.powi(3 * e);
+            for det in [shewchuk_det(&a, &b, &c).0, det_perm(&a, &b, &c).0] {
+                assert_eq!(det / unit, exact as f64, "{rows:?} at 2^{e}");
+                assert_eq!(det / unit, (det / unit).round());
+            }
+        }
+        assert!(accepted.iter().all(|&n| n > 2_000), "{accepted:?}");
     }
 
     #[test]
