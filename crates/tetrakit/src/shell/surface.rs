@@ -36,10 +36,6 @@ use super::recover::QEdges;
 use crate::geom::{Hull3, Plane, Point3, bounding_box, orient2d_drop, orient3d, projection_axis};
 use rustc_hash::FxHashMap as HashMap;
 
-/// How many candidates [`Surface::candidates`] tests against `CH(L)` before it queries
-/// with it, when `CH(L)` has more facets than that.
-const SAMPLE: usize = 64;
-
 /// The triangulated surface of the current hull (cloned by Step 3a's search, which tries
 /// orders of removal on copies).
 #[derive(Clone)]
@@ -404,15 +400,9 @@ impl<'a> Surface<'a> {
     /// `removed` points of `around` (the ring, then the removed set): those in the
     /// region of [`Hidden::within`]. The exact planes cost small hulls, about what as
     /// many candidates cost the bottom's hull, so they are built only when the box
-    /// alone holds more than the ring (and 16): `CH(U ∪ L)`'s first, then, when the
+    /// alone holds more than the ring (and 16): `CH(U ∪ ring)`'s first, then, when the
     /// candidates still outnumber the ring (thousands under a star spanning the shell,
-    /// on arcs; not on a prism's cap polygon), `CH(L)`'s, to leave out the points
-    /// strictly inside it. Those cannot be on the bottom, so keeping them is correct:
-    /// where `CH(L)` has more than [`SAMPLE`] facets (a large ring, whose query tests
-    /// each candidate against many of them), that query is made only when a sample of
-    /// [`SAMPLE`] candidates, evenly spaced, finds a quarter of them inside. On the
-    /// curved side of a boxed octant ball none is, and the query cost more than the
-    /// hull they join.
+    /// on arcs; not on a prism's cap polygon), `CH(ring)`'s.
     fn candidates(&self, around: &[Point3], removed: usize) -> Vec<u32> {
         let (lo, hi) = bounding_box(around);
         let ring = around.len() - removed;
@@ -431,16 +421,6 @@ impl<'a> Surface<'a> {
             return c;
         }
         let inside = hull_planes(&around[..ring]);
-        if inside.len() > SAMPLE {
-            let all = (self.hidden.within(self.pts, &region, usize::MAX)).unwrap_or_default();
-            let step = all.len().div_ceil(SAMPLE);
-            let strictly_inside = (all.iter().step_by(step))
-                .filter(|&&v| inside.iter().all(|h| h.side(&self.pts[v as usize]) < 0))
-                .count();
-            if 4 * strictly_inside < all.len().div_ceil(step) {
-                return all;
-            }
-        }
         region.ring = &inside;
         self.hidden
             .within(self.pts, &region, usize::MAX)
