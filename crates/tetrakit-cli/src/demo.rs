@@ -424,11 +424,7 @@ fn shell_section() {
     }
     let (outer, inner, _) = tetrakit::shell::lemma41::counterexample();
     if let Ok(shell) = Shell::new(&outer, &inner) {
-        let opts = tetrakit::shell::ShellOptions {
-            method: Method::Thesis,
-            flips: true,
-            optimum: false,
-        };
+        let opts = tetrakit::shell::ShellOptions::new(Method::Thesis);
         match tetrakit::shell::shell(&shell, opts, &Control::new()) {
             Ok(o) if o.witness.is_some() => out!(
                 "  the thesis's Lemma 4.1 fails (`generate lemma41`, 10 points; `shell --method thesis`):\n    {}",

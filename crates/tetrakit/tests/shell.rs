@@ -352,9 +352,8 @@ fn bern_disks_within_the_bound_after_flips() {
     // and the smaller mesh is printed with `within_bound: false`; with them, within.
     for flips in [false, true] {
         let opts = ShellOptions {
-            method: Method::Cap,
             flips,
-            optimum: false,
+            ..ShellOptions::new(Method::Cap)
         };
         let o = tetrakit::shell::shell(&shell, opts, &Control::new()).unwrap();
         let t = o.tetrahedra.unwrap();
@@ -772,11 +771,7 @@ fn thesis_method_names_the_lemma_that_fails() {
     use tetrakit::shell::lemma41::counterexample;
     let (outer, inner, tip) = counterexample();
     let shell = Shell::new(&outer, &inner).unwrap();
-    let opts = ShellOptions {
-        method: Method::Thesis,
-        flips: true,
-        optimum: false,
-    };
+    let opts = ShellOptions::new(Method::Thesis);
     let o = tetrakit::shell::shell(&shell, opts, &Control::new()).unwrap();
     assert_eq!(
         (o.verdict, o.lemma_4_1),
@@ -806,11 +801,7 @@ fn thesis_method_names_the_lemma_that_fails() {
     let o = tetrakit::shell::shell(&shell, opts, &stopped).unwrap();
     assert_eq!((o.verdict, o.witness.is_none()), (Verdict::Undecided, true));
     // The other methods mesh it.
-    let cap = ShellOptions {
-        method: Method::Cap,
-        flips: true,
-        optimum: false,
-    };
+    let cap = ShellOptions::new(Method::Cap);
     assert_eq!(
         tetrakit::shell::shell(&shell, cap, &Control::new())
             .unwrap()
@@ -851,9 +842,8 @@ fn shell_reports_the_exact_minimum() {
     let (outer, inner, _) = nested(&p).unwrap();
     let shell = Shell::new(&outer, &inner).unwrap();
     let opts = ShellOptions {
-        method: Method::Cap,
-        flips: true,
         optimum: true,
+        ..ShellOptions::new(Method::Cap)
     };
     let o = tetrakit::shell::shell(&shell, opts, &Control::new()).unwrap();
     let best = o.optimum.expect("asked");
@@ -1125,11 +1115,7 @@ fn a_delaunay_shortcut_above_the_budget_is_not_kept() {
     let mut rng = tetrakit::rng::Rng::new(3);
     let inner = tetrakit::shell::generate::shape_points(Shape::Sphere, 200, 0.1, &mut rng);
     let shell = Shell::new(&outer, &inner).unwrap();
-    let opts = ShellOptions {
-        method: Method::Bigcap,
-        flips: true,
-        optimum: false,
-    };
+    let opts = ShellOptions::new(Method::Bigcap);
     let o = tetrakit::shell::shell(&shell, opts, &Control::new()).unwrap();
     let t = o.tetrahedra.unwrap();
     assert!(

@@ -29,6 +29,17 @@ pub struct ShellOptions {
     pub optimum: bool,
 }
 
+impl ShellOptions {
+    /// `method` with the command's defaults: flips on, no exact minimum.
+    pub const fn new(method: Method) -> Self {
+        ShellOptions {
+            method,
+            flips: true,
+            optimum: false,
+        }
+    }
+}
+
 /// The flips the improvement kept.
 #[derive(Clone, Copy, Debug, Serialize)]
 pub struct FlipCounts {
@@ -121,7 +132,7 @@ fn undecided(f: &Option<Option<FlipCounts>>) -> bool {
 /// use tetrakit::shell::{Method, Shell, ShellOptions, generate::bern_disk, shell};
 /// let (outer, inner) = bern_disk(60, 12, 1).unwrap();
 /// let s = Shell::new(&outer, &inner).unwrap();
-/// let opts = ShellOptions { method: Method::Cap, flips: true, optimum: false };
+/// let opts = ShellOptions::new(Method::Cap);
 /// let o = shell(&s, opts, &Control::new()).unwrap();
 /// assert_eq!(o.verdict, tetrakit::control::Verdict::Yes);
 /// assert!(o.tetrahedra.unwrap() <= o.bound);
