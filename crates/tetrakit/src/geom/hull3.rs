@@ -125,6 +125,35 @@ impl Hull3 {
         self.neighbours[t][i] as usize
     }
 
+    /// The same hull on renumbered points: point `k` of the new numbering is point
+    /// `old[k]` (it takes its facets), and `new(i)` is the new number of point `i` (a
+    /// repeated point may be named as another copy of itself). `None` when a corner of a
+    /// triangle has no new number.
+    pub fn renumbered(self, old: &[u32], new: impl Fn(u32) -> Option<u32>) -> Option<Hull3> {
+        let rename = |ts: &[[u32; 3]]| -> Option<Vec<[u32; 3]>> {
+            ts.iter()
+                .map(|t| Some([new(t[0])?, new(t[1])?, new(t[2])?]))
+                .collect()
+        };
+        let (triangles, facet_planes) = (rename(&self.triangles)?, rename(&self.facet_planes)?);
+        let mut facet_start = Vec::with_capacity(old.len() + 1);
+        let mut facet_list = Vec::with_capacity(self.facet_list.len());
+        facet_start.push(0);
+        for &i in old {
+            facet_list.extend_from_slice(self.facets_of(i as usize));
+            facet_start.push(facet_list.len() as u32);
+        }
+        Some(Hull3 {
+            dimension: self.dimension,
+            triangles,
+            triangle_facet: self.triangle_facet,
+            facet_planes,
+            neighbours: self.neighbours,
+            facet_start,
+            facet_list,
+        })
+    }
+
     /// Number of facets (maximal coplanar polygons).
     pub fn facet_count(&self) -> usize {
         self.facet_planes.len()

@@ -283,25 +283,90 @@ fn extreme_points(pts: &[Point3]) -> Result<(Vec<u32>, Vec<u32>, Hull3), usize> 
     Ok((vertices, others, hull))
 }
 
-/// Q's edges from `hull`, the hull of the inner input points `inner`, whose corners
-/// `corners` have the shell indices `shell_index`.
-fn q_edges(
-    inner: &[Point3],
-    hull: &Hull3,
-    corners: &[u32],
-    shell_index: &[u32],
-) -> recover::QEdges {
+/// The outer input points split by the hull of both inputs.
+struct Corners {
+    /// The vertices of `P`, in input order (repeats dropped).
+    vertices: Vec<u32>,
+    /// The other outer points.
+    others: Vec<u32>,
+    /// Each vertex's number by place.
+    index: HashMap<[u64; 3], u32>,
+}
+
+/// The vertices of `P` from `union`, the hull of `both` (the `n_outer` outer input
+/// points, then the inner ones). `Q ⊆ P` exactly when every corner of the union is a
+/// point of `P` (a corner that is not lies outside `P`): `None` when one is not, or the
+/// union is flat (then `P` is).
+fn outer_corners(both: &[Point3], n_outer: usize, union: &Hull3) -> Option<Corners> {
+    if union.dimension < 3 {
+        return None;
+    }
+    let mut index: HashMap<[u64; 3], u32> = HashMap::default();
+    let (mut vertices, mut others) = (Vec::new(), Vec::new());
+    for (i, p) in both[..n_outer].iter().enumerate() {
+        let next = vertices.len() as u32;
+        if is_corner(union, i) && *index.entry(point_key(p)).or_insert(next) == next {
+            vertices.push(i as u32);
+        } else {
+            others.push(i as u32);
+        }
+    }
+    let stray = (n_outer..both.len())
+        .any(|i| is_corner(union, i) && !index.contains_key(&point_key(&both[i])));
+    (!stray).then_some(Corners {
+        vertices,
+        others,
+        index,
+    })
+}
+
+/// Why `CH(inner) ⊆ CH(outer)` fails, once [`outer_corners`] has found that it does:
+/// `P` flat, else `Q` flat, else the first inner vertex (in input order) that is a corner
+/// of the union and no vertex of `P`.
+fn refusal(outer: &[Point3], inner: &[Point3]) -> ShellError {
+    let outer_v = match extreme_points(outer) {
+        Ok((v, _, _)) => v,
+        Err(dimension) => return ShellError::OuterFlat { dimension },
+    };
+    let inner_v = match extreme_points(inner) {
+        Ok((v, _, _)) => v,
+        Err(dimension) => return ShellError::InnerFlat { dimension },
+    };
+    let at_p: HashSet<[u64; 3]> = outer_v
+        .iter()
+        .map(|&i| point_key(&outer[i as usize]))
+        .collect();
+    let mut pts: Vec<Point3> = outer_v.iter().map(|&i| outer[i as usize]).collect();
+    pts.extend(inner_v.iter().map(|&i| inner[i as usize]));
+    let union = Hull3::new(&pts);
+    let k0 = outer_v.len();
+    (inner_v.iter().enumerate())
+        .find(|&(k, &i)| {
+            is_corner(&union, k0 + k) && !at_p.contains(&point_key(&inner[i as usize]))
+        })
+        .map_or(
+            ShellError::Internal(Bug::new("an inner point outside the outer hull")),
+            |(_, &i)| ShellError::InnerOutside {
+                index: i,
+                point: inner[i as usize],
+            },
+        )
+}
+
+/// Q's edges from `hull`, the hull of the inner input points `inner`, whose corners are
+/// `corners` (first copies), each named by its input index.
+fn q_edges(inner: &[Point3], hull: &Hull3, corners: &[u32]) -> recover::QEdges {
     let mut named = vec![None; inner.len()];
-    for (&i, &k) in corners.iter().zip(shell_index) {
-        named[i as usize] = Some(k);
+    for &i in corners {
+        named[i as usize] = Some(i);
     }
     // A repeat of a corner is named as the corner.
     let repeats: Vec<usize> = (0..inner.len())
         .filter(|&i| named[i].is_none() && is_corner(hull, i))
         .collect();
     if !repeats.is_empty() {
-        let by_place: HashMap<[u64; 3], u32> = (corners.iter().zip(shell_index))
-            .map(|(&i, &k)| (point_key(&inner[i as usize]), k))
+        let by_place: HashMap<[u64; 3], u32> = (corners.iter())
+            .map(|&i| (point_key(&inner[i as usize]), i))
             .collect();
         for i in repeats {
             named[i] = by_place.get(&point_key(&inner[i])).copied();
@@ -336,43 +401,57 @@ impl Shell {
     /// assert!(matches!(Shell::new(&tet, &out), Err(ShellError::InnerOutside { index: 3, .. })));
     /// ```
     pub fn new(outer: &[Point3], inner: &[Point3]) -> Result<Shell, ShellError> {
-        let (outer_e, inner_e) = rayon::join(|| extreme_points(outer), || extreme_points(inner));
-        let (outer_v, outer_ignored, _) =
-            outer_e.map_err(|dimension| ShellError::OuterFlat { dimension })?;
-        let (inner_v, inner_ignored, inner_hull) =
+        // The hull of both inputs at once, beside Q's (and Q's edges, by input index):
+        // when Q ⊆ P it is P's hull (P's own hull is built only to say what is wrong).
+        let both: Vec<Point3> = outer.iter().chain(inner).copied().collect();
+        let (union, inner_e) = rayon::join(
+            || Hull3::new(&both),
+            || {
+                let (v, others, hull) = extreme_points(inner)?;
+                let edges = q_edges(inner, &hull, &v);
+                Ok((v, others, hull, edges))
+            },
+        );
+        let Some(Corners {
+            vertices: outer_v,
+            others: outer_ignored,
+            mut index,
+        }) = outer_corners(&both, outer.len(), &union)
+        else {
+            return Err(refusal(outer, inner));
+        };
+        let (inner_v, inner_ignored, inner_hull, q_edges) =
             inner_e.map_err(|dimension| ShellError::InnerFlat { dimension })?;
         let mut points: Vec<Point3> = outer_v.iter().map(|&i| outer[i as usize]).collect();
-        let index: HashMap<[u64; 3], u32> = points
-            .iter()
-            .enumerate()
-            .map(|(k, p)| (point_key(p), k as u32))
-            .collect();
+        // Each vertex's point in `both`, whose facets on the union it takes.
+        let mut source: Vec<u32> = outer_v.clone();
         let mut inner_idx = Vec::with_capacity(inner_v.len());
+        let mut shell_index = vec![u32::MAX; inner.len()];
         for &i in &inner_v {
             let p = inner[i as usize];
-            inner_idx.push(*index.get(&point_key(&p)).unwrap_or(&(points.len() as u32)));
-            if inner_idx.last() == Some(&(points.len() as u32)) {
+            let k = *index.entry(point_key(&p)).or_insert_with(|| {
                 points.push(p);
-            }
-        }
-        // Q ⊆ P exactly when every corner of CH(P ∪ Q) is a vertex of P: a corner of the
-        // union that is an inner vertex not shared with P lies outside P.
-        // Q's edges come from Q's hull alone: read off beside the union's hull.
-        let (union, q_edges) = rayon::join(
-            || Hull3::new(&points),
-            || q_edges(inner, &inner_hull, &inner_v, &inner_idx),
-        );
-        let n_outer = outer_v.len() as u32;
-        let corner = |c: u32| is_corner(&union, c as usize);
-        if let Some(c) = (n_outer..points.len() as u32).find(|&c| corner(c)) {
-            let k = inner_idx.iter().position(|&x| x == c).unwrap_or(0);
-            return Err(ShellError::InnerOutside {
-                index: inner_v[k],
-                point: points[c as usize],
+                source.push((outer.len() + i as usize) as u32);
+                points.len() as u32 - 1
             });
+            inner_idx.push(k);
+            shell_index[i as usize] = k;
         }
+        let q_edges = q_edges.renamed(|i| shell_index[i as usize]);
+        let mut number = vec![u32::MAX; both.len()];
+        for (k, &i) in source.iter().enumerate() {
+            number[i as usize] = k as u32;
+        }
+        let named = |i: u32| match number[i as usize] {
+            u32::MAX => index.get(&point_key(&both[i as usize])).copied(),
+            k => Some(k),
+        };
+        // A point inside an edge or a facet of `P` (no vertex) may be a corner of the
+        // union's triangles: then the hull of the vertices alone is built.
+        let hull = (union.renumbered(&source, named)).unwrap_or_else(|| Hull3::new(&points));
+        let n_outer = outer_v.len() as u32;
         let touching = (n_outer..points.len() as u32)
-            .filter(|&c| union.on_boundary(c as usize))
+            .filter(|&c| hull.on_boundary(c as usize))
             .collect();
         Ok(Shell {
             points,
@@ -383,7 +462,7 @@ impl Shell {
             outer_ignored,
             inner_ignored,
             touching,
-            hull: union,
+            hull,
             q_edges,
             inner_hull,
         })
@@ -588,5 +667,128 @@ fn placing_orders(left: Vec<u32>, order: Vec<u32>) -> Vec<Vec<u32>> {
     match left.is_empty() {
         true => vec![first],
         false => vec![first, back.into_iter().chain(left).collect()],
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geom::orient3d;
+
+    /// The points of a box with the given corners' coordinates, as its 8 corners, or
+    /// as a `3 × 3 × 3` grid (points inside its edges and facets: no vertices).
+    fn cuboid([x, y, z]: [[f64; 2]; 3], grid: bool) -> Vec<Point3> {
+        let steps: &[f64] = if grid { &[0.0, 0.5, 1.0] } else { &[0.0, 1.0] };
+        let at = |[a, b]: [f64; 2], t: f64| a + t * (b - a);
+        let mut pts = Vec::new();
+        for &i in steps {
+            for &j in steps {
+                for &k in steps {
+                    pts.push([at(x, i), at(y, j), at(z, k)]);
+                }
+            }
+        }
+        pts
+    }
+
+    /// [`Shell::new`] against the hulls of `P` and `Q` built apart, with `Q ⊆ P` and
+    /// the contact decided by every facet plane of `P` (exact).
+    fn agrees_with_separate_hulls(outer: &[Point3], inner: &[Point3]) {
+        let (hp, hq) = (Hull3::new(outer), Hull3::new(inner));
+        let got = Shell::new(outer, inner);
+        if hp.dimension < 3 || hq.dimension < 3 {
+            let flat = match hp.dimension < 3 {
+                true => ShellError::OuterFlat {
+                    dimension: hp.dimension,
+                },
+                false => ShellError::InnerFlat {
+                    dimension: hq.dimension,
+                },
+            };
+            return assert_eq!(got.err(), Some(flat), "{outer:?} {inner:?}");
+        }
+        let p = |k: u32| &outer[k as usize];
+        let side = |x: &Point3| {
+            (hp.facet_planes.iter())
+                .map(|f| orient3d(p(f[0]), p(f[1]), p(f[2]), x))
+                .max()
+        };
+        let corners = |pts: &[Point3], h: &Hull3| {
+            let mut seen = HashSet::default();
+            (0..pts.len() as u32)
+                .filter(|&i| is_corner(h, i as usize) && seen.insert(point_key(&pts[i as usize])))
+                .collect::<Vec<u32>>()
+        };
+        if inner.iter().any(|x| side(x) == Some(1)) {
+            let Err(ShellError::InnerOutside { index, point }) = got else {
+                panic!("{outer:?} {inner:?}: {got:?}");
+            };
+            assert_eq!(point, inner[index as usize]);
+            assert!(side(&point) == Some(1) && is_corner(&hq, index as usize));
+            return;
+        }
+        let s = got.expect("nested");
+        assert_eq!(s.outer_source, corners(outer, &hp));
+        assert_eq!(s.inner_source, corners(inner, &hq));
+        let n_outer = s.outer.len() as u32;
+        let on_p = |k: u32| side(&s.points[k as usize]) == Some(0);
+        let touching: Vec<u32> = (n_outer..s.points.len() as u32)
+            .filter(|&k| on_p(k))
+            .collect();
+        assert_eq!(s.touching, touching);
+        for k in 0..s.points.len() as u32 {
+            assert_eq!(s.hull.on_boundary(k as usize), on_p(k), "point {k}");
+        }
+        for t in &s.hull.triangles {
+            let [a, b, c] = t.map(|k| &s.points[k as usize]);
+            assert!(s.points.iter().all(|x| orient3d(a, b, c, x) <= 0));
+        }
+    }
+
+    /// Boxes with integer corners in `[0, 4]³` (every contact with the cube) and in
+    /// `[-1, 5]³` (most of them not inside it), in `P = [0, 4]³` given as its corners,
+    /// as a grid (points inside its edges and facets), or with each point twice; flat
+    /// inputs; lattice spheres with `Q = P/2`.
+    #[test]
+    fn shells_agree_with_separate_hulls() {
+        let big = [[0.0, 4.0]; 3];
+        let outers = [
+            cuboid(big, false),
+            cuboid(big, true),
+            cuboid(big, false).repeat(2),
+        ];
+        let spans = |lo: i32, hi: i32| -> Vec<[f64; 2]> {
+            (lo..hi)
+                .flat_map(|a| (a + 1..=hi).map(move |b| [a as f64, b as f64]))
+                .collect()
+        };
+        let (inside, across) = (spans(0, 4), spans(-1, 5));
+        let mut boxes: Vec<[[f64; 2]; 3]> = Vec::new();
+        for (i, &x) in across.iter().enumerate() {
+            for (j, &y) in across.iter().enumerate() {
+                for (k, &z) in across.iter().enumerate() {
+                    let nested = [x, y, z].iter().all(|s| inside.contains(s));
+                    if nested || (i + 3 * j + 5 * k) % 11 == 0 {
+                        boxes.push([x, y, z]);
+                    }
+                }
+            }
+        }
+        for (b, &corners) in boxes.iter().enumerate() {
+            let outer = &outers[b % outers.len()];
+            agrees_with_separate_hulls(outer, &cuboid(corners, b % 2 == 0));
+        }
+        let floor: Vec<Point3> = cuboid(big, true)
+            .into_iter()
+            .filter(|p| p[2] == 0.0)
+            .collect();
+        agrees_with_separate_hulls(&floor, &cuboid([[1.0, 2.0]; 3], false));
+        agrees_with_separate_hulls(&outers[0], &floor);
+        for r2 in [3, 9, 11, 17, 25, 27, 50] {
+            let outer = crate::generate::cospherical_points(r2);
+            let half: Vec<Point3> = outer.iter().map(|p| p.map(|x| x / 2.0)).collect();
+            agrees_with_separate_hulls(&outer, &half);
+            agrees_with_separate_hulls(&half, &outer);
+        }
     }
 }

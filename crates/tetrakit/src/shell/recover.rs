@@ -60,6 +60,18 @@ impl QEdges {
         QEdges { edges: by_vertex }
     }
 
+    /// The same edges with vertex `v` named `name(v)`.
+    pub(super) fn renamed(self, name: impl Fn(u32) -> u32) -> QEdges {
+        let edges = (self.edges.into_iter())
+            .map(|(v, ws)| {
+                let mut ws: Vec<u32> = ws.into_iter().map(&name).collect();
+                ws.sort_unstable();
+                (name(v), ws)
+            })
+            .collect();
+        QEdges { edges }
+    }
+
     /// Recovers in `tris` every edge of `Q` whose ends are both corners of `tris` and lie
     /// in the plane of one of its facets; `walls` (sorted) are never flipped.
     pub(super) fn recover(
