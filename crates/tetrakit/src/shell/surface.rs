@@ -443,6 +443,11 @@ impl<'a> Surface<'a> {
             .map(|&v| self.pts[v as usize])
             .collect();
         let candidates = self.candidates(&around, set.len());
+        if candidates.is_empty()
+            && let Some(tris) = simplicial_hull(self.pts, ring)
+        {
+            return disk(tip, tris, boundary);
+        }
         let mut local: Vec<u32> = ring.to_vec();
         local.extend(candidates);
         let coords: Vec<Point3> = local.iter().map(|&v| self.pts[v as usize]).collect();
@@ -496,41 +501,96 @@ impl<'a> Surface<'a> {
                 .recover(self.pts, &mut tris, boundary)
                 .map_err(Refused)?;
         }
-        let mut by_edge: Vec<((u32, u32), usize)> = (tris.iter().enumerate())
-            .flat_map(|(i, t)| (0..3).map(move |k| ((t[k], t[(k + 1) % 3]), i)))
-            .collect();
-        by_edge.sort_unstable();
-        // The triangle with the directed edge `e` (the last one, should two have it).
-        let with_edge = |e: (u32, u32)| super::with_key(&by_edge, e).last().map(|x| x.1);
-        let mut seen = vec![false; tris.len()];
-        let mut stack = Vec::new();
-        for &e in boundary {
-            let t = with_edge(e).ok_or(Refused("a link edge is not an edge of the bottom"))?;
-            stack.push(t);
-        }
-        let mut out = Vec::new();
-        while let Some(t) = stack.pop() {
-            if std::mem::replace(&mut seen[t], true) {
-                continue;
-            }
-            let tri = tris[t];
-            out.push(tri);
-            for k in 0..3 {
-                let (a, b) = (tri[k], tri[(k + 1) % 3]);
-                if boundary.binary_search(&(a, b)).is_ok() {
-                    continue; // a wall: the bottom ends at the ring
-                }
-                let u = with_edge((b, a)).ok_or(Refused("the bottom is not closed"))?;
-                stack.push(u);
-            }
-        }
-        if out.iter().any(|t| t.contains(&tip)) {
-            return Err(Refused("the bottom reaches the tip"));
-        }
-        Ok(out)
+        disk(tip, tris, boundary)
     }
 }
 
+/// The disk of the closed triangulated surface `tris` bounded by `boundary` (directed
+/// as in the triangles inside it): the triangles reached from the boundary edges without
+/// crossing one. Refused when a boundary edge is not an edge of `tris`, the surface is
+/// not closed there, or the disk reaches `tip`.
+fn disk(tip: u32, tris: Vec<[u32; 3]>, boundary: &[(u32, u32)]) -> Result<Vec<[u32; 3]>, Refused> {
+    let mut by_edge: Vec<((u32, u32), usize)> = (tris.iter().enumerate())
+        .flat_map(|(i, t)| (0..3).map(move |k| ((t[k], t[(k + 1) % 3]), i)))
+        .collect();
+    by_edge.sort_unstable();
+    // The triangle with the directed edge `e` (the last one, should two have it).
+    let with_edge = |e: (u32, u32)| super::with_key(&by_edge, e).last().map(|x| x.1);
+    let mut seen = vec![false; tris.len()];
+    let mut stack = Vec::new();
+    for &e in boundary {
+        let t = with_edge(e).ok_or(Refused("a link edge is not an edge of the bottom"))?;
+        stack.push(t);
+    }
+    let mut out = Vec::new();
+    while let Some(t) = stack.pop() {
+        if std::mem::replace(&mut seen[t], true) {
+            continue;
+        }
+        let tri = tris[t];
+        out.push(tri);
+        for k in 0..3 {
+            let (a, b) = (tri[k], tri[(k + 1) % 3]);
+            if boundary.binary_search(&(a, b)).is_ok() {
+                continue; // a wall: the bottom ends at the ring
+            }
+            let u = with_edge((b, a)).ok_or(Refused("the bottom is not closed"))?;
+            stack.push(u);
+        }
+    }
+    if out.iter().any(|t| t.contains(&tip)) {
+        return Err(Refused("the bottom reaches the tip"));
+    }
+    Ok(out)
+}
+
+/// The most ring vertices [`simplicial_hull`] takes (it tests every triple).
+const SMALL_RING: usize = 8;
+
+/// The facets of `CH(ring)`, outward, when the ring has 4 to [`SMALL_RING`] points, all
+/// of them corners, and no plane supporting the hull holds four of them: then every
+/// triple with all other points strictly on one side is a facet, and there are `2d − 4`
+/// (exact, by every triple). `None` otherwise (flat, a facet with four points or more):
+/// what [`Hull3`] makes of it, with its points on facets and edges, decides. Most caps
+/// have a ring of five or six and nothing hidden below: this is most of their bottoms.
+fn simplicial_hull(pts: &[Point3], ring: &[u32]) -> Option<Vec<[u32; 3]>> {
+    let d = ring.len();
+    if !(4..=SMALL_RING).contains(&d) {
+        return None;
+    }
+    let p = |v: u32| &pts[v as usize];
+    let mut tris = Vec::with_capacity(2 * d - 4);
+    for i in 0..d {
+        for j in i + 1..d {
+            for k in j + 1..d {
+                let (a, b, c) = (ring[i], ring[j], ring[k]);
+                let (mut below, mut above, mut on) = (false, false, false);
+                for &x in ring {
+                    if x == a || x == b || x == c {
+                        continue;
+                    }
+                    match orient3d(p(a), p(b), p(c), p(x)) {
+                        0 => on = true,
+                        -1 => below = true,
+                        _ => above = true,
+                    }
+                    if below && above {
+                        break; // no supporting plane
+                    }
+                }
+                match (below, above) {
+                    (true, true) => {}
+                    // A supporting plane through four points, or a flat ring.
+                    _ if on => return None,
+                    (true, false) => tris.push([a, b, c]),
+                    (false, true) => tris.push([a, c, b]),
+                    (false, false) => return None,
+                }
+            }
+        }
+    }
+    (tris.len() == 2 * d - 4).then_some(tris)
+}
 /// Splits the triangles `tris` (a triangulated surface piece) at each point of `points`
 /// that lies on one of them, inside it (into three) or inside an edge it shares with
 /// another triangle of `tris` (both into two): a point on a surface is a vertex of it.
@@ -619,5 +679,76 @@ fn locate(pts: &[Point3], t: &[u32; 3], x: &Point3) -> Option<Place> {
         0 => Some(Place::Inside),
         1 => sides.iter().position(|&s| s == 0).map(Place::Edge),
         _ => None, // a corner: already a vertex
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Each triangle turned to start at its least corner, sorted.
+    fn canonical(tris: &[[u32; 3]]) -> Vec<[u32; 3]> {
+        let mut out: Vec<[u32; 3]> = (tris.iter())
+            .map(|&[a, b, c]| match a.min(b).min(c) {
+                m if m == a => [a, b, c],
+                m if m == b => [b, c, a],
+                _ => [c, a, b],
+            })
+            .collect();
+        out.sort_unstable();
+        out
+    }
+
+    /// [`simplicial_hull`] against [`Hull3`] on 4 to 9 points: random floats (general
+    /// position) and points of a `3 × 3 × 3` grid (four on a plane everywhere). It
+    /// answers exactly when the hull is simplicial with every point a corner and no
+    /// fourth point on a facet's plane, and then with the hull's triangles.
+    #[test]
+    fn small_hulls_agree_with_hull3() {
+        let mut rng = crate::rng::Rng::new(41);
+        let (mut answered, mut declined) = (0, 0);
+        for case in 0..6000 {
+            let n = 4 + case % 6;
+            let grid = case % 3 == 0;
+            let mut pts: Vec<Point3> = Vec::new();
+            while pts.len() < n {
+                let p = match grid {
+                    true => [0; 3].map(|_| rng.below(3) as f64),
+                    false => [0; 3].map(|_| rng.unit()),
+                };
+                if !pts.contains(&p) {
+                    pts.push(p);
+                }
+            }
+            let ring: Vec<u32> = (0..n as u32).collect();
+            let hull = Hull3::new(&pts);
+            let plain = hull.dimension == 3
+                && hull.facet_count() == hull.triangles.len()
+                && (0..n).all(|i| hull.facets_of(i).len() >= 3)
+                && hull.triangles.iter().all(|t| {
+                    let on = |x: &Point3| {
+                        orient3d(
+                            &pts[t[0] as usize],
+                            &pts[t[1] as usize],
+                            &pts[t[2] as usize],
+                            x,
+                        ) == 0
+                    };
+                    pts.iter().filter(|x| on(x)).count() == 3
+                });
+            let got = simplicial_hull(&pts, &ring);
+            assert_eq!(
+                got.is_some(),
+                plain && n <= SMALL_RING,
+                "case {case}: {pts:?}"
+            );
+            if let Some(tris) = got {
+                assert_eq!(canonical(&tris), canonical(&hull.triangles), "case {case}");
+                answered += 1;
+            } else {
+                declined += 1;
+            }
+        }
+        assert!(answered > 2000 && declined > 2000, "{answered} {declined}");
     }
 }
