@@ -237,8 +237,9 @@ struct Mesh<'t> {
 
 impl<'t> Mesh<'t> {
     fn new(pts: &[Point3], tris: &'t mut [[u32; 3]]) -> Mesh<'t> {
-        let mut edge = HashMap::default();
-        let mut incident: HashMap<u32, Vec<usize>> = HashMap::default();
+        let mut edge = HashMap::with_capacity_and_hasher(3 * tris.len(), Default::default());
+        let mut incident: HashMap<u32, Vec<usize>> =
+            HashMap::with_capacity_and_hasher(tris.len() / 2 + 3, Default::default());
         for (i, t) in tris.iter().enumerate() {
             for k in 0..3 {
                 edge.insert((t[k], t[(k + 1) % 3]), i);

@@ -510,19 +510,25 @@ impl<'a> Surface<'a> {
 /// crossing one. Refused when a boundary edge is not an edge of `tris`, the surface is
 /// not closed there, or the disk reaches `tip`.
 fn disk(tip: u32, tris: Vec<[u32; 3]>, boundary: &[(u32, u32)]) -> Result<Vec<[u32; 3]>, Refused> {
-    let mut by_edge: Vec<((u32, u32), usize)> = (tris.iter().enumerate())
-        .flat_map(|(i, t)| (0..3).map(move |k| ((t[k], t[(k + 1) % 3]), i)))
-        .collect();
+    // Directed edges as one integer, with their triangle's index.
+    let key = |a: u32, b: u32| (u64::from(a) << 32) | u64::from(b);
+    let mut by_edge: Vec<(u64, u32)> = Vec::with_capacity(3 * tris.len());
+    for (i, t) in tris.iter().enumerate() {
+        by_edge.extend((0..3).map(|k| (key(t[k], t[(k + 1) % 3]), i as u32)));
+    }
     by_edge.sort_unstable();
     // The triangle with the directed edge `e` (the last one, should two have it).
-    let with_edge = |e: (u32, u32)| super::with_key(&by_edge, e).last().map(|x| x.1);
+    let with_edge = |(a, b): (u32, u32)| {
+        let end = by_edge.partition_point(|x| x.0 <= key(a, b));
+        (end > 0 && by_edge[end - 1].0 == key(a, b)).then(|| by_edge[end - 1].1 as usize)
+    };
     let mut seen = vec![false; tris.len()];
-    let mut stack = Vec::new();
+    let mut stack = Vec::with_capacity(tris.len());
     for &e in boundary {
         let t = with_edge(e).ok_or(Refused("a link edge is not an edge of the bottom"))?;
         stack.push(t);
     }
-    let mut out = Vec::new();
+    let mut out = Vec::with_capacity(tris.len());
     while let Some(t) = stack.pop() {
         if std::mem::replace(&mut seen[t], true) {
             continue;
