@@ -212,15 +212,18 @@ pub fn shell(s: &Shell, opts: ShellOptions, ctl: &Control) -> Result<ShellOutcom
             interior = None;
         }
     }
-    hulls
-        .certify_shell(&mesh.tets)
-        .map_err(ShellError::Uncertified)?;
+    // The count of interior edges (without a ledger, from the mesh) beside the certificate.
+    let (certified, interior) = rayon::join(
+        || hulls.certify_shell(&mesh.tets),
+        || interior.unwrap_or_else(|| mesh.interior_edges()),
+    );
+    certified.map_err(ShellError::Uncertified)?;
     o.verdict = Verdict::Yes;
     o.method = method.name();
     o.within_bound = Some(mesh.tets.len() <= o.bound);
     o.tetrahedra = Some(mesh.tets.len());
     o.tetrahedra_before_flips = Some(done.before);
-    o.interior_edges = Some(interior.unwrap_or_else(|| mesh.interior_edges()));
+    o.interior_edges = Some(interior);
     o.pieces = Some(mesh.pieces);
     o.finished_by = Some(mesh.finished_by);
     o.weights = mesh.ledger.as_ref().map(|l| Weights::new(s, l));
