@@ -31,7 +31,6 @@
 use super::{Point3, insphere, orient3d};
 use crate::control::Control;
 use crate::rng::Rng;
-use rustc_hash::FxHashMap as HashMap;
 
 /// The infinite vertex, and "no tetrahedron" in the neighbour lists.
 const INF: u32 = u32::MAX;
@@ -170,8 +169,22 @@ struct Builder<'p> {
     stack: Vec<u32>,
     cavity: Vec<u32>,
     boundary: Vec<(u32, usize)>,
-    /// A cone's faces through its apex still waiting for their second cell.
-    open: HashMap<u64, (u32, usize)>,
+    /// Per vertex (the point at infinity last): the insertion that last filed a cone's
+    /// face at it, and the first such face still waiting for its second cell.
+    at: Vec<(u32, u32)>,
+    /// A cone's faces through its apex ([`Builder::glue_cone`]).
+    faces: Vec<Face>,
+}
+
+/// A face of a cone through its apex, waiting for its second cell: the other end of
+/// its edge opposite the apex, its cell and the cell's index of it, and the next face
+/// filed at the same vertex.
+#[derive(Clone, Copy)]
+struct Face {
+    other: u32,
+    cell: u32,
+    k: u8,
+    next: u32,
 }
 
 impl<'p> Builder<'p> {
@@ -200,7 +213,8 @@ impl<'p> Builder<'p> {
             stack: Vec::new(),
             cavity: Vec::new(),
             boundary: Vec::new(),
-            open: HashMap::default(),
+            at: vec![(0, NONE); pts.len() + 1],
+            faces: Vec::new(),
         };
         // Infinite cell `k` holds the face opposite `first[k]`, across from the finite
         // cell; two infinite cells share the face through `INF` without either's vertex.
@@ -302,36 +316,61 @@ impl<'p> Builder<'p> {
             made.push(id);
         }
         self.boundary = boundary;
-        self.glue_cone(&made, e);
+        let glued = self.glue_cone(&made, e);
         self.free.extend(self.cavity.iter().copied());
         self.last = made[0];
-        match self.open.is_empty() {
+        match glued {
             true => Ok(()),
             false => Err(DelaunayError::Lost),
         }
     }
 
     /// Glues the cone's cells to each other across the faces through `e`, each named by
-    /// its two other vertices. Every such face has two cells in the cone, so `open` ends
-    /// empty (it is not cleared: that would cost its capacity, grown once by a large
-    /// cavity); when it does not, `fill` reports a bug.
-    fn glue_cone(&mut self, made: &[u32], e: u32) {
+    /// its two other vertices `lo < hi` and filed at `lo` (a list per vertex, stamped by
+    /// the insertion: no hashing, nothing to clear). Every such face has two cells in the
+    /// cone; false when one is left without its second, which `fill` reports as a bug.
+    fn glue_cone(&mut self, made: &[u32], e: u32) -> bool {
+        let slot = |v: u32| if v == INF { self.pts.len() } else { v as usize };
+        self.faces.clear();
+        let mut open = 0usize;
         for &id in made {
             let c = self.cells[id as usize];
             for k in (0..4).filter(|&k| c[k] != e) {
-                let others = (0..4).filter(|&i| i != k && c[i] != e).map(|i| c[i] as u64);
-                let (lo, hi) = others.fold((u64::MAX, 0), |(lo, hi), v| (lo.min(v), hi.max(v)));
-                match self.open.remove(&(lo << 32 | hi)) {
-                    Some((t, j)) => {
-                        self.nbr[id as usize][k] = t;
-                        self.nbr[t as usize][j] = id;
-                    }
-                    None => {
-                        self.open.insert(lo << 32 | hi, (id, k));
-                    }
+                let mut others = (0..4).filter(|&i| i != k && c[i] != e).map(|i| c[i]);
+                let (a, b) = (others.next().unwrap_or(e), others.next().unwrap_or(e));
+                let (lo, hi) = (slot(a.min(b)), b.max(a));
+                if self.at[lo].0 != self.stamp {
+                    self.at[lo] = (self.stamp, NONE);
                 }
+                let (mut prev, mut f) = (NONE, self.at[lo].1);
+                while f != NONE && self.faces[f as usize].other != hi {
+                    (prev, f) = (f, self.faces[f as usize].next);
+                }
+                if f == NONE {
+                    let next = self.at[lo].1;
+                    self.at[lo].1 = self.faces.len() as u32;
+                    self.faces.push(Face {
+                        other: hi,
+                        cell: id,
+                        k: k as u8,
+                        next,
+                    });
+                    open += 1;
+                    continue;
+                }
+                let Face {
+                    cell, k: j, next, ..
+                } = self.faces[f as usize];
+                match prev {
+                    NONE => self.at[lo].1 = next,
+                    p => self.faces[p as usize].next = next,
+                }
+                self.nbr[id as usize][k] = cell;
+                self.nbr[cell as usize][j as usize] = id;
+                open -= 1;
             }
         }
+        open == 0
     }
 
     /// A cell in conflict with `e`, by a visibility walk from the last cell made.
