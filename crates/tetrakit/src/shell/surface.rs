@@ -510,18 +510,14 @@ impl<'a> Surface<'a> {
 /// crossing one. Refused when a boundary edge is not an edge of `tris`, the surface is
 /// not closed there, or the disk reaches `tip`.
 fn disk(tip: u32, tris: Vec<[u32; 3]>, boundary: &[(u32, u32)]) -> Result<Vec<[u32; 3]>, Refused> {
-    // Directed edges as one integer, with their triangle's index.
+    // The triangle with each directed edge (the last one, should two have it).
     let key = |a: u32, b: u32| (u64::from(a) << 32) | u64::from(b);
-    let mut by_edge: Vec<(u64, u32)> = Vec::with_capacity(3 * tris.len());
+    let mut by_edge: HashMap<u64, u32> =
+        HashMap::with_capacity_and_hasher(3 * tris.len(), Default::default());
     for (i, t) in tris.iter().enumerate() {
         by_edge.extend((0..3).map(|k| (key(t[k], t[(k + 1) % 3]), i as u32)));
     }
-    by_edge.sort_unstable();
-    // The triangle with the directed edge `e` (the last one, should two have it).
-    let with_edge = |(a, b): (u32, u32)| {
-        let end = by_edge.partition_point(|x| x.0 <= key(a, b));
-        (end > 0 && by_edge[end - 1].0 == key(a, b)).then(|| by_edge[end - 1].1 as usize)
-    };
+    let with_edge = |(a, b): (u32, u32)| by_edge.get(&key(a, b)).map(|&t| t as usize);
     let mut seen = vec![false; tris.len()];
     let mut stack = Vec::with_capacity(tris.len());
     for &e in boundary {
