@@ -320,6 +320,27 @@ fn outer_corners(both: &[Point3], n_outer: usize, union: &Hull3) -> Option<Corne
     })
 }
 
+/// `union`, the hull of `both`, on the shell's vertices `points`: vertex `k` is
+/// `both[source[k]]`, and `index` numbers every vertex by place (a repeated point is
+/// named as its vertex). A point inside an edge or a facet of `P` (no vertex) may be a
+/// corner of the union's triangles: then the hull of the vertices alone is built.
+fn on_vertices(
+    union: Hull3,
+    (both, source): (&[Point3], &[u32]),
+    index: &HashMap<[u64; 3], u32>,
+    points: &[Point3],
+) -> Hull3 {
+    let mut number = vec![u32::MAX; both.len()];
+    for (k, &i) in source.iter().enumerate() {
+        number[i as usize] = k as u32;
+    }
+    let named = |i: u32| match number[i as usize] {
+        u32::MAX => index.get(&point_key(&both[i as usize])).copied(),
+        k => Some(k),
+    };
+    (union.renumbered(source, named)).unwrap_or_else(|| Hull3::new(points))
+}
+
 /// Why `CH(inner) ⊆ CH(outer)` fails, once [`outer_corners`] has found that it does:
 /// `P` flat, else `Q` flat, else the first inner vertex (in input order) that is a corner
 /// of the union and no vertex of `P`.
@@ -438,17 +459,7 @@ impl Shell {
             shell_index[i as usize] = k;
         }
         let q_edges = q_edges.renamed(|i| shell_index[i as usize]);
-        let mut number = vec![u32::MAX; both.len()];
-        for (k, &i) in source.iter().enumerate() {
-            number[i as usize] = k as u32;
-        }
-        let named = |i: u32| match number[i as usize] {
-            u32::MAX => index.get(&point_key(&both[i as usize])).copied(),
-            k => Some(k),
-        };
-        // A point inside an edge or a facet of `P` (no vertex) may be a corner of the
-        // union's triangles: then the hull of the vertices alone is built.
-        let hull = (union.renumbered(&source, named)).unwrap_or_else(|| Hull3::new(&points));
+        let hull = on_vertices(union, (&both, &source), &index, &points);
         let n_outer = outer_v.len() as u32;
         let touching = (n_outer..points.len() as u32)
             .filter(|&c| hull.on_boundary(c as usize))
