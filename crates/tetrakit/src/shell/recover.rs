@@ -74,10 +74,11 @@ impl QEdges {
 
     /// Recovers in `tris` every edge of `Q` whose ends are both corners of `tris` and lie
     /// in the plane of one of its facets; `walls` (sorted) are never flipped.
+    /// `edge` is `tris`'s [`Edges`], kept up to date.
     pub(super) fn recover(
         &self,
         pts: &[Point3],
-        tris: &mut [[u32; 3]],
+        (tris, edge): (&mut [[u32; 3]], &mut Edges),
         walls: &[(u32, u32)],
     ) -> Result<(), &'static str> {
         if self.edges.is_empty() {
@@ -93,20 +94,18 @@ impl QEdges {
             .filter(|&(v, w)| v < w && here(&w))
             .collect();
         // Most bottoms have every such edge already (or none): no mesh to build.
-        let mut present: Vec<(u32, u32)> = (tris.iter())
-            .flat_map(|t| (0..3).map(move |k| (t[k].min(t[(k + 1) % 3]), t[k].max(t[(k + 1) % 3]))))
-            .collect();
-        present.sort_unstable();
-        if wanted.iter().all(|e| present.binary_search(e).is_ok()) {
+        let has = |(a, b): (u32, u32)| edge.contains_key(&(a, b)) || edge.contains_key(&(b, a));
+        if wanted.iter().all(|&e| has(e)) {
             return Ok(());
         }
         wanted.sort_unstable();
-        let mut mesh = Mesh::new(pts, tris);
+        let mut mesh = Mesh::new(pts, tris, std::mem::take(edge));
         for (a, b) in wanted {
             if !mesh.has_edge(a, b) {
                 recover_edge(pts, &mut mesh, [a, b], walls)?;
             }
         }
+        *edge = mesh.edge;
         Ok(())
     }
 
@@ -223,6 +222,19 @@ fn edge_end(
     None
 }
 
+/// Each directed edge of a triangulated surface piece, with the triangle that has it
+/// (the last one, should two have it).
+pub(super) type Edges = HashMap<(u32, u32), usize>;
+
+/// The [`Edges`] of `tris`.
+pub(super) fn edges_of(tris: &[[u32; 3]]) -> Edges {
+    let mut edge = Edges::with_capacity_and_hasher(3 * tris.len(), Default::default());
+    for (i, t) in tris.iter().enumerate() {
+        edge.extend((0..3).map(|k| ((t[k], t[(k + 1) % 3]), i)));
+    }
+    edge
+}
+
 /// A triangulated surface piece with its directed edges and the triangles at each vertex,
 /// kept up to date through flips.
 struct Mesh<'t> {
@@ -236,14 +248,13 @@ struct Mesh<'t> {
 }
 
 impl<'t> Mesh<'t> {
-    fn new(pts: &[Point3], tris: &'t mut [[u32; 3]]) -> Mesh<'t> {
-        let mut edge = HashMap::with_capacity_and_hasher(3 * tris.len(), Default::default());
+    /// The mesh of `tris`, whose [`Edges`] are `edge`.
+    fn new(pts: &[Point3], tris: &'t mut [[u32; 3]], edge: Edges) -> Mesh<'t> {
         let mut incident: HashMap<u32, Vec<usize>> =
             HashMap::with_capacity_and_hasher(tris.len() / 2 + 3, Default::default());
         for (i, t) in tris.iter().enumerate() {
-            for k in 0..3 {
-                edge.insert((t[k], t[(k + 1) % 3]), i);
-                incident.entry(t[k]).or_default().push(i);
+            for &v in t {
+                incident.entry(v).or_default().push(i);
             }
         }
         let p = |v: u32| &pts[v as usize];

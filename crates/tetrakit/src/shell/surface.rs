@@ -32,7 +32,7 @@
 //! ([`crate::mesh::certify_shell`]).
 
 use super::hidden::{Hidden, Region};
-use super::recover::QEdges;
+use super::recover::{self, QEdges};
 use crate::geom::{Hull3, Plane, Point3, bounding_box, orient2d_drop, orient3d, projection_axis};
 use rustc_hash::FxHashMap as HashMap;
 
@@ -446,7 +446,7 @@ impl<'a> Surface<'a> {
         if candidates.is_empty()
             && let Some(tris) = simplicial_hull(self.pts, ring)
         {
-            return disk(tip, tris, boundary);
+            return disk(tip, &tris, &recover::edges_of(&tris), boundary);
         }
         let mut local: Vec<u32> = ring.to_vec();
         local.extend(candidates);
@@ -496,28 +496,27 @@ impl<'a> Surface<'a> {
         }
         // Every facet a triangle: an edge of Q in a facet is one of its edges already.
         let simplicial = hull.dimension == 3 && hull.facet_count() == hull.triangles.len();
+        let mut edges = recover::edges_of(&tris);
         if !simplicial || !flat.is_empty() {
             self.q_edges
-                .recover(self.pts, &mut tris, boundary)
+                .recover(self.pts, (&mut tris, &mut edges), boundary)
                 .map_err(Refused)?;
         }
-        disk(tip, tris, boundary)
+        disk(tip, &tris, &edges, boundary)
     }
 }
 
-/// The disk of the closed triangulated surface `tris` bounded by `boundary` (directed
-/// as in the triangles inside it): the triangles reached from the boundary edges without
-/// crossing one. Refused when a boundary edge is not an edge of `tris`, the surface is
-/// not closed there, or the disk reaches `tip`.
-fn disk(tip: u32, tris: Vec<[u32; 3]>, boundary: &[(u32, u32)]) -> Result<Vec<[u32; 3]>, Refused> {
-    // The triangle with each directed edge (the last one, should two have it).
-    let key = |a: u32, b: u32| (u64::from(a) << 32) | u64::from(b);
-    let mut by_edge: HashMap<u64, u32> =
-        HashMap::with_capacity_and_hasher(3 * tris.len(), Default::default());
-    for (i, t) in tris.iter().enumerate() {
-        by_edge.extend((0..3).map(|k| (key(t[k], t[(k + 1) % 3]), i as u32)));
-    }
-    let with_edge = |(a, b): (u32, u32)| by_edge.get(&key(a, b)).map(|&t| t as usize);
+/// The disk of the closed triangulated surface `tris` (with its `edges`) bounded by
+/// `boundary` (directed as in the triangles inside it): the triangles reached from the
+/// boundary edges without crossing one. Refused when a boundary edge is not an edge of
+/// `tris`, the surface is not closed there, or the disk reaches `tip`.
+fn disk(
+    tip: u32,
+    tris: &[[u32; 3]],
+    edges: &recover::Edges,
+    boundary: &[(u32, u32)],
+) -> Result<Vec<[u32; 3]>, Refused> {
+    let with_edge = |(a, b): (u32, u32)| edges.get(&(a, b)).copied();
     let mut seen = vec![false; tris.len()];
     let mut stack = Vec::with_capacity(tris.len());
     for &e in boundary {
