@@ -197,17 +197,7 @@ impl<'a> Surface<'a> {
     /// The live triangles, each turned to start at its least vertex, sorted: two
     /// surfaces are the same exactly when their keys are.
     pub(super) fn key(&self) -> Vec<[u32; 3]> {
-        let mut key: Vec<[u32; 3]> = self
-            .triangles()
-            .into_iter()
-            .map(|[a, b, c]| match a.min(b).min(c) {
-                m if m == a => [a, b, c],
-                m if m == b => [b, c, a],
-                _ => [c, a, b],
-            })
-            .collect();
-        key.sort_unstable();
-        key
+        canonical(&self.triangles())
     }
 
     /// The live triangles that `v` sees: `v` strictly beyond their planes (after a
@@ -592,6 +582,20 @@ fn simplicial_hull(pts: &[Point3], ring: &[u32]) -> Option<Vec<[u32; 3]>> {
     }
     (tris.len() == 2 * d - 4).then_some(tris)
 }
+/// Each triangle turned to start at its least corner, sorted: two sets of oriented
+/// triangles are the same exactly when these are.
+fn canonical(tris: &[[u32; 3]]) -> Vec<[u32; 3]> {
+    let mut out: Vec<[u32; 3]> = (tris.iter())
+        .map(|&[a, b, c]| match a.min(b).min(c) {
+            m if m == a => [a, b, c],
+            m if m == b => [b, c, a],
+            _ => [c, a, b],
+        })
+        .collect();
+    out.sort_unstable();
+    out
+}
+
 /// Splits the triangles `tris` (a triangulated surface piece) at each point of `points`
 /// that lies on one of them, inside it (into three) or inside an edge it shares with
 /// another triangle of `tris` (both into two): a point on a surface is a vertex of it.
@@ -686,19 +690,6 @@ fn locate(pts: &[Point3], t: &[u32; 3], x: &Point3) -> Option<Place> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// Each triangle turned to start at its least corner, sorted.
-    fn canonical(tris: &[[u32; 3]]) -> Vec<[u32; 3]> {
-        let mut out: Vec<[u32; 3]> = (tris.iter())
-            .map(|&[a, b, c]| match a.min(b).min(c) {
-                m if m == a => [a, b, c],
-                m if m == b => [b, c, a],
-                _ => [c, a, b],
-            })
-            .collect();
-        out.sort_unstable();
-        out
-    }
 
     /// [`simplicial_hull`] against [`Hull3`] on 4 to 9 points: random floats (general
     /// position) and points of a `3 × 3 × 3` grid (four on a plane everywhere). It
