@@ -99,7 +99,7 @@ impl QEdges {
             return Ok(());
         }
         wanted.sort_unstable();
-        let mut mesh = Mesh::new(pts, tris, std::mem::take(edge));
+        let mut mesh = Mesh::new(tris, std::mem::take(edge));
         for (a, b) in wanted {
             if !mesh.has_edge(a, b) {
                 recover_edge(pts, &mut mesh, [a, b], walls)?;
@@ -241,15 +241,17 @@ struct Mesh<'t> {
     tris: &'t mut [[u32; 3]],
     edge: HashMap<(u32, u32), usize>,
     incident: HashMap<u32, Vec<usize>>,
-    /// The triangles of each facet (a maximal connected set of coplanar triangles), and
-    /// each triangle's facet: a flip keeps its two triangles in their facet.
+    /// The facets found so far (each a maximal connected set of coplanar triangles,
+    /// sorted), and each triangle's facet (`usize::MAX` until found): a flip keeps its
+    /// two triangles in their facet. Found where an edge is recovered, not everywhere: a
+    /// large bottom has thousands of triangles and few missing edges.
     facets: Vec<Vec<usize>>,
     facet_of: Vec<usize>,
 }
 
 impl<'t> Mesh<'t> {
     /// The mesh of `tris`, whose [`Edges`] are `edge`.
-    fn new(pts: &[Point3], tris: &'t mut [[u32; 3]], edge: Edges) -> Mesh<'t> {
+    fn new(tris: &'t mut [[u32; 3]], edge: Edges) -> Mesh<'t> {
         let mut incident: HashMap<u32, Vec<usize>> =
             HashMap::with_capacity_and_hasher(tris.len() / 2 + 3, Default::default());
         for (i, t) in tris.iter().enumerate() {
@@ -257,36 +259,12 @@ impl<'t> Mesh<'t> {
                 incident.entry(v).or_default().push(i);
             }
         }
-        let p = |v: u32| &pts[v as usize];
-        let mut parent = crate::partition::singletons(tris.len());
-        for (&(a, b), &i) in &edge {
-            if let Some(&j) = edge.get(&(b, a))
-                && i < j
-            {
-                let [x, y, z] = tris[i].map(p);
-                if orient3d(x, y, z, p(apex(tris[j], b, a))) == 0 {
-                    crate::partition::union(&mut parent, i as u32, j as u32);
-                }
-            }
-        }
-        let mut id: HashMap<u32, usize> = HashMap::default();
-        let mut facets: Vec<Vec<usize>> = Vec::new();
-        let facet_of = (0..tris.len())
-            .map(|i| {
-                let root = crate::partition::find(&mut parent, i as u32);
-                let f = *id.entry(root).or_insert_with(|| {
-                    facets.push(Vec::new());
-                    facets.len() - 1
-                });
-                facets[f].push(i);
-                f
-            })
-            .collect();
+        let facet_of = vec![usize::MAX; tris.len()];
         Mesh {
             tris,
             edge,
             incident,
-            facets,
+            facets: Vec::new(),
             facet_of,
         }
     }
@@ -317,15 +295,46 @@ impl<'t> Mesh<'t> {
     }
 
     /// The facet holding `a` whose plane holds `b` (sorted triangle indices), if any.
-    fn patch(&self, pts: &[Point3], a: u32, b: u32) -> Option<&[usize]> {
+    fn patch(&mut self, pts: &[Point3], a: u32, b: u32) -> Option<Vec<usize>> {
         let p = |v: u32| &pts[v as usize];
-        self.incident[&a]
-            .iter()
-            .find(|&&i| {
-                let [x, y, z] = self.tris[i].map(p);
-                orient3d(x, y, z, p(b)) == 0
-            })
-            .map(|&i| self.facets[self.facet_of[i]].as_slice())
+        let at = self.incident[&a].iter().copied().find(|&i| {
+            let [x, y, z] = self.tris[i].map(p);
+            orient3d(x, y, z, p(b)) == 0
+        })?;
+        let f = self.facet(pts, at);
+        Some(self.facets[f].clone())
+    }
+
+    /// The facet of triangle `i`, found the first time by a walk over its neighbours in
+    /// its plane.
+    fn facet(&mut self, pts: &[Point3], i: usize) -> usize {
+        if self.facet_of[i] != usize::MAX {
+            return self.facet_of[i];
+        }
+        let p = |v: u32| &pts[v as usize];
+        let f = self.facets.len();
+        let (mut list, mut next) = (vec![i], 0);
+        self.facet_of[i] = f;
+        while let Some(&t) = list.get(next) {
+            next += 1;
+            let tri = self.tris[t];
+            let [x, y, z] = tri.map(p);
+            for k in 0..3 {
+                let (a, b) = (tri[k], tri[(k + 1) % 3]);
+                let Some(&j) = self.edge.get(&(b, a)) else {
+                    continue;
+                };
+                if self.facet_of[j] == usize::MAX
+                    && orient3d(x, y, z, p(apex(self.tris[j], b, a))) == 0
+                {
+                    self.facet_of[j] = f;
+                    list.push(j);
+                }
+            }
+        }
+        list.sort_unstable();
+        self.facets.push(list);
+        f
     }
 }
 
@@ -345,7 +354,7 @@ fn recover_edge(
     walls: &[(u32, u32)],
 ) -> Result<(), &'static str> {
     let p = |v: u32| &pts[v as usize];
-    let Some(patch) = mesh.patch(pts, a, b).map(<[usize]>::to_vec) else {
+    let Some(patch) = mesh.patch(pts, a, b) else {
         return Ok(()); // no facet at `a` in a plane with `b`
     };
     if !patch.iter().any(|&i| mesh.tris[i].contains(&b)) {
