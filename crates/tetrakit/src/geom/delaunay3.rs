@@ -330,7 +330,6 @@ impl<'p> Builder<'p> {
     /// the insertion: no hashing, nothing to clear). Every such face has two cells in the
     /// cone; false when one is left without its second, which `fill` reports as a bug.
     fn glue_cone(&mut self, made: &[u32], e: u32) -> bool {
-        let slot = |v: u32| if v == INF { self.pts.len() } else { v as usize };
         self.faces.clear();
         let mut open = 0usize;
         for &id in made {
@@ -338,39 +337,59 @@ impl<'p> Builder<'p> {
             for k in (0..4).filter(|&k| c[k] != e) {
                 let mut others = (0..4).filter(|&i| i != k && c[i] != e).map(|i| c[i]);
                 let (a, b) = (others.next().unwrap_or(e), others.next().unwrap_or(e));
-                let (lo, hi) = (slot(a.min(b)), b.max(a));
-                if self.at[lo].0 != self.stamp {
-                    self.at[lo] = (self.stamp, NONE);
-                }
-                let (mut prev, mut f) = (NONE, self.at[lo].1);
-                while f != NONE && self.faces[f as usize].other != hi {
-                    (prev, f) = (f, self.faces[f as usize].next);
-                }
-                if f == NONE {
-                    let next = self.at[lo].1;
-                    self.at[lo].1 = self.faces.len() as u32;
-                    self.faces.push(Face {
-                        other: hi,
-                        cell: id,
-                        k: k as u8,
-                        next,
-                    });
+                let (lo, hi) = (a.min(b), a.max(b));
+                if let Some(Face { cell, k: j, .. }) = self.take_face(lo, hi) {
+                    self.nbr[id as usize][k] = cell;
+                    self.nbr[cell as usize][j as usize] = id;
+                    open -= 1;
+                } else {
+                    let (cell, k, next) = (id, k as u8, NONE);
+                    self.file_face(
+                        lo,
+                        Face {
+                            other: hi,
+                            cell,
+                            k,
+                            next,
+                        },
+                    );
                     open += 1;
-                    continue;
                 }
-                let Face {
-                    cell, k: j, next, ..
-                } = self.faces[f as usize];
-                match prev {
-                    NONE => self.at[lo].1 = next,
-                    p => self.faces[p as usize].next = next,
-                }
-                self.nbr[id as usize][k] = cell;
-                self.nbr[cell as usize][j as usize] = id;
-                open -= 1;
             }
         }
         open == 0
+    }
+
+    /// Vertex `v`'s place in [`Builder::at`] (the point at infinity last).
+    fn slot(&self, v: u32) -> usize {
+        if v == INF { self.pts.len() } else { v as usize }
+    }
+
+    /// The face filed at `lo` whose other end is `hi`, taken off the list (a list filed
+    /// by an earlier insertion is dropped first).
+    fn take_face(&mut self, lo: u32, hi: u32) -> Option<Face> {
+        let s = self.slot(lo);
+        if self.at[s].0 != self.stamp {
+            self.at[s] = (self.stamp, NONE);
+        }
+        let (mut prev, mut f) = (NONE, self.at[s].1);
+        while f != NONE && self.faces[f as usize].other != hi {
+            (prev, f) = (f, self.faces[f as usize].next);
+        }
+        let face = *self.faces.get(f as usize)?;
+        match prev {
+            NONE => self.at[s].1 = face.next,
+            p => self.faces[p as usize].next = face.next,
+        }
+        Some(face)
+    }
+
+    /// Files `face` at `lo` (whose list [`Builder::take_face`] has just searched).
+    fn file_face(&mut self, lo: u32, mut face: Face) {
+        let s = self.slot(lo);
+        face.next = self.at[s].1;
+        self.at[s].1 = self.faces.len() as u32;
+        self.faces.push(face);
     }
 
     /// A cell in conflict with `e`, by a visibility walk from the last cell made.

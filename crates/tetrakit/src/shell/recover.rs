@@ -73,8 +73,8 @@ impl QEdges {
     }
 
     /// Recovers in `tris` every edge of `Q` whose ends are both corners of `tris` and lie
-    /// in the plane of one of its facets; `walls` (sorted) are never flipped.
-    /// `edge` is `tris`'s [`Edges`], kept up to date.
+    /// in the plane of one of its facets, keeping `edge` (`tris`'s [`Edges`]) up to date;
+    /// `walls` (sorted) are never flipped.
     pub(super) fn recover(
         &self,
         pts: &[Point3],
@@ -239,7 +239,7 @@ pub(super) fn edges_of(tris: &[[u32; 3]]) -> Edges {
 /// kept up to date through flips.
 struct Mesh<'t> {
     tris: &'t mut [[u32; 3]],
-    edge: HashMap<(u32, u32), usize>,
+    edge: Edges,
     incident: HashMap<u32, Vec<usize>>,
     /// The facets found so far (each a maximal connected set of coplanar triangles,
     /// sorted), and each triangle's facet (`usize::MAX` until found): a flip keeps its
