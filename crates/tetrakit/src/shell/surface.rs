@@ -582,6 +582,7 @@ fn simplicial_hull(pts: &[Point3], ring: &[u32]) -> Option<Vec<[u32; 3]>> {
     }
     (tris.len() == 2 * d - 4).then_some(tris)
 }
+
 /// Each triangle turned to start at its least corner, sorted: two sets of oriented
 /// triangles are the same exactly when these are.
 fn canonical(tris: &[[u32; 3]]) -> Vec<[u32; 3]> {
