@@ -129,7 +129,7 @@ impl Hull3 {
     /// `old[k]` (it takes its facets), and `new(i)` is the new number of point `i` (a
     /// repeated point may be named as another copy of itself). `None` when a corner of a
     /// triangle has no new number.
-    pub fn renumbered(self, old: &[u32], new: impl Fn(u32) -> Option<u32>) -> Option<Hull3> {
+    pub(crate) fn renumbered(self, old: &[u32], new: impl Fn(u32) -> Option<u32>) -> Option<Hull3> {
         let rename = |ts: &[[u32; 3]]| -> Option<Vec<[u32; 3]>> {
             ts.iter()
                 .map(|t| Some([new(t[0])?, new(t[1])?, new(t[2])?]))
