@@ -543,10 +543,105 @@ pub fn projection_axis(a: &Point3, b: &Point3, c: &Point3) -> Option<usize> {
 
 /// Sign of the in-sphere test: +1 when `e` is inside the sphere through the positively
 /// oriented tetrahedron `abcd`.
+///
+/// Where `e` and three of `a, b, c, d` lie in a plane `x_k = h` (the same coordinate
+/// `k`, equal as floats), the test is a 2D in-circle test ([`insphere_on_axis_plane`]):
+/// exactly the same sign, at a fraction of the cost where the points are also nearly
+/// cocircular (Bern disks' ridge: a cocircular polygon in `z = 0`).
 pub fn insphere(a: &Point3, b: &Point3, c: &Point3, d: &Point3, e: &Point3) -> i8 {
     // robust::insphere is positive for e inside when robust::orient3d(a,b,c,d) > 0,
     // which is our negative orientation; swapping a and b converts conventions.
+    if let Some(s) = insphere_filtered(b, a, c, d, e) {
+        return s;
+    }
+    if let Some(s) = insphere_on_axis_plane([a, b, c, d], e) {
+        return s;
+    }
     sign(robust::insphere(c3(b), c3(a), c3(c), c3(d), c3(e)))
+}
+
+/// The first stage of `robust::insphere` (Shewchuk's stage A, the same expressions and
+/// error bound): the sign of the float determinant where its error bound certifies it,
+/// `None` where the exact stages would run.
+#[inline]
+fn insphere_filtered(
+    pa: &Point3,
+    pb: &Point3,
+    pc: &Point3,
+    pd: &Point3,
+    pe: &Point3,
+) -> Option<i8> {
+    const EPS: f64 = f64::EPSILON / 2.0;
+    const ISPERRBOUND_A: f64 = (16.0 + 224.0 * EPS) * EPS;
+    let [a, b, c, d] = [pa, pb, pc, pd].map(|p| [p[0] - pe[0], p[1] - pe[1], p[2] - pe[2]]);
+    let (aexbey, bexaey) = (a[0] * b[1], b[0] * a[1]);
+    let (bexcey, cexbey) = (b[0] * c[1], c[0] * b[1]);
+    let (cexdey, dexcey) = (c[0] * d[1], d[0] * c[1]);
+    let (dexaey, aexdey) = (d[0] * a[1], a[0] * d[1]);
+    let (aexcey, cexaey) = (a[0] * c[1], c[0] * a[1]);
+    let (bexdey, dexbey) = (b[0] * d[1], d[0] * b[1]);
+    let (ab, bc, cd) = (aexbey - bexaey, bexcey - cexbey, cexdey - dexcey);
+    let (da, ac, bd) = (dexaey - aexdey, aexcey - cexaey, bexdey - dexbey);
+    let abc = a[2] * bc - b[2] * ac + c[2] * ab;
+    let bcd = b[2] * cd - c[2] * bd + d[2] * bc;
+    let cda = c[2] * da + d[2] * ac + a[2] * cd;
+    let dab = d[2] * ab + a[2] * bd + b[2] * da;
+    let lift = |p: &Point3| p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
+    let (alift, blift, clift, dlift) = (lift(&a), lift(&b), lift(&c), lift(&d));
+    let det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+    let (az, bz, cz, dz) = (a[2].abs(), b[2].abs(), c[2].abs(), d[2].abs());
+    let pab = aexbey.abs() + bexaey.abs();
+    let pbc = bexcey.abs() + cexbey.abs();
+    let pcd = cexdey.abs() + dexcey.abs();
+    let pda = dexaey.abs() + aexdey.abs();
+    let pac = aexcey.abs() + cexaey.abs();
+    let pbd = bexdey.abs() + dexbey.abs();
+    let permanent = (pcd * bz + pbd * cz + pbc * dz) * alift
+        + (pda * cz + pac * dz + pcd * az) * blift
+        + (pab * dz + pbd * az + pda * bz) * clift
+        + (pbc * az + pac * bz + pab * cz) * dlift;
+    let bound = ISPERRBOUND_A * permanent;
+    (det > bound || -det > bound).then(|| sign(det))
+}
+
+/// [`insphere`] where `e` and three of the four points `q` share a coordinate `k`;
+/// `None` otherwise.
+///
+/// With the rows taken relative to `e`, the lifted `4 × 4` determinant has column `k`
+/// zero but in the row of the fourth point `d` (the one off the plane), and the lift
+/// `|p − e|²` of the three others is their 2D lift in the plane. Expanding along column
+/// `k`, its sign is that of `d_k − e_k` times the in-circle determinant of the three
+/// and `e`, projected by dropping coordinate `k` (the other two taken cyclically, so that
+/// the sign does not depend on `k`). Both factors are exact signs; when all four share
+/// the coordinate, the column is zero and so is the determinant.
+fn insphere_on_axis_plane(q: [&Point3; 4], e: &Point3) -> Option<i8> {
+    let (k, off) = (0..3).find_map(|k| {
+        let mut off = q.iter().enumerate().filter(|(_, p)| p[k] != e[k]);
+        match (off.next(), off.next()) {
+            (None, _) => Some((k, None)),
+            (Some((j, _)), None) => Some((k, Some(j))),
+            _ => None,
+        }
+    })?;
+    let Some(j) = off else {
+        return Some(0);
+    };
+    // Move the point off the plane last: a transposition changes the sign.
+    let mut q = q;
+    q.swap(j, 3);
+    let flip = if j == 3 { 1 } else { -1 };
+    let drop = |p: &Point3| Coord {
+        x: p[(k + 1) % 3],
+        y: p[(k + 2) % 3],
+    };
+    let circle = sign(robust::incircle(
+        drop(q[0]),
+        drop(q[1]),
+        drop(q[2]),
+        drop(e),
+    ));
+    let height = sign(q[3][k] - e[k]);
+    Some(flip * height * circle)
 }
 
 /// Sign of the in-circle test: +1 when `d` is inside the circle through the
@@ -589,6 +684,58 @@ pub fn strictly_between<const N: usize>(a: &[f64; N], p: &[f64; N], b: &[f64; N]
 
 #[cfg(test)]
 mod tests {
+    /// The in-sphere test through an axis plane agrees with the full 4 × 4 test
+    /// (`robust::insphere`) on every configuration it answers: integer points with `e`
+    /// and three others (or all four) in a plane `x_k = h`, the off-plane point at each of
+    /// the four places, and nearly cocircular float points on the unit circle in `z = 0`
+    /// (Bern disks' ridge), where both tests go past their float filters.
+    #[test]
+    fn insphere_through_an_axis_plane_is_the_full_test() {
+        use super::{Point3, c3, insphere_on_axis_plane, sign};
+        let mut rng = crate::rng::Rng::new(41);
+        let (mut answered, mut signs) = (0, [0usize; 3]);
+        for case in 0..60_000 {
+            let k = case % 3;
+            let h = rng.below(3) as f64;
+            let cocircular = case % 4 == 3;
+            let off = rng.below(5);
+            let mut point = |on: bool| -> Point3 {
+                let mut p: Point3 = match cocircular {
+                    true => {
+                        let t = rng.unit() * std::f64::consts::TAU;
+                        let z = if on { 0.0 } else { (rng.unit() - 0.5) * 0.1 };
+                        [t.cos(), t.sin(), z]
+                    }
+                    false => [0; 3].map(|_| rng.below(4) as f64),
+                };
+                if on && !cocircular {
+                    p[k] = h;
+                }
+                p
+            };
+            let e = point(true);
+            let q: [Point3; 4] = std::array::from_fn(|i| point(i != off));
+            let full = sign(robust::insphere(
+                c3(&q[1]),
+                c3(&q[0]),
+                c3(&q[2]),
+                c3(&q[3]),
+                c3(&e),
+            ));
+            let found = insphere_on_axis_plane([&q[0], &q[1], &q[2], &q[3]], &e);
+            if let Some(s) = found {
+                assert_eq!(s, full, "case {case}: {q:?} {e:?}");
+                answered += 1;
+                signs[(s + 1) as usize] += 1;
+            }
+            assert_eq!(super::insphere(&q[0], &q[1], &q[2], &q[3], &e), full);
+        }
+        assert!(
+            answered > 50_000 && signs.iter().all(|&n| n > 1000),
+            "{answered} {signs:?}"
+        );
+    }
+
     /// `Plane::box_side` answers only where every corner has that exact sign, and it
     /// answers for boxes clear of the plane: random planes (small integers, so many
     /// boxes touch them exactly, and random floats) against random boxes.
