@@ -85,7 +85,7 @@ impl Delaunay3 {
     }
 
     /// [`Delaunay3::new`] under a run-control: [`DelaunayError::Stopped`] once `ctl` is
-    /// stopped (asked every 16 insertions).
+    /// stopped (asked before every insertion).
     ///
     /// ```
     /// use tetrakit::control::Control;
@@ -102,8 +102,8 @@ impl Delaunay3 {
     pub fn within(points: &[Point3], ctl: &Control) -> Result<Delaunay3, DelaunayError> {
         let order = brio(points);
         let (mut b, simplex) = Builder::start(points)?;
-        for (k, &i) in order.iter().enumerate() {
-            if k % 16 == 0 && ctl.is_stopped() {
+        for &i in &order {
+            if ctl.is_stopped() {
                 return Err(DelaunayError::Stopped);
             }
             if !simplex.contains(&i) {
