@@ -388,51 +388,63 @@ fn det_perm(da: &Point3, db: &Point3, dc: &Point3) -> (f64, f64) {
     (det, perm)
 }
 
-/// Sign of `det[da, db, dc]` for rounded differences, or `None` when the rounding error
-/// bound does not certify it.
-#[inline]
-fn filtered_det(da: &Point3, db: &Point3, dc: &Point3) -> Option<i8> {
-    let (det, perm) = det_perm(da, db, dc);
-    let bound = FRAME_ERR * perm;
-    if det > bound {
-        Some(1)
-    } else if det < -bound {
-        Some(-1)
-    } else {
-        None
-    }
-}
-
 /// The oriented plane through `a, b, c`, for many exact side tests against one plane.
 ///
-/// `side(x)` equals [`orient3d`]`(a, b, c, x)`.
+/// `side(x)` equals [`orient3d`]`(a, b, c, x)`. The normal's products are computed once:
+/// each test then evaluates the same float determinant and permanent as [`Frame`]'s
+/// filter, in the same order (so with the same decisions), and only the exact fallback
+/// sees the points again.
 #[derive(Clone, Copy, Debug)]
 pub struct Plane {
     a: Point3,
     b: Point3,
     c: Point3,
-    db: Point3,
-    dc: Point3,
+    /// The rounded normal `(b − a) × (c − a)`, each component a difference of two
+    /// products: `m[2k] − m[2k + 1]`.
+    n: Point3,
+    /// Each component's permanent, `|m[2k]| + |m[2k + 1]|`.
+    pm: Point3,
 }
 
 impl Plane {
     /// The plane through `a, b, c`.
     pub fn new(a: &Point3, b: &Point3, c: &Point3) -> Self {
         let f = Frame::new(a);
+        let m = products(&f.dir(b).d, &f.dir(c).d);
         Plane {
             a: *a,
             b: *b,
             c: *c,
-            db: f.dir(b).d,
-            dc: f.dir(c).d,
+            n: [m[0] - m[1], m[2] - m[3], m[4] - m[5]],
+            pm: [
+                m[0].abs() + m[1].abs(),
+                m[2].abs() + m[3].abs(),
+                m[4].abs() + m[5].abs(),
+            ],
         }
     }
     /// Exact sign of `orient3d(a, b, c, x)`.
     #[inline]
     pub fn side(&self, x: &Point3) -> i8 {
-        let dx = [x[0] - self.a[0], x[1] - self.a[1], x[2] - self.a[2]];
-        filtered_det(&dx, &self.db, &self.dc)
+        self.filtered(x)
             .unwrap_or_else(|| orient3d(&self.a, &self.b, &self.c, x))
+    }
+    /// The sign of `orient3d(a, b, c, x)` where the float filter certifies it
+    /// ([`det_perm`]'s expressions, with [`Frame`]'s bound, on the stored normal).
+    #[inline]
+    fn filtered(&self, x: &Point3) -> Option<i8> {
+        let (n, pm) = (&self.n, &self.pm);
+        let dx = [x[0] - self.a[0], x[1] - self.a[1], x[2] - self.a[2]];
+        let det = dx[0] * n[0] + dx[1] * n[1] + dx[2] * n[2];
+        let perm = dx[0].abs() * pm[0] + dx[1].abs() * pm[1] + dx[2].abs() * pm[2];
+        let bound = FRAME_ERR * perm;
+        if det > bound {
+            Some(1)
+        } else if det < -bound {
+            Some(-1)
+        } else {
+            None
+        }
     }
     /// A filter for a whole closed box `[lo, hi]`: `1` when every point of it is strictly
     /// on the positive side (`side` = 1), `-1` when every point is strictly negative, `0`
@@ -444,18 +456,12 @@ impl Plane {
     /// `4ε` of its two products), the corners where the side is least and greatest are
     /// known and only those two are tested.
     pub fn box_side(&self, lo: &Point3, hi: &Point3) -> i8 {
-        let (b, c) = (&self.db, &self.dc);
-        let m = products(b, c);
-        let n = [m[0] - m[1], m[2] - m[3], m[4] - m[5]];
-        let sure = (0..3).all(|k| n[k].abs() > 1e-12 * (m[2 * k].abs() + m[2 * k + 1].abs()));
-        let side = |x: &Point3| {
-            let dx = [x[0] - self.a[0], x[1] - self.a[1], x[2] - self.a[2]];
-            filtered_det(&dx, b, c)
-        };
+        let n = &self.n;
+        let sure = (0..3).all(|k| n[k].abs() > 1e-12 * self.pm[k]);
         if sure {
             let least: Point3 = std::array::from_fn(|k| if n[k] > 0.0 { lo[k] } else { hi[k] });
             let most: Point3 = std::array::from_fn(|k| if n[k] > 0.0 { hi[k] } else { lo[k] });
-            return match (side(&least), side(&most)) {
+            return match (self.filtered(&least), self.filtered(&most)) {
                 (Some(1), _) => 1,
                 (_, Some(-1)) => -1,
                 _ => 0,
@@ -465,7 +471,7 @@ impl Plane {
         for corner in 0..8 {
             let x: Point3 =
                 std::array::from_fn(|k| if corner >> k & 1 == 0 { lo[k] } else { hi[k] });
-            match side(&x) {
+            match self.filtered(&x) {
                 Some(s) if sign == 0 || s == sign => sign = s,
                 _ => return 0,
             }
@@ -475,12 +481,7 @@ impl Plane {
     /// A rounded estimate of the signed distance scale of `x` (for heuristics only).
     pub fn estimate(&self, x: &Point3) -> f64 {
         let dx = [x[0] - self.a[0], x[1] - self.a[1], x[2] - self.a[2]];
-        let n = [
-            self.db[1] * self.dc[2] - self.db[2] * self.dc[1],
-            self.db[2] * self.dc[0] - self.db[0] * self.dc[2],
-            self.db[0] * self.dc[1] - self.db[1] * self.dc[0],
-        ];
-        dx[0] * n[0] + dx[1] * n[1] + dx[2] * n[2]
+        dx[0] * self.n[0] + dx[1] * self.n[1] + dx[2] * self.n[2]
     }
 }
 
