@@ -13,7 +13,9 @@
 //! the new hull that saw a deleted triangle sees one of the new triangles, so orphaned
 //! conflict points need only be tested against new triangles.
 
-use super::predicates::{Plane, Point3, collinear3, lex_cmp, orient3d};
+use super::predicates::{
+    Plane, PlaneFilter, Point3, collinear3, lex_cmp, orient3d, orient3d_unfiltered,
+};
 use crate::partition;
 use rayon::prelude::*;
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
@@ -593,6 +595,8 @@ pub(super) fn initial_simplex(pts: &[Point3]) -> Option<([u32; 4], usize)> {
 struct Builder<'a> {
     pts: &'a [Point3],
     tris: Vec<Tri>,
+    /// Each triangle's plane filter, for its many visibility tests ([`Builder::sees`]).
+    planes: Vec<PlaneFilter>,
     /// The triangle whose conflict list holds each point ([`NONE`]: none).
     owner: Vec<u32>,
     /// The point after each one in its conflict list ([`NONE`]: the last).
@@ -623,8 +627,19 @@ impl<'a> Builder<'a> {
     }
 
     fn sees(&self, t: usize, q: u32) -> bool {
-        let v = self.tris[t].v;
-        orient3d(self.p(v[0]), self.p(v[1]), self.p(v[2]), self.p(q)) > 0
+        let side = self.planes[t].sign(self.p(q)).unwrap_or_else(|| {
+            let v = self.tris[t].v;
+            orient3d_unfiltered(self.p(v[0]), self.p(v[1]), self.p(v[2]), self.p(q))
+        });
+        side > 0
+    }
+
+    /// Adds the triangle `v` with neighbours `nb`; returns its index.
+    fn push(&mut self, v: [u32; 3], nb: [u32; 3]) -> usize {
+        let (a, b, c) = (self.p(v[0]), self.p(v[1]), self.p(v[2]));
+        self.planes.push(PlaneFilter::new(a, b, c));
+        self.tris.push(Tri::new(v, nb));
+        self.tris.len() - 1
     }
 
     fn new(pts: &'a [Point3]) -> Builder<'a> {
@@ -638,6 +653,7 @@ impl<'a> Builder<'a> {
         Builder {
             pts,
             tris: Vec::with_capacity(room),
+            planes: Vec::with_capacity(room),
             owner: vec![NONE; pts.len()],
             next: vec![NONE; pts.len()],
             eligible: None,
@@ -675,7 +691,7 @@ impl<'a> Builder<'a> {
             std::mem::swap(&mut b, &mut c);
         }
         for v in [[b, c, d], [a, d, c], [a, b, d], [a, c, b]] {
-            self.tris.push(Tri::new(v, [NONE; 3]));
+            self.push(v, [NONE; 3]);
         }
         for t in 0..4 {
             for i in 0..3 {
@@ -816,8 +832,7 @@ impl<'a> Builder<'a> {
         s.by_start.clear();
         let mut new = Vec::with_capacity(s.horizon.len());
         for &(a, b, n, j) in &s.horizon {
-            let id = self.tris.len();
-            self.tris.push(Tri::new([a, b, p], [n as u32, NONE, NONE]));
+            let id = self.push([a, b, p], [n as u32, NONE, NONE]);
             self.tris[n].nb[j] = id as u32;
             s.by_start.push((a, id));
             new.push(id);

@@ -82,6 +82,32 @@ pub fn orient3d(a: &Point3, b: &Point3, c: &Point3, d: &Point3) -> i8 {
     if -det > bound {
         return 1;
     }
+    unfiltered(a, b, c, d, [ad, bd, cd], det)
+}
+
+/// [`orient3d`] where a float filter has not decided (its own, or a [`PlaneFilter`]'s):
+/// the exact answer without the filter again.
+#[inline]
+pub(crate) fn orient3d_unfiltered(a: &Point3, b: &Point3, c: &Point3, d: &Point3) -> i8 {
+    let (ad, bd, cd) = (
+        [a[0] - d[0], a[1] - d[1], a[2] - d[2]],
+        [b[0] - d[0], b[1] - d[1], b[2] - d[2]],
+        [c[0] - d[0], c[1] - d[1], c[2] - d[2]],
+    );
+    let (det, _) = shewchuk_det(&ad, &bd, &cd);
+    unfiltered(a, b, c, d, [ad, bd, cd], det)
+}
+
+/// The exact stages of [`orient3d`], given the differences `[a − d, b − d, c − d]` and
+/// their float determinant `det`.
+fn unfiltered(
+    a: &Point3,
+    b: &Point3,
+    c: &Point3,
+    d: &Point3,
+    [ad, bd, cd]: [Point3; 3],
+    det: f64,
+) -> i8 {
     if a == b || a == c || a == d || b == c || b == d || c == d {
         return 0;
     }
@@ -388,33 +414,28 @@ fn det_perm(da: &Point3, db: &Point3, dc: &Point3) -> (f64, f64) {
     (det, perm)
 }
 
-/// The oriented plane through `a, b, c`, for many exact side tests against one plane.
-///
-/// `side(x)` equals [`orient3d`]`(a, b, c, x)`. The normal's products are computed once:
-/// each test then evaluates the same float determinant and permanent as [`Frame`]'s
-/// filter, in the same order (so with the same decisions), and only the exact fallback
-/// sees the points again.
+/// The float filter of [`orient3d`]`(a, b, c, x)` for one plane and many points `x`:
+/// the rounded normal `(b − a) × (c − a)` is computed once, each component a difference
+/// of two products `m[2k] − m[2k + 1]`, with its permanent `|m[2k]| + |m[2k + 1]|`. A test
+/// evaluates the same float determinant and permanent as [`Frame`]'s filter, in the same
+/// order and with its bound (so with the same decisions); `None` where it does not
+/// certify the sign, and the caller asks the exact predicate.
 #[derive(Clone, Copy, Debug)]
-pub struct Plane {
+pub(crate) struct PlaneFilter {
     a: Point3,
-    b: Point3,
-    c: Point3,
-    /// The rounded normal `(b − a) × (c − a)`, each component a difference of two
-    /// products: `m[2k] − m[2k + 1]`.
     n: Point3,
-    /// Each component's permanent, `|m[2k]| + |m[2k + 1]|`.
     pm: Point3,
 }
 
-impl Plane {
-    /// The plane through `a, b, c`.
-    pub fn new(a: &Point3, b: &Point3, c: &Point3) -> Self {
-        let f = Frame::new(a);
-        let m = products(&f.dir(b).d, &f.dir(c).d);
-        Plane {
+impl PlaneFilter {
+    /// The filter of the plane through `a, b, c`.
+    #[inline]
+    pub(crate) fn new(a: &Point3, b: &Point3, c: &Point3) -> Self {
+        let db = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+        let dc = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
+        let m = products(&db, &dc);
+        PlaneFilter {
             a: *a,
-            b: *b,
-            c: *c,
             n: [m[0] - m[1], m[2] - m[3], m[4] - m[5]],
             pm: [
                 m[0].abs() + m[1].abs(),
@@ -423,16 +444,10 @@ impl Plane {
             ],
         }
     }
-    /// Exact sign of `orient3d(a, b, c, x)`.
+
+    /// The sign of `orient3d(a, b, c, x)` where the filter certifies it.
     #[inline]
-    pub fn side(&self, x: &Point3) -> i8 {
-        self.filtered(x)
-            .unwrap_or_else(|| orient3d(&self.a, &self.b, &self.c, x))
-    }
-    /// The sign of `orient3d(a, b, c, x)` where the float filter certifies it
-    /// ([`det_perm`]'s expressions, with [`Frame`]'s bound, on the stored normal).
-    #[inline]
-    fn filtered(&self, x: &Point3) -> Option<i8> {
+    pub(crate) fn sign(&self, x: &Point3) -> Option<i8> {
         let (n, pm) = (&self.n, &self.pm);
         let dx = [x[0] - self.a[0], x[1] - self.a[1], x[2] - self.a[2]];
         let det = dx[0] * n[0] + dx[1] * n[1] + dx[2] * n[2];
@@ -446,6 +461,39 @@ impl Plane {
             None
         }
     }
+}
+
+/// The oriented plane through `a, b, c`, for many exact side tests against one plane.
+///
+/// `side(x)` equals [`orient3d`]`(a, b, c, x)`: the float filter of the plane
+/// ([`PlaneFilter`], its normal computed once), then the exact predicate where it does
+/// not decide.
+#[derive(Clone, Copy, Debug)]
+pub struct Plane {
+    filter: PlaneFilter,
+    b: Point3,
+    c: Point3,
+}
+
+impl Plane {
+    /// The plane through `a, b, c`.
+    pub fn new(a: &Point3, b: &Point3, c: &Point3) -> Self {
+        Plane {
+            filter: PlaneFilter::new(a, b, c),
+            b: *b,
+            c: *c,
+        }
+    }
+    /// Exact sign of `orient3d(a, b, c, x)`.
+    #[inline]
+    pub fn side(&self, x: &Point3) -> i8 {
+        self.filtered(x)
+            .unwrap_or_else(|| orient3d(&self.filter.a, &self.b, &self.c, x))
+    }
+    #[inline]
+    fn filtered(&self, x: &Point3) -> Option<i8> {
+        self.filter.sign(x)
+    }
     /// A filter for a whole closed box `[lo, hi]`: `1` when every point of it is strictly
     /// on the positive side (`side` = 1), `-1` when every point is strictly negative, `0`
     /// when the floating-point filter does not certify either (a box meeting the plane
@@ -456,8 +504,8 @@ impl Plane {
     /// `4ε` of its two products), the corners where the side is least and greatest are
     /// known and only those two are tested.
     pub fn box_side(&self, lo: &Point3, hi: &Point3) -> i8 {
-        let n = &self.n;
-        let sure = (0..3).all(|k| n[k].abs() > 1e-12 * self.pm[k]);
+        let (n, pm) = (&self.filter.n, &self.filter.pm);
+        let sure = (0..3).all(|k| n[k].abs() > 1e-12 * pm[k]);
         if sure {
             let least: Point3 = std::array::from_fn(|k| if n[k] > 0.0 { lo[k] } else { hi[k] });
             let most: Point3 = std::array::from_fn(|k| if n[k] > 0.0 { hi[k] } else { lo[k] });
@@ -480,8 +528,9 @@ impl Plane {
     }
     /// A rounded estimate of the signed distance scale of `x` (for heuristics only).
     pub fn estimate(&self, x: &Point3) -> f64 {
-        let dx = [x[0] - self.a[0], x[1] - self.a[1], x[2] - self.a[2]];
-        dx[0] * self.n[0] + dx[1] * self.n[1] + dx[2] * self.n[2]
+        let (a, n) = (&self.filter.a, &self.filter.n);
+        let dx = [x[0] - a[0], x[1] - a[1], x[2] - a[2]];
+        dx[0] * n[0] + dx[1] * n[1] + dx[2] * n[2]
     }
 }
 
@@ -685,6 +734,36 @@ pub fn strictly_between<const N: usize>(a: &[f64; N], p: &[f64; N], b: &[f64; N]
 
 #[cfg(test)]
 mod tests {
+    /// A plane's filter answers only with `orient3d`'s sign, and the exact stages alone
+    /// (`orient3d_unfiltered`) give it too: small integers (coplanar and repeated points
+    /// common) and floats.
+    #[test]
+    fn plane_filters_and_exact_stages_agree_with_orient3d() {
+        use super::{PlaneFilter, Point3, orient3d, orient3d_unfiltered};
+        let mut rng = crate::rng::Rng::new(17);
+        let mut answered = 0;
+        for case in 0..40_000 {
+            let mut point = || -> Point3 {
+                match case % 2 {
+                    0 => [0; 3].map(|_| rng.below(4) as f64),
+                    _ => [0; 3].map(|_| rng.unit() * 3.0),
+                }
+            };
+            let (a, b, c, x) = (point(), point(), point(), point());
+            let exact = orient3d(&a, &b, &c, &x);
+            assert_eq!(
+                orient3d_unfiltered(&a, &b, &c, &x),
+                exact,
+                "{a:?} {b:?} {c:?} {x:?}"
+            );
+            if let Some(s) = PlaneFilter::new(&a, &b, &c).sign(&x) {
+                assert_eq!(s, exact, "{a:?} {b:?} {c:?} {x:?}");
+                answered += 1;
+            }
+        }
+        assert!(answered > 20_000, "{answered}");
+    }
+
     /// The in-sphere test through an axis plane agrees with the full 4 × 4 test
     /// (`robust::insphere`) on every configuration it answers: integer points with `e`
     /// and three others (or all four) in a plane `x_k = h`, the off-plane point at each of
