@@ -627,8 +627,8 @@ impl<'a> Builder<'a> {
     }
 
     fn sees(&self, t: usize, q: u32) -> bool {
-        let side = self.planes[t].sign(self.p(q)).unwrap_or_else(|| {
-            let v = self.tris[t].v;
+        let v = self.tris[t].v;
+        let side = (self.planes[t].sign(self.p(v[0]), self.p(q))).unwrap_or_else(|| {
             orient3d_unfiltered(self.p(v[0]), self.p(v[1]), self.p(v[2]), self.p(q))
         });
         side > 0

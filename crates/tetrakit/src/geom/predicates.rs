@@ -419,10 +419,10 @@ fn det_perm(da: &Point3, db: &Point3, dc: &Point3) -> (f64, f64) {
 /// of two products `m[2k] − m[2k + 1]`, with its permanent `|m[2k]| + |m[2k + 1]|`. A test
 /// evaluates the same float determinant and permanent as [`Frame`]'s filter, in the same
 /// order and with its bound (so with the same decisions); `None` where it does not
-/// certify the sign, and the caller asks the exact predicate.
+/// certify the sign, and the caller asks the exact predicate. The plane's point `a` is
+/// the caller's to keep (a hull keeps a filter per triangle: its size is page faults).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct PlaneFilter {
-    a: Point3,
     n: Point3,
     pm: Point3,
 }
@@ -435,7 +435,6 @@ impl PlaneFilter {
         let dc = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
         let m = products(&db, &dc);
         PlaneFilter {
-            a: *a,
             n: [m[0] - m[1], m[2] - m[3], m[4] - m[5]],
             pm: [
                 m[0].abs() + m[1].abs(),
@@ -445,11 +444,12 @@ impl PlaneFilter {
         }
     }
 
-    /// The sign of `orient3d(a, b, c, x)` where the filter certifies it.
+    /// The sign of `orient3d(a, b, c, x)` where the filter certifies it (`a` the plane's
+    /// first point).
     #[inline]
-    pub(crate) fn sign(&self, x: &Point3) -> Option<i8> {
+    pub(crate) fn sign(&self, a: &Point3, x: &Point3) -> Option<i8> {
         let (n, pm) = (&self.n, &self.pm);
-        let dx = [x[0] - self.a[0], x[1] - self.a[1], x[2] - self.a[2]];
+        let dx = [x[0] - a[0], x[1] - a[1], x[2] - a[2]];
         let det = dx[0] * n[0] + dx[1] * n[1] + dx[2] * n[2];
         let perm = dx[0].abs() * pm[0] + dx[1].abs() * pm[1] + dx[2].abs() * pm[2];
         let bound = FRAME_ERR * perm;
@@ -471,6 +471,7 @@ impl PlaneFilter {
 #[derive(Clone, Copy, Debug)]
 pub struct Plane {
     filter: PlaneFilter,
+    a: Point3,
     b: Point3,
     c: Point3,
 }
@@ -480,6 +481,7 @@ impl Plane {
     pub fn new(a: &Point3, b: &Point3, c: &Point3) -> Self {
         Plane {
             filter: PlaneFilter::new(a, b, c),
+            a: *a,
             b: *b,
             c: *c,
         }
@@ -488,11 +490,11 @@ impl Plane {
     #[inline]
     pub fn side(&self, x: &Point3) -> i8 {
         self.filtered(x)
-            .unwrap_or_else(|| orient3d(&self.filter.a, &self.b, &self.c, x))
+            .unwrap_or_else(|| orient3d(&self.a, &self.b, &self.c, x))
     }
     #[inline]
     fn filtered(&self, x: &Point3) -> Option<i8> {
-        self.filter.sign(x)
+        self.filter.sign(&self.a, x)
     }
     /// A filter for a whole closed box `[lo, hi]`: `1` when every point of it is strictly
     /// on the positive side (`side` = 1), `-1` when every point is strictly negative, `0`
@@ -528,7 +530,7 @@ impl Plane {
     }
     /// A rounded estimate of the signed distance scale of `x` (for heuristics only).
     pub fn estimate(&self, x: &Point3) -> f64 {
-        let (a, n) = (&self.filter.a, &self.filter.n);
+        let (a, n) = (&self.a, &self.filter.n);
         let dx = [x[0] - a[0], x[1] - a[1], x[2] - a[2]];
         dx[0] * n[0] + dx[1] * n[1] + dx[2] * n[2]
     }
@@ -756,7 +758,7 @@ mod tests {
                 exact,
                 "{a:?} {b:?} {c:?} {x:?}"
             );
-            if let Some(s) = PlaneFilter::new(&a, &b, &c).sign(&x) {
+            if let Some(s) = PlaneFilter::new(&a, &b, &c).sign(&a, &x) {
                 assert_eq!(s, exact, "{a:?} {b:?} {c:?} {x:?}");
                 answered += 1;
             }
