@@ -585,17 +585,21 @@ pub fn tetrahedralize(
     method: Method,
     ctl: &Control,
 ) -> Result<ShellMesh, ShellError> {
-    tetrahedralize_within(shell, (method, &mut |_| true), ctl)?
-        .ok_or_else(|| ShellError::Internal(Bug::new("a removal without a budget passed it")))
+    let (mut mesh, pending) = tetrahedralize_within(shell, (method, &mut |_| true), ctl)?
+        .ok_or_else(|| ShellError::Internal(Bug::new("a removal without a budget passed it")))?;
+    mesh.ledger = pending.map(|p| p.ledger(shell));
+    Ok(mesh)
 }
 
 /// [`tetrahedralize`], abandoned (`None`) as soon as `go_on`, told the number of
-/// tetrahedra made after each piece of the removal, answers `false`.
+/// tetrahedra made after each piece of the removal, answers `false`. A mesh the removal
+/// finished comes without its ledger, and with what the ledger needs ([`Pending`]): the
+/// caller draws it up beside the flips.
 pub(super) fn tetrahedralize_within(
     shell: &Shell,
     (method, go_on): (Method, &mut dyn FnMut(usize) -> bool),
     ctl: &Control,
-) -> Result<Option<ShellMesh>, ShellError> {
+) -> Result<Option<(ShellMesh, Option<Pending>)>, ShellError> {
     let hidden: Vec<u32> = shell
         .inner
         .iter()
@@ -625,13 +629,19 @@ pub(super) fn tetrahedralize_within(
                 return Ok(None);
             };
             if r.left.is_empty() && surface.hidden.count() == 0 {
-                return Ok(Some(ShellMesh {
-                    ledger: Some(ledger_of(shell, &r, &surface)),
+                let mesh = ShellMesh {
+                    ledger: None,
                     pieces: r.records.len(),
-                    tets: r.tets,
+                    tets: r.tets.clone(),
                     finished_by: Finish::Removal,
                     thesis: r.thesis,
-                }));
+                };
+                let pending = Pending {
+                    tets: r.tets,
+                    records: r.records,
+                    last: surface.triangles(),
+                };
+                return Ok(Some((mesh, Some(pending))));
             }
             thesis = r.thesis;
             placing_orders(r.left, r.order)
@@ -646,28 +656,39 @@ pub(super) fn tetrahedralize_within(
     let (tets, pieces) = placed.min_by_key(|(tets, _)| tets.len()).ok_or_else(|| {
         ShellError::Internal(Bug::new("the inner polytope, checked solid, has a hull"))
     })?;
-    Ok(Some(ShellMesh {
+    let mesh = ShellMesh {
         tets,
         pieces,
         finished_by: Finish::Placing,
         ledger: None,
         thesis,
-    }))
+    };
+    Ok(Some((mesh, None)))
 }
 
-/// The weights of §4.4 on a removal that took every outer vertex (`surface` is `∂Q`).
-fn ledger_of(shell: &Shell, r: &removal::Removed, surface: &Surface) -> Ledger {
-    let mut on_p = vec![false; shell.points.len()];
-    for &v in shell.outer.iter().chain(&shell.touching) {
-        on_p[v as usize] = true;
+/// What the weights of §4.4 need from a removal that took every outer vertex: its
+/// tetrahedra, its pieces, and the surface it ended with (`∂Q`).
+pub(super) struct Pending {
+    tets: Vec<[u32; 4]>,
+    records: Vec<ledger::Record>,
+    last: Vec<[u32; 3]>,
+}
+
+impl Pending {
+    /// The ledger of the removal.
+    pub(super) fn ledger(self, shell: &Shell) -> Ledger {
+        let mut on_p = vec![false; shell.points.len()];
+        for &v in shell.outer.iter().chain(&shell.touching) {
+            on_p[v as usize] = true;
+        }
+        ledger::ledger(ledger::Removal {
+            tets: &self.tets,
+            records: &self.records,
+            outer: &shell.hull,
+            last: &self.last,
+            on_surface: on_p,
+        })
     }
-    ledger::ledger(ledger::Removal {
-        tets: &r.tets,
-        records: &r.records,
-        outer: &shell.hull,
-        last: &surface.triangles(),
-        on_surface: on_p,
-    })
 }
 
 /// The orders to place in after a removal that left `left` and removed `order`: the

@@ -284,9 +284,14 @@ fn mesh(
 ) -> Result<(super::ShellMesh, Improvement), ShellError> {
     if opts.flips && opts.method != Method::Thesis {
         match removal_or_delaunay(s, opts.method, ctl)? {
-            Route::Removal(mut mesh) => {
-                let done = improve(&s.points, &mut mesh, ctl)?;
-                return Ok((mesh, done));
+            Route::Removal(mut mesh, pending) => {
+                // The ledger owes nothing to the flips: drawn up beside them.
+                let (done, ledger) = rayon::join(
+                    || improve(&s.points, &mut mesh, ctl),
+                    || pending.map(|p| p.ledger(s)),
+                );
+                mesh.ledger = ledger;
+                return Ok((mesh, done?));
             }
             Route::Delaunay(Some(tets)) => return delaunay_mesh(s, tets, ctl),
             Route::Delaunay(None) => {}
@@ -305,8 +310,8 @@ fn mesh(
 
 /// How [`removal_or_delaunay`] ended.
 enum Route {
-    /// The removal, within its budget.
-    Removal(super::ShellMesh),
+    /// The removal, within its budget, and what its ledger needs.
+    Removal(super::ShellMesh, Option<super::Pending>),
     /// The removal passed its budget: the Delaunay shell, `None` when `Q` is not a union
     /// of Delaunay tetrahedra.
     Delaunay(Option<Vec<[u32; 4]>>),
@@ -335,7 +340,7 @@ fn removal_or_delaunay(s: &Shell, method: Method, ctl: &Control) -> Result<Route
         removed
     })?;
     Ok(match removed {
-        Some(mesh) => Route::Removal(mesh),
+        Some((mesh, pending)) => Route::Removal(mesh, pending),
         None => Route::Delaunay(
             found
                 .into_inner()
