@@ -30,6 +30,9 @@ const FIRST_SCANNED: usize = 32;
 /// Below this many points [`FacetGrid`] is one cell (its resolution would be 1).
 const SMALL_GRID: usize = 64;
 
+/// The most triangles a [`Builder`] reserves room for at once.
+const ROOM_MAX: usize = 1 << 21;
+
 /// The convex hull of a point set in 3D.
 ///
 /// ```
@@ -643,13 +646,11 @@ impl<'a> Builder<'a> {
     }
 
     fn new(pts: &'a [Point3]) -> Builder<'a> {
-        // A small hull (the shell's local ones, thousands a second) makes at most a few
-        // triangles a point: room for them at once, not a vector regrown five times.
-        let room = if pts.len() < SMALL_GRID {
-            8 * pts.len()
-        } else {
-            0
-        };
+        // A hull makes about five triangles a point in all (those it deletes too): room
+        // for eight at once, not a vector regrown and copied a dozen times, each copy
+        // into fresh pages (a page fault every 4 KiB, the dearest part of a cold hull).
+        // Room nobody writes costs no page.
+        let room = (8 * pts.len()).min(ROOM_MAX);
         Builder {
             pts,
             tris: Vec::with_capacity(room),
