@@ -270,16 +270,11 @@ impl Frame {
     /// Prepares the plane through `v` and the points with directions `da`, `db`.
     #[inline]
     pub fn plane(&self, da: &Dir, db: &Dir) -> ApexPlane {
-        let (a, b) = (&da.d, &db.d);
-        let m = products(a, b);
+        let (n, pm) = normal(&da.d, &db.d);
         let inexact = da.hi == i32::MIN || db.hi == i32::MIN;
         ApexPlane {
-            n: [m[0] - m[1], m[2] - m[3], m[4] - m[5]],
-            pm: [
-                m[0].abs() + m[1].abs(),
-                m[2].abs() + m[3].abs(),
-                m[4].abs() + m[5].abs(),
-            ],
+            n,
+            pm,
             lo: da.lo.min(db.lo),
             hi: if inexact { i32::MIN } else { da.hi.max(db.hi) },
         }
@@ -403,6 +398,20 @@ fn products(b: &Point3, c: &Point3) -> [f64; 6] {
     ]
 }
 
+/// The rounded cross product `b × c`, component `k` the difference `m[2k] − m[2k + 1]`
+/// of [`products`], and each component's permanent `|m[2k]| + |m[2k + 1]|`.
+#[inline]
+fn normal(b: &Point3, c: &Point3) -> (Point3, Point3) {
+    let m = products(b, c);
+    let n = [m[0] - m[1], m[2] - m[3], m[4] - m[5]];
+    let pm = [
+        m[0].abs() + m[1].abs(),
+        m[2].abs() + m[3].abs(),
+        m[4].abs() + m[5].abs(),
+    ];
+    (n, pm)
+}
+
 /// The float determinant `det[da, db, dc]` and its permanent (for the error bound).
 #[inline]
 fn det_perm(da: &Point3, db: &Point3, dc: &Point3) -> (f64, f64) {
@@ -433,15 +442,8 @@ impl PlaneFilter {
     pub(crate) fn new(a: &Point3, b: &Point3, c: &Point3) -> Self {
         let db = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
         let dc = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
-        let m = products(&db, &dc);
-        PlaneFilter {
-            n: [m[0] - m[1], m[2] - m[3], m[4] - m[5]],
-            pm: [
-                m[0].abs() + m[1].abs(),
-                m[2].abs() + m[3].abs(),
-                m[4].abs() + m[5].abs(),
-            ],
-        }
+        let (n, pm) = normal(&db, &dc);
+        PlaneFilter { n, pm }
     }
 
     /// The sign of `orient3d(a, b, c, x)` where the filter certifies it (`a` the plane's
@@ -597,9 +599,10 @@ pub fn projection_axis(a: &Point3, b: &Point3, c: &Point3) -> Option<usize> {
 /// oriented tetrahedron `abcd`.
 ///
 /// Where `e` and three of `a, b, c, d` lie in a plane `x_k = h` (the same coordinate
-/// `k`, equal as floats), the test is a 2D in-circle test ([`insphere_on_axis_plane`]):
-/// exactly the same sign, at a fraction of the cost where the points are also nearly
-/// cocircular (Bern disks' ridge: a cocircular polygon in `z = 0`).
+/// `k`, equal as floats), the test is a 2D in-circle test (the lifted determinant
+/// expanded along that column): exactly the same sign, at a fraction of the cost where
+/// the points are also nearly cocircular (Bern disks' ridge: a cocircular polygon in
+/// `z = 0`).
 pub fn insphere(a: &Point3, b: &Point3, c: &Point3, d: &Point3, e: &Point3) -> i8 {
     // robust::insphere is positive for e inside when robust::orient3d(a,b,c,d) > 0,
     // which is our negative orientation; swapping a and b converts conventions.
