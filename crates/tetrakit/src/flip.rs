@@ -105,8 +105,9 @@ pub fn reduce(
     tets: &mut Vec<[u32; 4]>,
     ctl: &Control,
 ) -> Result<usize, Stopped> {
+    ctl.check()?;
     let mut m = Mesh::new(points, tets);
-    let mut queue: VecDeque<([u32; 2], u32)> = m.edges().into();
+    let mut queue: VecDeque<([u32; 2], u32)> = m.flippable_edges().into();
     let mut done = 0;
     let mut steps = Steps::new(ctl);
     while let Some(([a, b], t)) = queue.pop_front() {
@@ -424,20 +425,19 @@ impl<'a> Mesh<'a> {
         [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)].map(|(i, j)| (sorted([t[i], t[j]]), id))
     }
 
-    /// Every edge of a live tetrahedron, once, with a tetrahedron on it.
-    fn edges(&self) -> Vec<([u32; 2], u32)> {
-        // As integers `(a, b, id)`, sorted (see `Mesh::new`), each edge once.
-        let mut e: Vec<u128> = Vec::with_capacity(6 * self.tets.len());
-        e.extend(
-            (0..self.tets.len() as u32)
-                .filter(|&id| self.alive[id as usize])
-                .flat_map(|id| self.tet_edges(id))
-                .map(|([a, b], id)| face_key([0, a, b], id as usize)),
-        );
-        e.par_sort_unstable();
-        e.dedup_by_key(|x| *x >> 32);
-        let edge = |x: u128| ([(x >> 64) as u32, (x >> 32) as u32], x as u32);
-        e.into_iter().map(edge).collect()
+    /// Every interior edge of degree 3, once (with the lowest of its tetrahedra), in
+    /// order: the edges a 3-2 flip may remove now. An edge whose degree a flip changes
+    /// is an edge of the flip's new tetrahedra, which [`reduce`] queues then.
+    fn flippable_edges(&self) -> Vec<([u32; 2], u32)> {
+        let mut e: Vec<([u32; 2], u32)> = (0..self.tets.len() as u32)
+            .flat_map(|id| self.tet_edges(id))
+            .filter(|&([a, b], id)| {
+                self.ring(a, b, id)
+                    .is_some_and(|(ts, _)| ts.iter().all(|&t| t >= id))
+            })
+            .collect();
+        e.sort_unstable();
+        e
     }
 }
 
@@ -548,7 +548,7 @@ mod tests {
         }
     }
 
-    /// A stopped control stops the flipping (checked every 4096 steps).
+    /// A stopped control stops the flipping (checked first, then every 4096 steps).
     #[test]
     fn a_stopped_control_stops() {
         let grid = crate::generate::kuhn(8);
