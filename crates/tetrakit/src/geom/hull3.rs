@@ -68,7 +68,9 @@ pub struct Hull3 {
 struct Tri {
     v: [u32; 3],
     nb: [u32; 3],
-    alive: bool,
+    /// The triangle's place in the order of creation ([`NONE`]: deleted, its slot free).
+    /// Slots are reused, so this, not the slot, orders the triangles.
+    born: u32,
     /// The last insertion that looked at this triangle ([`Builder::insert`]).
     seen: u32,
     /// The first and last points of its conflict list ([`NONE`]: empty), linked on
@@ -78,11 +80,15 @@ struct Tri {
 }
 
 impl Tri {
-    fn new(v: [u32; 3], nb: [u32; 3]) -> Tri {
+    fn alive(&self) -> bool {
+        self.born != NONE
+    }
+
+    fn new(v: [u32; 3], nb: [u32; 3], born: u32) -> Tri {
         Tri {
             v,
             nb,
-            alive: true,
+            born,
             seen: 0,
             first: NONE,
             last: NONE,
@@ -597,9 +603,17 @@ pub(super) fn initial_simplex(pts: &[Point3]) -> Option<([u32; 4], usize)> {
 
 struct Builder<'a> {
     pts: &'a [Point3],
+    /// The triangles by slot: a deleted triangle's slot is taken by the next one made,
+    /// so the slots in use never outnumber the hull's triangles (a hull of `n` points
+    /// makes about five triangles a point in all, and has at most `2n - 4` at a time):
+    /// fewer fresh pages, and the live triangles closer together.
     tris: Vec<Tri>,
-    /// Each triangle's plane filter, for its many visibility tests ([`Builder::sees`]).
+    /// Each slot's plane filter, for its many visibility tests ([`Builder::sees`]).
     planes: Vec<PlaneFilter>,
+    /// The free slots.
+    free: Vec<u32>,
+    /// The triangles made so far.
+    made: u32,
     /// The triangle whose conflict list holds each point ([`NONE`]: none).
     owner: Vec<u32>,
     /// The point after each one in its conflict list ([`NONE`]: the last).
@@ -620,7 +634,7 @@ struct Scratch {
     /// `(a, b, outer triangle, its edge index)` for each horizon edge `ab`.
     horizon: Vec<(u32, u32, usize, usize)>,
     orphans: Vec<u32>,
-    /// `(a, new triangle)` for each horizon edge `ab`, sorted.
+    /// `(a, k)` for each horizon edge `ab`, the `k`-th of the cone, sorted.
     by_start: Vec<(u32, usize)>,
 }
 
@@ -637,24 +651,36 @@ impl<'a> Builder<'a> {
         side > 0
     }
 
-    /// Adds the triangle `v` with neighbours `nb`; returns its index.
+    /// Adds the triangle `v` with neighbours `nb`, in a free slot if there is one;
+    /// returns its slot.
     fn push(&mut self, v: [u32; 3], nb: [u32; 3]) -> usize {
         let (a, b, c) = (self.p(v[0]), self.p(v[1]), self.p(v[2]));
-        self.planes.push(PlaneFilter::new(a, b, c));
-        self.tris.push(Tri::new(v, nb));
-        self.tris.len() - 1
+        let (plane, tri) = (PlaneFilter::new(a, b, c), Tri::new(v, nb, self.made));
+        self.made += 1;
+        match self.free.pop() {
+            Some(t) => {
+                (self.planes[t as usize], self.tris[t as usize]) = (plane, tri);
+                t as usize
+            }
+            None => {
+                self.planes.push(plane);
+                self.tris.push(tri);
+                self.tris.len() - 1
+            }
+        }
     }
 
     fn new(pts: &'a [Point3]) -> Builder<'a> {
-        // A hull makes about five triangles a point in all (those it deletes too): room
-        // for eight at once, not a vector regrown and copied a dozen times, each copy
-        // into fresh pages (a page fault every 4 KiB, the dearest part of a cold hull).
-        // Room nobody writes costs no page.
-        let room = (8 * pts.len()).min(ROOM_MAX);
+        // Room for every slot at once (at most `2n - 4` are ever in use, see `tris`), not
+        // a vector regrown and copied a dozen times, each copy into fresh pages (a page
+        // fault every 4 KiB, the dearest part of a cold hull).
+        let room = (2 * pts.len() + 4).min(ROOM_MAX);
         Builder {
             pts,
             tris: Vec::with_capacity(room),
             planes: Vec::with_capacity(room),
+            free: Vec::new(),
+            made: 0,
             owner: vec![NONE; pts.len()],
             next: vec![NONE; pts.len()],
             eligible: None,
@@ -711,19 +737,22 @@ impl<'a> Builder<'a> {
         }
     }
 
-    /// The live triangles, renumbered, and their neighbours across each edge.
+    /// The live triangles in the order they were made, and their neighbours across
+    /// each edge.
     fn alive(&self) -> (Vec<[u32; 3]>, Vec<[u32; 3]>) {
-        let mut index = vec![NONE; self.tris.len()];
-        let mut triangles = Vec::new();
-        for (i, t) in self.tris.iter().enumerate().filter(|(_, t)| t.alive) {
-            index[i] = triangles.len() as u32;
-            triangles.push(t.v);
+        let mut slot_of = vec![NONE; self.made as usize];
+        for (i, t) in self.tris.iter().enumerate().filter(|(_, t)| t.alive()) {
+            slot_of[t.born as usize] = i as u32;
         }
-        let neighbours = self
-            .tris
-            .iter()
-            .filter(|t| t.alive)
-            .map(|t| t.nb.map(|n| index[n as usize]))
+        let order: Vec<u32> = slot_of.into_iter().filter(|&i| i != NONE).collect();
+        let mut index = vec![NONE; self.tris.len()];
+        for (k, &i) in order.iter().enumerate() {
+            index[i as usize] = k as u32;
+        }
+        let tri = |i: u32| &self.tris[i as usize];
+        let triangles = order.iter().map(|&i| tri(i).v).collect();
+        let neighbours = (order.iter())
+            .map(|&i| tri(i).nb.map(|n| index[n as usize]))
             .collect();
         (triangles, neighbours)
     }
@@ -733,14 +762,18 @@ impl<'a> Builder<'a> {
     /// every vertex of the second side then takes over a fan of the first (quadratic:
     /// 39 million triangles made for a 50,000-vertex twisted prism, 190,000 this way).
     fn run(&mut self) {
-        let mut work: std::collections::VecDeque<usize> = (0..4).collect();
-        while let Some(t) = work.pop_front() {
-            if !self.tris[t].alive {
+        // Each triangle with the place it was made in: a slot taken again since it was
+        // queued holds another triangle.
+        let mut work: std::collections::VecDeque<(usize, u32)> =
+            (0..4).map(|t| (t, t as u32)).collect();
+        while let Some((t, born)) = work.pop_front() {
+            if self.tris[t].born != born {
                 continue;
             }
             let Some(p) = self.furthest(t) else { continue };
             let new = self.insert(t, p);
-            work.extend(new.into_iter().filter(|&u| self.tris[u].first != NONE));
+            let waiting = new.into_iter().filter(|&u| self.tris[u].first != NONE);
+            work.extend(waiting.map(|u| (u, self.tris[u].born)));
         }
     }
 
@@ -765,13 +798,15 @@ impl<'a> Builder<'a> {
         for &t in &s.visible {
             s.orphans.extend(self.conflicts(t));
             let tri = &mut self.tris[t];
-            tri.alive = false;
+            tri.born = NONE;
             (tri.first, tri.last) = (NONE, NONE);
             if let Some(tets) = &mut self.tets {
                 let [a, b, c] = tri.v;
                 tets.push([a, b, c, p]);
             }
         }
+        // Free once every one is read: the cone takes these slots first.
+        self.free.extend(s.visible.iter().map(|&t| t as u32));
         self.owner[p as usize] = NONE;
         let new = self.cone(p, &mut s);
         // Each orphan goes to the first new triangle it sees among the first
@@ -835,14 +870,14 @@ impl<'a> Builder<'a> {
         for &(a, b, n, j) in &s.horizon {
             let id = self.push([a, b, p], [n as u32, NONE, NONE]);
             self.tris[n].nb[j] = id as u32;
-            s.by_start.push((a, id));
+            s.by_start.push((a, new.len()));
             new.push(id);
         }
         s.by_start.sort_unstable();
         for &id in &new {
             let b = self.tris[id].v[1];
             let k = s.by_start.partition_point(|&(a, _)| a < b);
-            let next = s.by_start[k].1;
+            let next = new[s.by_start[k].1];
             self.tris[id].nb[1] = next as u32;
             self.tris[next].nb[2] = id as u32;
         }
