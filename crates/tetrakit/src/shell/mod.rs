@@ -425,8 +425,12 @@ impl Shell {
         // The hull of both inputs at once, beside Q's (and Q's edges, by input index):
         // when Q ⊆ P it is P's hull (P's own hull is built only to say what is wrong).
         let both: Vec<Point3> = outer.iter().chain(inner).copied().collect();
-        let (union, inner_e) = rayon::join(
-            || Hull3::new(&both),
+        let ((union, corners), inner_e) = rayon::join(
+            || {
+                let union = Hull3::new(&both);
+                let corners = outer_corners(&both, outer.len(), &union);
+                (union, corners)
+            },
             || {
                 let (v, others, hull) = extreme_points(inner)?;
                 let edges = q_edges(inner, &hull, &v);
@@ -437,7 +441,7 @@ impl Shell {
             vertices: outer_v,
             others: outer_ignored,
             mut index,
-        }) = outer_corners(&both, outer.len(), &union)
+        }) = corners
         else {
             return Err(refusal(outer, inner));
         };
@@ -447,6 +451,7 @@ impl Shell {
         // Each vertex's point in `both`, whose facets on the union it takes.
         let mut source: Vec<u32> = outer_v.clone();
         let mut inner_idx = Vec::with_capacity(inner_v.len());
+        index.reserve(inner_v.len());
         let mut shell_index = vec![u32::MAX; inner.len()];
         for &i in &inner_v {
             let p = inner[i as usize];
