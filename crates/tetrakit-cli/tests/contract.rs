@@ -41,6 +41,32 @@ fn bad_input_exits_2_with_one_line_naming_file_and_line() {
     assert_eq!(o.status.code(), Some(2));
 }
 
+/// Every subcommand's help opens with the description `tetrakit --help` lists for it
+/// (the subcommands are deferred, and a doc comment on an argument struct would
+/// replace it).
+#[test]
+fn every_subcommand_help_opens_with_its_own_description() {
+    let top = String::from_utf8(run(&["--help"]).stdout).unwrap();
+    let listed: Vec<(&str, &str)> = (top.lines())
+        .skip_while(|l| !l.starts_with("Commands:"))
+        .skip(1)
+        .take_while(|l| !l.trim().is_empty())
+        .filter_map(|l| l.trim().split_once(' '))
+        .map(|(name, about)| (name, about.trim()))
+        .filter(|(name, _)| *name != "help")
+        .collect();
+    assert!(listed.len() >= 10, "{top}");
+    for (name, about) in listed {
+        let help = String::from_utf8(run(&[name, "--help"]).stdout).unwrap();
+        let first = help.lines().next().unwrap_or("");
+        let want = about.trim_end_matches('.');
+        assert!(
+            first.starts_with(want),
+            "{name}: {first:?} does not open with {want:?}"
+        );
+    }
+}
+
 #[test]
 fn demo_runs() {
     let o = run(&["demo"]);
