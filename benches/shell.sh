@@ -31,19 +31,12 @@ TK=target/release/tetrakit
 median() { sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
 field() { python3 -c 'import json,sys;print(json.load(open(sys.argv[1]))[sys.argv[2]])' "$1" "$2"; }
 elapsed() { awk '{print $1}' "$1"; }
-# timed OUT CMD...: runs CMD under GNU time for its peak memory, and writes "seconds KB"
-# to OUT with the wall time to the microsecond (GNU time's %e has two decimals, too
-# coarse at n = 10^3). Returns CMD's status.
-timed() {
-  local out=$1 start end rc=0
-  shift
-  start=$(date +%s%N)
-  /usr/bin/time -f "%M" -o "$out.m" "$@" || rc=$?
-  end=$(date +%s%N)
-  echo "$(awk -v d=$((end - start)) 'BEGIN {printf "%.6f", d / 1e9}') $(tail -1 "$out.m")" >"$out"
-  return $rc
-}
-peak() { awk '{print int($2/1024)}' "$1"; }
+# timed OUT CMD...: writes CMD's wall time to OUT, to the microsecond, with nothing else
+# inside the interval (benches/timed.py; `date` and GNU time around each run weighed on
+# the rows of 10 ms). Returns CMD's status.
+timed() { python3 benches/timed.py "$@"; }
+# peak CMD...: CMD's peak resident memory in MB, from one run under GNU time.
+peak() { /usr/bin/time -f "%M" -o "$WORK/m" "$@" >/dev/null 2>&1 || true; awk '{print int($1/1024)}' "$WORK/m"; }
 
 # One row: the shell OUTER INNER against TetGen on the same surfaces (HOLE: a point
 # inside the inner polytope, "0 0 0" when not given).
@@ -55,7 +48,7 @@ row() {
   tk=(); t1=(); tb=(); tg=(); ty=()
   for _ in $(seq "$RUNS"); do
     timed "$WORK/t1" "$TK" shell "$o" "$i" --json >"$WORK/s.json"
-    tk+=("$(elapsed "$WORK/t1")"); tkm=$(peak "$WORK/t1")
+    tk+=("$(elapsed "$WORK/t1")")
     RAYON_NUM_THREADS=1 timed "$WORK/t5" "$TK" shell "$o" "$i" --json >/dev/null
     t1+=("$(elapsed "$WORK/t5")")
     if timed "$WORK/t4" timeout "$BIGCAP_TIMEOUT" "$TK" shell "$o" "$i" --method bigcap --json >"$WORK/b.json"; then
@@ -64,10 +57,11 @@ row() {
       tb+=("-"); echo '{"tetrahedra": "nan"}' >"$WORK/b.json"
     fi
     timed "$WORK/t2" tetgen -pQ "$WORK/p$key.poly" >/dev/null || true
-    tg+=("$(elapsed "$WORK/t2")"); tgm=$(peak "$WORK/t2")
+    tg+=("$(elapsed "$WORK/t2")")
     timed "$WORK/t3" tetgen -pYQ "$WORK/p$key.poly" >/dev/null || true
     ty+=("$(elapsed "$WORK/t3")")
   done
+  tkm=$(peak "$TK" shell "$o" "$i" --json); tgm=$(peak tetgen -pQ "$WORK/p$key.poly")
   t=$(field "$WORK/s.json" tetrahedra); t0=$(field "$WORK/s.json" tetrahedra_before_flips)
   nn=$(field "$WORK/s.json" n); bt=$(field "$WORK/b.json" tetrahedra)
   wm=$(python3 -c 'import json,sys;w=json.load(open(sys.argv[1])).get("weights");print(w["max"] if w else "-")' "$WORK/s.json")
