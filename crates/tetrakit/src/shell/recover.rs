@@ -46,7 +46,7 @@ impl QEdges {
                 }
             }
         }
-        along.sort_unstable();
+        super::sort_pairs(&mut along);
         let mut edges = Vec::with_capacity(along.len());
         for run in along.chunk_by(|x, y| x.0 == y.0) {
             let Some(sa) = corner(run[0].0) else { continue };
@@ -56,7 +56,7 @@ impl QEdges {
                 }
             }
         }
-        edges.sort_unstable();
+        super::sort_pairs(&mut edges);
         QEdges { edges }
     }
 
@@ -65,7 +65,7 @@ impl QEdges {
         for e in &mut self.edges {
             *e = (name(e.0), name(e.1));
         }
-        self.edges.sort_unstable();
+        super::sort_pairs(&mut self.edges);
         self
     }
 

@@ -289,7 +289,7 @@ impl<'a> Surface<'a> {
                 (0..3).map(move |i| (tri[i], tri[(i + 1) % 3]))
             })
             .collect();
-        inside.sort_unstable();
+        super::sort_pairs(&mut inside);
         inside.dedup();
         let boundary: Vec<(u32, u32)> = (inside.iter())
             .filter(|&&(a, b)| inside.binary_search(&(b, a)).is_err())
