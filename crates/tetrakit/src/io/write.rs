@@ -13,9 +13,21 @@ pub(super) fn save(path: &Path, text: String) -> io::Result<()> {
 }
 
 fn node_text(points: &[Point3], base: u32) -> String {
-    let mut s = format!("{} 3 0 0\n", points.len());
+    // Room for a line of three shortest round-trip coordinates, not a string regrown.
+    let mut s = String::with_capacity(64 * points.len() + 32);
+    let _ = writeln!(s, "{} 3 0 0", points.len());
     for (i, p) in points.iter().enumerate() {
         let _ = writeln!(s, "{} {} {} {}", i as u32 + base, p[0], p[1], p[2]);
+    }
+    s
+}
+
+fn ele_text(tets: &[[u32; 4]], base: u32) -> String {
+    let mut s = String::with_capacity(32 * tets.len() + 32);
+    let _ = writeln!(s, "{} 4 0", tets.len());
+    for (i, t) in tets.iter().enumerate() {
+        let [a, b, c, d] = t.map(|v| v + base);
+        let _ = writeln!(s, "{} {a} {b} {c} {d}", i as u32 + base);
     }
     s
 }
@@ -33,20 +45,12 @@ fn node_text(points: &[Point3], base: u32) -> String {
 pub fn write_mesh(path: &Path, points: &[Point3], tets: &[[u32; 4]], base: u32) -> io::Result<()> {
     match ext(path).as_str() {
         "ele" => {
-            save(&path.with_extension("node"), node_text(points, base))?;
-            let mut s = format!("{} 4 0\n", tets.len());
-            for (i, t) in tets.iter().enumerate() {
-                let _ = writeln!(
-                    s,
-                    "{} {} {} {} {}",
-                    i as u32 + base,
-                    t[0] + base,
-                    t[1] + base,
-                    t[2] + base,
-                    t[3] + base
-                );
-            }
-            save(path, s)
+            // The two files side by side.
+            let (node, ele) = rayon::join(
+                || save(&path.with_extension("node"), node_text(points, base)),
+                || save(path, ele_text(tets, base)),
+            );
+            node.and(ele)
         }
         "vtk" | "vtu" => write_mesh_with_fields(path, points, tets, &Fields::default()),
         "json" => {
