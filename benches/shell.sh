@@ -6,7 +6,9 @@
 # a hole inside the inner sphere; `-pQ`, and `-pYQ` which keeps the surfaces unsplit),
 # in the same run, alternating. Reports tetrahedra per vertex, Steiner points, seconds
 # (medians; tetrakit on every core and, with RAYON_NUM_THREADS=1, on one: TetGen uses
-# one) and peak memory; tetrakit's time includes reading and its certificate.
+# one) and peak memory; tetrakit's time includes reading, its certificate and writing the
+# mesh (-o: .node and .ele), as TetGen's includes writing its own (.node, .ele, .face,
+# .edge).
 # Then the families of benches/shell_families.py (FAMILIES, NAME:N each): thin twisted
 # and coaxial prisms, bent arcs, lattice spheres with Q = P/2, circles on a cube's facets,
 # a dome on a dome's floor, an eighth of a ball in a box's corner. Bigcaps get
@@ -47,11 +49,11 @@ row() {
   python3 benches/shell_poly.py "$WORK/s$key.ele" "$WORK/p$key.poly" $hole
   tk=(); t1=(); tb=(); tg=(); ty=()
   for _ in $(seq "$RUNS"); do
-    timed "$WORK/t1" "$TK" shell "$o" "$i" --json >"$WORK/s.json"
+    timed "$WORK/t1" "$TK" shell "$o" "$i" --json -o "$WORK/m.ele" >/dev/null
     tk+=("$(elapsed "$WORK/t1")")
-    RAYON_NUM_THREADS=1 timed "$WORK/t5" "$TK" shell "$o" "$i" --json >/dev/null
+    RAYON_NUM_THREADS=1 timed "$WORK/t5" "$TK" shell "$o" "$i" --json -o "$WORK/m.ele" >/dev/null
     t1+=("$(elapsed "$WORK/t5")")
-    if timed "$WORK/t4" timeout "$BIGCAP_TIMEOUT" "$TK" shell "$o" "$i" --method bigcap --json >"$WORK/b.json"; then
+    if timed "$WORK/t4" timeout "$BIGCAP_TIMEOUT" "$TK" shell "$o" "$i" --method bigcap --json -o "$WORK/m.ele" >"$WORK/b.json"; then
       tb+=("$(elapsed "$WORK/t4")")
     else
       tb+=("-"); echo '{"tetrahedra": "nan"}' >"$WORK/b.json"
@@ -61,7 +63,7 @@ row() {
     timed "$WORK/t3" tetgen -pYQ "$WORK/p$key.poly" >/dev/null || true
     ty+=("$(elapsed "$WORK/t3")")
   done
-  tkm=$(peak "$TK" shell "$o" "$i" --json); tgm=$(peak tetgen -pQ "$WORK/p$key.poly")
+  tkm=$(peak "$TK" shell "$o" "$i" --json -o "$WORK/m.ele"); tgm=$(peak tetgen -pQ "$WORK/p$key.poly")
   t=$(field "$WORK/s.json" tetrahedra); t0=$(field "$WORK/s.json" tetrahedra_before_flips)
   nn=$(field "$WORK/s.json" n); bt=$(field "$WORK/b.json" tetrahedra)
   wm=$(python3 -c 'import json,sys;w=json.load(open(sys.argv[1])).get("weights");print(w["max"] if w else "-")' "$WORK/s.json")

@@ -841,10 +841,12 @@ fn main() -> ExitCode {
 /// Runs `work` with the parallel passes on their worker threads; where the system refuses
 /// a thread (a tight memory or process limit, as batch schedulers set), on this thread
 /// alone. rayon would otherwise panic at its first parallel pass, and a panic whose
-/// backtrace cannot be allocated deadlocks in the standard library.
+/// backtrace cannot be allocated deadlocks in the standard library. The pool is the
+/// command's own, not rayon's global one, whose builder waits until every worker has
+/// started (0.1–0.2 ms of a 9 ms run): work installed here starts on the first one up.
 fn in_threads(work: impl FnOnce() -> CmdResult + Send) -> CmdResult {
-    if rayon::ThreadPoolBuilder::new().build_global().is_ok() {
-        return work();
+    if let Ok(pool) = rayon::ThreadPoolBuilder::new().build() {
+        return pool.install(work);
     }
     let one = rayon::ThreadPoolBuilder::new()
         .num_threads(1)
