@@ -437,6 +437,14 @@ pub(crate) struct PlaneFilter {
 }
 
 impl PlaneFilter {
+    /// The rounded `orient3d(a, b, c, x)` on the stored normal, and `x − a`.
+    #[inline]
+    fn det(&self, a: &Point3, x: &Point3) -> (f64, Point3) {
+        let n = &self.n;
+        let dx = [x[0] - a[0], x[1] - a[1], x[2] - a[2]];
+        (dx[0] * n[0] + dx[1] * n[1] + dx[2] * n[2], dx)
+    }
+
     /// The filter of the plane through `a, b, c`.
     #[inline]
     pub(crate) fn new(a: &Point3, b: &Point3, c: &Point3) -> Self {
@@ -450,9 +458,8 @@ impl PlaneFilter {
     /// first point).
     #[inline]
     pub(crate) fn sign(&self, a: &Point3, x: &Point3) -> Option<i8> {
-        let (n, pm) = (&self.n, &self.pm);
-        let dx = [x[0] - a[0], x[1] - a[1], x[2] - a[2]];
-        let det = dx[0] * n[0] + dx[1] * n[1] + dx[2] * n[2];
+        let (det, dx) = self.det(a, x);
+        let pm = &self.pm;
         let perm = dx[0].abs() * pm[0] + dx[1].abs() * pm[1] + dx[2].abs() * pm[2];
         let bound = FRAME_ERR * perm;
         if det > bound {
@@ -532,9 +539,7 @@ impl Plane {
     }
     /// A rounded estimate of the signed distance scale of `x` (for heuristics only).
     pub fn estimate(&self, x: &Point3) -> f64 {
-        let (a, n) = (&self.a, &self.filter.n);
-        let dx = [x[0] - a[0], x[1] - a[1], x[2] - a[2]];
-        dx[0] * n[0] + dx[1] * n[1] + dx[2] * n[2]
+        self.filter.det(&self.a, x).0
     }
 }
 
