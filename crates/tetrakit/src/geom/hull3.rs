@@ -99,9 +99,9 @@ impl Tri {
 impl Hull3 {
     /// Computes the hull of `points` exactly. Duplicate points are allowed.
     pub fn new(points: &[Point3]) -> Hull3 {
-        let mut h = Hull3::facets_only(points);
+        let (mut h, inside) = Hull3::build(points);
         if h.dimension == 3 {
-            h.assign_points(points);
+            h.assign_points(points, &inside);
         }
         h
     }
@@ -110,11 +110,18 @@ impl Hull3 {
     /// on ([`Hull3::facets_of`] is empty for every point): what a caller that needs only
     /// the facet planes pays (the assignment is most of a small hull's cost).
     pub fn facets_only(points: &[Point3]) -> Hull3 {
+        Hull3::build(points).0
+    }
+
+    /// The hull's triangles and facets, and which points the construction proved
+    /// strictly inside ([`Builder::inside`]; empty when flat).
+    fn build(points: &[Point3]) -> (Hull3, Vec<bool>) {
         let Some((seed, dimension)) = initial_simplex(points) else {
-            return Hull3 {
+            let h = Hull3 {
                 dimension: affine_dimension(points),
                 ..Default::default()
             };
+            return (h, Vec::new());
         };
         let mut b = Builder::new(points);
         b.start(seed, 0..points.len() as u32);
@@ -127,7 +134,7 @@ impl Hull3 {
         };
         h.build_facets(points, &neighbours);
         h.neighbours = neighbours;
-        h
+        (h, b.inside)
     }
 
     /// The triangle across edge `i` of triangle `t` (the edge from its corner `i` to
@@ -309,10 +316,12 @@ impl Hull3 {
         (start, list)
     }
 
-    fn assign_points(&mut self, pts: &[Point3]) {
+    /// Tells each point the facets it lies on; `inside[i]`: point `i` is known to be
+    /// strictly inside (on none).
+    fn assign_points(&mut self, pts: &[Point3], inside: &[bool]) {
         let (start, incident) = self.incident_facets(pts.len());
-        // The planes and the grid only for points that are not corners (few on a small
-        // hull, none on most).
+        // The planes and the grid only for points that are neither corners nor known to
+        // be inside (few on a small hull, none on most).
         let lookup = std::sync::OnceLock::new();
         let on = |i: usize, x: &Point3, out: &mut Vec<u32>| {
             // A corner of three facets is a corner of each facet it lies on, so the
@@ -320,6 +329,9 @@ impl Hull3 {
             let at = &incident[start[i] as usize..start[i + 1] as usize];
             if at.len() >= 3 {
                 out.extend_from_slice(at);
+                return;
+            }
+            if inside[i] {
                 return;
             }
             let (planes, grid): &(Vec<Plane>, FacetGrid) = lookup.get_or_init(|| {
@@ -620,6 +632,10 @@ struct Builder<'a> {
     next: Vec<u32>,
     /// The points [`Builder::run`] may insert (all when `None`).
     eligible: Option<Vec<bool>>,
+    /// The points left out strictly behind every triangle they were last tested
+    /// against, so strictly inside the hull (see [`Builder::insert`]): they need no
+    /// facet lookup. False where unknown.
+    inside: Vec<bool>,
     /// The tetrahedra each insertion makes with the triangles it sees, when recording.
     tets: Option<Vec<[u32; 4]>>,
     /// Insertions so far: the stamp of the triangles the current one has looked at.
@@ -644,11 +660,15 @@ impl<'a> Builder<'a> {
     }
 
     fn sees(&self, t: usize, q: u32) -> bool {
+        self.side(t, q) > 0
+    }
+
+    /// The exact side of triangle `t`'s plane `q` is on: 1 beyond, 0 on, −1 behind.
+    fn side(&self, t: usize, q: u32) -> i8 {
         let v = self.tris[t].v;
-        let side = (self.planes[t].sign(self.p(v[0]), self.p(q))).unwrap_or_else(|| {
+        (self.planes[t].sign(self.p(v[0]), self.p(q))).unwrap_or_else(|| {
             orient3d_unfiltered(self.p(v[0]), self.p(v[1]), self.p(v[2]), self.p(q))
-        });
-        side > 0
+        })
     }
 
     /// Adds the triangle `v` with neighbours `nb`, in a free slot if there is one;
@@ -684,6 +704,7 @@ impl<'a> Builder<'a> {
             owner: vec![NONE; pts.len()],
             next: vec![NONE; pts.len()],
             eligible: None,
+            inside: vec![false; pts.len()],
             tets: None,
             round: 0,
             scratch: Scratch::default(),
@@ -731,8 +752,15 @@ impl<'a> Builder<'a> {
             if s.contains(&q) {
                 continue;
             }
-            if let Some(t) = (0..4).find(|&t| self.sees(t, q)) {
-                self.file(t, q);
+            let mut flat = false;
+            let sees = (0..4).find(|&t| {
+                let side = self.side(t, q);
+                flat |= side == 0;
+                side > 0
+            });
+            match sees {
+                Some(t) => self.file(t, q),
+                None => self.inside[q as usize] = !flat,
             }
         }
     }
@@ -814,20 +842,33 @@ impl<'a> Builder<'a> {
         // one old triangle come together and mostly see the same new one (on cocircular
         // prisms a scan of all from the first made a hull of 10^4 points take seconds:
         // thousands of new triangles per insertion).
+        //
+        // An orphan no new triangle sees is inside the new hull (see the module's doc)
+        // and outside the old one (it saw a deleted triangle), so it is on the new
+        // boundary only on a new triangle: strictly behind all of them, it is strictly
+        // inside, for good (hulls only grow).
         let mut last = 0;
         for &q in s.orphans.iter().filter(|&&q| q != p) {
             self.owner[q as usize] = NONE;
-            let sees = |u: &usize| self.sees(*u, q);
+            let mut flat = false;
+            let mut sees = |u: &usize| {
+                let side = self.side(*u, q);
+                flat |= side == 0;
+                side > 0
+            };
             let first = FIRST_SCANNED.min(new.len());
-            let found = (new[..first].iter().position(sees)).or_else(|| {
+            let found = (new[..first].iter().position(&mut sees)).or_else(|| {
                 // The first `first` are known not to see `q`: search the others only.
                 let start = last.max(first);
-                let k = (new[start..].iter().chain(&new[first..start])).position(sees)?;
+                let k = (new[start..].iter().chain(&new[first..start])).position(&mut sees)?;
                 Some(first + (start - first + k) % (new.len() - first))
             });
-            if let Some(k) = found {
-                last = k;
-                self.file(new[k], q);
+            match found {
+                Some(k) => {
+                    last = k;
+                    self.file(new[k], q);
+                }
+                None => self.inside[q as usize] = !flat,
             }
         }
         s.orphans.clear();
@@ -1042,6 +1083,39 @@ mod tests {
                     .find(|f| h.facets_of(b).contains(f) && h.facets_of(c).contains(f));
                 assert_eq!(h.common_facet(a, b, c), least, "{a} {b} {c}");
             }
+        }
+    }
+
+    /// The points the construction leaves out as strictly inside (they skip the facet
+    /// lookup) are strictly behind every facet plane, and they are most of the interior:
+    /// random floats in a ball, and a small integer grid (points on facets, repeats).
+    #[test]
+    fn points_proved_inside_are_strictly_inside() {
+        let mut rng = crate::rng::Rng::new(5);
+        let ball: Vec<Point3> = (0..3000)
+            .map(|_| [0; 3].map(|_| rng.unit() * 2.0 - 1.0))
+            .filter(|x| x.iter().map(|c| c * c).sum::<f64>() <= 1.0)
+            .collect();
+        let grid: Vec<Point3> = (0..3000)
+            .map(|_| [0; 3].map(|_| rng.below(9) as f64))
+            .collect();
+        for (set, least) in [(&ball, 0.95), (&grid, 0.8)] {
+            let (h, inside) = Hull3::build(set);
+            let side = |f: &[u32; 3], x| {
+                let q = f.map(|j| set[j as usize]);
+                orient3d(&q[0], &q[1], &q[2], x)
+            };
+            let interior = (set.iter())
+                .filter(|x| h.facet_planes.iter().all(|f| side(f, x) < 0))
+                .count();
+            for (x, _) in set.iter().zip(&inside).filter(|(_, i)| **i) {
+                assert!(h.facet_planes.iter().all(|f| side(f, x) < 0), "{x:?}");
+            }
+            let proved = inside.iter().filter(|&&i| i).count();
+            assert!(
+                proved as f64 >= least * interior as f64,
+                "{proved} of {interior}"
+            );
         }
     }
 
