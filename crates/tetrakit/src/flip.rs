@@ -34,8 +34,6 @@
 
 use crate::control::{Control, Stopped};
 use crate::geom::{Point3, insphere, orient3d};
-use crate::mesh::face_key;
-use rayon::slice::ParallelSliceMut;
 use std::collections::VecDeque;
 
 const NONE: u32 = u32::MAX;
@@ -187,6 +185,24 @@ fn sorted<const N: usize>(mut v: [u32; N]) -> [u32; N] {
     v
 }
 
+/// The vertices of `t` in increasing order, each with its corner in `t`.
+fn by_vertex(t: &[u32; 4]) -> [(u32, u8); 4] {
+    let mut s = [0, 1, 2, 3].map(|k| (t[k], k as u8));
+    s.sort_unstable();
+    s
+}
+
+/// The vertices of `s` but its `off`-th, in order.
+fn without(s: &[(u32, u8); 4], off: usize) -> [u32; 3] {
+    let v = s.map(|x| x.0);
+    match off {
+        0 => [v[1], v[2], v[3]],
+        1 => [v[0], v[2], v[3]],
+        2 => [v[0], v[1], v[3]],
+        _ => [v[0], v[1], v[2]],
+    }
+}
+
 /// The face of `t` opposite its vertex `k`, sorted.
 fn face(t: &[u32; 4], k: usize) -> [u32; 3] {
     let mut f = [0; 3];
@@ -210,29 +226,51 @@ impl<'a> Mesh<'a> {
             free: Vec::new(),
         };
         m.tets = tets.iter().map(|&t| m.oriented(t)).collect();
-        // Each face as one integer, `(face, t)`: sorting integers is several times
-        // faster than sorting tuples (all distinct, so the order is one on any core).
-        let mut faces: Vec<u128> = Vec::with_capacity(4 * m.tets.len());
-        faces.extend(
-            (m.tets.iter().enumerate())
-                .flat_map(|(t, tet)| (0..4).map(move |k| face_key(face(tet, k), t))),
-        );
-        faces.par_sort_unstable();
-        // The tetrahedron of a face and its vertex off the face.
-        let slot = |x: u128, tets: &[[u32; 4]]| {
-            let (t, f) = (
-                x as u32 as usize,
-                [(x >> 96) as u32, (x >> 64) as u32, (x >> 32) as u32],
-            );
-            (t, tets[t].iter().position(|v| !f.contains(v)).unwrap_or(0))
-        };
-        for w in faces.windows(2) {
-            if w[0] >> 32 == w[1] >> 32 {
-                let ((t, k), (u, j)) = (slot(w[0], &m.tets), slot(w[1], &m.tets));
-                (m.nb[t][k], m.nb[u][j]) = (u as u32, t as u32);
+        m.link_faces();
+        m
+    }
+
+    /// Links each face to the tetrahedron on its other side: the faces bucketed by their
+    /// greatest vertex (one counting pass; most buckets hold a few faces), each bucket
+    /// sorted by the face's two other vertices as one integer, then by the tetrahedron.
+    /// Several times faster than sorting every face as one `u128` at 10^3 tetrahedra. A
+    /// face of more than two tetrahedra (no tetrahedralization) links each of them to the
+    /// next in that order, as before.
+    fn link_faces(&mut self) {
+        let n = self.pts.len();
+        let sorted: Vec<[(u32, u8); 4]> = self.tets.iter().map(by_vertex).collect();
+        // Three faces of a tetrahedron have its greatest vertex, one its second.
+        let mut start = vec![0u32; n + 1];
+        for s in &sorted {
+            start[s[3].0 as usize + 1] += 3;
+            start[s[2].0 as usize + 1] += 1;
+        }
+        for v in 0..n {
+            start[v + 1] += start[v];
+        }
+        let mut fill = start.clone();
+        // `(the face's two least vertices, 4 · tetrahedron + the corner off the face)`.
+        let mut faces = vec![(0u64, 0u64); 4 * self.tets.len()];
+        for (t, s) in sorted.iter().enumerate() {
+            for (off, &(_, corner)) in s.iter().enumerate() {
+                let [a, b, c] = without(s, off);
+                let at = &mut fill[c as usize];
+                faces[*at as usize] = (
+                    u64::from(a) << 32 | u64::from(b),
+                    4 * t as u64 + u64::from(corner),
+                );
+                *at += 1;
             }
         }
-        m
+        for v in 0..n {
+            let bucket = &mut faces[start[v] as usize..start[v + 1] as usize];
+            bucket.sort_unstable();
+            for w in bucket.windows(2).filter(|w| w[0].0 == w[1].0) {
+                let [(t, k), (u, j)] =
+                    [w[0].1, w[1].1].map(|x| ((x / 4) as usize, (x % 4) as usize));
+                (self.nb[t][k], self.nb[u][j]) = (u as u32, t as u32);
+            }
+        }
     }
 
     fn into_tets(self) -> Vec<[u32; 4]> {
@@ -502,6 +540,34 @@ mod tests {
             prop_assert_eq!(certify_hull(&pts, &tets), Ok(()));
             prop_assert_eq!(tets.len() + r, mid);
         }
+    }
+
+    /// Each tetrahedron's neighbour across each face is the other tetrahedron with that
+    /// face, as a search of all finds it (none on the boundary), and the pulled meshes of
+    /// random points on a sphere, far from Delaunay, do flip.
+    #[test]
+    fn neighbours_are_across_each_face() {
+        let mut rng = crate::rng::Rng::new(3);
+        let mut flipped = 0;
+        for case in 0..40 {
+            let seeds: Vec<(f64, f64)> = (0..8 + case).map(|_| (rng.unit(), rng.unit())).collect();
+            let pts = sphere_points(&seeds);
+            let tets = pulled(&pts);
+            let m = Mesh::new(&pts, &tets);
+            for (t, tet) in m.tets.iter().enumerate() {
+                for k in 0..4 {
+                    let f = face(tet, k);
+                    let other = (0..m.tets.len())
+                        .find(|&u| u != t && (0..4).any(|j| face(&m.tets[u], j) == f))
+                        .map_or(NONE, |u| u as u32);
+                    assert_eq!(m.nb[t][k], other, "{t} {k}");
+                }
+            }
+            let mut tets = tets;
+            let f = delaunay(&pts, &mut tets, &Control::new()).unwrap();
+            flipped += f.two_three + f.three_two;
+        }
+        assert!(flipped > 100, "{flipped} flips");
     }
 
     /// Cospherical points (a cube's corners, and a 3×3×3 grid's Kuhn cells): no point is
