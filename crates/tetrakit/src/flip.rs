@@ -407,7 +407,7 @@ impl<'a> Mesh<'a> {
         if !self.alive[t0 as usize] || !t.contains(&a) || !t.contains(&b) {
             return None; // gone, or its slot reused by a tetrahedron off `ab`
         }
-        let (ts, [c, d, e]) = self.ring(a, b, t0)?;
+        let (ts, [c, d, e]) = self.ring(a, b, t0, |_| false)?;
         if self.orient(c, d, e, a) * self.orient(c, d, e, b) >= 0
             || !self.line_through(a, b, [c, d, e])
         {
@@ -418,8 +418,15 @@ impl<'a> Mesh<'a> {
 
     /// For an interior edge `ab` of degree 3 on the tetrahedron `t0`: its three
     /// tetrahedra and their three other vertices, or `None` (another degree, or on the
-    /// boundary). Walks around the edge through the faces `abx`.
-    fn ring(&self, a: u32, b: u32, t0: u32) -> Option<([u32; 3], [u32; 3])> {
+    /// boundary, or a tetrahedron for which `skip` is true met on the way). Walks around
+    /// the edge through the faces `abx`.
+    fn ring(
+        &self,
+        a: u32,
+        b: u32,
+        t0: u32,
+        skip: impl Fn(u32) -> bool,
+    ) -> Option<([u32; 3], [u32; 3])> {
         let others = |t: u32| {
             let mut o = self.tets[t as usize]
                 .into_iter()
@@ -434,7 +441,7 @@ impl<'a> Mesh<'a> {
             // Across the face `abv` of `cur`: the one opposite its fourth vertex.
             let opposite = self.tets[cur as usize].iter().position(|&x| x == behind)?;
             let next = self.nb[cur as usize][opposite];
-            if next == NONE {
+            if next == NONE || skip(next) {
                 return None;
             }
             if next == t0 {
@@ -469,10 +476,9 @@ impl<'a> Mesh<'a> {
     fn flippable_edges(&self) -> Vec<([u32; 2], u32)> {
         let mut e: Vec<([u32; 2], u32)> = (0..self.tets.len() as u32)
             .flat_map(|id| self.tet_edges(id))
-            .filter(|&([a, b], id)| {
-                self.ring(a, b, id)
-                    .is_some_and(|(ts, _)| ts.iter().all(|&t| t >= id))
-            })
+            // Walked from its lowest tetrahedron only: from any other, given up on
+            // meeting a lower one.
+            .filter(|&([a, b], id)| self.ring(a, b, id, |t| t < id).is_some())
             .collect();
         e.sort_unstable();
         e
@@ -612,6 +618,32 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// [`reduce`] ends where no 3-2 flip applies to any edge of any tetrahedron (each
+    /// tried on a fresh mesh), having flipped: pulled meshes of random points on a
+    /// sphere, as they are and after the Delaunay flips.
+    #[test]
+    fn reduce_leaves_no_flip() {
+        let mut rng = crate::rng::Rng::new(8);
+        let mut flipped = 0;
+        for case in 0..30 {
+            let seeds: Vec<(f64, f64)> = (0..8 + case).map(|_| (rng.unit(), rng.unit())).collect();
+            let pts = sphere_points(&seeds);
+            let mut tets = pulled(&pts);
+            if case % 2 == 1 {
+                delaunay(&pts, &mut tets, &Control::new()).unwrap();
+            }
+            flipped += reduce(&pts, &mut tets, &Control::new()).unwrap();
+            let m = Mesh::new(&pts, &tets);
+            for t in 0..m.tets.len() as u32 {
+                for ([a, b], _) in m.tet_edges(t) {
+                    let mut fresh = Mesh::new(&pts, &tets);
+                    assert!(fresh.three_two(a, b, t).is_none(), "{a}{b} on T{t}");
+                }
+            }
+        }
+        assert!(flipped > 30, "{flipped} flips");
     }
 
     /// A stopped control stops the flipping (checked first, then every 4096 steps).
