@@ -663,6 +663,13 @@ impl<'a> Builder<'a> {
         self.side(t, q) > 0
     }
 
+    /// [`Builder::sees`], noting in `flat` when `q` is on the plane.
+    fn sees_noting(&self, t: usize, q: u32, flat: &mut bool) -> bool {
+        let side = self.side(t, q);
+        *flat |= side == 0;
+        side > 0
+    }
+
     /// The exact side of triangle `t`'s plane `q` is on: 1 beyond, 0 on, −1 behind.
     fn side(&self, t: usize, q: u32) -> i8 {
         let v = self.tris[t].v;
@@ -753,12 +760,7 @@ impl<'a> Builder<'a> {
                 continue;
             }
             let mut flat = false;
-            let sees = (0..4).find(|&t| {
-                let side = self.side(t, q);
-                flat |= side == 0;
-                side > 0
-            });
-            match sees {
+            match (0..4).find(|&t| self.sees_noting(t, q, &mut flat)) {
                 Some(t) => self.file(t, q),
                 None => self.inside[q as usize] = !flat,
             }
@@ -851,11 +853,7 @@ impl<'a> Builder<'a> {
         for &q in s.orphans.iter().filter(|&&q| q != p) {
             self.owner[q as usize] = NONE;
             let mut flat = false;
-            let mut sees = |u: &usize| {
-                let side = self.side(*u, q);
-                flat |= side == 0;
-                side > 0
-            };
+            let mut sees = |u: &usize| self.sees_noting(*u, q, &mut flat);
             let first = FIRST_SCANNED.min(new.len());
             let found = (new[..first].iter().position(&mut sees)).or_else(|| {
                 // The first `first` are known not to see `q`: search the others only.

@@ -539,10 +539,10 @@ fn disk(
 /// [`Surface::candidates`] leaves out those strictly inside `CH(ring)`. That stage costs
 /// the ring's hull and a query testing every candidate against its planes, and the
 /// bottom's hull takes a point strictly inside for little (it is proved inside as it is
-/// dropped), so it pays only where it leaves out most: at 10^4, with the stage wherever
-/// the candidates outnumber the ring, coaxial cylinders took 0.206 s and the corner
-/// 0.075 s, 0.171 s and 0.070 s from eightfold on; bent arcs 0.074 s either way and
-/// 0.40 s without the stage (5 alternating runs each).
+/// dropped), so it pays only where it leaves out most. At 10^4 (5 alternating runs
+/// each), coaxial cylinders took 0.206 s and the corner 0.075 s with the stage wherever
+/// the candidates outnumber the ring, 0.171 s and 0.070 s with it from eightfold on;
+/// bent arcs 0.074 s either way and 0.40 s without the stage.
 const RING_STAGE: usize = 8;
 
 /// The most ring vertices [`simplicial_hull`] takes (it tests every triple).
