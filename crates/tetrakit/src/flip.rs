@@ -548,17 +548,28 @@ mod tests {
         }
     }
 
+    /// The pulled tetrahedralizations of `count` sets of random points on a sphere, of
+    /// 8, 9, 10, … points.
+    fn pulled_spheres(seed: u64, count: usize) -> Vec<(Vec<Point3>, Vec<[u32; 4]>)> {
+        let mut rng = crate::rng::Rng::new(seed);
+        (0..count)
+            .map(|case| {
+                let seeds: Vec<(f64, f64)> =
+                    (0..8 + case).map(|_| (rng.unit(), rng.unit())).collect();
+                let pts = sphere_points(&seeds);
+                let tets = pulled(&pts);
+                (pts, tets)
+            })
+            .collect()
+    }
+
     /// Each tetrahedron's neighbour across each face is the other tetrahedron with that
     /// face, as a search of all finds it (none on the boundary), and the pulled meshes of
     /// random points on a sphere, far from Delaunay, do flip.
     #[test]
     fn neighbours_are_across_each_face() {
-        let mut rng = crate::rng::Rng::new(3);
         let mut flipped = 0;
-        for case in 0..40 {
-            let seeds: Vec<(f64, f64)> = (0..8 + case).map(|_| (rng.unit(), rng.unit())).collect();
-            let pts = sphere_points(&seeds);
-            let tets = pulled(&pts);
+        for (pts, tets) in pulled_spheres(3, 40) {
             let m = Mesh::new(&pts, &tets);
             for (t, tet) in m.tets.iter().enumerate() {
                 for k in 0..4 {
@@ -625,12 +636,8 @@ mod tests {
     /// sphere, as they are and after the Delaunay flips.
     #[test]
     fn reduce_leaves_no_flip() {
-        let mut rng = crate::rng::Rng::new(8);
         let mut flipped = 0;
-        for case in 0..30 {
-            let seeds: Vec<(f64, f64)> = (0..8 + case).map(|_| (rng.unit(), rng.unit())).collect();
-            let pts = sphere_points(&seeds);
-            let mut tets = pulled(&pts);
+        for (case, (pts, mut tets)) in pulled_spheres(8, 30).into_iter().enumerate() {
             if case % 2 == 1 {
                 delaunay(&pts, &mut tets, &Control::new()).unwrap();
             }
