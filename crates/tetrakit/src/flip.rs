@@ -231,7 +231,7 @@ impl<'a> Mesh<'a> {
     }
 
     /// Links each face to the tetrahedron on its other side: the faces bucketed by their
-    /// greatest vertex (one counting pass; most buckets hold a few faces), each bucket
+    /// greatest vertex ([`crate::rows::buckets`]; most buckets hold a few faces), each bucket
     /// sorted by the face's two other vertices as one integer, then by the tetrahedron
     /// (sorting every face as one `u128` made [`reduce`] on 2407 tetrahedra a fifth
     /// slower). A face of more than two tetrahedra (no tetrahedralization) links each of
@@ -239,29 +239,15 @@ impl<'a> Mesh<'a> {
     fn link_faces(&mut self) {
         let n = self.pts.len();
         let sorted: Vec<[(u32, u8); 4]> = self.tets.iter().map(by_vertex).collect();
-        // Three faces of a tetrahedron have its greatest vertex, one its second.
-        let mut start = vec![0u32; n + 1];
-        for s in &sorted {
-            start[s[3].0 as usize + 1] += 3;
-            start[s[2].0 as usize + 1] += 1;
-        }
-        for v in 0..n {
-            start[v + 1] += start[v];
-        }
-        let mut fill = start.clone();
         // `(the face's two least vertices, 4 · tetrahedron + the corner off the face)`.
-        let mut faces = vec![(0u64, 0u64); 4 * self.tets.len()];
-        for (t, s) in sorted.iter().enumerate() {
-            for (off, &(_, corner)) in s.iter().enumerate() {
+        let faces = sorted.iter().enumerate().flat_map(|(t, s)| {
+            (0..4).map(move |off| {
                 let [a, b, c] = without(s, off);
-                let at = &mut fill[c as usize];
-                faces[*at as usize] = (
-                    u64::from(a) << 32 | u64::from(b),
-                    4 * t as u64 + u64::from(corner),
-                );
-                *at += 1;
-            }
-        }
+                let corner = 4 * t as u64 + u64::from(s[off].1);
+                (c as usize, (u64::from(a) << 32 | u64::from(b), corner))
+            })
+        });
+        let (start, mut faces) = crate::rows::buckets(n, faces);
         for v in 0..n {
             let bucket = &mut faces[start[v] as usize..start[v + 1] as usize];
             bucket.sort_unstable();
