@@ -982,7 +982,9 @@ fn placing_tiles_every_shell_in_any_order() {
 /// Every degenerate shell above, both methods: certified, filling the shell, within
 /// 9n − 6, whether the removal took every outer vertex or left some to the placing
 /// (`Finish::Placing`, the removal's order reversed). Some of each happen, so both
-/// endings are exercised.
+/// endings are exercised; the placing ends 52 of the 2,298 runs, and a removal that
+/// leaves an edge of `Q` out of a bottom's polygon facet would leave it more (138 with
+/// Q's edges recovered only where points are refined in: tried).
 #[test]
 fn every_degenerate_shell_is_tetrahedralized() {
     let mut endings = [0usize; 2];
@@ -998,7 +1000,10 @@ fn every_degenerate_shell_is_tetrahedralized() {
             endings[usize::from(mesh.finished_by == Finish::Placing)] += 1;
         }
     }
-    assert!(endings[0] > 2000 && endings[1] > 10, "{endings:?}");
+    assert!(
+        endings[0] > 2000 && (10..=60).contains(&endings[1]),
+        "{endings:?}"
+    );
 }
 
 /// BIGCAP-REMOVE's steps (`Method::Thesis`, the lemma's check left out) on the issue's

@@ -74,21 +74,20 @@ impl QEdges {
         super::with_key(&self.edges, v).iter().map(|e| e.1)
     }
 
-    /// Recovers in `tris` every edge of `Q` whose ends are both corners of `tris` and lie
-    /// in the plane of one of its facets, keeping `edge` (`tris`'s [`Edges`]) up to date;
-    /// `walls` (sorted) are never flipped.
+    /// Recovers in `tris` every edge of `Q` whose ends are both among `corners` (sorted
+    /// corners of `tris`: those where an edge may be missing) and lie in the plane of
+    /// one of its facets, keeping `edge` (`tris`'s [`Edges`]) up to date; `walls`
+    /// (sorted) are never flipped.
     pub(super) fn recover(
         &self,
         pts: &[Point3],
         (tris, edge): (&mut [[u32; 3]], &mut Edges),
         walls: &[(u32, u32)],
+        corners: &[u32],
     ) -> Result<(), &'static str> {
         if self.edges.is_empty() {
             return Ok(());
         }
-        let mut corners: Vec<u32> = tris.iter().flatten().copied().collect();
-        corners.sort_unstable();
-        corners.dedup();
         let here = |w: &u32| corners.binary_search(w).is_ok();
         let mut wanted: Vec<(u32, u32)> = (corners.iter())
             .flat_map(|&v| self.at(v).map(move |w| (v, w)))

@@ -476,6 +476,7 @@ impl<'a> Surface<'a> {
         // hull they stay hidden.
         let mut corners: Vec<u32> = tris.iter().flatten().copied().collect();
         corners.sort_unstable();
+        corners.dedup();
         let flat: Vec<u32> = on_hull
             .into_iter()
             .filter(|v| corners.binary_search(v).is_err())
@@ -484,16 +485,42 @@ impl<'a> Surface<'a> {
         if refine(self.pts, &mut tris, &flat)? != flat.len() {
             return Err(Refused("a point on the hull is on none of its triangles"));
         }
-        // Every facet a triangle: an edge of Q in a facet is one of its edges already.
-        let simplicial = hull.dimension == 3 && hull.facet_count() == hull.triangles.len();
+        // An edge of Q between two corners in a facet's plane lies in that facet, so it
+        // can be missing only where the facet has more triangles than one, or where
+        // points were refined in.
+        let loose = match (hull.dimension, flat.is_empty()) {
+            (3, true) => polygon_corners(&hull, &local),
+            _ => {
+                corners.extend(flat);
+                corners.sort_unstable();
+                corners.dedup();
+                corners
+            }
+        };
         let mut edges = recover::edges_of(&tris);
-        if !simplicial || !flat.is_empty() {
+        if !loose.is_empty() {
             self.q_edges
-                .recover(self.pts, (&mut tris, &mut edges), boundary)
+                .recover(self.pts, (&mut tris, &mut edges), boundary, &loose)
                 .map_err(Refused)?;
         }
         disk(tip, &tris, &edges, boundary)
     }
+}
+
+/// The corners of `hull`'s triangles that share their facet with another triangle, named
+/// by `name`, sorted.
+fn polygon_corners(hull: &Hull3, name: &[u32]) -> Vec<u32> {
+    let mut count = vec![0u32; hull.facet_count()];
+    for &f in &hull.triangle_facet {
+        count[f as usize] += 1;
+    }
+    let mut out: Vec<u32> = (hull.triangles.iter().zip(&hull.triangle_facet))
+        .filter(|&(_, &f)| count[f as usize] > 1)
+        .flat_map(|(t, _)| t.map(|k| name[k as usize]))
+        .collect();
+    out.sort_unstable();
+    out.dedup();
+    out
 }
 
 /// The disk of the closed triangulated surface `tris` (with its `edges`) bounded by
