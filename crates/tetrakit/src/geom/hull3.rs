@@ -327,7 +327,7 @@ impl Hull3 {
             // A corner of three facets is a corner of each facet it lies on, so the
             // triangles at it name them all; any other point is looked up.
             let at = &incident[start[i] as usize..start[i + 1] as usize];
-            if at.len() >= 3 {
+            if !at.is_empty() {
                 out.extend_from_slice(at);
                 return;
             }
