@@ -15,7 +15,9 @@
 # BIGCAP_TIMEOUT seconds per run ("-" past it).
 # The last column is the largest weight of §4.4's ledger on the cap removal (JSON
 # `weights.max`; Theorem 4.2 claims at most 8 for BIGCAP-REMOVE).
-# Usage: bash benches/shell.sh      (env: SIZES, BERN, FAMILIES, RUNS)   Needs root for apt-get.
+# Runs of 10 to 50 ms (n up to 2000) are repeated RUNS_SMALL times, the others RUNS: at
+# 7 runs the medians of tetrakit's 10 ms rows moved by a tenth between batches here.
+# Usage: bash benches/shell.sh      (env: SIZES, BERN, FAMILIES, RUNS, RUNS_SMALL)   Needs root for apt-get.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 SIZES=${SIZES:-"1000 10000 100000"}
@@ -23,6 +25,7 @@ BERN=${BERN:-"1000:250 4000:1000 10000:2500"}
 FAMILIES=${FAMILIES:-"twisted:10000 coaxial:10000 arcs:10000 lattice:10000 circles:1000 dome:10000 corner:10000"}
 BIGCAP_TIMEOUT=${BIGCAP_TIMEOUT:-60}
 RUNS=${RUNS:-3}
+RUNS_SMALL=${RUNS_SMALL:-21}
 WORK=${WORK:-/tmp/tetrakit-bench-shell}
 mkdir -p "$WORK"
 if ! command -v tetgen >/dev/null || [ ! -x /usr/bin/time ]; then
@@ -40,15 +43,18 @@ timed() { python3 benches/timed.py "$@"; }
 # peak CMD...: CMD's peak resident memory in MB, from one run under GNU time.
 peak() { /usr/bin/time -f "%M" -o "$WORK/m" "$@" >/dev/null 2>&1 || true; awk '{print int($1/1024)}' "$WORK/m"; }
 
-# One row: the shell OUTER INNER against TetGen on the same surfaces (HOLE: a point
-# inside the inner polytope, "0 0 0" when not given).
+# How many runs a row of about N vertices gets.
+runs_for() { if [ "$1" -le 2000 ]; then echo "$RUNS_SMALL"; else echo "$RUNS"; fi; }
+
+# One row: the shell OUTER INNER against TetGen on the same surfaces, RUNS times (HOLE:
+# a point inside the inner polytope, "0 0 0" when not given).
 row() {
-  local label=$1 o=$2 i=$3 key=$4 hole=${5:-"0 0 0"}
+  local label=$1 o=$2 i=$3 key=$4 runs=$5 hole=${6:-"0 0 0"}
   "$TK" shell "$o" "$i" --json -o "$WORK/s$key.ele" >"$WORK/s.json"
   # shellcheck disable=SC2086
   python3 benches/shell_poly.py "$WORK/s$key.ele" "$WORK/p$key.poly" $hole
   tk=(); t1=(); tb=(); tg=(); ty=()
-  for _ in $(seq "$RUNS"); do
+  for _ in $(seq "$runs"); do
     timed "$WORK/t1" "$TK" shell "$o" "$i" --json -o "$WORK/m.ele" >/dev/null
     tk+=("$(elapsed "$WORK/t1")")
     RAYON_NUM_THREADS=1 timed "$WORK/t5" "$TK" shell "$o" "$i" --json -o "$WORK/m.ele" >/dev/null
@@ -86,18 +92,18 @@ for n in $SIZES; do
   o="$WORK/o$n.xyz"; i="$WORK/i$n.xyz"
   "$TK" generate nested --n-outer $((n / 2)) --n-inner $((n / 2)) --gap 0.2 --seed 1 \
     --outer-output "$o" --inner-output "$i" >/dev/null
-  row spheres "$o" "$i" "$n"
+  row spheres "$o" "$i" "$n" "$(runs_for "$n")"
 done
 for d in $BERN; do
   ridge=${d%:*}; ring=${d#*:}
   o="$WORK/bo$ridge.xyz"; i="$WORK/bi$ridge.xyz"
   "$TK" generate bern-disk --ridge "$ridge" --ring "$ring" --outer-output "$o" --inner-output "$i" >/dev/null
-  row "Bern disk $ridge/$ring" "$o" "$i" "b$ridge"
+  row "Bern disk $ridge/$ring" "$o" "$i" "b$ridge" "$(runs_for $((ridge + 2 * ring)))"
 done
 for f in $FAMILIES; do
   name=${f%:*}; n=${f#*:}
   o="$WORK/fo$name$n.xyz"; i="$WORK/fi$name$n.xyz"
   python3 benches/shell_families.py "$name" "$n" "$o" "$i"
   hole="0 0 0"; [ "$name" = dome ] && hole="0 0 0.25"; [ "$name" = corner ] && hole="0.25 0.25 0.25"
-  row "$name" "$o" "$i" "f$name$n" "$hole"
+  row "$name" "$o" "$i" "f$name$n" "$(runs_for "$n")" "$hole"
 done

@@ -371,6 +371,8 @@ fn bern_disks_within_the_bound_after_flips() {
         let ended = o.finished_by.unwrap();
         assert_eq!(ended == Finish::Delaunay, flips, "{ended:?}");
         if flips {
+            let cert = certify_shell(&shell.points, &o.tets, &shell.inner);
+            assert_eq!(cert, Ok(()));
             assert!(flipped.iter().all(|&f| t <= f), "{t} against {flipped:?}");
             assert_eq!((o.pieces, o.weights.is_none()), (Some(0), true));
             // The Delaunay route runs beside the removal on a spare core, after it on
