@@ -324,8 +324,9 @@ impl Hull3 {
         // be inside (few on a small hull, none on most).
         let lookup = std::sync::OnceLock::new();
         let on = |i: usize, x: &Point3, out: &mut Vec<u32>| {
-            // A corner of three facets is a corner of each facet it lies on, so the
-            // triangles at it name them all; any other point is looked up.
+            // A triangle's corner lies on exactly the facets of its triangles (the
+            // surface is embedded: no other triangle holds it), so they name them all;
+            // a point that is no triangle's corner is looked up.
             let at = &incident[start[i] as usize..start[i + 1] as usize];
             if !at.is_empty() {
                 out.extend_from_slice(at);
