@@ -476,7 +476,6 @@ impl<'a> Surface<'a> {
         // hull they stay hidden.
         let mut corners: Vec<u32> = tris.iter().flatten().copied().collect();
         corners.sort_unstable();
-        corners.dedup();
         let flat: Vec<u32> = on_hull
             .into_iter()
             .filter(|v| corners.binary_search(v).is_err())
