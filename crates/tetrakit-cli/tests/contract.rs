@@ -12,6 +12,12 @@ fn bad_input_exits_2_with_one_line_naming_file_and_line() {
         ("c.node", "4 3 0 0\n1 0 0 0\n", "truncated"),
         ("d.node", "", "empty"),
         ("e.node", "2 3 0 0\n1 0 0 0\n2 0 0 0\n", "coincide"),
+        // -0 is 0, though a point at x = -0 sorts between the two copies.
+        (
+            "g.xyz",
+            "-0 1 2\n-0 5 5\n0 1 2\n3 3 3\n",
+            "g.xyz:3: points 0 and 2 coincide",
+        ),
     ];
     for (name, text, needle) in cases {
         let p = d.join(name);

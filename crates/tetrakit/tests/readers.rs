@@ -278,6 +278,12 @@ fn what_gmsh_writes_reads_and_coincident_vertices_are_a_no() {
     assert_eq!(pairs.len(), 3, "{r:?}");
     assert_eq!(pairs[0], (vec![3, 6], vec![0, 1]));
     assert!(read_input(&write("apart2.msh", apart)).is_err());
+    // The same with -0 in the second copy: -0 is 0, so the same three pairs.
+    let signed = apart.replace("5 1 0 0\n6 0 1 0\n7 0 0 1", "5 1 -0 0\n6 -0 1 0\n7 -0 0 1");
+    let m = read_input_with(&write("signed.msh", signed), MESH_OPTS).unwrap();
+    let r = verify(&m.points, &m.tets, None);
+    let coincident = (r.problems.iter()).filter(|p| p.kind == ProblemKind::CoincidentVertices);
+    assert_eq!(coincident.count(), 3, "{r:?}");
 }
 
 /// Class 4: Medit without `End`, quadratic VTK tetrahedra by their corners.

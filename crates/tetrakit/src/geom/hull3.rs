@@ -969,6 +969,42 @@ mod tests {
         assert_is_hull(&pts, &Hull3::new(&pts));
     }
 
+    /// Zeros written -0 or 0 at random (equal numbers that `total_cmp` alone tells
+    /// apart) give the hull of the same points: the same facets, boundary and groups.
+    #[test]
+    fn signed_zeros_are_zeros() {
+        let mut rng = crate::rng::Rng::new(41);
+        for round in 0..2000 {
+            let side = 2 + round % 4;
+            let len = 4 + rng.below(30);
+            let mut coordinate = || rng.below(side) as f64 - (side / 2) as f64;
+            let pts: Vec<Point3> = (0..len).map(|_| [0; 3].map(|_| coordinate())).collect();
+            let signed: Vec<Point3> = (pts.iter())
+                .map(|p| {
+                    p.map(|x| {
+                        if x == 0.0 && rng.below(2) == 0 {
+                            -0.0
+                        } else {
+                            x
+                        }
+                    })
+                })
+                .collect();
+            let (h, s) = (Hull3::new(&pts), Hull3::new(&signed));
+            assert_eq!(h.dimension, s.dimension, "{signed:?}");
+            if h.dimension < 3 {
+                continue;
+            }
+            assert_is_hull(&signed, &s);
+            assert_eq!(h.facet_count(), s.facet_count(), "{signed:?}");
+            assert_eq!(
+                h.polytope_edges(&pts),
+                s.polytope_edges(&signed),
+                "{signed:?}"
+            );
+        }
+    }
+
     /// Every point on the inner side of every facet plane, on the boundary exactly when
     /// on a facet plane, and the triangles a closed surface.
     fn assert_is_hull(pts: &[Point3], h: &Hull3) {

@@ -730,11 +730,24 @@ pub fn bounding_box<const N: usize>(points: &[[f64; N]]) -> ([f64; N], [f64; N])
     (lo, hi)
 }
 
-/// Lexicographic comparison of points (exact).
+/// Lexicographic comparison of points (exact), consistent with `==` on points: `-0.0`
+/// and `0.0` compare equal (`total_cmp` alone would put every `-0.0` before every
+/// `0.0`, so that equal points need not be neighbours in a sorted list and a tie on `x`
+/// at zero would not be decided by `y`). The coordinates are finite (the readers refuse
+/// NaN).
+///
+/// ```
+/// use tetrakit::geom::predicates::lex_cmp;
+/// use std::cmp::Ordering;
+/// assert_eq!(lex_cmp(&[-0.0, 5.0, 0.0], &[0.0, 1.0, 0.0]), Ordering::Greater);
+/// assert_eq!(lex_cmp(&[-0.0, 1.0, 0.0], &[0.0, 1.0, -0.0]), Ordering::Equal);
+/// ```
 pub fn lex_cmp(a: &Point3, b: &Point3) -> std::cmp::Ordering {
-    a[0].total_cmp(&b[0])
-        .then(a[1].total_cmp(&b[1]))
-        .then(a[2].total_cmp(&b[2]))
+    let key = |x: f64| x + 0.0;
+    key(a[0])
+        .total_cmp(&key(b[0]))
+        .then(key(a[1]).total_cmp(&key(b[1])))
+        .then(key(a[2]).total_cmp(&key(b[2])))
 }
 
 /// For three collinear points (2D or 3D), true when `p` lies strictly between `a` and `b`.

@@ -208,7 +208,11 @@ fn ear_clip(
     // Counter-clockwise: the corner at the lowest-leftmost point is convex.
     let lowest = (0..poly.len())
         .min_by(|&i, &j| {
-            let (a, b) = (flat(poly[i]), flat(poly[j]));
+            // `+ 0.0`: -0 and 0 tie, so that `x` decides between them.
+            let (a, b) = (
+                flat(poly[i]).map(|x| x + 0.0),
+                flat(poly[j]).map(|x| x + 0.0),
+            );
             a[1].total_cmp(&b[1]).then(a[0].total_cmp(&b[0]))
         })
         .expect("a polygon");
