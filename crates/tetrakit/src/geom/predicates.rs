@@ -735,13 +735,6 @@ pub fn bounding_box<const N: usize>(points: &[[f64; N]]) -> ([f64; N], [f64; N])
 /// `0.0`, so that equal points need not be neighbours in a sorted list and a tie on `x`
 /// at zero would not be decided by `y`). The coordinates are finite (the readers refuse
 /// NaN).
-///
-/// ```
-/// use tetrakit::geom::predicates::lex_cmp;
-/// use std::cmp::Ordering;
-/// assert_eq!(lex_cmp(&[-0.0, 5.0, 0.0], &[0.0, 1.0, 0.0]), Ordering::Greater);
-/// assert_eq!(lex_cmp(&[-0.0, 1.0, 0.0], &[0.0, 1.0, -0.0]), Ordering::Equal);
-/// ```
 pub fn lex_cmp(a: &Point3, b: &Point3) -> std::cmp::Ordering {
     let key = |x: f64| x + 0.0;
     key(a[0])
@@ -913,6 +906,19 @@ mod tests {
     }
 
     use super::*;
+
+    #[test]
+    fn lex_cmp_ties_signed_zeros() {
+        use std::cmp::Ordering;
+        assert_eq!(
+            lex_cmp(&[-0.0, 5.0, 0.0], &[0.0, 1.0, 0.0]),
+            Ordering::Greater
+        );
+        assert_eq!(
+            lex_cmp(&[-0.0, 1.0, 0.0], &[0.0, 1.0, -0.0]),
+            Ordering::Equal
+        );
+    }
 
     #[test]
     fn orient3d_convention_matches_tetgen() {
