@@ -378,6 +378,10 @@ fn only_tets(path: &Path, input: &Input, opts: ReadOptions) -> Result<(), InputE
     }
 }
 
+/// The size from which the checks of [`validate`] run on every core: below it, waking
+/// the other threads costs more than they save (reading 10^3 points took twice as long).
+const PARALLEL_FROM: usize = 1 << 14;
+
 /// The checks every input passes, whatever read it, so that no reader can skip them:
 /// every coordinate finite and in the range where the predicates are exact, then
 /// (unless a mesh is read for its tetrahedra alone, see [`ReadOptions::mesh`]) no
@@ -403,8 +407,8 @@ fn validate(input: &Input, opts: ReadOptions) -> Result<(), InputError> {
 /// Every coordinate finite and within [`coordinate_in_range`]; the error names the first
 /// point outside by the file's number and line.
 fn check_coordinates(input: &Input) -> Result<(), InputError> {
-    let bad =
-        (input.points.par_iter()).position_first(|p| !p.iter().all(|&x| coordinate_in_range(x)));
+    let bad = (input.points.par_iter().with_min_len(PARALLEL_FROM))
+        .position_first(|p| !p.iter().all(|&x| coordinate_in_range(x)));
     let Some(k) = bad else { return Ok(()) };
     let x = input.points[k]
         .into_iter()
@@ -649,7 +653,8 @@ fn check_segments(
             l => (l as usize, format!("line {l}")),
         }
     };
-    if let Some(k) = segs.par_iter().position_first(|s| s[0] == s[1]) {
+    let segments = || segs.par_iter().with_min_len(PARALLEL_FROM);
+    if let Some(k) = segments().position_first(|s| s[0] == s[1]) {
         let (line, name) = at(k);
         return Err(InputError::new(
             path,
@@ -660,8 +665,7 @@ fn check_segments(
             ),
         ));
     }
-    let n = segs
-        .par_iter()
+    let n = segments()
         .map(|s| s[0].max(s[1]) as usize + 1)
         .max()
         .unwrap_or(0);
@@ -674,6 +678,7 @@ fn check_segments(
     // The repeat whose second listing comes first.
     let first = (0..n)
         .into_par_iter()
+        .with_min_len(PARALLEL_FROM)
         .filter_map(|lo| {
             rows[start[lo]..start[lo + 1]]
                 .windows(2)
@@ -820,7 +825,11 @@ fn check_distinct_points(input: &Input) -> Result<(), InputError> {
 /// Two equal points `(a, b)`, `a < b`, if any (the first pair in lexicographic order).
 fn coincident_pair(pts: &[Point3]) -> Option<(usize, usize)> {
     let mut order: Vec<u32> = (0..pts.len() as u32).collect();
-    order.par_sort_unstable_by(|&a, &b| lex_cmp(&pts[a as usize], &pts[b as usize]));
+    let lex = |&a: &u32, &b: &u32| lex_cmp(&pts[a as usize], &pts[b as usize]);
+    match pts.len() < PARALLEL_FROM {
+        true => order.sort_unstable_by(lex),
+        false => order.par_sort_unstable_by(lex),
+    }
     order.windows(2).find_map(|w| {
         let (a, b) = (w[0].min(w[1]) as usize, w[0].max(w[1]) as usize);
         (pts[a] == pts[b]).then_some((a, b))
