@@ -15,7 +15,8 @@
 //! directed as in the star, without crossing a link edge. Its triangles that `v` sees
 //! strictly are the bottoms of the cap's tetrahedra `v·t`; those in a plane through `v`
 //! (a coplanar facet of `P̄`) are kept on the surface without a tetrahedron. When `L ∪ C`
-//! is flat, `K` is a polygon and the bottom is the base of `CH(v ∪ L ∪ C)`, reversed.
+//! is flat, `K` is a polygon and the bottom is the base of `CH(v ∪ L ∪ C)`, reversed (a
+//! fan of it when `C` is empty and every point of `L` is a corner, [`flat_fan`]).
 //!
 //! **Removing several at once** (a bigcap, §4.2): the same with `v`'s star replaced by
 //! the union of the stars of a connected vertex set `U` whose removal leaves a disk
@@ -33,7 +34,10 @@
 
 use super::hidden::{Hidden, Region};
 use super::recover::{self, QEdges};
-use crate::geom::{Hull3, Plane, Point3, bounding_box, orient2d_drop, orient3d, projection_axis};
+use crate::geom::{
+    Hull2, Hull3, Plane, Point3, bounding_box, collinear3, drop_axis, orient2d_drop, orient3d,
+    projection_axis,
+};
 use rustc_hash::FxHashMap as HashMap;
 
 /// The triangulated surface of the current hull (cloned by Step 3a's search, which tries
@@ -438,6 +442,18 @@ impl<'a> Surface<'a> {
         {
             return disk(tip, &tris, &recover::edges_of(&tris), boundary);
         }
+        if candidates.is_empty()
+            && let Some(mut tris) = flat_fan(self.pts, ring, tip)
+        {
+            // Q's edges between corners of the polygon may be its diagonals.
+            let mut edges = recover::edges_of(&tris);
+            let mut corners = ring.to_vec();
+            corners.sort_unstable();
+            self.q_edges
+                .recover(self.pts, (&mut tris, &mut edges), boundary, &corners)
+                .map_err(Refused)?;
+            return disk(tip, &tris, &edges, boundary);
+        }
         let mut local: Vec<u32> = ring.to_vec();
         local.extend(candidates);
         let coords: Vec<Point3> = local.iter().map(|&v| self.pts[v as usize]).collect();
@@ -619,6 +635,35 @@ fn simplicial_hull(pts: &[Point3], ring: &[u32]) -> Option<Vec<[u32; 3]>> {
     (tris.len() == 2 * d - 4).then_some(tris)
 }
 
+/// The bottom of a flat ring with nothing below it, when the ring is a strictly convex
+/// polygon (every point a corner) and the tip is off its plane: a fan of the polygon, each
+/// triangle facing the tip. What the flat ring's two hulls (the ring's, then the cone's
+/// from the tip) would give up to the choice of diagonals, at a fraction of the cost (a
+/// hundred such rings on the lattice spheres of 10^3 vertices). `None` otherwise: the
+/// hulls decide, with the ring's points on edges.
+fn flat_fan(pts: &[Point3], ring: &[u32], tip: u32) -> Option<Vec<[u32; 3]>> {
+    let p = |v: u32| &pts[v as usize];
+    let (a, b) = (*ring.first()?, *ring.get(1)?);
+    let c = *ring[2..].iter().find(|&&c| !collinear3(p(a), p(b), p(c)))?;
+    let off = |x: u32| orient3d(p(a), p(b), p(c), p(x)) != 0;
+    if !off(tip) || ring.iter().any(|&x| off(x)) {
+        return None;
+    }
+    let axis = projection_axis(p(a), p(b), p(c))?;
+    let flat: Vec<_> = ring.iter().map(|&v| drop_axis(p(v), axis)).collect();
+    let polygon = Hull2::new(&flat).vertices;
+    if polygon.len() != ring.len() {
+        return None;
+    }
+    let v = |k: usize| ring[polygon[k] as usize];
+    let fan = (1..polygon.len() - 1).map(|k| [v(0), v(k), v(k + 1)]);
+    // Every triangle of the fan turns as its polygon does: the first decides.
+    Some(match orient3d(p(v(0)), p(v(1)), p(v(2)), p(tip)) > 0 {
+        true => fan.collect(),
+        false => fan.map(|[x, y, z]| [x, z, y]).collect(),
+    })
+}
+
 /// Each triangle turned to start at its least corner, sorted: two sets of oriented
 /// triangles are the same exactly when these are.
 fn canonical(tris: &[[u32; 3]]) -> Vec<[u32; 3]> {
@@ -779,5 +824,73 @@ mod tests {
             }
         }
         assert!(answered > 2000 && declined > 2000, "{answered} {declined}");
+    }
+
+    /// [`flat_fan`] against the cone's hull on 3 to 8 points of a tilted plane's integer
+    /// grid (collinear points and points inside the polygon common), the tip off the plane
+    /// or in it. It answers exactly when the tip is off the plane and every point is a
+    /// corner of the polygon, and then with `k − 2` triangles facing the tip whose boundary
+    /// (the directed edges without their reverse) is the base of the cone's hull, reversed.
+    #[test]
+    fn flat_fans_agree_with_the_cone_hull() {
+        let mut rng = crate::rng::Rng::new(7);
+        let boundary = |tris: &[[u32; 3]]| {
+            let e: Vec<(u32, u32)> = (tris.iter())
+                .flat_map(|t| (0..3).map(move |i| (t[i], t[(i + 1) % 3])))
+                .collect();
+            let mut b: Vec<_> = e
+                .iter()
+                .filter(|&&(a, b)| !e.contains(&(b, a)))
+                .copied()
+                .collect();
+            b.sort_unstable();
+            b
+        };
+        let (mut answered, mut declined) = (0, 0);
+        for case in 0..4000 {
+            let n = 3 + case % 6;
+            let mut pts: Vec<Point3> = Vec::new();
+            while pts.len() < n {
+                let (x, y) = (rng.below(4) as f64, rng.below(4) as f64);
+                let p = [x, y, 2.0 * x - y];
+                if !pts.contains(&p) {
+                    pts.push(p);
+                }
+            }
+            let (x, y) = (rng.below(4) as f64, rng.below(4) as f64);
+            let lift = [0.0, 1.0, -3.0][case % 3];
+            pts.push([x, y, 2.0 * x - y + lift]);
+            let (ring, tip): (Vec<u32>, u32) = ((0..n as u32).collect(), n as u32);
+            let cone = Hull3::new(&pts);
+            let flat: Vec<Point3> = pts[..n].to_vec();
+            let corners = Hull3::new(&flat);
+            let convex = corners.dimension == 2 && {
+                let axis = projection_axis(&pts[0], &pts[1], &pts[2])
+                    .or_else(|| (3..n).find_map(|k| projection_axis(&pts[0], &pts[1], &pts[k])));
+                axis.is_some_and(|ax| {
+                    let d: Vec<_> = flat.iter().map(|p| drop_axis(p, ax)).collect();
+                    Hull2::new(&d).vertices.len() == n
+                })
+            };
+            let got = flat_fan(&pts, &ring, tip);
+            assert_eq!(got.is_some(), lift != 0.0 && convex, "case {case}: {pts:?}");
+            let Some(tris) = got else {
+                declined += 1;
+                continue;
+            };
+            answered += 1;
+            assert_eq!(tris.len(), n - 2, "case {case}");
+            let p = |v: u32| &pts[v as usize];
+            assert!(
+                tris.iter()
+                    .all(|t| orient3d(p(t[0]), p(t[1]), p(t[2]), p(tip)) > 0)
+            );
+            let base: Vec<[u32; 3]> = (cone.triangles.iter())
+                .filter(|t| !t.contains(&tip))
+                .map(|t| [t[0], t[2], t[1]])
+                .collect();
+            assert_eq!(boundary(&tris), boundary(&base), "case {case}: {pts:?}");
+        }
+        assert!(answered > 500 && declined > 1000, "{answered} {declined}");
     }
 }
