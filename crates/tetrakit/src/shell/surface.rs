@@ -443,16 +443,12 @@ impl<'a> Surface<'a> {
             return disk(tip, &tris, &recover::edges_of(&tris), boundary);
         }
         if candidates.is_empty()
-            && let Some(mut tris) = flat_fan(self.pts, ring, tip)
+            && let Some(tris) = flat_fan(self.pts, ring, tip)
         {
             // Q's edges between corners of the polygon may be its diagonals.
-            let mut edges = recover::edges_of(&tris);
             let mut corners = ring.to_vec();
             corners.sort_unstable();
-            self.q_edges
-                .recover(self.pts, (&mut tris, &mut edges), boundary, &corners)
-                .map_err(Refused)?;
-            return disk(tip, &tris, &edges, boundary);
+            return self.recovered_disk(tip, tris, &corners, boundary);
         }
         let mut local: Vec<u32> = ring.to_vec();
         local.extend(candidates);
@@ -512,10 +508,22 @@ impl<'a> Surface<'a> {
                 corners
             }
         };
+        self.recovered_disk(tip, tris, &loose, boundary)
+    }
+
+    /// The [`disk`] of `tris` bounded by `boundary`, once Q's edges between the `loose`
+    /// corners (sorted) are edges of `tris`.
+    fn recovered_disk(
+        &self,
+        tip: u32,
+        mut tris: Vec<[u32; 3]>,
+        loose: &[u32],
+        boundary: &[(u32, u32)],
+    ) -> Result<Vec<[u32; 3]>, Refused> {
         let mut edges = recover::edges_of(&tris);
         if !loose.is_empty() {
             self.q_edges
-                .recover(self.pts, (&mut tris, &mut edges), boundary, &loose)
+                .recover(self.pts, (&mut tris, &mut edges), boundary, loose)
                 .map_err(Refused)?;
         }
         disk(tip, &tris, &edges, boundary)
