@@ -51,8 +51,8 @@ fn shell_between_nested_spheres() {
     );
 }
 
-/// A box on a facet of a box where the removal leaves outer vertices no cap takes: the
-/// shell is placed instead (`finished_by: "placing"`, said in the text), a certified YES
+/// A box on a facet of a box (`[3, 4] × [1, 2] × [1, 3]` in `[0, 4]³`) where the removal
+/// leaves outer vertices no cap takes: the shell is placed instead (`finished_by: "placing"`, said in the text), a certified YES
 /// that `check` accepts, never an error.
 #[test]
 fn shell_finished_by_placing() {
@@ -67,7 +67,7 @@ fn shell_finished_by_placing() {
         .map(|i| [i >> 2, (i >> 1) & 1, i & 1].map(|b| 4 * b))
         .collect();
     let inner: Vec<[u8; 3]> = (0..8u8)
-        .map(|i| [2 * (i >> 2), 1 + ((i >> 1) & 1), 1 + (i & 1)])
+        .map(|i| [3 + (i >> 2), 1 + ((i >> 1) & 1), 1 + 2 * (i & 1)])
         .collect();
     std::fs::write(&o, cube(&outer)).unwrap();
     std::fs::write(&i, cube(&inner)).unwrap();

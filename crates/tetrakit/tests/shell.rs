@@ -1021,7 +1021,7 @@ fn placing_tiles_every_shell_in_any_order() {
 /// Every degenerate shell above, both methods: certified, filling the shell, within
 /// 9n − 6, whether the removal took every outer vertex or left some to the placing
 /// (`Finish::Placing`, the removal's order reversed). Some of each happen, so both
-/// endings are exercised; the placing ends 49 of the 2,298 runs, and a removal that
+/// endings are exercised; the placing ends 34 of the 2,298 runs, and a removal that
 /// leaves an edge of `Q` out of a bottom's polygon facet would leave it more (138 with
 /// Q's edges recovered only where points are refined in: tried).
 #[test]

@@ -132,9 +132,75 @@ impl Hull3 {
             triangles,
             ..Default::default()
         };
-        h.build_facets(points, &neighbours);
+        h.build_facets(points, &neighbours, |_, _| None);
         h.neighbours = neighbours;
         (h, b.inside)
+    }
+
+    /// The hull of `points`, whose first ones must be the points this hull was built on
+    /// (the same, in the same order), from a copy of it with the others inserted one by
+    /// one: for a few points added to a large hull, a fraction of building it anew.
+    /// `None` when this hull is flat or has more points than `points`.
+    ///
+    /// A point added that sees no triangle strictly is on or inside the hull and is not
+    /// inserted. A corner whose triangles are all gone is strictly inside: the point
+    /// inserted that saw them all strictly lies beyond every plane of its triangles, so
+    /// the corner is inside the segment from that point to a point strictly inside the
+    /// old hull. With the points strictly inside this hull, those are not looked up;
+    /// points on its boundary that are no corner are (see [`Hull3::facets_of`]).
+    pub(crate) fn extended(&self, points: &[Point3]) -> Option<Hull3> {
+        let base = self.facet_start.len().checked_sub(1)?;
+        if self.dimension != 3 || points.len() < base {
+            return None;
+        }
+        let mut b = Builder::new(points);
+        for (v, nb) in self.triangles.iter().zip(&self.neighbours) {
+            b.push(*v, *nb);
+        }
+        let mut was_corner = vec![false; points.len()];
+        for &v in self.triangles.iter().flatten() {
+            was_corner[v as usize] = true;
+        }
+        for i in 0..base {
+            b.inside[i] = !self.on_boundary(i);
+        }
+        for q in base as u32..points.len() as u32 {
+            let seen = (0..b.tris.len()).find(|&t| b.tris[t].alive() && b.sees(t, q));
+            if let Some(t) = seen {
+                b.insert(t, q);
+                was_corner[q as usize] = true;
+            }
+        }
+        let (triangles, neighbours) = b.alive();
+        // The triangles kept, by their number here (they were made first, in order).
+        let mut born: Vec<u32> = (b.tris.iter())
+            .filter(|t| t.alive())
+            .map(|t| t.born)
+            .collect();
+        born.sort_unstable();
+        let kept = |t: usize| Some(born[t] as usize).filter(|&k| k < self.triangles.len());
+        // Two kept neighbours are coplanar exactly when they were in one facet here.
+        let coplanar = |t: usize, u: usize| {
+            let facet = |k: usize| self.triangle_facet[k];
+            Some(facet(kept(t)?) == facet(kept(u)?))
+        };
+        let mut corner = vec![false; points.len()];
+        for &v in triangles.iter().flatten() {
+            corner[v as usize] = true;
+        }
+        let mut inside = b.inside;
+        for (i, inside) in inside.iter_mut().enumerate() {
+            *inside |= was_corner[i] && !corner[i];
+        }
+        let mut h = Hull3 {
+            dimension: 3,
+            triangles,
+            ..Default::default()
+        };
+        h.build_facets(points, &neighbours, coplanar);
+        h.neighbours = neighbours;
+        h.assign_points(points, &inside);
+        Some(h)
     }
 
     /// The triangle across edge `i` of triangle `t` (the edge from its corner `i` to
@@ -250,18 +316,28 @@ impl Hull3 {
 
     /// Joins neighbouring coplanar triangles into facets (`neighbours[t][i]` is the
     /// triangle across edge `i` of triangle `t`).
-    fn build_facets(&mut self, pts: &[Point3], neighbours: &[[u32; 3]]) {
+    /// `coplanar(t, u)`, when `Some`, tells whether neighbours `t` and `u` are
+    /// coplanar without a predicate.
+    fn build_facets(
+        &mut self,
+        pts: &[Point3],
+        neighbours: &[[u32; 3]],
+        coplanar: impl Fn(usize, usize) -> Option<bool>,
+    ) {
         let n = self.triangles.len();
         let mut parent = partition::singletons(n);
         let p = |i: u32| &pts[i as usize];
         for (t, nb) in neighbours.iter().enumerate() {
             let tv = self.triangles[t];
             for &u in nb.iter().filter(|&&u| u as usize > t) {
-                let apex = *self.triangles[u as usize]
-                    .iter()
-                    .find(|x| !tv.contains(x))
-                    .expect("neighbouring triangles share two corners");
-                if orient3d(p(tv[0]), p(tv[1]), p(tv[2]), p(apex)) == 0 {
+                let flat = coplanar(t, u as usize).unwrap_or_else(|| {
+                    let apex = *self.triangles[u as usize]
+                        .iter()
+                        .find(|x| !tv.contains(x))
+                        .expect("neighbouring triangles share two corners");
+                    orient3d(p(tv[0]), p(tv[1]), p(tv[2]), p(apex)) == 0
+                });
+                if flat {
                     partition::union(&mut parent, t as u32, u);
                 }
             }
@@ -1166,5 +1242,47 @@ mod tests {
             Hull3::new(&[[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [3.0, 3.0, 0.0]]).dimension,
             2
         );
+    }
+
+    /// A hull extended by points ([`Hull3::extended`]) is the hull of all of them: on
+    /// small integer grids (repeats, points on facets and edges, new points inside, on
+    /// the hull or beyond it), with the facets, as the points on each, of a hull built
+    /// anew.
+    #[test]
+    fn extended_hulls_are_the_hulls_of_all_points() {
+        let mut rng = crate::rng::Rng::new(41);
+        let facets = |pts: &[Point3], h: &Hull3| {
+            let mut fs: Vec<Vec<usize>> = (0..h.facet_count())
+                .map(|f| {
+                    (0..pts.len())
+                        .filter(|&i| h.facets_of(i).contains(&(f as u32)))
+                        .collect()
+                })
+                .collect();
+            fs.sort();
+            fs
+        };
+        let mut extended = 0;
+        for k in 0..3000 {
+            let side = 3 + k % 4;
+            let n = 6 + k % 40;
+            let pts: Vec<Point3> = (0..n)
+                .map(|_| [0; 3].map(|_| rng.below(side) as f64))
+                .collect();
+            let base = 4 + rng.below(n - 3);
+            let h = Hull3::new(&pts[..base]);
+            let Some(e) = h.extended(&pts) else {
+                assert!(h.dimension < 3);
+                continue;
+            };
+            extended += 1;
+            assert_is_hull(&pts, &e);
+            assert_eq!(
+                facets(&pts, &e),
+                facets(&pts, &Hull3::new(&pts)),
+                "{pts:?} {base}"
+            );
+        }
+        assert!(extended > 2000, "{extended}");
     }
 }

@@ -611,12 +611,6 @@ pub(super) fn tetrahedralize_within(
     (method, go_on): (Method, &mut dyn FnMut(usize) -> bool),
     ctl: &Control,
 ) -> Result<Option<(ShellMesh, Option<Pending>)>, ShellError> {
-    let hidden: Vec<u32> = shell
-        .inner
-        .iter()
-        .copied()
-        .filter(|&v| v as usize >= shell.outer.len())
-        .collect();
     let removable: Vec<u32> = {
         let inner: HashSet<u32> = shell.inner.iter().copied().collect();
         shell
@@ -626,12 +620,7 @@ pub(super) fn tetrahedralize_within(
             .filter(|v| !inner.contains(v))
             .collect()
     };
-    let surface = Surface::new(
-        &shell.points,
-        &shell.hull,
-        (&hidden, &shell.touching),
-        &shell.q_edges,
-    );
+    let surface = Surface::new(shell);
     let mut thesis = None;
     let order: Vec<Vec<u32>> = match surface {
         Ok(mut surface) => {

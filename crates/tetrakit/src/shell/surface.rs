@@ -18,6 +18,14 @@
 //! is flat, `K` is a polygon and the bottom is the base of `CH(v ∪ L ∪ C)`, reversed (a
 //! fan of it when `C` is empty and every point of `L` is a corner, [`flat_fan`]).
 //!
+//! **Big bottoms.** The argument asks only `L ∪ C ⊆ K ⊆ H'`, so `K = CH(L ∪ V(Q))`
+//! serves as well: `Q`'s hull with the ring's other points inserted
+//! ([`Hull3::extended`]), a fraction of the cost of a new hull where the candidates are a
+//! large part of `Q` (the corner family's first caps at 10^3: 400 to 600 of 992 vertices),
+//! of which only the facets facing the tip are searched ([`facing_facets`]). Its facets
+//! hold `Q`'s exposed vertices too, so one may cross a ring edge; there, and on any other
+//! refusal, the candidates' hull decides.
+//!
 //! **Removing several at once** (a bigcap, §4.2): the same with `v`'s star replaced by
 //! the union of the stars of a connected vertex set `U` whose removal leaves a disk
 //! visible from `v`; see [`Surface::plan`]. The removed region `P̄ − H'` lies in
@@ -32,6 +40,7 @@
 //! and is reported, and the caller tries another tip. The final mesh is certified anyway
 //! ([`crate::mesh::certify_shell`]).
 
+use super::Shell;
 use super::hidden::{Hidden, Region};
 use super::recover::{self, QEdges};
 use crate::geom::{
@@ -39,6 +48,8 @@ use crate::geom::{
     projection_axis,
 };
 use rustc_hash::FxHashMap as HashMap;
+use std::cell::OnceCell;
+use std::sync::Arc;
 
 /// The triangulated surface of the current hull (cloned by Step 3a's search, which tries
 /// orders of removal on copies).
@@ -59,6 +70,11 @@ pub(super) struct Surface<'a> {
     outer_hull: &'a Hull3,
     /// Q's edges, recovered wherever a facet of the surface holds them.
     q_edges: &'a QEdges,
+    /// The shell, for `Q`'s hull when a bottom is read off it ([`Surface::big_hull`]).
+    shell: &'a Shell,
+    /// `Q`'s hull on its vertices, made at the first bottom that needs it (shared by
+    /// the copies of step 3a's search).
+    q_hull: OnceCell<Option<Arc<QHull>>>,
     /// The most triangles a cut of several vertices has taken (what bounds its cost).
     #[cfg(test)]
     pub(super) largest_cut: usize,
@@ -78,6 +94,37 @@ pub(super) struct Piece {
     bottom: Vec<[u32; 3]>,
     /// The tetrahedra, coned from the tip.
     pub(super) tets: Vec<[u32; 4]>,
+}
+
+/// `Q`'s hull on its vertices, numbered as [`Shell::inner`] lists them, and each
+/// shell vertex's number there (`u32::MAX`: not a vertex of `Q`).
+struct QHull {
+    hull: Hull3,
+    number: Vec<u32>,
+}
+
+impl QHull {
+    /// `None` when `Q`'s input has points besides its vertices (inside, on an edge or a
+    /// facet, repeated), which its hull's triangles may have as corners.
+    fn new(shell: &Shell) -> Option<QHull> {
+        if !shell.inner_ignored.is_empty() {
+            return None;
+        }
+        let mut by_input = vec![u32::MAX; shell.inner_source.len()];
+        for (k, &i) in shell.inner_source.iter().enumerate() {
+            by_input[i as usize] = k as u32;
+        }
+        let name = |i: u32| Some(by_input[i as usize]).filter(|&k| k != u32::MAX);
+        let hull = shell
+            .inner_hull
+            .clone()
+            .renumbered(&shell.inner_source, name)?;
+        let mut number = vec![u32::MAX; shell.points.len()];
+        for (k, &v) in shell.inner.iter().enumerate() {
+            number[v as usize] = k as u32;
+        }
+        Some(QHull { hull, number })
+    }
 }
 
 impl Piece {
@@ -124,19 +171,19 @@ pub(super) struct Refused(pub(super) &'static str);
 
 impl<'a> Surface<'a> {
     /// The surface of `P` (the hull of all the points, every outer point a vertex of
-    /// it), with the inner vertices `hidden` below it.
+    /// it), with the inner vertices that are not outer ones hidden below it.
     ///
-    /// `on_outer` are the inner vertices that lie on `∂P` (on a facet or an edge of the
-    /// outer hull): they are vertices of the surface from the start. Refused when a
+    /// The inner vertices on `∂P` (on a facet or an edge of the outer hull,
+    /// [`Shell::touching`]) are vertices of the surface from the start. Refused when a
     /// facet of `P` cannot be triangulated with the inner vertices and edges on it.
-    pub(super) fn new(
-        pts: &'a [Point3],
-        outer_hull: &'a Hull3,
-        (hidden, on_outer): (&[u32], &[u32]),
-        q_edges: &'a QEdges,
-    ) -> Result<Surface<'a>, Refused> {
+    pub(super) fn new(shell: &'a Shell) -> Result<Surface<'a>, Refused> {
+        let (pts, outer_hull, q_edges) = (&shell.points, &shell.hull, &shell.q_edges);
+        let n_outer = shell.outer.len() as u32;
+        let hidden: Vec<u32> = (shell.inner.iter().copied())
+            .filter(|&v| v >= n_outer)
+            .collect();
         let tris = q_edges
-            .facet_triangles(pts, outer_hull, on_outer)
+            .facet_triangles(pts, outer_hull, &shell.touching)
             .ok_or(Refused("a facet of P with inner vertices or edges on it"))?;
         let mut s = Surface {
             pts,
@@ -146,13 +193,15 @@ impl<'a> Surface<'a> {
             edge: HashMap::with_capacity_and_hasher(6 * pts.len(), Default::default()),
             incident: vec![Vec::new(); pts.len()],
             live: vec![0; pts.len()],
-            hidden: Hidden::new(pts, hidden),
+            hidden: Hidden::new(pts, &hidden),
             outer_hull,
             q_edges,
+            shell,
+            q_hull: OnceCell::new(),
             #[cfg(test)]
             largest_cut: 0,
         };
-        for &v in on_outer {
+        for &v in &shell.touching {
             s.hidden.expose(v);
         }
         for t in tris {
@@ -437,6 +486,13 @@ impl<'a> Surface<'a> {
             .map(|&v| self.pts[v as usize])
             .collect();
         let candidates = self.candidates(&around, set.len());
+        // Big bottoms off Q's hull (the module's doc); where that refuses, as below.
+        if candidates.len() * BIG_BOTTOM >= self.shell.inner.len()
+            && let Some((local, hull)) = self.big_hull(ring)
+            && let Ok(bottom) = self.hull_disk((tip, boundary), &local, &hull, true)
+        {
+            return Ok(bottom);
+        }
         if candidates.is_empty()
             && let Some(tris) = simplicial_hull(self.pts, ring)
         {
@@ -453,20 +509,38 @@ impl<'a> Surface<'a> {
         let mut local: Vec<u32> = ring.to_vec();
         local.extend(candidates);
         let coords: Vec<Point3> = local.iter().map(|&v| self.pts[v as usize]).collect();
-        let hull = Hull3::new(&coords);
+        self.hull_disk((tip, boundary), &local, &Hull3::new(&coords), false)
+    }
+
+    /// The bottom bounded by `boundary` on `hull`, the hull of the points `local` names
+    /// (when flat, the base of the cone from `tip`); with `facing_only`, searched in the
+    /// facets facing the tip alone ([`facing_facets`]). (On the candidates' hull that
+    /// search refused other removals on the degenerate shells of `tests/shell.rs`: the
+    /// placing ended 258 of their 2,298 runs instead of 49. Not looked into: there the
+    /// hull is small.)
+    fn hull_disk(
+        &self,
+        (tip, boundary): (u32, &[(u32, u32)]),
+        local: &[u32],
+        hull: &Hull3,
+        facing_only: bool,
+    ) -> Result<Vec<[u32; 3]>, Refused> {
+        let facing = match facing_only {
+            true => facing_facets(self.pts, hull, local, tip),
+            false => vec![true; hull.facet_count()],
+        };
         let (tris, on_hull): (Vec<[u32; 3]>, Vec<u32>) = if hull.dimension == 3 {
-            let tris = hull
-                .triangles
-                .iter()
-                .map(|t| t.map(|k| local[k as usize]))
+            let tris = (hull.triangles.iter().zip(&hull.triangle_facet))
+                .filter(|&(_, &f)| facing[f as usize])
+                .map(|(t, _)| t.map(|k| local[k as usize]))
                 .collect();
             let on = (0..local.len())
-                .filter(|&k| hull.on_boundary(k))
+                .filter(|&k| hull.facets_of(k).iter().any(|&f| facing[f as usize]))
                 .map(|k| local[k]);
             (tris, on.collect())
         } else {
             // A flat ring: the base of the cone from the tip, facing the tip.
-            let mut with_tip = coords.clone();
+            let mut with_tip: Vec<Point3> = local.iter().map(|&v| self.pts[v as usize]).collect();
             with_tip.push(self.pts[tip as usize]);
             let cone = Hull3::new(&with_tip);
             let apex = local.len() as u32;
@@ -500,7 +574,7 @@ impl<'a> Surface<'a> {
         // can be missing only where the facet has more triangles than one, or where
         // points were refined in.
         let loose = match (hull.dimension, flat.is_empty()) {
-            (3, true) => polygon_corners(&hull, &local),
+            (3, true) => polygon_corners(hull, local, &facing),
             _ => {
                 corners.extend(flat);
                 corners.sort_unstable();
@@ -509,6 +583,27 @@ impl<'a> Surface<'a> {
             }
         };
         self.recovered_disk(tip, tris, &loose, boundary)
+    }
+
+    /// `Q`'s hull on its vertices, made at the first call.
+    fn q_hull(&self) -> Option<&QHull> {
+        let made = self
+            .q_hull
+            .get_or_init(|| QHull::new(self.shell).map(Arc::new));
+        made.as_deref()
+    }
+
+    /// `CH(ring ∪ V(Q))` and its points (the vertices of `Q` as [`Shell::inner`] lists
+    /// them, then the ring's others): `Q`'s hull with the ring inserted, where the hidden
+    /// vertices that can be on the bottom are a large part of `Q`'s ([`BIG_BOTTOM`]), at
+    /// a fraction of the cost of a new hull of the ring and those vertices. Its bottom is
+    /// theirs: both hulls lie between `CH(ring ∪ C)` and `H'` (the module's doc).
+    fn big_hull(&self, ring: &[u32]) -> Option<(Vec<u32>, Hull3)> {
+        let q = self.q_hull()?;
+        let mut local = self.shell.inner.clone();
+        local.extend(ring.iter().filter(|&&v| q.number[v as usize] == u32::MAX));
+        let coords: Vec<Point3> = local.iter().map(|&v| self.pts[v as usize]).collect();
+        Some((local, q.hull.extended(&coords)?))
     }
 
     /// The [`disk`] of `tris` bounded by `boundary`, once Q's edges between the `loose`
@@ -532,18 +627,28 @@ impl<'a> Surface<'a> {
 
 /// The corners of `hull`'s triangles that share their facet with another triangle, named
 /// by `name`, sorted.
-fn polygon_corners(hull: &Hull3, name: &[u32]) -> Vec<u32> {
+fn polygon_corners(hull: &Hull3, name: &[u32], facing: &[bool]) -> Vec<u32> {
     let mut count = vec![0u32; hull.facet_count()];
     for &f in &hull.triangle_facet {
         count[f as usize] += 1;
     }
     let mut out: Vec<u32> = (hull.triangles.iter().zip(&hull.triangle_facet))
-        .filter(|&(_, &f)| count[f as usize] > 1)
+        .filter(|&(_, &f)| count[f as usize] > 1 && facing[f as usize])
         .flat_map(|(t, _)| t.map(|k| name[k as usize]))
         .collect();
     out.sort_unstable();
     out.dedup();
     out
+}
+
+/// For each facet of `hull` (on the points `local` names), whether `tip` is on its plane
+/// or beyond it: a bottom is made of such facets (it is seen from the tip or lies in a
+/// plane through it, [`Surface::cone`]), so the others need not be refined or searched.
+fn facing_facets(pts: &[Point3], hull: &Hull3, local: &[u32], tip: u32) -> Vec<bool> {
+    let p = |k: u32| &pts[local[k as usize] as usize];
+    (hull.facet_planes.iter())
+        .map(|f| orient3d(p(f[0]), p(f[1]), p(f[2]), &pts[tip as usize]) >= 0)
+        .collect()
 }
 
 /// The disk of the closed triangulated surface `tris` (with its `edges`) bounded by
@@ -594,6 +699,11 @@ fn disk(
 /// the candidates outnumber the ring, 0.171 s and 0.070 s with it from eightfold on;
 /// bent arcs 0.074 s either way and 0.40 s without the stage.
 const RING_STAGE: usize = 8;
+
+/// A bottom is read off `Q`'s hull ([`Surface::big_hull`]) when its candidates number at
+/// least `1 / BIG_BOTTOM` of `Q`'s vertices: then inserting the ring into `Q`'s hull
+/// costs less than a new hull of the candidates.
+const BIG_BOTTOM: usize = 3;
 
 /// The most ring vertices [`simplicial_hull`] takes (it tests every triple).
 const SMALL_RING: usize = 8;

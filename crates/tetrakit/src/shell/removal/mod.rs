@@ -338,16 +338,7 @@ mod tests {
     fn bigcaps_leave_out_the_hubs() {
         let (outer, inner) = prisms(400);
         let shell = Shell::new(&outer, &inner).expect("nested prisms");
-        let hidden: Vec<u32> = (shell.inner.iter().copied())
-            .filter(|&v| v as usize >= shell.outer.len())
-            .collect();
-        let mut surface = Surface::new(
-            &shell.points,
-            &shell.hull,
-            (&hidden, &shell.touching),
-            &shell.q_edges,
-        )
-        .expect("a surface");
+        let mut surface = Surface::new(&shell).expect("a surface");
         let mut r = Removal::new(&mut surface, shell.outer.iter().copied().collect());
         let (mut refused, mut largest_set, mut hub) = (HashSet::default(), 0, 0);
         while let Some(v) = (r.left.iter().copied())

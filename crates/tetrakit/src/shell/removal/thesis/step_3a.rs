@@ -340,15 +340,7 @@ mod tests {
             let Ok(shell) = Shell::new(&outer, &inner) else {
                 continue;
             };
-            let hidden: Vec<u32> = (shell.inner.iter().copied())
-                .filter(|&v| v as usize >= shell.outer.len())
-                .collect();
-            let Ok(mut surface) = Surface::new(
-                &shell.points,
-                &shell.hull,
-                (&hidden, &shell.touching),
-                &shell.q_edges,
-            ) else {
+            let Ok(mut surface) = Surface::new(&shell) else {
                 continue;
             };
             let q_points: Vec<Point3> = shell
