@@ -529,14 +529,14 @@ impl<'a> Surface<'a> {
             true => facing_facets(self.pts, hull, local, tip),
             false => vec![true; hull.facet_count()],
         };
-        let (tris, on_hull): (Vec<[u32; 3]>, Vec<u32>) = if hull.dimension == 3 {
+        // The triangles and the points on the hull, by their place in `local`.
+        let (tris, on_hull): (Vec<[u32; 3]>, Vec<usize>) = if hull.dimension == 3 {
             let tris = (hull.triangles.iter().zip(&hull.triangle_facet))
                 .filter(|&(_, &f)| facing[f as usize])
-                .map(|(t, _)| t.map(|k| local[k as usize]))
+                .map(|(t, _)| *t)
                 .collect();
-            let on = (0..local.len())
-                .filter(|&k| hull.facets_of(k).iter().any(|&f| facing[f as usize]))
-                .map(|k| local[k]);
+            let on =
+                (0..local.len()).filter(|&k| hull.facets_of(k).iter().any(|&f| facing[f as usize]));
             (tris, on.collect())
         } else {
             // A flat ring: the base of the cone from the tip, facing the tip.
@@ -544,29 +544,31 @@ impl<'a> Surface<'a> {
             with_tip.push(self.pts[tip as usize]);
             let cone = Hull3::new(&with_tip);
             let apex = local.len() as u32;
-            let tris = cone
-                .triangles
-                .iter()
+            let tris = (cone.triangles.iter())
                 .filter(|t| !t.contains(&apex))
-                .map(|t| [t[0], t[2], t[1]].map(|k| local[k as usize]))
+                .map(|t| [t[0], t[2], t[1]])
                 .collect();
-            let on = (0..local.len())
-                .filter(|&k| cone.on_boundary(k))
-                .map(|k| local[k]);
-            (tris, on.collect())
+            (
+                tris,
+                (0..local.len()).filter(|&k| cone.on_boundary(k)).collect(),
+            )
         };
         // Points on the hull but not corners of its triangles (on an edge, or inside a
         // coplanar facet) are on the new surface where it is the bottom: they become
         // vertices there, or a later piece would meet them mid-face (and a ring vertex
         // on an edge of the hull would leave its ring edges out). On the far side of the
         // hull they stay hidden.
-        let mut corners: Vec<u32> = tris.iter().flatten().copied().collect();
-        corners.sort_unstable();
-        let flat: Vec<u32> = on_hull
-            .into_iter()
-            .filter(|v| corners.binary_search(v).is_err())
+        let mut corner = vec![false; local.len()];
+        for &k in tris.iter().flatten() {
+            corner[k as usize] = true;
+        }
+        let flat: Vec<u32> = (on_hull.into_iter())
+            .filter(|&k| !corner[k])
+            .map(|k| local[k])
             .collect();
-        let mut tris = tris;
+        let mut tris: Vec<[u32; 3]> = (tris.iter())
+            .map(|t| t.map(|k| local[k as usize]))
+            .collect();
         if refine(self.pts, &mut tris, &flat)? != flat.len() {
             return Err(Refused("a point on the hull is on none of its triangles"));
         }
@@ -576,10 +578,11 @@ impl<'a> Surface<'a> {
         let loose = match (hull.dimension, flat.is_empty()) {
             (3, true) => polygon_corners(hull, local, &facing),
             _ => {
-                corners.extend(flat);
-                corners.sort_unstable();
-                corners.dedup();
-                corners
+                let corners = (0..local.len()).filter(|&k| corner[k]).map(|k| local[k]);
+                let mut loose: Vec<u32> = corners.chain(flat).collect();
+                loose.sort_unstable();
+                loose.dedup();
+                loose
             }
         };
         self.recovered_disk(tip, tris, &loose, boundary)
