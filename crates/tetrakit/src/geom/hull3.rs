@@ -316,8 +316,9 @@ impl Hull3 {
 
     /// Joins neighbouring coplanar triangles into facets (`neighbours[t][i]` is the
     /// triangle across edge `i` of triangle `t`).
-    /// `coplanar(t, u)`, when `Some`, tells whether neighbours `t` and `u` are
-    /// coplanar without a predicate.
+    ///
+    /// `coplanar(t, u)`, when `Some`, tells whether neighbours `t` and `u` are coplanar
+    /// without a predicate.
     fn build_facets(
         &mut self,
         pts: &[Point3],
