@@ -514,10 +514,12 @@ impl<'a> Surface<'a> {
 
     /// The bottom bounded by `boundary` on `hull`, the hull of the points `local` names
     /// (when flat, the base of the cone from `tip`); with `facing_only`, searched in the
-    /// facets facing the tip alone ([`facing_facets`]). (On the candidates' hull that
-    /// search refused other removals on the degenerate shells of `tests/shell.rs`: the
-    /// placing ended 258 of their 2,298 runs instead of 49. Not looked into: there the
-    /// hull is small.)
+    /// facets facing the tip alone ([`facing_facets`]). (Not on the candidates' hull: a
+    /// point inside an edge between a facet facing the tip and one that does not is
+    /// refined into both, and the facing triangle alone has no twin there ([`refine`]),
+    /// so some removals the whole hull allows were refused; on the degenerate shells of
+    /// `tests/shell.rs` the placing ended 258 of the 2,298 runs instead of 49. On `Q`'s
+    /// hull with the ring, every refusal falls back to the candidates' hull.)
     fn hull_disk(
         &self,
         (tip, boundary): (u32, &[(u32, u32)]),
