@@ -42,7 +42,7 @@
 
 use super::Shell;
 use super::hidden::{Hidden, Region};
-use super::recover::{self, QEdges};
+use super::recover;
 use crate::geom::{
     Hull2, Hull3, Plane, Point3, bounding_box, collinear3, drop_axis, orient2d_drop, orient3d,
     projection_axis,
@@ -55,6 +55,7 @@ use std::sync::Arc;
 /// orders of removal on copies).
 #[derive(Clone)]
 pub(super) struct Surface<'a> {
+    /// The shell's points ([`Shell::points`]).
     pts: &'a [Point3],
     tris: Vec<[u32; 3]>,
     alive: Vec<bool>,
@@ -66,11 +67,9 @@ pub(super) struct Surface<'a> {
     live: Vec<u32>,
     /// Inner vertices not yet on the surface.
     pub(super) hidden: Hidden,
-    /// `P` itself, to tell the surface's facets on `∂P` from those inside it.
-    outer_hull: &'a Hull3,
-    /// Q's edges, recovered wherever a facet of the surface holds them.
-    q_edges: &'a QEdges,
-    /// The shell, for `Q`'s hull when a bottom is read off it ([`Surface::big_hull`]).
+    /// The shell: `P`'s hull (to tell the surface's facets on `∂P` from those inside
+    /// it), Q's edges (recovered wherever a facet of the surface holds them) and Q's hull
+    /// (when a bottom is read off it, [`Surface::big_hull`]).
     shell: &'a Shell,
     /// `Q`'s hull on its vertices, made at the first bottom that needs it (shared by
     /// the copies of step 3a's search).
@@ -177,13 +176,13 @@ impl<'a> Surface<'a> {
     /// [`Shell::touching`]) are vertices of the surface from the start. Refused when a
     /// facet of `P` cannot be triangulated with the inner vertices and edges on it.
     pub(super) fn new(shell: &'a Shell) -> Result<Surface<'a>, Refused> {
-        let (pts, outer_hull, q_edges) = (&shell.points, &shell.hull, &shell.q_edges);
+        let pts = &shell.points;
         let n_outer = shell.outer.len() as u32;
         let hidden: Vec<u32> = (shell.inner.iter().copied())
             .filter(|&v| v >= n_outer)
             .collect();
-        let tris = q_edges
-            .facet_triangles(pts, outer_hull, &shell.touching)
+        let tris = (shell.q_edges)
+            .facet_triangles(pts, &shell.hull, &shell.touching)
             .ok_or(Refused("a facet of P with inner vertices or edges on it"))?;
         let mut s = Surface {
             pts,
@@ -194,8 +193,6 @@ impl<'a> Surface<'a> {
             incident: vec![Vec::new(); pts.len()],
             live: vec![0; pts.len()],
             hidden: Hidden::new(pts, &hidden),
-            outer_hull,
-            q_edges,
             shell,
             q_hull: OnceCell::new(),
             #[cfg(test)]
@@ -235,7 +232,7 @@ impl<'a> Surface<'a> {
 
     /// True when triangle `t` lies in a facet of `P` (nothing is behind it).
     fn on_outer(&self, t: &[u32; 3]) -> bool {
-        let h = &self.outer_hull;
+        let h = &self.shell.hull;
         h.common_facet(t[0] as usize, t[1] as usize, t[2] as usize)
             .is_some()
     }
@@ -622,7 +619,8 @@ impl<'a> Surface<'a> {
     ) -> Result<Vec<[u32; 3]>, Refused> {
         let mut edges = recover::edges_of(&tris);
         if !loose.is_empty() {
-            self.q_edges
+            self.shell
+                .q_edges
                 .recover(self.pts, (&mut tris, &mut edges), boundary, loose)
                 .map_err(Refused)?;
         }
